@@ -1,0 +1,65 @@
+#pragma once
+// Diagnostics and the single exception family of toolcomp.
+//
+// Every message the engine produces carries a stable machine-readable code (snake_case,
+// e.g. "arc_end_off_circle"), a human message (where a real control has a message of its
+// own, that exact text), and the source position (1-based line and column; 0 when unknown).
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace toolcomp {
+
+enum class Severity { info = 0, warning = 1, error = 2 };
+
+struct SourcePos {
+    int line = 0;    // 1-based; 0 = not tied to a source line
+    int column = 0;  // 1-based; 0 = whole line
+};
+
+struct Diagnostic {
+    std::string code;
+    Severity severity = Severity::error;
+    std::string message;
+    SourcePos pos;
+};
+
+// Which stage raised an error; maps to the Python classes ParseError, ProgramError,
+// CompensationError, ToolTableError (all deriving from toolcomp.Error).
+enum class ErrorKind { generic, parse, program, compensation, tool_table };
+
+class Error : public std::runtime_error {
+public:
+    Error(ErrorKind kind, std::string code, const std::string& message, SourcePos pos = {})
+        : std::runtime_error(message), kind_(kind), code_(std::move(code)), pos_(pos) {}
+    ErrorKind kind() const noexcept { return kind_; }
+    const std::string& code() const noexcept { return code_; }
+    SourcePos pos() const noexcept { return pos_; }
+    int line() const noexcept { return pos_.line; }
+    int column() const noexcept { return pos_.column; }
+    Diagnostic diagnostic() const { return {code_, Severity::error, what(), pos_}; }
+
+private:
+    ErrorKind kind_;
+    std::string code_;
+    SourcePos pos_;
+};
+
+struct ParseError : Error {
+    ParseError(std::string code, const std::string& msg, SourcePos pos = {})
+        : Error(ErrorKind::parse, std::move(code), msg, pos) {}
+};
+struct ProgramError : Error {
+    ProgramError(std::string code, const std::string& msg, SourcePos pos = {})
+        : Error(ErrorKind::program, std::move(code), msg, pos) {}
+};
+struct CompensationError : Error {
+    CompensationError(std::string code, const std::string& msg, SourcePos pos = {})
+        : Error(ErrorKind::compensation, std::move(code), msg, pos) {}
+};
+struct ToolTableError : Error {
+    ToolTableError(std::string code, const std::string& msg, SourcePos pos = {})
+        : Error(ErrorKind::tool_table, std::move(code), msg, pos) {}
+};
+
+}  // namespace toolcomp
