@@ -1,0 +1,433 @@
+"""Command line: run or check NC programs the way the control would.
+
+    python -m toolcomp run PROGRAM [--tools TABLE] [--dialect D] [--plot FILE.png]
+                                   [--csv FILE] [--json FILE] [--units-table mm|inch]
+    python -m toolcomp check PROGRAM... [--tools TABLE] [--dialect D] [--format text|json]
+
+Diagnostics are printed as ``file:line:column: severity code message`` so editors and CI
+log parsers can jump to the block. Exit status: 0 when no diagnostic is an error, 1 when
+one is, 2 on usage errors (bad options, a program or table that cannot be read), 3 when
+the engine itself cannot be loaded.
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import json
+import math
+import os
+import sys
+import tempfile
+
+import numpy as np
+
+EXIT_OK, EXIT_ERRORS, EXIT_USAGE, EXIT_ENGINE = 0, 1, 2, 3
+
+DIALECTS = ("linuxcnc", "fanuc", "sinumerik", "heidenhain", "rockwell")
+SUFFIX_DIALECTS = {".ngc": "linuxcnc", ".nc": "fanuc", ".tap": "fanuc",
+                   ".mpf": "sinumerik", ".spf": "sinumerik", ".h": "heidenhain"}
+ERROR_SEVERITIES = ("error", "fatal")
+INCH = 25.4
+
+
+class UsageError(Exception):
+    """Bad input from the command line: reported as ``toolcomp: error: …``, exit 2."""
+
+
+class EngineUnavailable(Exception):
+    """The compiled engine cannot be imported (package not built): exit 3."""
+
+
+class Record:
+    """A diagnostic as the command line reports it (engine Diagnostic or raised Error)."""
+
+    __slots__ = ("file", "line", "column", "severity", "code", "message")
+
+    def __init__(self, file, line, column, severity, code, message):
+        self.file, self.line, self.column = file, line, column
+        self.severity, self.code, self.message = severity, code, message
+
+    @classmethod
+    def of(cls, diag, file, severity=None):
+        sev = severity or _severity_name(getattr(diag, "severity", "error"))
+        message = getattr(diag, "message", None)
+        if message is None:  # an exception: str() is the message
+            message = str(diag)
+        return cls(getattr(diag, "file", None) or file,
+                   _int_or_none(getattr(diag, "line", None)),
+                   _int_or_none(getattr(diag, "column", None)),
+                   sev, str(getattr(diag, "code", "") or type(diag).__name__), str(message))
+
+    @property
+    def is_error(self):
+        return self.severity in ERROR_SEVERITIES
+
+    def format(self):
+        where = self.file
+        if self.line:
+            where += f":{self.line}:{self.column or 0}"
+        return f"{where}: {self.severity} {self.code} {self.message}"
+
+    def as_dict(self):
+        return {k: getattr(self, k) for k in self.__slots__}
+
+
+def _int_or_none(v):
+    try:
+        return None if v is None else int(v)
+    except (TypeError, ValueError):
+        return None
+
+
+def _severity_name(sev) -> str:
+    """'error' from 'error', Severity.error or an enum member; also used for dialects."""
+    name = getattr(sev, "name", None) or str(sev)
+    return name.rsplit(".", 1)[-1].lower()
+
+
+# ---------------------------------------------------------------------------------------
+# running a program
+# ---------------------------------------------------------------------------------------
+
+class Outcome:
+    """Everything one command-line run produced."""
+
+    def __init__(self, program_file, dialect):
+        self.program_file = program_file
+        self.dialect = dialect
+        self.program = None
+        self.result = None
+        self.records: list[Record] = []
+
+    @property
+    def has_errors(self):
+        return any(r.is_error for r in self.records)
+
+
+def _engine():
+    try:
+        import toolcomp as tc
+        # the engine's names must be there, not just the package
+        tc.run, tc.Program, tc.ToolTable, tc.Error  # noqa: B018
+    except (ImportError, AttributeError) as exc:
+        raise EngineUnavailable(f"cannot load the toolcomp engine: {exc}") from exc
+    return tc
+
+
+def _check_readable(path, what):
+    if not os.path.exists(path):
+        raise UsageError(f"{what} '{path}' does not exist")
+    if os.path.isdir(path):
+        raise UsageError(f"{what} '{path}' is a directory")
+    if not os.access(path, os.R_OK):
+        raise UsageError(f"{what} '{path}' is not readable")
+
+
+def _metric_copy_of_tbl(path):
+    """A LinuxCNC .tbl in inches rewritten in mm (offsets X..W and diameter D)."""
+    out = []
+    with open(path, encoding="utf-8", errors="replace") as f:
+        for raw in f:
+            body, sep, comment = raw.rstrip("\n").partition(";")
+            words = []
+            for w in body.split():
+                if w[:1].upper() in "XYZUVWD" and len(w) > 1:
+                    try:
+                        w = f"{w[0]}{float(w[1:]) * INCH:.6f}"
+                    except ValueError:
+                        pass
+                words.append(w)
+            out.append(" ".join(words) + (" " + sep + comment if sep else "") + "\n")
+    fd, tmp = tempfile.mkstemp(suffix=".tbl", prefix="toolcomp-mm-")
+    with os.fdopen(fd, "w", encoding="utf-8") as f:
+        f.writelines(out)
+    return tmp
+
+
+def _read_tools(tc, path, units):
+    if units is None:
+        return tc.ToolTable.read(path)
+    try:
+        return tc.ToolTable.read(path, units=units)
+    except TypeError:
+        pass  # this engine reads tables without a units option: convert the file here
+    if units == "mm":
+        return tc.ToolTable.read(path)
+    if not path.lower().endswith(".tbl"):
+        raise UsageError("--units-table inch is supported for LinuxCNC .tbl tables only")
+    tmp = _metric_copy_of_tbl(path)
+    try:
+        return tc.ToolTable.read(tmp)
+    finally:
+        os.unlink(tmp)
+
+
+def execute(program_file, tools_file=None, dialect=None, units_table=None) -> Outcome:
+    """Read the program and tool table and run it with ``strict=False``; every problem
+    becomes a diagnostic record. Raises UsageError for unreadable inputs."""
+    _check_readable(program_file, "program")
+    if tools_file is not None:
+        _check_readable(tools_file, "tool table")
+    tc = _engine()
+    dialect = dialect or SUFFIX_DIALECTS.get(os.path.splitext(program_file)[1].lower())
+    out = Outcome(program_file, dialect)
+
+    tools = None
+    if tools_file is not None:
+        try:
+            tools = _read_tools(tc, tools_file, units_table)
+        except tc.Error as exc:
+            out.records.append(Record.of(exc, tools_file, "error"))
+            return out
+
+    kwargs = {"dialect": dialect} if dialect else {}
+    try:
+        out.program = tc.Program.read(program_file, **kwargs)
+        name = getattr(out.program, "dialect", None)
+        out.dialect = _severity_name(name) if name is not None else dialect
+        source = out.program
+    except tc.Error as exc:
+        # A program that does not parse as a whole may still run up to the bad block
+        # when the engine parses as it goes; let run() say how far it gets.
+        source = program_file
+        parse_error = exc
+    else:
+        parse_error = None
+
+    run_kwargs = {} if tools is None else {"tools": tools}
+    if source is program_file:
+        run_kwargs.update(kwargs)
+    try:
+        out.result = tc.run(source, strict=False, **run_kwargs)
+    except tc.Error as exc:
+        out.records.append(Record.of(parse_error or exc, program_file, "error"))
+        return out
+    except TypeError:
+        if parse_error is None:
+            raise
+        out.records.append(Record.of(parse_error, program_file, "error"))
+        return out
+
+    out.records.extend(Record.of(d, program_file) for d in out.result.diagnostics)
+    if parse_error is not None and not any(r.is_error for r in out.records):
+        out.records.append(Record.of(parse_error, program_file, "error"))
+    return out
+
+
+# ---------------------------------------------------------------------------------------
+# summary
+# ---------------------------------------------------------------------------------------
+
+def _block_count(program, program_file):
+    if program is not None:
+        for get in (lambda p: p.block_count, len):
+            try:
+                return int(get(program))
+            except (AttributeError, TypeError):
+                pass
+    # No program object (it did not parse) or no count: lines with content.
+    with open(program_file, encoding="utf-8", errors="replace") as f:
+        return sum(1 for line in f if line.strip())
+
+
+def summarize(out: Outcome) -> dict:
+    """The run summary as plain data (what --json writes)."""
+    from toolcomp.plot import path_size, segment_lengths
+
+    res = out.result
+    summary = {
+        "program": out.program_file,
+        "dialect": out.dialect,
+        "blocks": _block_count(out.program, out.program_file),
+        "ok": not out.has_errors,
+    }
+    segs = {"nominal": 0, "compensated": 0, "generated": 0}
+    tools, length = [], {"feed": 0.0, "rapid": 0.0}
+    if res is not None:
+        path = res.path
+        segs["nominal"] = path_size(res.nominal)
+        segs["compensated"] = path_size(path)
+        if segs["compensated"]:
+            segs["generated"] = int(np.count_nonzero(np.asarray(path.generated)))
+            tools = sorted(int(t) for t in np.unique(np.asarray(path.tool)))
+            kind = np.asarray(path.kind)
+            lengths = segment_lengths(path)
+            length = {"feed": float(lengths[kind != 0].sum()),
+                      "rapid": float(lengths[kind == 0].sum())}
+    summary["segments"] = segs
+    summary["tools"] = tools
+    summary["length_mm"] = length
+    counts = {}
+    for r in out.records:
+        counts[r.severity] = counts.get(r.severity, 0) + 1
+    summary["diagnostic_counts"] = counts
+    summary["diagnostics"] = [r.as_dict() for r in out.records]
+    return summary
+
+
+def _plural(n, word):
+    return f"{n} {word}" + ("" if n == 1 else "s")
+
+
+def format_summary(s: dict) -> str:
+    segs, length = s["segments"], s["length_mm"]
+    counts = s["diagnostic_counts"]
+    seg_text = f"{segs['nominal']} programmed, {segs['compensated']} compensated"
+    if segs["generated"]:
+        seg_text += f" ({segs['generated']} inserted by compensation)"
+    order = ["error", "fatal", "warning", "note", "info"]
+    sev = sorted(counts, key=lambda k: (order.index(k) if k in order else len(order), k))
+    diag_text = ", ".join(_plural(counts[k], k) for k in sev) if counts else "none"
+    rows = [
+        ("program", s["program"]),
+        ("dialect", s["dialect"] or "?"),
+        ("blocks", str(s["blocks"])),
+        ("segments", seg_text),
+        ("tools", ", ".join(f"T{t}" for t in s["tools"]) or "none"),
+        ("path length", f"feed {length['feed']:.3f} mm, rapid {length['rapid']:.3f} mm"),
+        ("diagnostics", diag_text),
+    ]
+    lines = [f"{k + ':':<13}{v}" for k, v in rows]
+    lines += [Record(**d).format() for d in s["diagnostics"]]
+    return "\n".join(lines)
+
+
+# ---------------------------------------------------------------------------------------
+# exports
+# ---------------------------------------------------------------------------------------
+
+CSV_HEADER = (["index", "kind", "line", "tool",
+               "start_x", "start_y", "start_z", "end_x", "end_y", "end_z",
+               "center_x", "center_y", "center_z", "feed", "side", "generated",
+               "tool_offset_x", "tool_offset_y", "tool_offset_z", "a", "b", "c"])
+KIND_NAMES = {0: "rapid", 1: "line", 2: "arc_cw", 3: "arc_ccw"}
+
+
+def _num(v):
+    v = float(v)
+    return "" if math.isnan(v) else f"{v:.6f}"
+
+
+def write_csv(path, filename):
+    """One row per segment; NaN (centre of a line, feed of a rapid) is an empty field."""
+    from toolcomp.plot import path_size
+
+    n = path_size(path) if path is not None else 0
+    with open(filename, "w", newline="", encoding="utf-8") as f:
+        w = csv.writer(f)
+        w.writerow(CSV_HEADER)
+        if n == 0:
+            return 0
+        kind = np.asarray(path.kind)
+        line, tool = np.asarray(path.line), np.asarray(path.tool)
+        start, end = np.asarray(path.start), np.asarray(path.end)
+        center, feed = np.asarray(path.center), np.asarray(path.feed)
+        side, gen = np.asarray(path.side), np.asarray(path.generated)
+        offs = np.asarray(path.tool_offset)
+        abc = np.asarray(getattr(path, "abc", np.full((n, 3), np.nan)))
+        for i in range(n):
+            w.writerow([i, KIND_NAMES.get(int(kind[i]), str(int(kind[i]))),
+                        int(line[i]), int(tool[i]),
+                        *map(_num, start[i]), *map(_num, end[i]), *map(_num, center[i]),
+                        _num(feed[i]), int(side[i]), int(bool(gen[i])),
+                        *map(_num, offs[i]), *map(_num, abc[i])])
+    return n
+
+
+# ---------------------------------------------------------------------------------------
+# commands
+# ---------------------------------------------------------------------------------------
+
+def cmd_run(args) -> int:
+    out = execute(args.program, args.tools, args.dialect, args.units_table)
+    summary = summarize(out)
+    print(format_summary(summary))
+    if args.csv:
+        write_csv(out.result.path if out.result is not None else None, args.csv)
+    if args.json:
+        with open(args.json, "w", encoding="utf-8") as f:
+            json.dump(summary, f, indent=2)
+            f.write("\n")
+    if args.plot:
+        if out.result is None:
+            print(f"toolcomp: no path to plot for {args.program}", file=sys.stderr)
+        else:
+            try:
+                from toolcomp.plot import save_plot
+                save_plot(out.result, args.plot, title=os.path.basename(args.program))
+            except ImportError:
+                raise UsageError("--plot needs matplotlib: pip install 'toolcomp[plot]'")
+    return EXIT_ERRORS if out.has_errors else EXIT_OK
+
+
+def cmd_check(args) -> int:
+    # Unreadable files are usage errors: check them all before running any.
+    for p in args.programs:
+        _check_readable(p, "program")
+    outcomes = [execute(p, args.tools, args.dialect, args.units_table) for p in args.programs]
+    if args.format == "json":
+        doc = [{"program": o.program_file, "ok": not o.has_errors,
+                "diagnostics": [r.as_dict() for r in o.records]} for o in outcomes]
+        print(json.dumps(doc[0] if len(doc) == 1 else doc, indent=2))
+    else:
+        for o in outcomes:
+            for r in o.records:
+                print(r.format())
+    return EXIT_ERRORS if any(o.has_errors for o in outcomes) else EXIT_OK
+
+
+def build_parser() -> argparse.ArgumentParser:
+    p = argparse.ArgumentParser(
+        prog="toolcomp",
+        description="Run CNC part programs the way the control does and report the "
+                    "programmed and tool-compensated paths.")
+    sub = p.add_subparsers(dest="command", metavar="COMMAND")
+    sub.required = True
+
+    def common(sp):
+        sp.add_argument("--tools", metavar="TABLE",
+                        help="tool table (.tbl, .t, .csv, .json, ...; format from suffix)")
+        sp.add_argument("--dialect", choices=DIALECTS,
+                        help="control dialect (default: from the program's suffix)")
+        sp.add_argument("--units-table", choices=("mm", "inch"), dest="units_table",
+                        help="units of the tool table's lengths (default: the table's own)")
+
+    r = sub.add_parser("run", help="run a program and print a summary of its paths",
+                       description="Run a program (errors do not stop the report: the path "
+                                   "up to the first error is summarised).")
+    r.add_argument("program", metavar="PROGRAM")
+    common(r)
+    r.add_argument("--plot", metavar="FILE.png", help="write a plot of the paths")
+    r.add_argument("--csv", metavar="FILE", help="write the compensated segments as CSV")
+    r.add_argument("--json", metavar="FILE", help="write the summary as JSON")
+    r.set_defaults(func=cmd_run)
+
+    c = sub.add_parser("check", help="print only the diagnostics of programs",
+                       description="Print diagnostics as file:line:column: severity code "
+                                   "message; exit 1 if any is an error.")
+    c.add_argument("programs", metavar="PROGRAM", nargs="+")
+    common(c)
+    c.add_argument("--format", choices=("text", "json"), default="text")
+    c.set_defaults(func=cmd_check)
+    return p
+
+
+def main(argv=None) -> int:
+    parser = build_parser()
+    args = parser.parse_args(argv)  # exits 2 on bad usage
+    try:
+        return args.func(args)
+    except UsageError as exc:
+        print(f"toolcomp {args.command}: error: {exc}", file=sys.stderr)
+        return EXIT_USAGE
+    except EngineUnavailable as exc:
+        print(f"toolcomp: error: {exc}", file=sys.stderr)
+        return EXIT_ENGINE
+    except OSError as exc:  # output files that cannot be written
+        print(f"toolcomp {args.command}: error: {exc}", file=sys.stderr)
+        return EXIT_USAGE
+
+
+if __name__ == "__main__":
+    sys.exit(main())
