@@ -1,0 +1,176 @@
+"""Plotting and the path geometry behind it (lengths, sampling)."""
+
+import math
+from pathlib import Path
+from types import SimpleNamespace
+
+import numpy as np
+import pytest
+
+from toolcomp.plot import sample_path, segment_lengths, segment_polylines
+
+ROOT = Path(__file__).resolve().parents[2]
+EXAMPLE = ROOT / "examples" / "pocket.ngc"
+TOOLS = ROOT / "examples" / "tools.tbl"
+PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
+NAN = math.nan
+
+
+def fake_path(rows):
+    """A Path-like object without a sampler: (kind, start, end, center) rows."""
+    kind, start, end, center = zip(*rows)
+    n = len(rows)
+    return SimpleNamespace(
+        kind=np.array(kind, np.uint8), start=np.array(start, float), end=np.array(end, float),
+        center=np.array(center, float), line=np.arange(1, n + 1, dtype=np.int32),
+        tool=np.ones(n, np.int32), feed=np.full(n, 500.0), side=np.zeros(n, np.int8),
+        generated=np.zeros(n, bool), tool_offset=np.zeros((n, 3)), abc=np.zeros((n, 3)))
+
+
+def test_segment_lengths_exact_for_arcs_in_every_plane():
+    path = fake_path([
+        (0, (0, 0, 10), (0, 0, 0), (NAN, NAN, NAN)),            # rapid down 10
+        (1, (0, 0, 0), (3, 4, 0), (NAN, NAN, NAN)),             # line 5
+        (3, (10, 0, 0), (0, 10, 3), (0, 0, 0)),                 # G17 CCW quarter helix, rise 3
+        (2, (0, 10, 3), (10, 0, 3), (0, 0, 3)),                 # G17 CW quarter, same circle back
+        (2, (0, 0, 0), (0, 0, 0), (5, 0, 0)),                   # G18 full circle r=5 (X-Z)
+        (3, (0, 0, 0), (0, 0, 8), (0, 0, 4)),                   # G19 half circle r=4 (Y-Z)
+    ])
+    lengths = segment_lengths(path)
+    expected = [10, 5, math.hypot(math.pi / 2 * 10, 3), math.pi / 2 * 10, 10 * math.pi, 4 * math.pi]
+    np.testing.assert_allclose(lengths, expected, rtol=1e-9)
+
+
+def test_cw_and_ccw_arcs_sweep_opposite_ways():
+    # same end points and centre: CCW is the short way here, CW the long way
+    ccw = fake_path([(3, (10, 0, 0), (0, 10, 0), (0, 0, 0))])
+    cw = fake_path([(2, (10, 0, 0), (0, 10, 0), (0, 0, 0))])
+    assert segment_lengths(ccw)[0] == pytest.approx(5 * math.pi)
+    assert segment_lengths(cw)[0] == pytest.approx(15 * math.pi)
+    pts, _ = sample_path(cw, 0.01)
+    assert pts[:, 1].min() == pytest.approx(-10, abs=0.02)  # goes round through -Y
+
+
+def test_sampled_arcs_stay_within_tolerance():
+    path = fake_path([(2, (0, 0, 0), (0, 0, 0), (20, 0, 0))])
+    tol = 0.01
+    pts, idx = sample_path(path, tol)
+    assert set(idx.tolist()) == {0}
+    r = np.hypot(pts[:, 0] - 20, pts[:, 1])
+    np.testing.assert_allclose(r, 20, atol=1e-9)
+    mid = (pts[1:] + pts[:-1]) / 2  # chord midpoints: worst chord error
+    assert (20 - np.hypot(mid[:, 0] - 20, mid[:, 1])).max() <= tol + 1e-12
+
+
+def test_segment_polylines_start_and_end_each_segment():
+    path = fake_path([
+        (1, (0, 0, 0), (10, 0, 0), (NAN, NAN, NAN)),
+        (3, (10, 0, 0), (10, 10, 0), (10, 5, 0)),
+    ])
+    pts, owner = segment_polylines(path, 0.01)
+    for i in range(2):
+        run = pts[owner == i]
+        np.testing.assert_allclose(run[0], path.start[i])
+        np.testing.assert_allclose(run[-1], path.end[i])
+
+
+# ---- drawing --------------------------------------------------------------------------
+
+@pytest.fixture(scope="module")
+def mpl():
+    matplotlib = pytest.importorskip("matplotlib")
+    matplotlib.use("Agg")
+    return matplotlib
+
+
+@pytest.fixture(scope="module")
+def example_result():
+    import toolcomp as tc
+
+    return tc.run(tc.Program.read(str(EXAMPLE)), tools=tc.ToolTable.read(str(TOOLS)))
+
+
+def fake_result(path, diagnostics=()):
+    return SimpleNamespace(ok=not diagnostics, nominal=path, path=path,
+                           diagnostics=list(diagnostics))
+
+
+def test_save_plot_writes_png(mpl, example_result, tmp_path):
+    from toolcomp.plot import save_plot
+
+    out = tmp_path / "pocket.png"
+    save_plot(example_result, out)
+    data = out.read_bytes()
+    assert data[:8] == PNG_MAGIC and len(data) > 5000
+
+
+@pytest.mark.parametrize("plane", ["xy", "xz", "yz", "G18"])
+def test_plot_result_returns_axes_in_mm(mpl, example_result, plane):
+    import matplotlib.pyplot as plt
+    from toolcomp.plot import plot_result
+
+    fig, ax = plt.subplots()
+    try:
+        assert plot_result(example_result, ax=ax, plane=plane) is ax
+        assert ax.get_xlabel().endswith("[mm]") and ax.get_ylabel().endswith("[mm]")
+        assert ax.get_legend() is not None
+        labels = [t.get_text() for t in ax.get_legend().get_texts()]
+        assert "programmed" in labels and "rapid" in labels
+    finally:
+        plt.close(fig)
+
+
+def test_plot_result_makes_its_own_axes(mpl, example_result):
+    import matplotlib.pyplot as plt
+    from toolcomp.plot import plot_result
+
+    ax = plot_result(example_result)
+    try:
+        assert ax.get_aspect() == 1.0
+    finally:
+        plt.close(ax.figure)
+
+
+def test_plot_marks_diagnostics_and_generated_segments(mpl, tmp_path):
+    import matplotlib.pyplot as plt
+    from toolcomp.plot import plot_result, save_plot
+
+    path = fake_path([
+        (0, (0, 0, 5), (0, 0, 0), (NAN, NAN, NAN)),
+        (1, (0, 0, 0), (10, 0, 0), (NAN, NAN, NAN)),
+        (3, (10, 0, 0), (10, 10, 0), (10, 5, 0)),
+    ])
+    path.generated[2] = True
+    diags = [SimpleNamespace(code="W1", severity="warning", message="m", line=2, column=1),
+             SimpleNamespace(code="E1", severity="error", message="m", line=9, column=1)]
+    res = fake_result(path, diags)
+    fig, ax = plt.subplots()
+    try:
+        plot_result(res, ax=ax)
+        texts = [t.get_text() for t in ax.texts]
+        assert "L2 W1" in texts and "L9 E1" in texts  # the error at the end of the path
+        labels = [t.get_text() for t in ax.get_legend().get_texts()]
+        assert "inserted by compensation" in labels
+    finally:
+        plt.close(fig)
+    out = tmp_path / "partial.png"
+    save_plot(res, out)
+    assert out.read_bytes()[:8] == PNG_MAGIC
+
+
+def test_plot_empty_result(mpl, tmp_path):
+    from toolcomp.plot import save_plot
+
+    empty = fake_path([(1, (0, 0, 0), (1, 0, 0), (NAN, NAN, NAN))])
+    for name in vars(empty):
+        setattr(empty, name, getattr(empty, name)[:0])
+    out = tmp_path / "empty.png"
+    save_plot(fake_result(empty), out)
+    assert out.read_bytes()[:8] == PNG_MAGIC
+
+
+def test_bad_plane(mpl, example_result):
+    from toolcomp.plot import plot_result
+
+    with pytest.raises(ValueError, match="plane"):
+        plot_result(example_result, plane="uv")
