@@ -15,7 +15,6 @@ from __future__ import annotations
 import argparse
 import csv
 import json
-import math
 import os
 import sys
 import tempfile
@@ -64,10 +63,9 @@ class Record:
         return self.severity in ERROR_SEVERITIES
 
     def format(self):
-        where = self.file
-        if self.line:
-            where += f":{self.line}:{self.column or 0}"
-        return f"{where}: {self.severity} {self.code} {self.message}"
+        # Always file:line:column (0 = unknown / whole line) so every line parses alike.
+        return (f"{self.file}:{self.line or 0}:{self.column or 0}: "
+                f"{self.severity} {self.code} {self.message}")
 
     def as_dict(self):
         return {k: getattr(self, k) for k in self.__slots__}
@@ -304,13 +302,13 @@ CSV_HEADER = (["index", "kind", "line", "tool",
 KIND_NAMES = {0: "rapid", 1: "line", 2: "arc_cw", 3: "arc_ccw"}
 
 
-def _num(v):
-    v = float(v)
-    return "" if math.isnan(v) else f"{v:.6f}"
+def _fmt(values):
+    """Column of floats as text; NaN (centre of a line, feed of a rapid) as an empty field."""
+    return ["" if v != v else f"{v:.6f}" for v in np.asarray(values, dtype=float).tolist()]
 
 
 def write_csv(path, filename):
-    """One row per segment; NaN (centre of a line, feed of a rapid) is an empty field."""
+    """One row per segment of ``path``; returns the number of rows."""
     from toolcomp.plot import path_size
 
     n = path_size(path) if path is not None else 0
@@ -319,19 +317,20 @@ def write_csv(path, filename):
         w.writerow(CSV_HEADER)
         if n == 0:
             return 0
-        kind = np.asarray(path.kind)
-        line, tool = np.asarray(path.line), np.asarray(path.tool)
-        start, end = np.asarray(path.start), np.asarray(path.end)
-        center, feed = np.asarray(path.center), np.asarray(path.feed)
-        side, gen = np.asarray(path.side), np.asarray(path.generated)
-        offs = np.asarray(path.tool_offset)
-        abc = np.asarray(getattr(path, "abc", np.full((n, 3), np.nan)))
-        for i in range(n):
-            w.writerow([i, KIND_NAMES.get(int(kind[i]), str(int(kind[i]))),
-                        int(line[i]), int(tool[i]),
-                        *map(_num, start[i]), *map(_num, end[i]), *map(_num, center[i]),
-                        _num(feed[i]), int(side[i]), int(bool(gen[i])),
-                        *map(_num, offs[i]), *map(_num, abc[i])])
+        start, end = np.asarray(path.start).reshape(n, 3), np.asarray(path.end).reshape(n, 3)
+        center = np.asarray(path.center).reshape(n, 3)
+        offs = np.asarray(path.tool_offset).reshape(n, 3)
+        abc = np.asarray(getattr(path, "abc", np.full((n, 3), np.nan))).reshape(n, 3)
+        cols = [
+            range(n),
+            [KIND_NAMES.get(k, str(k)) for k in np.asarray(path.kind).tolist()],
+            np.asarray(path.line).tolist(), np.asarray(path.tool).tolist(),
+            *(_fmt(a[:, j]) for a in (start, end, center) for j in range(3)),
+            _fmt(path.feed), np.asarray(path.side).tolist(),
+            np.asarray(path.generated).astype(int).tolist(),
+            *(_fmt(a[:, j]) for a in (offs, abc) for j in range(3)),
+        ]
+        w.writerows(zip(*cols))
     return n
 
 
@@ -377,11 +376,20 @@ def cmd_check(args) -> int:
     return EXIT_ERRORS if any(o.has_errors for o in outcomes) else EXIT_OK
 
 
+def _version():
+    try:
+        from importlib.metadata import version
+        return version("toolcomp")
+    except Exception:  # not installed (running from a source tree)
+        return "unknown"
+
+
 def build_parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(
         prog="toolcomp",
         description="Run CNC part programs the way the control does and report the "
                     "programmed and tool-compensated paths.")
+    p.add_argument("--version", action="version", version=f"%(prog)s {_version()}")
     sub = p.add_subparsers(dest="command", metavar="COMMAND")
     sub.required = True
 
