@@ -36,6 +36,10 @@ M2
 """
 SQUARE_FEED = 36 + 15 * math.pi
 
+# Feed length of examples/pocket.ngc, from LinuxCNC's own canonical output (rs274) of the
+# same program: 2 x (clearing + contour) + recess + 4 drilled holes of 25 mm.
+EXAMPLE_FEED = 855.748346
+
 # Line 4 is wrong; lines 1-3 give a partial path.
 BAD_PROGRAMS = {
     "unknown_gcode": "G21 G90 G17\nG0 X0 Y0 Z5\nG1 Z-1 F100\nG7.5 X10\nG1 X20\nM2\n",
@@ -74,6 +78,15 @@ def test_run_example_is_clean(tmp_path):
     for field in ("blocks:", "segments:", "tools:", "path length:", "diagnostics:"):
         assert field in r.stdout
     assert "T1" in r.stdout and "T2" in r.stdout
+
+
+def test_run_example_feed_length_matches_linuxcnc(tmp_path):
+    out = tmp_path / "summary.json"
+    r = toolcomp("run", EXAMPLE, "--tools", TOOLS, "--json", out)
+    assert r.returncode == 0, r.stdout + r.stderr
+    s = json.loads(out.read_text())
+    assert s["length_mm"]["feed"] == pytest.approx(EXAMPLE_FEED, abs=1e-3)
+    assert s["tools"] == [1, 2] or s["tools"] == [0, 1, 2]
 
 
 def test_run_summary_json(square, tmp_path):
