@@ -11,6 +11,16 @@ What this module handles (see /work/shared/research/linuxcnc-oracle.md):
   files are converted to inches before the run (:func:`mm_table_to_inch`);
 * a timeout, and ``-g`` batch mode (no interactive menu).
 
+Quirks of standalone rs274 that oracle programs avoid (they are artefacts of its printing canon,
+not LinuxCNC behaviour):
+
+* ``G43`` in the same block as ``M6``: after a tool change rs274 re-reads the current position from
+  its canon, which ignores the new offset, so the next move's unprogrammed Z is the old program Z
+  instead of being re-expressed (put G43 on its own line);
+* ``M61 Qn`` followed by ``G43`` without H uses the previous spindle tool's data (use ``G43 Hn``);
+* ``G43.2`` with axis words is not supported by this build (error "Requested tool -1 not found");
+* the block-delete switch is off by default (``/`` lines are executed; ``block_delete=True`` sets ``-b``).
+
 :func:`parse_canon` turns rs274's canonical-call text into numpy arrays in **millimetres**.
 rs274 prints ``%.4f`` in the program's current units (``USE_LENGTH_UNITS``): inch values are
 multiplied by 25.4, so compare with a tolerance of 6e-5 *program units*.

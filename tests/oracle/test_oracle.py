@@ -1,0 +1,48 @@
+"""Differential tests: toolcomp's nominal path == LinuxCNC rs274's moves (foundation scope).
+
+Programs: tests/programs/oracle/*.ngc (tool table: <stem>.tbl if present, else tools.tbl, metric)
+plus TOOLCOMP_ORACLE_N (default 20) seeded programs from generate.py. Comparison rules: compare.py.
+Skipped when rs274 (Debian linuxcnc-uspace) is not installed or toolcomp cannot be imported.
+"""
+import os
+from pathlib import Path
+
+import pytest
+
+import compare
+import generate
+import lcnc
+
+ROOT = Path(__file__).resolve().parents[2]
+PROGRAMS = ROOT / "tests" / "programs" / "oracle"
+N_GENERATED = int(os.environ.get("TOOLCOMP_ORACLE_N", "20"))
+
+pytestmark = pytest.mark.skipif(not lcnc.available(), reason="LinuxCNC rs274 not installed")
+
+
+def _table_for(prog: Path) -> Path:
+    own = prog.with_suffix(".tbl")
+    return own if own.exists() else PROGRAMS / "tools.tbl"
+
+
+def _toolcomp_nominal(prog: Path, tbl: Path):
+    tc = pytest.importorskip("toolcomp")
+    res = tc.run(tc.Program.read(str(prog)), tools=tc.ToolTable.read(str(tbl)))
+    return res.nominal
+
+
+@pytest.mark.parametrize("prog", sorted(PROGRAMS.glob("*.ngc")), ids=lambda p: p.stem)
+def test_program_matches_rs274(prog):
+    tbl = _table_for(prog)
+    rs = lcnc.nominal(prog, tbl)
+    compare.compare(rs, _toolcomp_nominal(prog, tbl), label=prog.name)
+
+
+@pytest.mark.parametrize("seed", range(N_GENERATED))
+def test_generated_program_matches_rs274(seed, tmp_path):
+    prog = tmp_path / ("gen_%d.ngc" % seed)
+    prog.write_text(generate.generate(seed))
+    tbl = PROGRAMS / "tools.tbl"
+    rs = lcnc.nominal(prog, tbl)
+    compare.compare(rs, _toolcomp_nominal(prog, tbl), label="%s (python tests/oracle/generate.py %d)"
+                    % (prog.name, seed))
