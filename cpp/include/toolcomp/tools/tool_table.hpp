@@ -1,0 +1,80 @@
+#pragma once
+// A tool table: the tools (mm, degrees), the length unit of the file it came from, and the
+// file's own text so that writing it back changes only what was changed.
+//
+// Lossless contract: read → write in the same format and unit, with no tool changed, gives
+// the input byte for byte (comments, blank lines, word/column/key order, number spelling,
+// CRLF, unknown CSV columns and JSON keys). A changed tool is rewritten in the format's
+// canonical spelling (keeping its word/key order where possible), a removed tool's line or
+// object disappears, a new tool is appended. Writing another format, or changing `units`,
+// writes the canonical form of that format.
+#include "toolcomp/tools/table_format.hpp"
+#include "toolcomp/tools/tool.hpp"
+#include "toolcomp/tools/units.hpp"
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace toolcomp {
+
+namespace detail {
+// What a format reader remembers about the file text (defined per format in cpp/src/tools).
+struct TableSource {
+    virtual ~TableSource() = default;
+    virtual TableFormat format() const = 0;
+    LengthUnit units = LengthUnit::mm;
+};
+}  // namespace detail
+
+class ToolTable {
+public:
+    ToolTable() = default;
+    explicit ToolTable(LengthUnit units) : units_(units) {}
+
+    const Tool* find(int number) const;
+    // Mutable access; keep the number unchanged (use remove + set to renumber).
+    Tool* find(int number);
+    // Throws ToolTableError("table_no_such_tool") when absent.
+    const Tool& at(int number) const;
+    bool contains(int number) const { return find(number) != nullptr; }
+    // Insert, or replace the tool with the same number (keeps its place in the file).
+    // Validates with validate_tool().
+    void set(Tool t);
+    // Removes the tool if present; returns whether it was.
+    bool remove(int number);
+    const std::vector<Tool>& tools() const { return tools_; }
+    std::size_t size() const { return tools_.size(); }
+    bool empty() const { return tools_.empty(); }
+
+    // The length unit of the file: numbers are converted from/to it on read/write.
+    LengthUnit units() const { return units_; }
+    void set_units(LengthUnit u) { units_ = u; }
+
+    // Internal, used by the format readers/writers: the original text of the file.
+    const detail::TableSource* source() const { return source_.get(); }
+    void set_source(std::shared_ptr<const detail::TableSource> s) { source_ = std::move(s); }
+
+private:
+    std::vector<Tool> tools_;
+    LengthUnit units_ = LengthUnit::mm;
+    std::shared_ptr<const detail::TableSource> source_;
+};
+
+// Parse a table. `units` is the unit of the lengths in the text (a JSON file's own
+// "units" key takes precedence). Throws ToolTableError with the 1-based line/column.
+ToolTable read_tool_table(std::string_view text, TableFormat format, LengthUnit units = LengthUnit::mm);
+// Format a table (see the lossless contract above).
+std::string write_tool_table(const ToolTable& table, TableFormat format);
+
+// The format is taken from the suffix when not given.
+ToolTable read_tool_table_file(const std::string& path, std::optional<TableFormat> format = std::nullopt,
+                               LengthUnit units = LengthUnit::mm);
+// Writes a temporary file in the same directory, fsyncs it and renames it over `path`, so
+// the old file is never lost (it keeps the old file's permissions).
+void write_tool_table_file(const ToolTable& table, const std::string& path,
+                           std::optional<TableFormat> format = std::nullopt);
+
+}  // namespace toolcomp

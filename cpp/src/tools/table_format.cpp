@@ -1,0 +1,49 @@
+#include "toolcomp/tools/table_format.hpp"
+
+#include "toolcomp/program/diagnostic.hpp"
+
+#include <cctype>
+
+namespace toolcomp {
+
+namespace {
+std::string lower(std::string_view s) {
+    std::string r;
+    for (char c : s) r += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return r;
+}
+}  // namespace
+
+std::string_view to_string(TableFormat f) {
+    switch (f) {
+        case TableFormat::linuxcnc: return "linuxcnc";
+        case TableFormat::csv: return "csv";
+        case TableFormat::json: return "json";
+    }
+    return "?";
+}
+
+TableFormat table_format_from_string(std::string_view s) {
+    const std::string f = lower(s);
+    if (f == "linuxcnc" || f == "tbl") return TableFormat::linuxcnc;
+    if (f == "csv") return TableFormat::csv;
+    if (f == "json") return TableFormat::json;
+    throw ToolTableError("table_unknown_format",
+                         "unknown tool table format '" + std::string(s) + "' (use linuxcnc, csv or json)");
+}
+
+TableFormat table_format_from_path(const std::string& path) {
+    const auto slash = path.find_last_of("/\\");
+    const auto dot = path.find_last_of('.');
+    if (dot != std::string::npos && (slash == std::string::npos || dot > slash)) {
+        const std::string ext = lower(std::string_view(path).substr(dot + 1));
+        if (ext == "tbl") return TableFormat::linuxcnc;
+        if (ext == "csv") return TableFormat::csv;
+        if (ext == "json") return TableFormat::json;
+    }
+    throw ToolTableError("table_unknown_format",
+                         "cannot tell the tool table format from the name '" + path +
+                             "' (suffix .tbl, .csv or .json, or pass the format)");
+}
+
+}  // namespace toolcomp

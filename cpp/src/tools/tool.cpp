@@ -1,0 +1,67 @@
+#include "toolcomp/tools/tool.hpp"
+
+#include "toolcomp/program/diagnostic.hpp"
+
+#include <algorithm>
+
+namespace toolcomp {
+
+Eigen::Vector3d CuttingEdge::effective_length() const { return length + length_wear; }
+double CuttingEdge::effective_radius() const { return radius + radius_wear; }
+double CuttingEdge::effective_corner_radius() const { return corner_radius + corner_radius_wear; }
+
+bool operator==(const CuttingEdge& a, const CuttingEdge& b) {
+    return a.number == b.number && a.length == b.length && a.rotary == b.rotary &&
+           a.uvw == b.uvw && a.radius == b.radius && a.corner_radius == b.corner_radius &&
+           a.length_wear == b.length_wear && a.radius_wear == b.radius_wear &&
+           a.corner_radius_wear == b.corner_radius_wear && a.orientation == b.orientation &&
+           a.front_angle == b.front_angle && a.back_angle == b.back_angle;
+}
+
+bool operator==(const Tool& a, const Tool& b) {
+    return a.number == b.number && a.pocket == b.pocket && a.name == b.name &&
+           a.comment == b.comment && a.edges == b.edges;
+}
+
+bool Tool::has_edge(int d) const {
+    return std::any_of(edges.begin(), edges.end(), [d](const CuttingEdge& e) { return e.number == d; });
+}
+
+const CuttingEdge& Tool::edge(int d) const {
+    for (const auto& e : edges)
+        if (e.number == d) return e;
+    throw ToolTableError("tool_no_such_edge",
+                         "tool T" + std::to_string(number) + " has no cutting edge D" + std::to_string(d));
+}
+
+CuttingEdge& Tool::edge(int d) {
+    return const_cast<CuttingEdge&>(static_cast<const Tool&>(*this).edge(d));
+}
+
+void Tool::set_edge(const CuttingEdge& e) {
+    for (auto& x : edges)
+        if (x.number == e.number) {
+            x = e;
+            return;
+        }
+    edges.push_back(e);
+}
+
+void validate_tool(const Tool& t) {
+    const std::string who = "tool T" + std::to_string(t.number);
+    if (t.number < 0) throw ToolTableError("tool_bad_number", "negative tool number " + std::to_string(t.number));
+    if (t.pocket < 0) throw ToolTableError("tool_bad_number", who + ": negative pocket number");
+    if (t.edges.empty()) throw ToolTableError("tool_no_edges", who + " has no cutting edge");
+    for (std::size_t i = 0; i < t.edges.size(); ++i) {
+        const auto& e = t.edges[i];
+        if (e.orientation < 0 || e.orientation > 9)
+            throw ToolTableError("tool_bad_orientation",
+                                 who + ": orientation " + std::to_string(e.orientation) + " is outside 0..9");
+        for (std::size_t j = 0; j < i; ++j)
+            if (t.edges[j].number == e.number)
+                throw ToolTableError("tool_duplicate_edge",
+                                     who + ": cutting edge D" + std::to_string(e.number) + " appears twice");
+    }
+}
+
+}  // namespace toolcomp

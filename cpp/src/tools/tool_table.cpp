@@ -1,0 +1,60 @@
+#include "toolcomp/tools/tool_table.hpp"
+
+#include "toolcomp/program/diagnostic.hpp"
+#include "toolcomp/tools/format_csv.hpp"
+#include "toolcomp/tools/format_json.hpp"
+#include "toolcomp/tools/format_linuxcnc.hpp"
+
+#include <algorithm>
+
+namespace toolcomp {
+
+const Tool* ToolTable::find(int number) const {
+    for (const auto& t : tools_)
+        if (t.number == number) return &t;
+    return nullptr;
+}
+
+Tool* ToolTable::find(int number) {
+    return const_cast<Tool*>(static_cast<const ToolTable&>(*this).find(number));
+}
+
+const Tool& ToolTable::at(int number) const {
+    if (const Tool* t = find(number)) return *t;
+    throw ToolTableError("table_no_such_tool", "no tool T" + std::to_string(number) + " in the tool table");
+}
+
+void ToolTable::set(Tool t) {
+    validate_tool(t);
+    if (Tool* old = find(t.number))
+        *old = std::move(t);
+    else
+        tools_.push_back(std::move(t));
+}
+
+bool ToolTable::remove(int number) {
+    auto it = std::find_if(tools_.begin(), tools_.end(), [&](const Tool& t) { return t.number == number; });
+    if (it == tools_.end()) return false;
+    tools_.erase(it);
+    return true;
+}
+
+ToolTable read_tool_table(std::string_view text, TableFormat format, LengthUnit units) {
+    switch (format) {
+        case TableFormat::linuxcnc: return read_linuxcnc_table(text, units);
+        case TableFormat::csv: return read_csv_table(text, units);
+        case TableFormat::json: return read_json_table(text, units);
+    }
+    throw ToolTableError("table_unknown_format", "unknown tool table format");
+}
+
+std::string write_tool_table(const ToolTable& table, TableFormat format) {
+    switch (format) {
+        case TableFormat::linuxcnc: return write_linuxcnc_table(table);
+        case TableFormat::csv: return write_csv_table(table);
+        case TableFormat::json: return write_json_table(table);
+    }
+    throw ToolTableError("table_unknown_format", "unknown tool table format");
+}
+
+}  // namespace toolcomp

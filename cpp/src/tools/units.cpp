@@ -1,0 +1,21 @@
+#include "toolcomp/tools/units.hpp"
+
+#include "toolcomp/program/diagnostic.hpp"
+
+#include <cctype>
+
+namespace toolcomp {
+
+double mm_per_unit(LengthUnit u) { return u == LengthUnit::inch ? 25.4 : 1.0; }
+
+std::string_view to_string(LengthUnit u) { return u == LengthUnit::inch ? "inch" : "mm"; }
+
+LengthUnit length_unit_from_string(std::string_view s) {
+    std::string low;
+    for (char c : s) low += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (low == "mm") return LengthUnit::mm;
+    if (low == "inch" || low == "in") return LengthUnit::inch;
+    throw ToolTableError("table_bad_units", "unknown length unit '" + std::string(s) + "' (use \"mm\" or \"inch\")");
+}
+
+}  // namespace toolcomp
