@@ -1,0 +1,53 @@
+#pragma once
+// The Motion stream: the control-independent output of every interpreter.
+//
+// One Motion is one canonical move (rapid, line, arc/helix) in program coordinates
+// (millimetres, before work offsets, the way LinuxCNC's interpreter reports them), with the
+// state the compensation stages need: the active tool, the tool length offset vector and the
+// cutter radius compensation request.
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+#include "toolcomp/geometry/arc.hpp"
+#include "toolcomp/geometry/vec.hpp"
+
+namespace toolcomp {
+
+enum class MotionKind : std::uint8_t { rapid = 0, line = 1, arc_cw = 2, arc_ccw = 3 };
+
+// Cutter radius compensation requested for a move (carried, applied by a later stage).
+struct RadiusRequest {
+    std::int8_t side = 0;     // 0 off, +1 left (G41), -1 right (G42)
+    double radius = 0;        // mm
+    std::int8_t orientation = 0;  // lathe tip number, 0 = none
+};
+
+struct Motion {
+    MotionKind kind = MotionKind::line;
+    Plane plane = Plane::xy;
+    Vec3 start = Vec3::Zero(), end = Vec3::Zero();
+    Vec3 center = Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
+    std::int32_t turns = 0;  // arcs: extra full turns
+    std::array<double, 3> abc{0, 0, 0};  // rotary axes at the end, degrees
+    double feed = std::numeric_limits<double>::quiet_NaN();  // mm/min, NaN for rapids
+    std::int32_t line = 0;
+    std::int32_t tool = 0;
+    Vec3 tool_offset = Vec3::Zero();
+    RadiusRequest radius;
+    bool generated = false;  // inserted by a compensation stage
+
+    bool is_arc() const { return kind == MotionKind::arc_cw || kind == MotionKind::arc_ccw; }
+    Arc arc() const { return {start, end, center, plane, kind == MotionKind::arc_ccw ? 1 : -1, turns}; }
+};
+
+// A consumer of the stream: compensation stages and the Path collector.
+class MotionSink {
+public:
+    virtual ~MotionSink() = default;
+    virtual void push(const Motion& m) = 0;
+    virtual void finish() {}
+};
+
+}  // namespace toolcomp

@@ -1,0 +1,35 @@
+#pragma once
+// Path: a column store of segments (the numpy-facing result).
+//
+// Three-vectors are stored row-major (x0 y0 z0 x1 y1 z1 ...) so that Python sees (N, 3)
+// float64 arrays without a copy.
+#include <cstdint>
+#include <vector>
+
+#include "toolcomp/motion/motion.hpp"
+
+namespace toolcomp {
+
+class Path : public MotionSink {
+public:
+    std::vector<std::uint8_t> kind;
+    std::vector<double> start, end, center, abc, tool_offset;  // 3 per segment
+    std::vector<std::int32_t> line, tool, turns;
+    std::vector<double> feed;
+    std::vector<std::int8_t> side;
+    std::vector<std::uint8_t> plane;
+    std::vector<std::uint8_t> generated;  // bool as byte
+
+    std::size_t size() const { return kind.size(); }
+    void reserve(std::size_t n);
+    void push(const Motion& m) override;
+    // Segment i back as a Motion (for sampling, checks and later stages).
+    Motion segment(std::size_t i) const;
+
+    // Polyline with arcs chorded within `tolerance` (mm). The first point is the start of
+    // segment 0; every point carries the index of the segment it ends.
+    void sample(double tolerance, std::vector<double>& points, std::vector<std::int64_t>& seg) const;
+    double length(bool include_rapids = true) const;
+};
+
+}  // namespace toolcomp

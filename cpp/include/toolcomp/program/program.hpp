@@ -1,0 +1,72 @@
+#pragma once
+// The Program model: what a dialect front end produces and an interpreter consumes.
+//
+// Blocks and words are stored flat (one vector of words, blocks as ranges into it), so a
+// million-block CAM program costs two allocations rather than a million.
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "toolcomp/program/dialect.hpp"
+#include "toolcomp/program/diagnostic.hpp"
+
+namespace toolcomp {
+
+// One address word: letter and value, with the column of its letter in the source line.
+struct Word {
+    char letter = 0;   // upper case
+    double value = 0;  // as written (program units)
+    int column = 0;    // 1-based column of the letter
+};
+
+struct Comment {
+    std::string text;  // without the delimiters
+    int column = 0;    // 1-based column of the opening delimiter
+};
+
+struct Block {
+    int line = 0;               // 1-based source line
+    bool block_delete = false;  // the block starts with '/'
+    std::uint32_t first_word = 0, word_count = 0;
+    std::uint32_t first_comment = 0, comment_count = 0;
+};
+
+class Program {
+public:
+    std::string name;  // file name, or "<string>"
+    Dialect dialect = Dialect::linuxcnc;
+    // How the text ended: '%' delimiters seen (opening / closing), and the last line with
+    // content (for "program ended without M2/M30" errors).
+    bool percent_open = false, percent_closed = false;
+    int last_line = 0;
+
+    std::size_t size() const { return blocks_.size(); }
+    const std::vector<Block>& blocks() const { return blocks_; }
+    std::span<const Word> words(const Block& b) const {
+        return {words_.data() + b.first_word, b.word_count};
+    }
+    std::span<const Comment> comments(const Block& b) const {
+        return {comments_.data() + b.first_comment, b.comment_count};
+    }
+    std::size_t word_count() const { return words_.size(); }
+
+    // Building (front ends): open a block, add its words and comments, close it.
+    void begin_block(int line, bool block_delete);
+    void add_word(Word w) { words_.push_back(w); ++blocks_.back().word_count; }
+    void add_comment(Comment c) {
+        comments_.push_back(std::move(c));
+        ++blocks_.back().comment_count;
+    }
+    void reserve(std::size_t blocks, std::size_t words) {
+        blocks_.reserve(blocks);
+        words_.reserve(words);
+    }
+
+private:
+    std::vector<Block> blocks_;
+    std::vector<Word> words_;
+    std::vector<Comment> comments_;
+};
+
+}  // namespace toolcomp

@@ -1,0 +1,39 @@
+#pragma once
+// The whole pipeline: program text -> Program -> interpreter -> Motion stream ->
+// compensation stages -> Path.
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "toolcomp/compensation/profile.hpp"
+#include "toolcomp/path.hpp"
+#include "toolcomp/program/diagnostic.hpp"
+#include "toolcomp/program/program.hpp"
+
+namespace toolcomp {
+
+class ToolTable;
+
+// Parse program text in the given dialect. Throws ParseError.
+Program parse_program(std::string_view text, Dialect dialect, std::string name = "<string>");
+// Read a program file; the dialect comes from the suffix when not given.
+Program read_program(const std::string& path, std::optional<Dialect> dialect = std::nullopt);
+
+struct RunOptions {
+    bool strict = true;         // raise at the first error; else return the path up to it
+    bool block_delete = false;  // skip '/' blocks
+    std::optional<ControlProfile> profile;  // default: profile_for(program.dialect)
+};
+
+struct Result {
+    Path nominal;  // the programmed path (what the interpreter produced)
+    Path path;     // after the compensation stages
+    std::vector<Diagnostic> diagnostics;
+    std::size_t blocks = 0;
+    bool ok() const;
+};
+
+Result run(const Program& program, const ToolTable* tools, const RunOptions& options = {});
+
+}  // namespace toolcomp

@@ -1,0 +1,96 @@
+#include "block_words.hpp"
+
+#include <cctype>
+#include <cmath>
+#include <string>
+
+namespace toolcomp::iso {
+
+namespace {
+
+[[noreturn]] void fail(const char* code, const std::string& msg, int line, int column) {
+    throw ProgramError(code, msg, {line, column});
+}
+
+std::string code_text(char letter, int code10) {
+    std::string s(1, letter);
+    s += std::to_string(code10 / 10);
+    if (code10 % 10) s += "." + std::to_string(code10 % 10);
+    return s;
+}
+
+void add_g(BlockWords& bw, const Word& w, Dialect d) {
+    double v10 = w.value * 10;
+    if (w.value < 0) fail("negative_g_code", "Negative g code used", bw.line, w.column);
+    int code = static_cast<int>(std::lround(v10));
+    if (code > 9999) fail("g_code_out_of_range", "G-code out of range", bw.line, w.column);
+    if (std::fabs(v10 - code) > 1e-6) fail("unknown_g_code", "Unknown g code used", bw.line, w.column);
+    int group = g_group(code, d);
+    if (group == kUnknown) fail("unknown_g_code", "Unknown g code used", bw.line, w.column);
+    if (group == kUnsupported)
+        fail("unsupported_g_code", code_text('G', code) + " is not supported by toolcomp", bw.line, w.column);
+    if (bw.g[group] >= 0)
+        fail("modal_group_conflict", "Two g codes used from same modal group", bw.line, w.column);
+    bw.g[group] = code;
+    bw.g_column[group] = w.column;
+}
+
+void add_m(BlockWords& bw, const Word& w, Dialect d) {
+    if (w.value < 0) fail("negative_m_code", "Negative m code used", bw.line, w.column);
+    if (std::fabs(w.value - std::round(w.value)) > 1e-9)
+        fail("non_integer_value", "Non integer value for integer", bw.line, w.column);
+    int m = static_cast<int>(std::lround(w.value));
+    if (m > 199) fail("m_code_out_of_range", "M-code greater than 199: M" + std::to_string(m), bw.line, w.column);
+    int group = m_group(m * 10, d);
+    if (group == kUnknown) fail("unknown_m_code", "Unknown m code used: M" + std::to_string(m), bw.line, w.column);
+    if (group == kUnsupported)
+        fail("unsupported_m_code", "M" + std::to_string(m) + " is not supported by toolcomp", bw.line, w.column);
+    if (++bw.m_count > 4) fail("too_many_m_codes", "Too many m codes on line", bw.line, w.column);
+    if (bw.m[group] >= 0)
+        fail("modal_group_conflict", "Two m codes used from same modal group", bw.line, w.column);
+    bw.m[group] = m * 10;
+    bw.m_column[group] = w.column;
+}
+
+}  // namespace
+
+int BlockWords::axis_column() const {
+    int col = 0;
+    for (char c : {'X', 'Y', 'Z', 'A', 'B', 'C'})
+        if (has(c) && (col == 0 || (*this)[c].column < col)) col = (*this)[c].column;
+    return col;
+}
+
+BlockWords collect_words(const Program& prog, const Block& block) {
+    BlockWords bw;
+    bw.line = block.line;
+    bw.g.fill(-1);
+    bw.m.fill(-1);
+    for (const Word& w : prog.words(block)) {
+        if (w.letter == 'G') {
+            add_g(bw, w, prog.dialect);
+        } else if (w.letter == 'M') {
+            add_m(bw, w, prog.dialect);
+        } else {
+            WordSlot& slot = bw.letter[w.letter - 'A'];
+            if (slot.set) {
+                char lower = static_cast<char>(std::tolower(static_cast<unsigned char>(w.letter)));
+                fail("multiple_words", std::string("Multiple ") + lower + " words on one line", bw.line, w.column);
+            }
+            if (w.letter == 'T') {
+                if (std::fabs(w.value - std::round(w.value)) > 1e-9)
+                    fail("non_integer_value", "Non integer value for integer", bw.line, w.column);
+                if (w.value < 0) fail("negative_tool", "Negative tool id (tool not found)", bw.line, w.column);
+            }
+            if (w.letter == 'L' && std::fabs(w.value - std::round(w.value)) > 1e-9)
+                fail("non_integer_value", "Non integer value for integer", bw.line, w.column);
+            if (w.letter == 'F' && w.value < 0) fail("negative_feed", "Negative f word used", bw.line, w.column);
+            if (w.letter == 'S' && w.value < 0)
+                fail("negative_spindle_speed", "Negative spindle speed used", bw.line, w.column);
+            slot = {true, w.value, w.column};
+        }
+    }
+    return bw;
+}
+
+}  // namespace toolcomp::iso

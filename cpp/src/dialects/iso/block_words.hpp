@@ -1,0 +1,37 @@
+#pragma once
+// The words of one block sorted by meaning: one slot per letter, G codes by modal group,
+// M codes by group. Built with LinuxCNC's checks (one word per letter, one code per group).
+#include <array>
+
+#include "codes.hpp"
+#include "toolcomp/program/program.hpp"
+
+namespace toolcomp::iso {
+
+struct WordSlot {
+    bool set = false;
+    double value = 0;
+    int column = 0;
+};
+
+struct BlockWords {
+    int line = 0;
+    std::array<WordSlot, 26> letter{};  // A..Z except G and M
+    std::array<int, g_group_count> g;   // code10 per group, -1 when none
+    std::array<int, g_group_count> g_column{};
+    std::array<int, m_group_count> m;
+    std::array<int, m_group_count> m_column{};
+    int m_count = 0;
+
+    const WordSlot& operator[](char c) const { return letter[c - 'A']; }
+    bool has(char c) const { return letter[c - 'A'].set; }
+    bool has_axis() const {
+        return has('X') || has('Y') || has('Z') || has('A') || has('B') || has('C');
+    }
+    // Column of the first axis word (for error positions), or 0.
+    int axis_column() const;
+};
+
+BlockWords collect_words(const Program& prog, const Block& block);
+
+}  // namespace toolcomp::iso

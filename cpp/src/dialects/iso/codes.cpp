@@ -1,0 +1,57 @@
+#include "codes.hpp"
+
+namespace toolcomp::iso {
+
+int g_group(int c, Dialect d) {
+    switch (c) {
+        case 40: case 100: case 280: case 281: case 300: case 301: case 530:
+        case 920: case 921: case 922: case 923:
+            return g_nonmodal;
+        case 0: case 10: case 20: case 30: case 730: case 800: case 810: case 820: case 830:
+        case 850: case 860: case 880: case 890:
+            return g_motion;
+        case 170: case 180: case 190: return g_plane;
+        case 900: case 910: return g_distance;
+        case 901: case 911: return g_arc_distance;
+        case 930: case 940: case 950: return g_feed_mode;
+        case 200: case 210: return g_units;
+        case 400: case 410: case 420: case 411: case 421: return g_radius_comp;
+        case 430: case 431: case 432: case 490: return g_length_comp;
+        case 440: return d == Dialect::fanuc ? g_length_comp : kUnknown;
+        case 980: case 990: return g_retract;
+        case 540: case 550: case 560: case 570: case 580: case 590: case 591: case 592: case 593:
+            return g_coord_system;
+        case 610: case 611: case 640: return g_path_control;
+        case 960: case 970: return g_spindle_mode;
+        case 70: case 80: return g_lathe_diameter;
+        // Real LinuxCNC codes that toolcomp does not run yet: splines and NURBS, spindle-
+        // synchronised motion, probing, threading and tapping cycles, back boring, rotated
+        // planes, tool-table edits from the program.
+        case 50: case 51: case 52: case 53: case 330: case 331: case 382: case 383: case 384:
+        case 385: case 740: case 760: case 840: case 870: case 171: case 181: case 191:
+        case 521: case 700: case 710: case 720: case 731: case 961:
+            return kUnsupported;
+        default:
+            return kUnknown;
+    }
+}
+
+int m_group(int c, Dialect d) {
+    switch (c) {
+        case 0: case 10: case 20: case 300: case 600: return m_stop;
+        case 60: case 610: return m_tool_change;
+        case 30: case 40: case 50: return m_spindle;
+        case 70: case 80: case 90: return m_coolant;
+        case 480: case 490: case 500: case 510: case 520: case 530: return m_override;
+        case 190: case 620: case 630: case 640: case 650: case 660: case 670: case 680:
+        case 700: case 710: case 720: case 730:
+            return kUnsupported;
+        case 980: case 990:
+            return d == Dialect::fanuc ? kUnsupported : kUnknown;
+        default:
+            if (c >= 1000 && c <= 1990 && c % 10 == 0) return kUnsupported;  // user M100-M199
+            return kUnknown;
+    }
+}
+
+}  // namespace toolcomp::iso

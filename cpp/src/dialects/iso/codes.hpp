@@ -1,0 +1,28 @@
+#pragma once
+// G and M codes of the ISO dialects: modal group of each supported code, and the codes that
+// are valid on the control but not supported by toolcomp (an explicit error, never ignored).
+//
+// Codes are held as ten times their value (G59.3 -> 593), as LinuxCNC does.
+#include "toolcomp/program/dialect.hpp"
+
+namespace toolcomp::iso {
+
+enum GGroup : int {
+    g_nonmodal = 0, g_motion = 1, g_plane = 2, g_distance = 3, g_arc_distance = 4,
+    g_feed_mode = 5, g_units = 6, g_radius_comp = 7, g_length_comp = 8, g_retract = 10,
+    g_coord_system = 12, g_path_control = 13, g_spindle_mode = 14, g_lathe_diameter = 15,
+    g_group_count = 16
+};
+enum MGroup : int {
+    m_stop = 4, m_tool_change = 6, m_spindle = 7, m_coolant = 8, m_override = 9,
+    m_group_count = 12
+};
+
+constexpr int kUnsupported = -2;  // a real code of the control that toolcomp does not run
+constexpr int kUnknown = -1;      // not a code of this control
+
+// Group of G code `code10` in `d`, or kUnsupported / kUnknown.
+int g_group(int code10, Dialect d);
+int m_group(int code10, Dialect d);
+
+}  // namespace toolcomp::iso

@@ -1,0 +1,211 @@
+// Block execution in LinuxCNC's order of execution (RS274/NGC "order of execution" table):
+// comments, feed mode, F, S, T, M6/M61, spindle, coolant, overrides, dwell, plane, units,
+// diameter mode, radius comp, length comp, coordinate system, path control, distance
+// modes, retract mode, G10/G28/G30/G92, motion, program stop/end.
+#include <cctype>
+#include <cmath>
+
+#include "interp.hpp"
+#include "toolcomp/tools/tool_table.hpp"
+
+namespace toolcomp::iso {
+
+namespace {
+bool is_cycle(int motion) {
+    return motion == 730 || (motion >= 810 && motion <= 890);
+}
+bool uses_axes_group0(int g0) { return g0 == 100 || g0 == 280 || g0 == 300 || g0 == 920; }
+// Codes whose block's axis words are data, not a move: G10, G28, G30, G92 and the tool
+// length offsets given as axis values (G43.1, G43.2 without H).
+bool axes_are_data(const BlockWords& bw) {
+    int lc = bw.g[g_length_comp];
+    return uses_axes_group0(bw.g[g_nonmodal]) || lc == 431 || (lc == 432 && !bw.has('H'));
+}
+
+std::string lower_prefix(const std::string& s, std::size_t n) {
+    std::string r;
+    for (std::size_t i = 0; i < s.size() && i < n; ++i)
+        r.push_back(static_cast<char>(std::tolower(static_cast<unsigned char>(s[i]))));
+    return r;
+}
+}  // namespace
+
+Interp::Interp(const Program& prog, const ToolTable* tools, const ControlProfile& profile,
+               const InterpretOptions& opts, MotionSink& sink, std::vector<Diagnostic>& diags)
+    : prog_(prog), tools_(tools), profile_(profile), opts_(opts), sink_(sink), diags_(diags) {
+    for (auto& o : g5x_) o.setZero();
+    st_.inch = profile.startup_inch;
+}
+
+void Interp::fail(const char* code, const std::string& msg, int column) const {
+    throw ProgramError(code, msg, {line_, column});
+}
+
+void Interp::info(const char* code, const std::string& msg, int column) {
+    diags_.push_back({code, Severity::info, msg, {line_, column}});
+}
+
+void Interp::run() {
+    for (const Block& block : prog_.blocks()) {
+        if (block.block_delete && opts_.block_delete) continue;
+        line_ = block.line;
+        BlockWords bw = collect_words(prog_, block);
+        for (const Comment& c : prog_.comments(block)) {
+            std::string head = lower_prefix(c.text, 6);
+            if (head.rfind("msg,", 0) == 0 || head.rfind("debug,", 0) == 0 || head.rfind("print,", 0) == 0)
+                info("message", c.text.substr(c.text.find(',') + 1), c.column);
+        }
+        if (!execute(bw)) {
+            sink_.finish();
+            return;
+        }
+    }
+    sink_.finish();
+    if (prog_.dialect == Dialect::linuxcnc) {
+        // LinuxCNC refuses a file that simply stops: it must end with M2/M30 or '%'.
+        line_ = prog_.last_line;
+        if (prog_.percent_open && !prog_.percent_closed)
+            fail("no_program_end", "File ended with no percent sign");
+        if (!prog_.percent_open) fail("no_program_end", "File ended with no percent sign or program end");
+    }
+}
+
+void Interp::check_words(const BlockWords& bw, int motion_to_be) {
+    const int g0 = bw.g[g_nonmodal];
+    const bool arc = motion_to_be == 20 || motion_to_be == 30;
+    const bool cycle_block = is_cycle(motion_to_be);
+    auto col = [&](char c) { return bw[c].column; };
+    if (bw.has('D')) {
+        int rc = bw.g[g_radius_comp];
+        if (!(rc == 410 || rc == 411 || rc == 420 || rc == 421 || bw.g[g_spindle_mode] == 960))
+            fail("unused_word", "D word with no G41, G41.1, G42, G42.1, G71, G71.1, G71.2 or G96 to use it", col('D'));
+    }
+    if (bw.has('E')) fail("unused_word", "E word with no G70, G76, M66, M67 or M68 to use it", col('E'));
+    if (bw.has('H')) {
+        int lc = bw.g[g_length_comp];
+        if (!(lc == 430 || lc == 432 || lc == 440)) fail("unused_word", "H word with no G43 or G76 to use it", col('H'));
+    }
+    if (bw.has('I') && !(arc || g0 == 100))
+        fail("unused_word", "I word with no G2, G3, G5, G5.1, G10, G33.1, G76, or G87 to use it", col('I'));
+    if (bw.has('J') && !(arc || g0 == 100))
+        fail("unused_word", "J word with no G2, G3, G5, G5.1, G10, G76 or G87 to use it", col('J'));
+    if (bw.has('K') && !arc) fail("unused_word", "K word with no G2, G3, G33, G33.1, G76, or G87 to use it", col('K'));
+    if (bw.has('L')) {
+        int rc = bw.g[g_radius_comp];
+        if (!(g0 == 100 || cycle_block || rc == 411 || rc == 421))
+            fail("unused_word",
+                 "L word with no G10, cutter compensation, canned cycle, digital/analog input, M98 or NURBS code",
+                 col('L'));
+    }
+    if (bw.has('P')) {
+        int m = bw.m[m_override];
+        bool ok = arc || g0 == 40 || g0 == 100 || bw.g[g_path_control] == 640 || motion_to_be == 820 ||
+                  motion_to_be == 860 || motion_to_be == 880 || motion_to_be == 890 ||
+                  (m >= 500 && m <= 530);
+        if (!ok)
+            fail("unused_word",
+                 "P word with no G2 G3 G4 G10 G64 G5 G5.2 G76 G82 G86 G88 G89 or M50 M51 M52 M53 M62 M63 M64 "
+                 "M65 M66 M98 or user M code to use it",
+                 col('P'));
+    }
+    if (bw.has('Q')) {
+        bool ok = g0 == 100 || bw.g[g_path_control] == 640 || motion_to_be == 730 || motion_to_be == 830 ||
+                  bw.m[m_tool_change] == 610;
+        if (!ok)
+            fail("unused_word",
+                 "Q word with no G5, G10, G64, G73, G76, G83, M19, M66, M67, M68 or user M code that uses it",
+                 col('Q'));
+    }
+    if (bw.has('R') && !(arc || cycle_block || g0 == 100))
+        fail("unused_word", "R word with no g code that uses it", col('R'));
+}
+
+bool Interp::execute(const BlockWords& bw) {
+    const int g0 = bw.g[g_nonmodal];
+    const int motion_code = bw.g[g_motion];
+    const bool axes = bw.has_axis();
+
+    // Which motion the axis words feed (LinuxCNC's "motion_to_be").
+    const bool data_axes = axes_are_data(bw);
+    if (data_axes && motion_code >= 0 && motion_code != 800 && axes)
+        fail("two_axis_codes", "Cannot use two g codes that both use axis values", bw.g_column[g_nonmodal]);
+    if (motion_code == 800 && axes) fail("axis_with_g80", "Cannot use axis values with g80", bw.axis_column());
+    int motion_to_be = motion_code;
+    if (motion_to_be < 0 && axes && !data_axes) motion_to_be = st_.motion;
+    if (motion_to_be == 800 && axes && !data_axes)
+        fail("axis_without_motion", "Cannot use axis values without a g code that uses them", bw.axis_column());
+    if ((motion_code == 20 || motion_code == 30) && g0 == 40)
+        fail("g4_with_arc", "G4 not allowed with G2 or G3 because they both use P", bw.g_column[g_nonmodal]);
+    if (g0 == 530) {
+        if (!(motion_to_be == 0 || motion_to_be == 10))
+            fail("g53_motion", "Must use g0 or g1 with g53", bw.g_column[g_nonmodal]);
+        bool incremental = bw.g[g_distance] >= 0 ? bw.g[g_distance] == 910 : st_.incremental;
+        if (incremental) fail("g53_incremental", "Cannot use g53 incremental", bw.g_column[g_nonmodal]);
+    }
+    if (g0 == 920 && !axes) fail("g92_no_axes", "All axes missing with g52 or g92", bw.g_column[g_nonmodal]);
+    check_words(bw, motion_to_be);
+
+    // 2-4: feed mode, feed, speed
+    if (bw.g[g_feed_mode] >= 0) st_.feed_mode = bw.g[g_feed_mode];
+    if (bw.has('F')) feed_ = bw['F'].value * (st_.feed_mode == 930 ? 1.0 : scale());
+    if (bw.has('S')) speed_ = bw['S'].value;
+    // 5-6: tools
+    if (bw.has('T')) select_tool(bw);
+    if (bw.m[m_tool_change] >= 0) change_tool(bw, bw.m[m_tool_change]);
+    // 7-9: spindle, coolant, overrides: state of the machine, not of the path (the spindle
+    // direction matters to the boring cycles).
+    if (int sp = bw.m[m_spindle]; sp >= 0) spindle_ = sp == 30 ? 1 : sp == 40 ? -1 : 0;
+    // 10: dwell
+    if (g0 == 40 && (!bw.has('P') || bw['P'].value < 0))
+        fail("dwell_missing", "Dwell time missing with g4", bw.g_column[g_nonmodal]);
+    // 11-12: plane, units (an F in the same block was read in the old units, as LinuxCNC does)
+    if (bw.g[g_units] >= 0) st_.inch = bw.g[g_units] == 200;
+    if (bw.g[g_plane] >= 0) st_.plane = bw.g[g_plane] == 170 ? Plane::xy : bw.g[g_plane] == 180 ? Plane::zx : Plane::yz;
+    if (bw.g[g_lathe_diameter] >= 0) st_.diameter = bw.g[g_lathe_diameter] == 70;
+    // 13: cutter radius compensation
+    if (int rc = bw.g[g_radius_comp]; rc >= 0 && rc != 400)
+        fail("radius_comp_not_supported",
+             "Cutter radius compensation (G41/G42) is not supported by toolcomp yet", bw.g_column[g_radius_comp]);
+    // 14: tool length compensation
+    if (bw.g[g_length_comp] >= 0) length_comp(bw, bw.g[g_length_comp]);
+    // 15: coordinate system
+    if (bw.g[g_coord_system] >= 0) {
+        int c = bw.g[g_coord_system];
+        set_coord_system(c < 590 ? (c - 530) / 10 : 6 + (c - 590));
+    }
+    // 16-18: path control, distance modes, retract mode
+    if (bw.g[g_path_control] >= 0) st_.path_control = bw.g[g_path_control];
+    if (bw.g[g_distance] >= 0) st_.incremental = bw.g[g_distance] == 910;
+    if (bw.g[g_arc_distance] >= 0) st_.arc_absolute = bw.g[g_arc_distance] == 901;
+    if (bw.g[g_retract] >= 0) st_.retract_initial = bw.g[g_retract] == 980;
+    // 19: G10, G28/G30, G92
+    switch (g0) {
+        case 100: g10(bw); break;
+        case 280: case 281: case 300: case 301: home(bw, g0); break;
+        case 920: case 921: case 922: case 923: g92(bw, g0); break;
+        default: break;
+    }
+    // 20: motion
+    prev_motion_ = st_.motion;
+    if (motion_code >= 0 && !is_cycle(motion_code)) cycle_il_set_ = false;
+    if (motion_code >= 0) st_.motion = motion_code;
+    if (motion_to_be >= 0 && axes && !data_axes) {
+        switch (motion_to_be) {
+            case 0: case 10: motion_line(bw, motion_to_be, g0 == 530); break;
+            case 20: case 30: motion_arc(bw, motion_to_be); break;
+            default: cycle(bw, motion_to_be); break;
+        }
+    } else if ((motion_code == 20 || motion_code == 30) && (bw.has('I') || bw.has('J') || bw.has('K') || bw.has('R'))) {
+        motion_arc(bw, motion_code);  // full circle given by its centre only
+    }
+    // 21: stop / end
+    int stop = bw.m[m_stop];
+    return !(stop == 20 || stop == 300);
+}
+
+void interpret(const Program& program, const ToolTable* tools, const ControlProfile& profile,
+               const InterpretOptions& options, MotionSink& sink, std::vector<Diagnostic>& diagnostics) {
+    Interp(program, tools, profile, options, sink, diagnostics).run();
+}
+
+}  // namespace toolcomp::iso

@@ -1,0 +1,107 @@
+#pragma once
+// The ISO interpreter's working data (modal state, positions, offsets) and its operations.
+// Private to the ISO front end; the entry point is toolcomp::iso::interpret().
+//
+// Positions are kept as LinuxCNC keeps them: program coordinates in millimetres (X Y Z)
+// and degrees (A B C), with machine = program + G92 + G5x + tool length offset.
+#include <Eigen/Core>
+#include <array>
+#include <string>
+#include <vector>
+
+#include "block_words.hpp"
+#include "toolcomp/dialects/iso/interpreter.hpp"
+
+namespace toolcomp::iso {
+
+using Vec6 = Eigen::Matrix<double, 6, 1>;  // X Y Z (mm) A B C (deg)
+
+struct ModalState {
+    int motion = 800;  // G80: axis words need a motion code first (LinuxCNC starts so)
+    Plane plane = Plane::xy;
+    bool incremental = false;   // G91
+    bool arc_absolute = false;  // G90.1
+    int feed_mode = 940;        // G93 / G94 / G95
+    bool inch = false;          // G20
+    bool retract_initial = false;  // G98 (true) / G99 (false); LinuxCNC starts in G99
+    int coord_system = 1;       // 1..9 = G54..G59.3
+    bool diameter = false;      // G7
+    int length_mode = 490;      // G43 / G43.1 / G43.2 / G44 / G49
+    int path_control = 640;
+};
+
+// Values that stick from one canned-cycle block to the next while the cycle continues.
+struct CycleMemory {
+    double r = 0, z = 0, q = 0, p = 0;  // r, z as written (mm), q mm, p seconds
+};
+
+class Interp {
+public:
+    Interp(const Program& prog, const ToolTable* tools, const ControlProfile& profile,
+           const InterpretOptions& opts, MotionSink& sink, std::vector<Diagnostic>& diags);
+    void run();
+
+private:
+    // ---- block execution (interp.cpp) --------------------------------------------------
+    bool execute(const BlockWords& bw);  // false after M2/M30
+    void check_words(const BlockWords& bw, int motion_to_be);
+    [[noreturn]] void fail(const char* code, const std::string& msg, int column = 0) const;
+    void info(const char* code, const std::string& msg, int column = 0);
+
+    // ---- units and coordinates -----------------------------------------------------------
+    double scale() const { return st_.inch ? kMmPerInch : 1.0; }
+    int unit_index() const { return st_.inch ? 1 : 0; }
+    // Axis word of `bw` as an absolute program coordinate in mm/deg (G90/G91, G7), or the
+    // current value when the word is absent.
+    Vec6 find_end(const BlockWords& bw) const;
+    double axis_value(const BlockWords& bw, int axis) const;  // word value in mm/deg (G7 halved)
+    Vec6 machine_offset() const { return g92_ + g5x_[st_.coord_system - 1] + tlo_; }
+
+    // ---- motion (interp_motion.cpp) --------------------------------------------------------
+    void straight(MotionKind kind, const Vec6& end, double feed);
+    void motion_line(const BlockWords& bw, int code, bool machine_coords);
+    void motion_arc(const BlockWords& bw, int code);
+    double feed_for(const BlockWords& bw, int code, double length) const;
+
+    // ---- offsets (interp_offsets.cpp) ------------------------------------------------------
+    void set_coord_system(int n);
+    void g10(const BlockWords& bw);
+    void g92(const BlockWords& bw, int code);
+    void home(const BlockWords& bw, int code);  // G28 / G30 and G28.1 / G30.1
+    void change_offset(Vec6& offset, const Vec6& value);  // keeps the machine still
+
+    // ---- tools (interp_tools.cpp) ------------------------------------------------------------
+    void select_tool(const BlockWords& bw);
+    void change_tool(const BlockWords& bw, int mcode);
+    void length_comp(const BlockWords& bw, int code);
+    Vec6 tool_offset_of(int tool, int column) const;
+
+    // ---- canned cycles (interp_cycles.cpp) ---------------------------------------------------
+    void cycle(const BlockWords& bw, int code);
+
+    const Program& prog_;
+    const ToolTable* tools_;
+    const ControlProfile& profile_;
+    InterpretOptions opts_;
+    MotionSink& sink_;
+    std::vector<Diagnostic>& diags_;
+
+    int line_ = 0;  // current block's source line
+    ModalState st_;
+    Vec6 pos_ = Vec6::Zero();
+    std::array<Vec6, 9> g5x_;
+    Vec6 g92_ = Vec6::Zero(), g92_saved_ = Vec6::Zero();
+    Vec6 tlo_ = Vec6::Zero();
+    Vec6 g28_ = Vec6::Zero(), g30_ = Vec6::Zero();  // machine coordinates
+    double feed_ = 0;   // mm/min (G94), mm/rev (G95) or 1/min (G93), as last programmed
+    double speed_ = 0;  // S, rev/min
+    int tool_ = 0;      // tool in the spindle
+    int selected_ = -1; // tool prepared by T
+    CycleMemory cyc_;
+    int prev_motion_ = 800;      // motion mode before the current block
+    double cycle_il_ = 0;        // initial level of the running canned cycle
+    bool cycle_il_set_ = false;
+    int spindle_ = 0;            // 0 stopped, 1 clockwise, -1 counter-clockwise
+};
+
+}  // namespace toolcomp::iso

@@ -1,0 +1,134 @@
+// Canned cycles G73, G81, G82, G83, G85, G86, G88, G89 expanded into their moves, the way
+// LinuxCNC's interpreter does (convert_cycle_xy/_zx/_yz and the per-cycle functions):
+// the XY move at the current level, the plunge to R, the cycle's own moves, the retract to
+// the clearance level (G98: the initial level, G99: R), repeated L times.
+#include <cmath>
+
+#include "interp.hpp"
+
+namespace toolcomp::iso {
+
+void Interp::cycle(const BlockWords& bw, int code) {
+    const PlaneAxes ax = axes(st_.plane);
+    const char letters[3] = {'X', 'Y', 'Z'};
+    const char cl = letters[ax.c];
+    const char* plane_name = st_.plane == Plane::xy ? "xy" : st_.plane == Plane::zx ? "xz" : "yz";
+    const bool continuing = prev_motion_ == code;
+    const std::string gname = "g" + std::to_string(code / 10);
+    const double sc = scale();
+
+    for (char c : {'A', 'B', 'C'})
+        if (bw.has(c))
+            fail("cycle_rotary", std::string("Cannot put ") + (c == 'A' ? "an " : "a ") +
+                                     static_cast<char>(c - 'A' + 'a') + " in canned cycle", bw[c].column);
+    if (st_.feed_mode == 930) fail("cycle_inverse_time", "Cannot use inverse time feed with canned cycles");
+    int repeats = 1;
+    if (bw.has('L')) {
+        repeats = static_cast<int>(std::lround(bw['L'].value));
+        if (repeats < 0) fail("negative_l", "Negative l word used", bw['L'].column);
+        if (repeats == 0) fail("zero_repeats", "Cannot do zero repeats of cycle", bw['L'].column);
+    }
+    if (bw.has('R'))
+        cyc_.r = bw['R'].value * sc;
+    else if (!continuing)
+        fail("cycle_r_missing", "R clearance plane unspecified in cycle");
+    if (bw.has(cl))
+        cyc_.z = bw[cl].value * sc;
+    else if (!continuing)
+        fail("cycle_depth_missing", std::string(1, cl) + " value unspecified in " + plane_name + " plane canned cycle");
+    if (code == 730 || code == 830) {
+        if (bw.has('Q')) {
+            if (bw['Q'].value < 0) fail("cycle_q_missing", "Q word missing with " + gname, bw['Q'].column);
+            if (bw['Q'].value == 0) fail("cycle_q_zero", "Negative or zero q value used", bw['Q'].column);
+            cyc_.q = bw['Q'].value * sc;
+        } else if (!continuing) {
+            fail("cycle_q_missing", "Q word missing with " + gname);
+        }
+    }
+    if (code == 820 || code == 860 || code == 880 || code == 890) {
+        if (bw.has('P'))
+            cyc_.p = bw['P'].value;
+        else if (!continuing)
+            fail("cycle_p_missing", "Dwell time p word missing with " + gname);
+    }
+    if ((code == 860 || code == 880) && spindle_ == 0)
+        fail("spindle_not_turning", "Spindle not turning in " + gname);
+    if (feed_ <= 0) fail("zero_feed", "Cannot feed with zero feed rate");
+
+    // Levels along the tool axis. The initial level is that of the first block of the cycle.
+    if (!cycle_il_set_) {
+        cycle_il_ = pos_[ax.c];
+        cycle_il_set_ = true;
+    }
+    double old_cc = cycle_il_;
+    double a = pos_[ax.a], b = pos_[ax.b], da = 0, db = 0, r, bottom;
+    const char la = letters[ax.a], lb = letters[ax.b];
+    if (st_.incremental) {
+        if (bw.has(la)) da = axis_value(bw, ax.a);
+        if (bw.has(lb)) db = axis_value(bw, ax.b);
+        r = cyc_.r + old_cc;
+        bottom = r + cyc_.z;  // the depth word is measured from R
+    } else {
+        if (bw.has(la)) a = axis_value(bw, ax.a);
+        if (bw.has(lb)) b = axis_value(bw, ax.b);
+        r = cyc_.r;
+        bottom = cyc_.z;
+    }
+    if (r < bottom)
+        fail("cycle_r_below_depth", std::string("R less than ") + static_cast<char>(cl - 'A' + 'a') +
+                                        " in cycle in " + plane_name + " plane");
+
+    const double nan = std::nan("");
+    auto at = [&](double aa, double bb, double cc) {
+        Vec6 p = pos_;
+        p[ax.a] = aa;
+        p[ax.b] = bb;
+        p[ax.c] = cc;
+        return p;
+    };
+    if (old_cc < r) {  // below the R plane: straight up to it first
+        straight(MotionKind::rapid, at(pos_[ax.a], pos_[ax.b], r), nan);
+        old_cc = r;
+    }
+    const double clear = st_.retract_initial ? old_cc : r;
+    const double feed = feed_for(bw, 10, 0);
+    const double rapid_delta = 0.010 * kMmPerInch * (st_.inch ? 1.0 : 1.0);  // G83_RAPID_DELTA
+    for (int rep = 0; rep < repeats; ++rep) {
+        a += da;
+        b += db;
+        straight(MotionKind::rapid, at(a, b, pos_[ax.c]), nan);
+        if (pos_[ax.c] != r) straight(MotionKind::rapid, at(a, b, r), nan);
+        switch (code) {
+            case 810:
+            case 820:
+            case 860:
+            case 880:
+                straight(MotionKind::line, at(a, b, bottom), feed);
+                straight(MotionKind::rapid, at(a, b, clear), nan);
+                break;
+            case 850:
+                straight(MotionKind::line, at(a, b, bottom), feed);
+                straight(MotionKind::line, at(a, b, r), feed);
+                straight(MotionKind::rapid, at(a, b, clear), nan);
+                break;
+            case 890:
+                straight(MotionKind::line, at(a, b, bottom), feed);
+                straight(MotionKind::line, at(a, b, clear), feed);
+                break;
+            case 730:
+            case 830:
+                for (double depth = r - cyc_.q; depth > bottom; depth -= cyc_.q) {
+                    straight(MotionKind::line, at(a, b, depth), feed);
+                    if (code == 830) straight(MotionKind::rapid, at(a, b, r), nan);
+                    straight(MotionKind::rapid, at(a, b, depth + rapid_delta), nan);
+                }
+                straight(MotionKind::line, at(a, b, bottom), feed);
+                straight(MotionKind::rapid, at(a, b, clear), nan);
+                break;
+            default:
+                break;
+        }
+    }
+}
+
+}  // namespace toolcomp::iso

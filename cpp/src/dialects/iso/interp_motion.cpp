@@ -1,0 +1,174 @@
+// Straight moves and arcs (LinuxCNC convert_straight / convert_arc / arc_data_ijk / arc_data_r).
+#include <cmath>
+#include <cstdio>
+
+#include "interp.hpp"
+
+namespace toolcomp::iso {
+
+namespace {
+constexpr char kAxisLetter[6] = {'X', 'Y', 'Z', 'A', 'B', 'C'};
+}
+
+double Interp::axis_value(const BlockWords& bw, int axis) const {
+    double v = bw[kAxisLetter[axis]].value;
+    if (axis < 3) {
+        v *= scale();
+        if (axis == 0 && st_.diameter) v *= 0.5;  // G7: every X word is a diameter
+    }
+    return v;
+}
+
+Vec6 Interp::find_end(const BlockWords& bw) const {
+    Vec6 end = pos_;
+    for (int i = 0; i < 6; ++i) {
+        if (!bw.has(kAxisLetter[i])) continue;
+        double v = axis_value(bw, i);
+        end[i] = st_.incremental ? pos_[i] + v : v;
+    }
+    return end;
+}
+
+double Interp::feed_for(const BlockWords& bw, int code, double length) const {
+    if (code == 0) return std::nan("");
+    switch (st_.feed_mode) {
+        case 930:  // inverse time: the move takes 1/F minutes
+            if (!bw.has('F'))
+                fail("inverse_time_feed_missing",
+                     code == 10 ? "F word missing with inverse time g1 move" : "F word missing with inverse time arc move");
+            return bw['F'].value * length;
+        case 950:  // units per revolution
+            return feed_ * speed_;
+        default:
+            return feed_;
+    }
+}
+
+void Interp::straight(MotionKind kind, const Vec6& end, double feed) {
+    Motion m;
+    m.kind = kind;
+    m.plane = st_.plane;
+    m.start = pos_.head<3>();
+    m.end = end.head<3>();
+    m.abc = {end[3], end[4], end[5]};
+    m.feed = feed;
+    m.line = line_;
+    m.tool = tool_;
+    m.tool_offset = tlo_.head<3>();
+    sink_.push(m);
+    pos_ = end;
+}
+
+void Interp::motion_line(const BlockWords& bw, int code, bool machine_coords) {
+    Vec6 end = find_end(bw);
+    if (machine_coords) {
+        // G53: the words are machine coordinates of the controlled point.
+        Vec6 off = machine_offset();
+        for (int i = 0; i < 6; ++i)
+            if (bw.has(kAxisLetter[i])) end[i] = axis_value(bw, i) - off[i];
+    }
+    if (code == 10 && st_.feed_mode != 930 && feed_ <= 0)
+        fail("zero_feed", "Cannot do g1 with zero feed rate", bw.axis_column());
+    double feed = feed_for(bw, code, (end.head<3>() - pos_.head<3>()).norm());
+    straight(code == 0 ? MotionKind::rapid : MotionKind::line, end, feed);
+}
+
+void Interp::motion_arc(const BlockWords& bw, int code) {
+    const PlaneAxes ax = axes(st_.plane);
+    const char* plane_name = st_.plane == Plane::xy ? "xy" : st_.plane == Plane::zx ? "xz" : "yz";
+    const char letters[3] = {'X', 'Y', 'Z'};
+    const char offset_letter[3] = {'I', 'J', 'K'};  // centre word of each axis
+    const char a_l = letters[ax.a], b_l = letters[ax.b];
+    const char a_off = offset_letter[ax.a], b_off = offset_letter[ax.b], c_off = offset_letter[ax.c];
+    const double sc = scale();
+
+    if (st_.feed_mode != 930 && feed_ <= 0) fail("zero_feed", "Cannot make arc with zero feed rate");
+    const bool r_form = bw.has('R');
+    if (r_form && (bw.has('I') || bw.has('J') || bw.has('K')))
+        fail("mixed_arc_format", "Mixed radius ijk format for arc", bw['R'].column);
+    if (!r_form && !bw.has(a_off) && !bw.has(b_off)) {
+        if (!bw.has('I') && !bw.has('J') && !bw.has('K')) fail("arc_words_missing", "R i j k words all missing for arc");
+    }
+    if (bw.has(c_off))
+        fail("arc_offset_wrong_axis",
+             std::string(1, c_off) + " word given for arc in " + plane_name + " plane", bw[c_off].column);
+    if (r_form && !bw.has(a_l) && !bw.has(b_l)) {
+        std::string m(1, a_l);
+        m += std::string(" and ") + static_cast<char>(b_l + ('a' - 'A')) + " words missing for arc in " + plane_name + " plane";
+        fail("arc_axis_words_missing", m);
+    }
+    int p = 1;
+    if (bw.has('P')) {
+        double pv = bw['P'].value;
+        if (std::fabs(pv - std::round(pv)) > 1e-9)
+            fail("arc_p_not_integer", "P value not an integer with M19 G2 or G3", bw['P'].column);
+        p = static_cast<int>(std::lround(pv));
+        if (p < 1) fail("arc_p_not_positive", "P value should be 1 or greater with G2 or G3", bw['P'].column);
+    }
+
+    Vec6 end = find_end(bw);
+    Vec2 s(pos_[ax.a], pos_[ax.b]), e(end[ax.a], end[ax.b]);
+    Vec2 c;
+    const double min_r = profile_.arc_min_radius[unit_index()] * sc;
+    const int dir = code == 30 ? 1 : -1;
+    if (r_form) {
+        if (s == e) fail("arc_same_point", "Current point same as end point of arc", bw['R'].column);
+        double R = bw['R'].value * sc;
+        double half = 0.5 * (e - s).norm();
+        if (half - std::fabs(R) > min_r)
+            fail("arc_radius_too_small", "Arc radius too small to reach end point", bw['R'].column);
+        if (half > std::fabs(R)) R = std::copysign(half, R);
+        auto cc = center_from_radius(s, e, R, dir);
+        c = cc ? *cc : 0.5 * (s + e);
+    } else {
+        auto centre_word = [&](char off, int axis) -> double {
+            if (st_.arc_absolute) {
+                if (!bw.has(off))
+                    fail("arc_center_missing", std::string(1, off) + " word missing in absolute center arc");
+                double v = bw[off].value * sc;
+                return v;
+            }
+            (void)axis;
+            return bw.has(off) ? bw[off].value * sc : 0.0;
+        };
+        double ci = centre_word(a_off, ax.a), cj = centre_word(b_off, ax.b);
+        c = st_.arc_absolute ? Vec2(ci, cj) : Vec2(s.x() + ci, s.y() + cj);
+        double r1 = (s - c).norm(), r2 = (e - c).norm();
+        auto describe = [&](const char* head) {
+            char buf[512];
+            std::snprintf(buf, sizeof buf,
+                          "%sstart=(%c%.4f,%c%.4f) center=(%c%.4f,%c%.4f) end=(%c%.4f,%c%.4f) r1=%.4f r2=%.4f", head,
+                          a_l, s.x() / sc, b_l, s.y() / sc, a_l, c.x() / sc, b_l, c.y() / sc, a_l, e.x() / sc, b_l,
+                          e.y() / sc, r1 / sc, r2 / sc);
+            return std::string(buf);
+        };
+        if (r1 < min_r || r2 < min_r) fail("arc_zero_radius", describe("Zero-radius arc: "));
+        double abs_err = std::fabs(r1 - r2) / sc;  // program units, as the control compares
+        double rel_err = abs_err * sc / std::max(r1, r2);
+        double tol = profile_.arc_spiral_abs[unit_index()];
+        if (abs_err > profile_.arc_spiral_hard_factor * tol || (rel_err > profile_.arc_spiral_rel && abs_err > tol)) {
+            char tail[96];
+            std::snprintf(tail, sizeof tail, " abs_err=%.4g rel_err=%.4f%%", abs_err, rel_err * 100);
+            fail("arc_end_off_circle", describe("Radius to end of arc differs from radius to start: ") + tail);
+        }
+    }
+
+    Motion m;
+    m.kind = code == 30 ? MotionKind::arc_ccw : MotionKind::arc_cw;
+    m.plane = st_.plane;
+    m.start = pos_.head<3>();
+    m.end = end.head<3>();
+    m.center = pos_.head<3>();
+    m.center[ax.a] = c.x();
+    m.center[ax.b] = c.y();
+    m.turns = p - 1;
+    m.abc = {end[3], end[4], end[5]};
+    m.line = line_;
+    m.tool = tool_;
+    m.tool_offset = tlo_.head<3>();
+    m.feed = st_.feed_mode == 930 ? feed_for(bw, code, arc_length(m.arc())) : feed_for(bw, code, 0);
+    sink_.push(m);
+    pos_ = end;
+}
+
+}  // namespace toolcomp::iso

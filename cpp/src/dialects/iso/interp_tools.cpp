@@ -1,0 +1,112 @@
+// Tool selection and change (T, M6, M61) and tool length compensation (G43, G43.1, G43.2,
+// G44, G49), LinuxCNC convert_tool_select / convert_tool_change / convert_tool_length_offset.
+#include <cmath>
+
+#include "interp.hpp"
+#include "toolcomp/tools/tool_table.hpp"
+
+namespace toolcomp::iso {
+
+namespace {
+constexpr char kAxisLetter[6] = {'X', 'Y', 'Z', 'A', 'B', 'C'};
+}
+
+Vec6 Interp::tool_offset_of(int tool, int column) const {
+    Vec6 v = Vec6::Zero();
+    if (tool == 0) return v;
+    const Tool* t = tools_ ? tools_->find(tool) : nullptr;
+    if (!t) {
+        if (!tools_) return v;  // no table at all: reported once by select_tool/length_comp
+        fail("tool_not_found", "Requested tool " + std::to_string(tool) + " not found in the tool table", column);
+    }
+    const CuttingEdge& e = t->edge();
+    Eigen::Vector3d len = e.effective_length();
+    switch (profile_.length_axes) {
+        case LengthAxes::all:
+            v << len.x(), len.y(), len.z(), e.rotary[0], e.rotary[1], e.rotary[2];
+            break;
+        case LengthAxes::z_only:
+            v[2] = len.z();
+            break;
+        case LengthAxes::plane_normal:
+            v[axes(st_.plane).c] = len.z();
+            break;
+    }
+    return v;
+}
+
+void Interp::select_tool(const BlockWords& bw) {
+    int t = static_cast<int>(std::lround(bw['T'].value));
+    if (t != 0 && tools_ && !tools_->find(t))
+        fail("tool_not_found", "Requested tool " + std::to_string(t) + " not found in the tool table", bw['T'].column);
+    if (t != 0 && !tools_)
+        diags_.push_back({"no_tool_table", Severity::warning,
+                          "No tool table given: tool " + std::to_string(t) + " has no offsets and no radius",
+                          {line_, bw['T'].column}});
+    selected_ = t;
+}
+
+void Interp::change_tool(const BlockWords& bw, int mcode) {
+    if (mcode == 60) {  // M6: the prepared tool goes into the spindle; no length offset yet
+        if (selected_ >= 0) tool_ = selected_;
+        return;
+    }
+    // M61 Q: tell the control which tool is in the spindle, without a change.
+    if (!bw.has('Q') || bw['Q'].value < 0 || std::fabs(bw['Q'].value - std::round(bw['Q'].value)) > 1e-9)
+        fail("m61_q", "Need non-negative Q-word to specify tool number with M61", bw.m_column[m_tool_change]);
+    int t = static_cast<int>(std::lround(bw['Q'].value));
+    if (t != 0 && tools_ && !tools_->find(t))
+        fail("tool_not_found", "Requested tool " + std::to_string(t) + " not found in the tool table",
+             bw['Q'].column);
+    tool_ = t;
+}
+
+void Interp::length_comp(const BlockWords& bw, int code) {
+    const int col = bw.g_column[g_length_comp];
+    st_.length_mode = code;
+    auto h_tool = [&]() {
+        double h = bw['H'].value;
+        if (std::fabs(h - std::round(h)) > 1e-9) fail("non_integer_value", "Non integer value for integer", bw['H'].column);
+        int t = static_cast<int>(std::lround(h));
+        if (t < 0) fail("tool_not_found", "Requested tool " + std::to_string(t) + " not found in the tool table", bw['H'].column);
+        return t;
+    };
+    switch (code) {
+        case 490:
+            change_offset(tlo_, Vec6::Zero());
+            break;
+        case 430:
+        case 440: {
+            int t = bw.has('H') ? h_tool() : tool_;
+            if (t == 0 && bw.has('H')) t = tool_;  // H0: the tool in the spindle
+            Vec6 v = tool_offset_of(t, bw.has('H') ? bw['H'].column : col);
+            change_offset(tlo_, code == 440 ? Vec6(-v) : v);
+            break;
+        }
+        case 431: {  // dynamic: the named components are replaced
+            Vec6 v = tlo_;
+            for (int i = 0; i < 6; ++i)
+                if (bw.has(kAxisLetter[i])) v[i] = i < 3 ? bw[kAxisLetter[i]].value * scale() : bw[kAxisLetter[i]].value;
+            change_offset(tlo_, v);
+            break;
+        }
+        case 432: {  // additive
+            bool axes = bw.has_axis();
+            if (bw.has('H') && axes) fail("g43_2_both", "G43.2: Can not have both H and axis words", col);
+            if (!bw.has('H') && !axes) fail("g43_2_none", "G43.2: No axes specified and H word missing", col);
+            Vec6 add = Vec6::Zero();
+            if (bw.has('H')) {
+                add = tool_offset_of(h_tool(), bw['H'].column);
+            } else {
+                for (int i = 0; i < 6; ++i)
+                    if (bw.has(kAxisLetter[i])) add[i] = i < 3 ? bw[kAxisLetter[i]].value * scale() : bw[kAxisLetter[i]].value;
+            }
+            change_offset(tlo_, tlo_ + add);
+            break;
+        }
+        default:
+            break;
+    }
+}
+
+}  // namespace toolcomp::iso

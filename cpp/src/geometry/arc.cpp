@@ -1,0 +1,68 @@
+#include "toolcomp/geometry/arc.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace toolcomp {
+
+double arc_start_radius(const Arc& a) {
+    return (in_plane(a.start, a.plane) - in_plane(a.center, a.plane)).norm();
+}
+double arc_end_radius(const Arc& a) {
+    return (in_plane(a.end, a.plane) - in_plane(a.center, a.plane)).norm();
+}
+
+double arc_sweep(const Arc& a) {
+    Vec2 c = in_plane(a.center, a.plane);
+    Vec2 u = in_plane(a.start, a.plane) - c, v = in_plane(a.end, a.plane) - c;
+    double ang = std::atan2(cross2(u, v), u.dot(v));  // (-π, π]
+    if (a.dir < 0) ang = -ang;
+    if (ang <= 1e-12) ang += 2 * kPi;  // start == end (or nearly): a full circle
+    return ang + 2 * kPi * a.turns;
+}
+
+Vec3 arc_point(const Arc& a, double u) {
+    auto ax = axes(a.plane);
+    Vec2 c = in_plane(a.center, a.plane);
+    Vec2 s = in_plane(a.start, a.plane) - c;
+    double r0 = s.norm(), r1 = arc_end_radius(a);
+    double phi0 = std::atan2(s.y(), s.x());
+    double phi = phi0 + a.dir * arc_sweep(a) * u;
+    double r = r0 + (r1 - r0) * u;
+    Vec3 p;
+    p[ax.a] = c.x() + r * std::cos(phi);
+    p[ax.b] = c.y() + r * std::sin(phi);
+    p[ax.c] = a.start[ax.c] + (a.end[ax.c] - a.start[ax.c]) * u;
+    if (u >= 1.0) p = a.end;  // exact end point, no round-off drift
+    return p;
+}
+
+double arc_length(const Arc& a) {
+    auto ax = axes(a.plane);
+    double r = 0.5 * (arc_start_radius(a) + arc_end_radius(a));
+    double planar = r * arc_sweep(a);
+    double h = a.end[ax.c] - a.start[ax.c];
+    return std::hypot(planar, h);
+}
+
+int arc_chords(const Arc& a, double tolerance) {
+    double r = std::max(arc_start_radius(a), arc_end_radius(a));
+    double sweep = arc_sweep(a);
+    if (r <= tolerance || tolerance <= 0) return std::max(1, static_cast<int>(std::ceil(sweep / (kPi / 8))));
+    double step = 2 * std::acos(1 - tolerance / r);
+    return std::max(1, static_cast<int>(std::ceil(sweep / step)));
+}
+
+std::optional<Vec2> center_from_radius(const Vec2& s, const Vec2& e, double R, int dir) {
+    Vec2 chord = e - s;
+    double c = chord.norm();
+    double absR = std::fabs(R);
+    if (c < tol::length || c > 2 * absR) return std::nullopt;
+    Vec2 mid = 0.5 * (s + e);
+    double h = std::sqrt(std::max(0.0, absR * absR - 0.25 * c * c));
+    // For a CCW arc of at most 180° the centre lies left of the chord (spec §1.3).
+    double sigma = (dir > 0 ? 1.0 : -1.0) * (R > 0 ? 1.0 : -1.0);
+    return mid + sigma * h * left_normal(chord / c);
+}
+
+}  // namespace toolcomp

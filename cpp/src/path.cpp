@@ -1,0 +1,96 @@
+#include "toolcomp/path.hpp"
+
+namespace toolcomp {
+
+namespace {
+void put3(std::vector<double>& v, const Vec3& p) {
+    v.push_back(p.x());
+    v.push_back(p.y());
+    v.push_back(p.z());
+}
+Vec3 get3(const std::vector<double>& v, std::size_t i) { return {v[3 * i], v[3 * i + 1], v[3 * i + 2]}; }
+}  // namespace
+
+void Path::reserve(std::size_t n) {
+    kind.reserve(n);
+    for (auto* v : {&start, &end, &center, &abc, &tool_offset}) v->reserve(3 * n);
+    line.reserve(n);
+    tool.reserve(n);
+    turns.reserve(n);
+    feed.reserve(n);
+    side.reserve(n);
+    plane.reserve(n);
+    generated.reserve(n);
+}
+
+void Path::push(const Motion& m) {
+    kind.push_back(static_cast<std::uint8_t>(m.kind));
+    put3(start, m.start);
+    put3(end, m.end);
+    put3(center, m.center);
+    abc.insert(abc.end(), m.abc.begin(), m.abc.end());
+    put3(tool_offset, m.tool_offset);
+    line.push_back(m.line);
+    tool.push_back(m.tool);
+    turns.push_back(m.turns);
+    feed.push_back(m.feed);
+    side.push_back(m.radius.side);
+    plane.push_back(static_cast<std::uint8_t>(m.plane));
+    generated.push_back(m.generated ? 1 : 0);
+}
+
+Motion Path::segment(std::size_t i) const {
+    Motion m;
+    m.kind = static_cast<MotionKind>(kind[i]);
+    m.plane = static_cast<Plane>(plane[i]);
+    m.start = get3(start, i);
+    m.end = get3(end, i);
+    m.center = get3(center, i);
+    m.turns = turns[i];
+    m.abc = {abc[3 * i], abc[3 * i + 1], abc[3 * i + 2]};
+    m.feed = feed[i];
+    m.line = line[i];
+    m.tool = tool[i];
+    m.tool_offset = get3(tool_offset, i);
+    m.radius.side = side[i];
+    m.generated = generated[i] != 0;
+    return m;
+}
+
+void Path::sample(double tolerance, std::vector<double>& points, std::vector<std::int64_t>& seg) const {
+    points.clear();
+    seg.clear();
+    if (size() == 0) return;
+    put3(points, get3(start, 0));
+    seg.push_back(0);
+    for (std::size_t i = 0; i < size(); ++i) {
+        Motion m = segment(i);
+        if (i > 0 && (m.start - get3(end, i - 1)).norm() > tol::length) {
+            put3(points, m.start);  // a jump (should not happen in a continuous path)
+            seg.push_back(static_cast<std::int64_t>(i));
+        }
+        if (m.is_arc()) {
+            Arc a = m.arc();
+            int n = arc_chords(a, tolerance);
+            for (int k = 1; k <= n; ++k) {
+                put3(points, arc_point(a, static_cast<double>(k) / n));
+                seg.push_back(static_cast<std::int64_t>(i));
+            }
+        } else {
+            put3(points, m.end);
+            seg.push_back(static_cast<std::int64_t>(i));
+        }
+    }
+}
+
+double Path::length(bool include_rapids) const {
+    double total = 0;
+    for (std::size_t i = 0; i < size(); ++i) {
+        if (!include_rapids && kind[i] == static_cast<std::uint8_t>(MotionKind::rapid)) continue;
+        Motion m = segment(i);
+        total += m.is_arc() ? arc_length(m.arc()) : (m.end - m.start).norm();
+    }
+    return total;
+}
+
+}  // namespace toolcomp

@@ -1,0 +1,14 @@
+#include "toolcomp/program/program.hpp"
+
+namespace toolcomp {
+
+void Program::begin_block(int line, bool block_delete) {
+    Block b;
+    b.line = line;
+    b.block_delete = block_delete;
+    b.first_word = static_cast<std::uint32_t>(words_.size());
+    b.first_comment = static_cast<std::uint32_t>(comments_.size());
+    blocks_.push_back(b);
+}
+
+}  // namespace toolcomp

@@ -1,0 +1,86 @@
+#include "toolcomp/run.hpp"
+
+#include <fstream>
+#include <sstream>
+
+#include "toolcomp/compensation/stages.hpp"
+#include "toolcomp/dialects/iso/interpreter.hpp"
+#include "toolcomp/dialects/iso/lexer.hpp"
+
+namespace toolcomp {
+
+namespace {
+bool is_iso(Dialect d) { return d == Dialect::linuxcnc || d == Dialect::fanuc; }
+
+[[noreturn]] void dialect_not_supported(Dialect d) {
+    throw ParseError("dialect_not_supported",
+                     "The " + std::string(dialect_name(d)) + " dialect is not supported by toolcomp yet");
+}
+
+// Sends every move to two consumers.
+class Tee : public MotionSink {
+public:
+    Tee(MotionSink& a, MotionSink& b) : a_(a), b_(b) {}
+    void push(const Motion& m) override {
+        a_.push(m);
+        b_.push(m);
+    }
+    void finish() override {
+        a_.finish();
+        b_.finish();
+    }
+
+private:
+    MotionSink& a_;
+    MotionSink& b_;
+};
+}  // namespace
+
+Program parse_program(std::string_view text, Dialect dialect, std::string name) {
+    if (!is_iso(dialect)) dialect_not_supported(dialect);
+    return iso::parse(text, dialect, std::move(name));
+}
+
+Program read_program(const std::string& path, std::optional<Dialect> dialect) {
+    std::ifstream f(path, std::ios::binary);
+    if (!f) throw ParseError("file_not_found", "Cannot open program file '" + path + "'");
+    std::ostringstream ss;
+    ss << f.rdbuf();
+    Dialect d;
+    if (dialect) {
+        d = *dialect;
+    } else if (auto s = dialect_from_suffix(path)) {
+        d = *s;
+    } else {
+        throw ParseError("unknown_dialect",
+                         "Cannot tell the dialect of '" + path + "' from its suffix; pass dialect=");
+    }
+    return parse_program(ss.str(), d, path);
+}
+
+bool Result::ok() const {
+    for (const auto& d : diagnostics)
+        if (d.severity == Severity::error) return false;
+    return true;
+}
+
+Result run(const Program& program, const ToolTable* tools, const RunOptions& options) {
+    Result res;
+    res.blocks = program.size();
+    ControlProfile profile = options.profile ? *options.profile : profile_for(program.dialect);
+    CompensationChain chain(profile, res.path, res.diagnostics);
+    Tee tee(res.nominal, chain);
+    iso::InterpretOptions iopts;
+    iopts.block_delete = options.block_delete;
+    try {
+        if (!is_iso(program.dialect)) dialect_not_supported(program.dialect);
+        iso::interpret(program, tools, profile, iopts, tee, res.diagnostics);
+    } catch (const Error& e) {
+        if (options.strict) throw;
+        tee.finish();
+        res.diagnostics.push_back(e.diagnostic());
+    }
+    return res;
+}
+
+}  // namespace toolcomp

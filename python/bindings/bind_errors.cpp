@@ -1,0 +1,62 @@
+// Diagnostics, and C++ toolcomp::Error translated to the Python classes of toolcomp._errors.
+#include "bindings.hpp"
+
+#include "toolcomp/program/diagnostic.hpp"
+
+using namespace toolcomp;
+
+namespace {
+const char* severity_name(Severity s) {
+    switch (s) {
+        case Severity::info: return "info";
+        case Severity::warning: return "warning";
+        default: return "error";
+    }
+}
+Severity severity_from(const std::string& s) {
+    if (s == "info") return Severity::info;
+    if (s == "warning") return Severity::warning;
+    return Severity::error;
+}
+const char* class_name(ErrorKind k) {
+    switch (k) {
+        case ErrorKind::parse: return "ParseError";
+        case ErrorKind::program: return "ProgramError";
+        case ErrorKind::compensation: return "CompensationError";
+        case ErrorKind::tool_table: return "ToolTableError";
+        default: return "Error";
+    }
+}
+}  // namespace
+
+void bind_errors(py::module_& m) {
+    py::class_<Diagnostic>(m, "Diagnostic")
+        .def(py::init([](std::string code, const std::string& severity, std::string message, int line, int column) {
+                 return Diagnostic{std::move(code), severity_from(severity), std::move(message), {line, column}};
+             }),
+             py::arg("code"), py::arg("severity"), py::arg("message"), py::arg("line") = 0, py::arg("column") = 0)
+        .def_readonly("code", &Diagnostic::code)
+        .def_property_readonly("severity", [](const Diagnostic& d) { return severity_name(d.severity); })
+        .def_readonly("message", &Diagnostic::message)
+        .def_property_readonly("line", [](const Diagnostic& d) { return d.pos.line; })
+        .def_property_readonly("column", [](const Diagnostic& d) { return d.pos.column; })
+        .def("__repr__", [](const Diagnostic& d) {
+            return "Diagnostic(code='" + d.code + "', severity='" + severity_name(d.severity) + "', message=" +
+                   py::repr(py::str(d.message)).cast<std::string>() + ", line=" + std::to_string(d.pos.line) +
+                   ", column=" + std::to_string(d.pos.column) + ")";
+        })
+        .def("__eq__", [](const Diagnostic& a, const Diagnostic& b) {
+            return a.code == b.code && a.severity == b.severity && a.message == b.message &&
+                   a.pos.line == b.pos.line && a.pos.column == b.pos.column;
+        });
+
+    py::register_exception_translator([](std::exception_ptr p) {
+        try {
+            if (p) std::rethrow_exception(p);
+        } catch (const Error& e) {
+            py::object cls = py::module_::import("toolcomp._errors").attr(class_name(e.kind()));
+            py::object exc = cls(e.what(), e.code(), e.line(), e.column());
+            PyErr_SetObject(cls.ptr(), exc.ptr());
+        }
+    });
+}

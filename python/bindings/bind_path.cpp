@@ -1,0 +1,78 @@
+// Path columns as read-only numpy views over the C++ storage (no copies); the array keeps
+// the Path (and so the Result owning it) alive.
+#include "bindings.hpp"
+
+#include <pybind11/numpy.h>
+
+#include "toolcomp/path.hpp"
+
+using namespace toolcomp;
+
+namespace {
+template <class T>
+py::array view(py::handle owner, const std::vector<T>& v, std::size_t n, std::size_t width,
+               py::dtype dtype = py::dtype::of<T>()) {
+    std::vector<py::ssize_t> shape{static_cast<py::ssize_t>(n)}, strides{static_cast<py::ssize_t>(sizeof(T) * width)};
+    if (width > 1) {
+        shape.push_back(static_cast<py::ssize_t>(width));
+        strides.push_back(sizeof(T));
+    }
+    static const T dummy{};
+    py::array a(dtype, shape, strides, v.empty() ? &dummy : v.data(), owner);
+    py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
+    return a;
+}
+
+template <class T>
+auto column(std::vector<T> Path::*member, std::size_t width) {
+    return [member, width](py::object self) {
+        const Path& p = self.cast<const Path&>();
+        return view(self, p.*member, p.size(), width);
+    };
+}
+}  // namespace
+
+void bind_path(py::module_& m) {
+    py::class_<Path, std::shared_ptr<Path>>(m, "Path")
+        .def("__len__", &Path::size)
+        .def_property_readonly("kind", column(&Path::kind, 1))
+        .def_property_readonly("start", column(&Path::start, 3))
+        .def_property_readonly("end", column(&Path::end, 3))
+        .def_property_readonly("center", column(&Path::center, 3))
+        .def_property_readonly("abc", column(&Path::abc, 3))
+        .def_property_readonly("line", column(&Path::line, 1))
+        .def_property_readonly("tool", column(&Path::tool, 1))
+        .def_property_readonly("feed", column(&Path::feed, 1))
+        .def_property_readonly("side", column(&Path::side, 1))
+        .def_property_readonly("generated",
+                               [](py::object self) {
+                                   const Path& p = self.cast<const Path&>();
+                                   return view(self, p.generated, p.size(), 1, py::dtype("bool"));
+                               })
+        .def_property_readonly("tool_offset", column(&Path::tool_offset, 3))
+        .def_property_readonly("plane", column(&Path::plane, 1),
+                               "working plane of each segment: 0 XY (G17), 1 ZX (G18), 2 YZ (G19)")
+        .def_property_readonly("turns", column(&Path::turns, 1), "arcs: extra full turns (LinuxCNC P word - 1)")
+        .def(
+            "sample",
+            [](const Path& p, double tolerance) {
+                if (!(tolerance > 0)) throw py::value_error("tolerance must be > 0");
+                auto* pts = new std::vector<double>();
+                auto* seg = new std::vector<std::int64_t>();
+                {
+                    py::gil_scoped_release nogil;
+                    p.sample(tolerance, *pts, *seg);
+                }
+                py::capsule pc(pts, [](void* v) { delete static_cast<std::vector<double>*>(v); });
+                py::capsule sc(seg, [](void* v) { delete static_cast<std::vector<std::int64_t>*>(v); });
+                py::ssize_t n = static_cast<py::ssize_t>(seg->size());
+                py::array_t<double> a({n, py::ssize_t(3)}, pts->data(), pc);
+                py::array_t<std::int64_t> b({n}, seg->data(), sc);
+                return py::make_tuple(a, b);
+            },
+            py::arg("tolerance") = 0.01,
+            "The path as an (M, 3) polyline with arcs chorded within `tolerance` mm, and the index of the "
+            "segment each point belongs to.")
+        .def("length", &Path::length, py::arg("include_rapids") = true, "Path length in mm (arcs exact).")
+        .def("__repr__", [](const Path& p) { return "Path(" + std::to_string(p.size()) + " segments)"; });
+}

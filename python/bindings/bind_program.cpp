@@ -1,0 +1,38 @@
+#include "bindings.hpp"
+
+#include <pybind11/stl.h>
+
+#include "toolcomp/run.hpp"
+
+using namespace toolcomp;
+
+void bind_program(py::module_& m) {
+    py::class_<Program, std::shared_ptr<Program>>(m, "Program")
+        .def_static(
+            "read",
+            [](const std::string& path, std::optional<std::string> dialect) {
+                std::optional<Dialect> d;
+                if (dialect) d = dialect_from_name(*dialect);
+                py::gil_scoped_release nogil;
+                return std::make_shared<Program>(read_program(path, d));
+            },
+            py::arg("path"), py::arg("dialect") = py::none(),
+            "Read a part program; the dialect comes from the suffix unless given.")
+        .def_static(
+            "parse",
+            [](const std::string& text, const std::string& dialect, std::string name) {
+                Dialect d = dialect_from_name(dialect);
+                py::gil_scoped_release nogil;
+                return std::make_shared<Program>(parse_program(text, d, std::move(name)));
+            },
+            py::arg("text"), py::arg("dialect") = "linuxcnc", py::arg("name") = "<string>",
+            "Parse program text in the given dialect.")
+        .def_readonly("name", &Program::name)
+        .def_property_readonly("dialect", [](const Program& p) { return std::string(dialect_name(p.dialect)); })
+        .def_property_readonly("word_count", &Program::word_count)
+        .def("__len__", &Program::size)
+        .def("__repr__", [](const Program& p) {
+            return "Program(name='" + p.name + "', dialect='" + std::string(dialect_name(p.dialect)) +
+                   "', blocks=" + std::to_string(p.size()) + ")";
+        });
+}

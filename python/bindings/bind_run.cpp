@@ -1,0 +1,50 @@
+#include "bindings.hpp"
+
+#include <pybind11/stl.h>
+
+#include "toolcomp/run.hpp"
+#include "toolcomp/tools/tool_table.hpp"
+
+using namespace toolcomp;
+
+void bind_run(py::module_& m) {
+    py::enum_<LengthAxes>(m, "LengthAxes")
+        .value("all", LengthAxes::all)
+        .value("z_only", LengthAxes::z_only)
+        .value("plane_normal", LengthAxes::plane_normal);
+
+    py::class_<ControlProfile>(m, "ControlProfile")
+        .def(py::init([](const std::string& dialect) { return profile_for(dialect_from_name(dialect)); }),
+             py::arg("dialect") = "linuxcnc")
+        .def_readwrite("name", &ControlProfile::name)
+        .def_readwrite("startup_inch", &ControlProfile::startup_inch)
+        .def_readwrite("length_axes", &ControlProfile::length_axes)
+        .def_readwrite("length_subtract_word", &ControlProfile::length_subtract_word)
+        .def("__repr__", [](const ControlProfile& p) { return "ControlProfile('" + p.name + "')"; });
+
+    py::class_<Result, std::shared_ptr<Result>>(m, "Result")
+        .def_property_readonly("ok", &Result::ok)
+        .def_readonly("diagnostics", &Result::diagnostics)
+        .def_property_readonly("nominal",
+                               [](std::shared_ptr<Result> r) { return std::shared_ptr<Path>(r, &r->nominal); })
+        .def_property_readonly("path", [](std::shared_ptr<Result> r) { return std::shared_ptr<Path>(r, &r->path); })
+        .def_readonly("blocks", &Result::blocks)
+        .def("__repr__", [](const Result& r) {
+            return "Result(ok=" + std::string(r.ok() ? "True" : "False") + ", segments=" +
+                   std::to_string(r.path.size()) + ", diagnostics=" + std::to_string(r.diagnostics.size()) + ")";
+        });
+
+    m.def(
+        "run",
+        [](const Program& program, const ToolTable* tools, bool strict, bool block_delete,
+           std::optional<ControlProfile> profile) {
+            RunOptions o;
+            o.strict = strict;
+            o.block_delete = block_delete;
+            o.profile = std::move(profile);
+            py::gil_scoped_release nogil;
+            return std::make_shared<Result>(run(program, tools, o));
+        },
+        py::arg("program"), py::arg("tools") = nullptr, py::arg("strict") = true, py::arg("block_delete") = false,
+        py::arg("profile") = py::none());
+}

@@ -1,0 +1,19 @@
+// toolcomp._core: the compiled core. The public API is the pure-Python package `toolcomp`,
+// which re-exports these names.
+#include "bindings.hpp"
+
+#include "toolcomp/motion/motion.hpp"
+
+PYBIND11_MODULE(_core, m) {
+    m.doc() = "toolcomp core: CNC program interpreter and tool compensation engine";
+    m.attr("__version__") = TOOLCOMP_VERSION;
+    m.attr("RAPID") = static_cast<int>(toolcomp::MotionKind::rapid);
+    m.attr("LINE") = static_cast<int>(toolcomp::MotionKind::line);
+    m.attr("ARC_CW") = static_cast<int>(toolcomp::MotionKind::arc_cw);
+    m.attr("ARC_CCW") = static_cast<int>(toolcomp::MotionKind::arc_ccw);
+    bind_errors(m);
+    bind_tools(m);
+    bind_program(m);
+    bind_path(m);
+    bind_run(m);
+}

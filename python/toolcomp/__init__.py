@@ -1,0 +1,64 @@
+"""toolcomp: run CNC part programs the way the control does, apply its tool compensation,
+and get the programmed and compensated paths as numpy arrays.
+
+    import toolcomp as tc
+    res = tc.run("part.ngc", tools="tools.tbl")
+    res.nominal.end, res.path.end        # (N, 3) float64, millimetres
+"""
+from __future__ import annotations
+
+import os as _os
+
+from . import _core
+from ._core import (
+    ARC_CCW,
+    ARC_CW,
+    LINE,
+    RAPID,
+    ControlProfile,
+    CuttingEdge,
+    Diagnostic,
+    LengthAxes,
+    Path,
+    Program,
+    Result,
+    Tool,
+    ToolTable,
+    __version__,
+)
+from ._errors import CompensationError, Error, ParseError, ProgramError, ToolTableError
+
+__all__ = [
+    "ARC_CCW", "ARC_CW", "LINE", "RAPID",
+    "CompensationError", "ControlProfile", "CuttingEdge", "Diagnostic", "Error", "LengthAxes",
+    "ParseError", "Path", "Program", "ProgramError", "Result", "Tool", "ToolTable",
+    "ToolTableError", "run", "__version__",
+]
+
+
+def run(program, tools=None, *, dialect=None, strict=True, block_delete=False, profile=None,
+        units="mm"):
+    """Interpret ``program`` and apply tool compensation.
+
+    ``program`` is a :class:`Program` or a path to a program file (dialect from the suffix
+    unless ``dialect`` is given); ``tools`` is a :class:`ToolTable`, a path to a table
+    (read with ``units``), or None. With ``strict=True`` the first error is raised; with
+    ``strict=False`` the path up to the error is returned and the error is in
+    ``result.diagnostics``. ``profile`` (a :class:`ControlProfile`) overrides the
+    dialect's control behaviour. The GIL is released while the program runs.
+    """
+    if isinstance(program, (str, _os.PathLike)):
+        program = Program.read(_os.fspath(program), dialect)
+    if isinstance(tools, (str, _os.PathLike)):
+        tools = ToolTable.read(_os.fspath(tools), units=units)
+    return _core.run(program, tools, strict=strict, block_delete=block_delete, profile=profile)
+
+
+def _result_plot(self, ax=None, **kwargs):
+    """Plot the programmed and compensated paths (matplotlib); returns the Axes."""
+    from .plot import plot_result
+
+    return plot_result(self, ax=ax, **kwargs)
+
+
+Result.plot = _result_plot
