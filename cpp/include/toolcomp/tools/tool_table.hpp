@@ -53,6 +53,11 @@ public:
     LengthUnit units() const { return units_; }
     void set_units(LengthUnit u) { units_ = u; }
 
+    // The format the table was read from; empty for a table built in code.
+    std::optional<TableFormat> source_format() const {
+        return source_ ? std::optional<TableFormat>(source_->format()) : std::nullopt;
+    }
+
     // Internal, used by the format readers/writers: the original text of the file.
     const detail::TableSource* source() const { return source_.get(); }
     void set_source(std::shared_ptr<const detail::TableSource> s) { source_ = std::move(s); }

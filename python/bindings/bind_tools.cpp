@@ -1,0 +1,218 @@
+// Tool model and tool tables. Value semantics: a Tool or CuttingEdge taken from a table is a
+// copy; change it and put it back with ToolTable.set / Tool.set_edge. (References into a
+// table would dangle once the table grows.) Errors propagate as C++ toolcomp::Error and are
+// translated by bind_errors.
+#include "bindings.hpp"
+
+#include <pybind11/eigen.h>
+#include <pybind11/numpy.h>
+#include <pybind11/operators.h>
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include "toolcomp/tools/tool_table.hpp"
+
+using namespace toolcomp;
+
+namespace {
+
+// A read-only float64 (3,) view of three doubles owned by the Python object `owner`.
+py::array vec3_view(const double* p, py::handle owner) {
+    py::array_t<double> a({py::ssize_t{3}}, {py::ssize_t{sizeof(double)}}, p, owner);
+    py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
+    return a;
+}
+
+std::array<double, 3> to_array3(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+
+std::optional<TableFormat> format_arg(const std::optional<std::string>& f) {
+    if (!f) return std::nullopt;
+    return table_format_from_string(*f);
+}
+
+}  // namespace
+
+void bind_tools(py::module_& m) {
+    py::class_<CuttingEdge>(m, "CuttingEdge",
+                            "One cutting edge (D number) of a tool. Lengths in mm, angles in degrees.")
+        .def(py::init([](int number, const Eigen::Vector3d& length, double radius, double corner_radius,
+                         const Eigen::Vector3d& rotary, const Eigen::Vector3d& uvw, const Eigen::Vector3d& length_wear,
+                         double radius_wear, double corner_radius_wear, int orientation, double front_angle,
+                         double back_angle) {
+                 CuttingEdge e;
+                 e.number = number;
+                 e.length = length;
+                 e.radius = radius;
+                 e.corner_radius = corner_radius;
+                 e.rotary = to_array3(rotary);
+                 e.uvw = to_array3(uvw);
+                 e.length_wear = length_wear;
+                 e.radius_wear = radius_wear;
+                 e.corner_radius_wear = corner_radius_wear;
+                 e.orientation = orientation;
+                 e.front_angle = front_angle;
+                 e.back_angle = back_angle;
+                 return e;
+             }),
+             py::kw_only(), py::arg("number") = 1, py::arg("length") = Eigen::Vector3d::Zero().eval(),
+             py::arg("radius") = 0.0, py::arg("corner_radius") = 0.0,
+             py::arg("rotary") = Eigen::Vector3d::Zero().eval(), py::arg("uvw") = Eigen::Vector3d::Zero().eval(),
+             py::arg("length_wear") = Eigen::Vector3d::Zero().eval(), py::arg("radius_wear") = 0.0,
+             py::arg("corner_radius_wear") = 0.0, py::arg("orientation") = 0, py::arg("front_angle") = 0.0,
+             py::arg("back_angle") = 0.0)
+        .def_readwrite("number", &CuttingEdge::number, "D number / offset number")
+        .def_property(
+            "length", [](py::object self) { return vec3_view(self.cast<CuttingEdge&>().length.data(), self); },
+            [](CuttingEdge& e, const Eigen::Vector3d& v) { e.length = v; },
+            "X Y Z tool length vector, mm (read-only float64 (3,) view; assign a new vector)")
+        .def_property(
+            "length_wear",
+            [](py::object self) { return vec3_view(self.cast<CuttingEdge&>().length_wear.data(), self); },
+            [](CuttingEdge& e, const Eigen::Vector3d& v) { e.length_wear = v; }, "X Y Z wear, mm")
+        .def_property(
+            "rotary", [](py::object self) { return vec3_view(self.cast<CuttingEdge&>().rotary.data(), self); },
+            [](CuttingEdge& e, const Eigen::Vector3d& v) { e.rotary = to_array3(v); }, "A B C offsets, degrees")
+        .def_property(
+            "uvw", [](py::object self) { return vec3_view(self.cast<CuttingEdge&>().uvw.data(), self); },
+            [](CuttingEdge& e, const Eigen::Vector3d& v) { e.uvw = to_array3(v); }, "U V W offsets, mm")
+        .def_readwrite("radius", &CuttingEdge::radius, "cutter / nose radius, mm")
+        .def_readwrite("corner_radius", &CuttingEdge::corner_radius, "corner radius R2, mm")
+        .def_readwrite("radius_wear", &CuttingEdge::radius_wear)
+        .def_readwrite("corner_radius_wear", &CuttingEdge::corner_radius_wear)
+        .def_readwrite("orientation", &CuttingEdge::orientation, "lathe tip number 0-9 as in the table")
+        .def_readwrite("front_angle", &CuttingEdge::front_angle)
+        .def_readwrite("back_angle", &CuttingEdge::back_angle)
+        .def_property_readonly("effective_length", &CuttingEdge::effective_length, "length + length_wear")
+        .def_property_readonly("effective_radius", &CuttingEdge::effective_radius, "radius + radius_wear")
+        .def_property_readonly("effective_corner_radius", &CuttingEdge::effective_corner_radius)
+        .def(py::self == py::self)
+        .def(py::self != py::self)
+        .def("__copy__", [](const CuttingEdge& e) { return e; })
+        .def("__deepcopy__", [](const CuttingEdge& e, py::dict) { return e; }, py::arg("memo"))
+        .def("__repr__", [](const CuttingEdge& e) {
+            return "CuttingEdge(number=" + std::to_string(e.number) + ", radius=" +
+                   py::repr(py::float_(e.radius)).cast<std::string>() + ", length=(" +
+                   py::repr(py::float_(e.length.x())).cast<std::string>() + ", " +
+                   py::repr(py::float_(e.length.y())).cast<std::string>() + ", " +
+                   py::repr(py::float_(e.length.z())).cast<std::string>() +
+                   "), orientation=" + std::to_string(e.orientation) + ")";
+        });
+
+    py::class_<Tool>(m, "Tool", "A tool with one or more cutting edges (values, not references into a table).")
+        .def(py::init([](int number, int pocket, std::string name, std::string comment,
+                         std::optional<std::vector<CuttingEdge>> edges) {
+                 Tool t;
+                 t.number = number;
+                 t.pocket = pocket;
+                 t.name = std::move(name);
+                 t.comment = std::move(comment);
+                 if (edges) t.edges = std::move(*edges);
+                 return t;
+             }),
+             py::arg("number") = 0, py::kw_only(), py::arg("pocket") = 0, py::arg("name") = "",
+             py::arg("comment") = "", py::arg("edges") = py::none())
+        .def_readwrite("number", &Tool::number)
+        .def_readwrite("pocket", &Tool::pocket)
+        .def_readwrite("name", &Tool::name)
+        .def_readwrite("comment", &Tool::comment)
+        .def_property(
+            "edges", [](const Tool& t) { return py::tuple(py::cast(t.edges)); },
+            [](Tool& t, std::vector<CuttingEdge> edges) { t.edges = std::move(edges); },
+            "the cutting edges (a tuple of copies; assign a new sequence to change them)")
+        .def("edge", py::overload_cast<int>(&Tool::edge, py::const_), py::arg("d") = 1,
+             py::return_value_policy::copy, "a copy of the edge with D number d")
+        .def("has_edge", &Tool::has_edge, py::arg("d"))
+        .def("set_edge", &Tool::set_edge, py::arg("edge"), "insert or replace the edge with edge.number")
+        .def(py::self == py::self)
+        .def(py::self != py::self)
+        .def("__copy__", [](const Tool& t) { return t; })
+        .def("__deepcopy__", [](const Tool& t, py::dict) { return t; }, py::arg("memo"))
+        .def("__repr__", [](const Tool& t) {
+            return "Tool(" + std::to_string(t.number) + ", pocket=" + std::to_string(t.pocket) +
+                   ", name=" + py::repr(py::str(t.name)).cast<std::string>() +
+                   ", comment=" + py::repr(py::str(t.comment)).cast<std::string>() +
+                   ", edges=" + std::to_string(t.edges.size()) + ")";
+        });
+
+    py::class_<ToolTable>(m, "ToolTable",
+                          "Tool table; reads and writes LinuxCNC .tbl, CSV and JSON losslessly. "
+                          "Tools are stored in mm and degrees; `units` is the unit of the file.")
+        .def(py::init([](const std::string& units) { return ToolTable(length_unit_from_string(units)); }),
+             py::arg("units") = "mm")
+        .def_static(
+            "read",
+            [](const std::filesystem::path& path, std::optional<std::string> format, const std::string& units) {
+                const auto f = format_arg(format);
+                const LengthUnit u = length_unit_from_string(units);
+                py::gil_scoped_release nogil;
+                return read_tool_table_file(path.string(), f, u);
+            },
+            py::arg("path"), py::arg("format") = py::none(), py::arg("units") = "mm",
+            "Read a table; format ('linuxcnc'/'tbl', 'csv', 'json') from the suffix unless given; "
+            "units ('mm'/'inch') of the file's lengths (a JSON file's own \"units\" wins).")
+        .def_static(
+            "parse",
+            [](const std::string& text, const std::string& format, const std::string& units) {
+                const TableFormat f = table_format_from_string(format);
+                const LengthUnit u = length_unit_from_string(units);
+                py::gil_scoped_release nogil;
+                return read_tool_table(text, f, u);
+            },
+            py::arg("text"), py::arg("format"), py::arg("units") = "mm", "Parse table text.")
+        .def(
+            "write",
+            [](const ToolTable& t, const std::filesystem::path& path, std::optional<std::string> format) {
+                const auto f = format_arg(format);
+                py::gil_scoped_release nogil;
+                write_tool_table_file(t, path.string(), f);
+            },
+            py::arg("path"), py::arg("format") = py::none(),
+            "Write the table (temporary file + rename: the old file is never lost); format from the "
+            "suffix unless given. Unchanged tools keep their original text.")
+        .def(
+            "dumps",
+            [](const ToolTable& t, const std::string& format) {
+                const TableFormat f = table_format_from_string(format);
+                py::gil_scoped_release nogil;
+                return write_tool_table(t, f);
+            },
+            py::arg("format"), "The table as text in the given format.")
+        .def("__getitem__", &ToolTable::at, py::arg("number"), py::return_value_policy::copy,
+             "a copy of tool `number`; raises ToolTableError when absent")
+        .def(
+            "get", [](const ToolTable& t, int n) -> std::optional<Tool> {
+                if (const Tool* p = t.find(n)) return *p;
+                return std::nullopt;
+            },
+            py::arg("number"), "a copy of tool `number`, or None")
+        .def("__contains__", &ToolTable::contains, py::arg("number"))
+        .def("__len__", &ToolTable::size)
+        .def("__iter__", [](const ToolTable& t) { return py::iter(py::cast(t.tools())); },
+             "iterate over copies of the tools, in file order")
+        .def_property_readonly("tools", [](const ToolTable& t) { return py::tuple(py::cast(t.tools())); })
+        .def_property_readonly("numbers",
+                               [](const ToolTable& t) {
+                                   py::list out;
+                                   for (const Tool& tool : t.tools()) out.append(tool.number);
+                                   return out;
+                               })
+        .def("set", &ToolTable::set, py::arg("tool"), "insert, or replace the tool with the same number")
+        .def("remove", &ToolTable::remove, py::arg("number"), "remove a tool; returns whether it was there")
+        .def_property(
+            "units", [](const ToolTable& t) { return std::string(to_string(t.units())); },
+            [](ToolTable& t, const std::string& u) { t.set_units(length_unit_from_string(u)); },
+            "length unit of the file: 'mm' or 'inch' (changing it rewrites every tool on write)")
+        .def_property_readonly(
+            "format",
+            [](const ToolTable& t) -> std::optional<std::string> {
+                if (auto f = t.source_format()) return std::string(to_string(*f));
+                return std::nullopt;
+            },
+            "the format the table was read from, or None")
+        .def("__copy__", [](const ToolTable& t) { return t; })
+        .def("__deepcopy__", [](const ToolTable& t, py::dict) { return t; }, py::arg("memo"))
+        .def("__repr__", [](const ToolTable& t) {
+            return "ToolTable(" + std::to_string(t.size()) + " tools, units='" + std::string(to_string(t.units())) +
+                   "')";
+        });
+}
