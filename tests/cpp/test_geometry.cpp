@@ -6,7 +6,6 @@
 #include "toolcomp/geometry/arc.hpp"
 
 using namespace toolcomp;
-using Catch::Approx;
 
 TEST_CASE("centre from R: the four (R, direction) cases of spec 1.3") {
     Vec2 s(40, 40), e(70, 40);

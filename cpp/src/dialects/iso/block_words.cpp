@@ -29,8 +29,14 @@ void add_g(BlockWords& bw, const Word& w, Dialect d) {
     if (group == kUnknown) fail("unknown_g_code", "Unknown g code used", bw.line, w.column);
     if (group == kUnsupported)
         fail("unsupported_g_code", code_text('G', code) + " is not supported by toolcomp", bw.line, w.column);
-    if (bw.g[group] >= 0)
-        fail("modal_group_conflict", "Two g codes used from same modal group", bw.line, w.column);
+    if (bw.g[group] >= 0) {
+        // LinuxCNC lets G80 stand beside another motion code; the other code wins.
+        if (group == g_motion && (code == 800 || bw.g[group] == 800)) {
+            if (code == 800) return;
+        } else {
+            fail("modal_group_conflict", "Two g codes used from same modal group", bw.line, w.column);
+        }
+    }
     bw.g[group] = code;
     bw.g_column[group] = w.column;
 }

@@ -49,7 +49,7 @@ int m_group(int c, Dialect d) {
         case 980: case 990:
             return d == Dialect::fanuc ? kUnsupported : kUnknown;
         default:
-            if (c >= 1000 && c <= 1990 && c % 10 == 0) return kUnsupported;  // user M100-M199
+            // M100-M199 are user programs on LinuxCNC: without them the code is unknown.
             return kUnknown;
     }
 }

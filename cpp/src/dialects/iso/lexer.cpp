@@ -93,6 +93,7 @@ private:
     double number() {
         bool negative = false;
         skip_blanks();
+        const std::size_t start = i_;  // errors point at the number's first character
         while (i_ < s_.size() && (s_[i_] == '+' || s_[i_] == '-')) {
             if (s_[i_] == '-') negative = !negative;
             ++i_;
@@ -115,10 +116,13 @@ private:
             text.push_back(c);
             ++i_;
         }
+        const std::size_t end = i_;
+        i_ = start;
         if (text.empty()) fail("bad_number_format", "No characters found in reading real value");
         if (points > 1)
             fail("bad_number_format", "bad number format (trailing characters) parsing '" + text + "'");
         if (!digits) fail("bad_number_format", "bad number format (conversion failed) parsing '" + text + "'");
+        i_ = end;
         if (text.front() == '.') text.insert(text.begin(), '0');
         double v = 0;
         std::from_chars(text.data(), text.data() + text.size(), v);

@@ -1,0 +1,90 @@
+// The ISO lexer: every syntax rule of the foundation scope, with LinuxCNC's messages.
+#include <catch2/catch.hpp>
+
+#include "toolcomp/dialects/iso/lexer.hpp"
+
+using namespace toolcomp;
+
+namespace {
+Program P(const std::string& s) { return iso::parse(s, Dialect::linuxcnc); }
+
+std::string word_string(const Program& p, std::size_t b) {
+    std::string out;
+    for (const Word& w : p.words(p.blocks()[b])) out += w.letter + std::to_string(w.value) + " ";
+    return out;
+}
+
+void require_error(const std::string& text, const std::string& message, int line, int column) {
+    try {
+        P(text);
+        FAIL("no error for: " << text);
+    } catch (const ParseError& e) {
+        CHECK(std::string(e.what()) == message);
+        CHECK(e.line() == line);
+        CHECK(e.column() == column);
+    }
+}
+}  // namespace
+
+TEST_CASE("words in any order and case, with values") {
+    Program p = P("g1 x10.5 Y-2 z+.5 f300\n");
+    REQUIRE(p.size() == 1);
+    auto w = p.words(p.blocks()[0]);
+    REQUIRE(w.size() == 5);
+    CHECK(w[0].letter == 'G');
+    CHECK(w[1].letter == 'X');
+    CHECK(w[1].value == 10.5);
+    CHECK(w[2].value == -2);
+    CHECK(w[3].value == 0.5);
+    CHECK(w[4].value == 300);
+    CHECK(w[1].column == 4);
+}
+
+TEST_CASE("spaces inside words and numbers are ignored") {
+    Program p = P("G 1 X 1 0 . 5 Y- 2\n");
+    auto w = p.words(p.blocks()[0]);
+    REQUIRE(w.size() == 3);
+    CHECK(w[0].value == 1);
+    CHECK(w[1].value == 10.5);
+    CHECK(w[2].value == -2);
+}
+
+TEST_CASE("comments: parentheses and semicolon, kept with the block") {
+    Program p = P("G0 (rapid) X1 ; to the start\n(only a comment)\n");
+    REQUIRE(p.size() == 2);
+    auto c = p.comments(p.blocks()[0]);
+    REQUIRE(c.size() == 2);
+    CHECK(c[0].text == "rapid");
+    CHECK(c[0].column == 4);
+    CHECK(c[1].text == " to the start");
+    CHECK(p.words(p.blocks()[0]).size() == 2);
+    CHECK(p.words(p.blocks()[1]).size() == 0);
+}
+
+TEST_CASE("block delete, N numbers, blank lines, CRLF and percent delimiters") {
+    Program p = P("%\r\n\r\n/G1 X1\r\nN10 G0 Y2\r\n   \r\n%\r\nG0 X99\r\n");
+    REQUIRE(p.size() == 2);
+    CHECK(p.blocks()[0].block_delete);
+    CHECK(p.blocks()[0].line == 3);
+    CHECK(p.blocks()[1].line == 4);
+    CHECK(word_string(p, 1).rfind("N10", 0) == 0);
+    CHECK(p.percent_open);
+    CHECK(p.percent_closed);
+}
+
+TEST_CASE("syntax errors carry LinuxCNC's message, the line and the column") {
+    require_error("G0 X1\nG1 X1.2.3\n", "bad number format (trailing characters) parsing '1.2.3'", 2, 5);
+    require_error("G0 Y.\n", "bad number format (conversion failed) parsing '.'", 1, 5);
+    require_error("G0 X\n", "No characters found in reading real value", 1, 5);
+    require_error("G0 X1 & Y2\n", "Bad character '&' used", 1, 7);
+    require_error("G0 X1 N10\n", "Bad character 'n' used", 1, 7);
+    require_error("G0 U1\n", "Bad character 'u' used", 1, 4);
+    require_error("G0 (open\n", "Unclosed comment found", 1, 4);
+    require_error("G0 (a (b) c)\n", "Nested comment found", 1, 7);
+}
+
+TEST_CASE("parameters, expressions and O-words are refused explicitly") {
+    CHECK_THROWS_AS(P("G0 X#1\n"), ParseError);
+    CHECK_THROWS_AS(P("G0 X[1+2]\n"), ParseError);
+    CHECK_THROWS_AS(P("o100 sub\n"), ParseError);
+}
