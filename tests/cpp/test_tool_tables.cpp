@@ -688,3 +688,18 @@ TEST_CASE("files: read, replace safely, keep the old file on errors", "[tools][f
     }
     fs::remove_all(dir);
 }
+
+TEST_CASE("csv: a value without a column adds the column at the end of the header", "[tools][csv]") {
+    const std::string text = "tool,z,comment\n1,25,a\n2,30,b\n";
+    ToolTable table = read_tool_table(text, TableFormat::csv);
+    table.find(2)->edge().orientation = 3;
+    CuttingEdge d2;
+    d2.number = 2;
+    d2.radius = 1;
+    table.find(2)->set_edge(d2);
+    CHECK(write_tool_table(table, TableFormat::csv) ==
+          "tool,z,comment,edge,diameter,orientation\n1,25,a\n2,30,b,,,3\n2,,b,2,2,\n");
+    const ToolTable back = read_tool_table(write_tool_table(table, TableFormat::csv), TableFormat::csv);
+    CHECK(back.at(2) == table.at(2));
+    CHECK(back.at(1) == table.at(1));
+}

@@ -203,13 +203,13 @@ std::string cell_text(const Tool& t, const CuttingEdge& e, const FieldInfo& f, d
 
 // One row of a changed or new tool: known columns from the model, unknown columns as they
 // were; an empty cell stays empty while its value is the default.
-std::string row_text(const CsvSource& src, const Tool& t, const CuttingEdge& e,
+std::string row_text(const std::vector<const FieldInfo*>& columns, const Tool& t, const CuttingEdge& e,
                      const std::vector<std::string>* raw, double scale) {
     std::string out;
-    for (std::size_t i = 0; i < src.columns.size(); ++i) {
+    for (std::size_t i = 0; i < columns.size(); ++i) {
         if (i) out += ',';
         const std::string* old = raw && i < raw->size() ? &(*raw)[i] : nullptr;
-        const FieldInfo* f = src.columns[i];
+        const FieldInfo* f = columns[i];
         if (!f) {
             if (old) out += *old;
             continue;
@@ -390,9 +390,34 @@ std::string write_csv_table(const ToolTable& table) {
     }
 
     const CsvSource& src = *kept;
+    // A changed or new tool may carry a value the file has no column for: such columns are
+    // added at the end of the header (rows left as they were simply have fewer cells).
+    std::vector<const FieldInfo*> columns = src.columns;
+    {
+        std::set<int> slots;
+        for (const FieldInfo* f : columns)
+            if (f) slots.insert(f->slot);
+        for (Field id : canonical_columns()) {
+            const FieldInfo& f = tables::field_info(id);
+            if (slots.count(f.slot)) continue;
+            bool needed = false;
+            for (const Tool& t : table.tools()) {
+                auto snap = src.snapshots.find(t.number);
+                if (snap != src.snapshots.end() && snap->second == t) continue;
+                for (const CuttingEdge& e : t.edges) needed = needed || !is_default(t, e, f);
+            }
+            if (needed) columns.push_back(&f);
+        }
+    }
     std::set<int> written;
     for (std::size_t r = 0; r < src.records.size(); ++r) {
         const KeptRecord& rec = src.records[r];
+        if (rec.kind == RecordKind::header) {
+            out += rec.text;
+            for (std::size_t i = src.columns.size(); i < columns.size(); ++i) out += "," + std::string(columns[i]->name);
+            out += rec.eol;
+            continue;
+        }
         if (rec.kind != RecordKind::row) {
             out += rec.text + rec.eol;
             continue;
@@ -405,13 +430,13 @@ std::string write_csv_table(const ToolTable& table) {
             out += rec.text + rec.eol;
             continue;
         }
-        if (t->has_edge(rec.edge)) out += row_text(src, *t, t->edge(rec.edge), &rec.raw_cells, scale) + rec.eol;
+        if (t->has_edge(rec.edge)) out += row_text(columns, *t, t->edge(rec.edge), &rec.raw_cells, scale) + rec.eol;
         if (src.last_row.at(rec.tool) == r) {  // edges added to this tool go after its last row
             const auto& had = src.file_edges.at(rec.tool);
             for (const CuttingEdge& e : t->edges) {
                 if (std::find(had.begin(), had.end(), e.number) != had.end()) continue;
                 if (!out.empty() && out.back() != '\n') out += src.eol;
-                out += row_text(src, *t, e, nullptr, scale) + src.eol;
+                out += row_text(columns, *t, e, nullptr, scale) + src.eol;
             }
         }
     }
@@ -419,7 +444,7 @@ std::string write_csv_table(const ToolTable& table) {
         if (written.count(t.number)) continue;
         for (const CuttingEdge& e : t.edges) {
             if (!out.empty() && out.back() != '\n') out += src.eol;
-            out += row_text(src, t, e, nullptr, scale) + src.eol;
+            out += row_text(columns, t, e, nullptr, scale) + src.eol;
         }
     }
     return out;
