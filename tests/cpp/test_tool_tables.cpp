@@ -703,3 +703,27 @@ TEST_CASE("csv: a value without a column adds the column at the end of the heade
     CHECK(back.at(2) == table.at(2));
     CHECK(back.at(1) == table.at(1));
 }
+
+TEST_CASE("json: editing one edge keeps the other edges' text and unknown keys", "[tools][json]") {
+    const std::string text =
+        "{\"tools\": [\n"
+        "  {\"tool\": 3, \"edges\": [\n"
+        "    {\"edge\": 1, \"radius\": 2, \"insert\": \"CCMT\"},\n"
+        "    {\"edge\": 2, \"radius\": 2.5, \"z\": 95.5}\n"
+        "  ]}\n"
+        "]}\n";
+    ToolTable table = read_tool_table(text, TableFormat::json);
+    table.find(3)->edge(2).length.z() = 96;
+    CuttingEdge d4;
+    d4.number = 4;
+    d4.radius = 1;
+    table.find(3)->set_edge(d4);
+    CHECK(write_tool_table(table, TableFormat::json) ==
+          "{\"tools\": [\n"
+          "  {\"tool\": 3, \"edges\": [\n"
+          "    {\"edge\": 1, \"radius\": 2, \"insert\": \"CCMT\"},\n"
+          "    {\"edge\": 2, \"radius\": 2.5, \"z\": 96},\n"
+          "    {\"edge\": 4, \"diameter\": 2}\n"
+          "  ]}\n"
+          "]}\n");
+}

@@ -196,32 +196,98 @@ std::string canonical_object(const Tool& t, double scale) {
     return join_object(canonical_members(t, scale), "", ": ", ", ", "");
 }
 
+struct ObjectStyle {
+    std::string open_ws, colon = ": ", sep = ", ", close_ws;
+};
+
+// The spacing an object was written with, to write its replacement the same way.
+ObjectStyle style_of(const std::string& text, const JsonValue& obj) {
+    auto slice = [&](std::size_t b, std::size_t e) { return text.substr(b, e - b); };
+    ObjectStyle st;
+    const auto& ms = obj.members;
+    if (!ms.empty()) {
+        st.open_ws = slice(obj.begin + 1, ms.front().key_begin);
+        st.colon = slice(ms.front().key_end, ms.front().value.begin);
+        st.close_ws = slice(ms.back().value.end, obj.end - 1);
+        if (ms.size() > 1) st.sep = slice(ms[0].value.end, ms[1].key_begin);
+    }
+    return st;
+}
+
+// Joins array elements with the spacing of the original array `arr`.
+std::string join_array(const std::string& text, const JsonValue& arr, const std::vector<std::string>& pieces) {
+    auto slice = [&](std::size_t b, std::size_t e) { return text.substr(b, e - b); };
+    const auto& items = arr.items;
+    std::string prefix, suffix, sep = ", ";
+    if (!items.empty()) {
+        prefix = slice(arr.begin + 1, items.front().begin);
+        suffix = slice(items.back().end, arr.end - 1);
+        if (items.size() > 1) sep = slice(items[0].end, items[1].begin);
+    }
+    std::string out = "[" + prefix;
+    for (std::size_t i = 0; i < pieces.size(); ++i) out += (i ? sep : "") + pieces[i];
+    return out + suffix + "]";
+}
+
+// A changed edge written over its original object: its keys and order, unknown keys as
+// they were, values that are new appended.
+std::string merged_edge_object(const std::string& text, const JsonValue& obj, const CuttingEdge& e, double scale) {
+    std::vector<Member> out;
+    std::set<int> slots;
+    for (const JsonMember& m : obj.members) {
+        const std::string key = text.substr(m.key_begin, m.key_end - m.key_begin);
+        const FieldInfo* f = tables::find_field(m.key);
+        if (!f || !f->edge_level) {
+            out.push_back({key, text.substr(m.value.begin, m.value.end - m.value.begin)});
+            continue;
+        }
+        slots.insert(f->slot);
+        out.push_back({key, spelled(Tool{}, e, *f, scale)});
+    }
+    for (Field id : tables::canonical_edge_fields()) {
+        const FieldInfo& f = tables::field_info(id);
+        if (!slots.count(f.slot) && !edge_value_default(e, id))
+            out.push_back({tables::json_quote(f.name), spelled(Tool{}, e, f, scale)});
+    }
+    if (!slots.count(tables::field_info(Field::edge).slot) && e.number != 1)
+        out.insert(out.begin(), Member{"\"edge\"", std::to_string(e.number)});
+    const ObjectStyle st = style_of(text, obj);
+    return join_object(out, st.open_ws, st.colon, st.sep, st.close_ws);
+}
+
+// The "edges" array of a changed tool, each edge over its original object where there is one.
+std::string merged_edges_array(const std::string& text, const JsonValue& arr, const Tool& t, double scale) {
+    if (arr.kind != Kind::array) return edges_array(t, scale);
+    std::vector<std::string> pieces;
+    for (const CuttingEdge& e : t.edges) {
+        const JsonValue* orig = nullptr;
+        for (const JsonValue& item : arr.items) {
+            int number = 1;
+            if (const JsonValue* n = item.get("edge")) tables::parse_integer(n->text, number);
+            if (item.kind == Kind::object && number == e.number) orig = &item;
+        }
+        pieces.push_back(orig ? merged_edge_object(text, *orig, e, scale) : edge_object(e, scale));
+    }
+    return join_array(text, arr, pieces);
+}
+
 // A changed tool: the object's own keys, order and spacing; known keys get the model's
 // values, unknown keys stay as written; keys that now carry a value are appended.
 std::string rewritten_object(const std::string& text, const JsonValue& obj, const Tool& t, double scale) {
-    auto slice = [&](std::size_t b, std::size_t e) { return text.substr(b, e - b); };
-    const auto& ms = obj.members;
-    std::string open_ws, colon = ": ", sep = ", ", close_ws;
-    if (!ms.empty()) {
-        open_ws = slice(obj.begin + 1, ms.front().key_begin);
-        colon = slice(ms.front().key_end, ms.front().value.begin);
-        close_ws = slice(ms.back().value.end, obj.end - 1);
-        if (ms.size() > 1) sep = slice(ms[0].value.end, ms[1].key_begin);
-    }
     const bool had_edges = obj.get("edges") != nullptr;
     const bool flat = !had_edges && t.edges.size() == 1;
 
     std::vector<Member> out;
     std::set<int> slots;  // known fields already written
-    for (const JsonMember& m : ms) {
-        const std::string key = slice(m.key_begin, m.key_end);
+    for (const JsonMember& m : obj.members) {
+        const std::string key = text.substr(m.key_begin, m.key_end - m.key_begin);
         const FieldInfo* f = tables::find_field(m.key);
         if (m.key == "edges") {
-            out.push_back({key, edges_array(t, scale)});
+            out.push_back({key, merged_edges_array(text, m.value, t, scale)});
             continue;
         }
         if (!f) {
-            out.push_back({key, slice(m.value.begin, m.value.end)});
+            out.push_back({key, text.substr(m.value.begin, m.value.end - m.value.begin)});
             continue;
         }
         slots.insert(f->slot);
@@ -237,9 +303,11 @@ std::string rewritten_object(const std::string& text, const JsonValue& obj, cons
         }
         if (f && slots.count(f->slot)) continue;
         if (f && f->edge_level && !flat) continue;
+        if (f && f->id == Field::pocket && t.pocket == 0) continue;  // canonical only for new tools
         out.push_back(std::move(c));
     }
-    return join_object(out, open_ws, colon, sep, close_ws);
+    const ObjectStyle st = style_of(text, obj);
+    return join_object(out, st.open_ws, st.colon, st.sep, st.close_ws);
 }
 
 std::string canonical_document(const ToolTable& table, double scale) {
