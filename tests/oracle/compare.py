@@ -36,6 +36,7 @@ def toolcomp_columns(path) -> dict:
     for name in ("kind", "start", "end", "center", "abc", "tool_offset", "feed"):
         cols[name] = _get(path, name)
     cols["kind"] = cols["kind"].astype(np.int64)
+    cols["turns"] = _get(path, "turns").astype(np.int64)  # extra full turns of each arc
     return cols
 
 
@@ -94,7 +95,9 @@ def compare(rs: dict, tc, label: str = "") -> None:
                 c = t["center"][j]
                 if not (_close(c[a], rs["center"][i][a], tol) and _close(c[b], rs["center"][i][b], tol)):
                     fail("arc centre differs (in-plane components)")
-                got += lcnc.sweep(t["start"][j], t["end"][j], c, cw, plane, 1, tol=10 * tol)
+                extra = int(t["turns"][j]) if "turns" in t else 0
+                got += lcnc.sweep(t["start"][j], t["end"][j], c, cw, plane, 1 + extra,
+                                  tol=10 * tol)
                 last = j
                 j += 1
                 if got >= want - ang_tol:
@@ -103,7 +106,10 @@ def compare(rs: dict, tc, label: str = "") -> None:
                 fail("arc sweep differs: rs274 %.9f rad, toolcomp %.9f rad" % (want, got))
         if not _close(t["end"][last], rs["end"][i], tol):
             fail("end differs (toolcomp segment #%d)" % last)
-        if not _close(t["start"][first], rs["start"][i], 3 * tol):
+        # rs274 prints no start points; the harness takes the previous end. Where toolcomp's
+        # path itself jumps (G88: the operator retracts by hand), there is nothing to compare.
+        jump = first > 0 and not _close(t["start"][first], t["end"][first - 1], tol)
+        if not jump and not _close(t["start"][first], rs["start"][i], 3 * tol):
             fail("start differs (toolcomp segment #%d)" % first)
         if not _close(t["abc"][last], rs["abc"][i], lcnc.PRINT_TOL):
             fail("abc differs")

@@ -12,14 +12,14 @@ namespace toolcomp::iso {
 
 namespace {
 bool is_cycle(int motion) {
-    return motion == 730 || (motion >= 810 && motion <= 890);
+    return motion == 730 || motion == 740 || (motion >= 810 && motion <= 890);
 }
 bool uses_axes_group0(int g0) { return g0 == 100 || g0 == 280 || g0 == 300 || g0 == 920; }
 // Codes whose block's axis words are data, not a move: G10, G28, G30, G92 and the tool
-// length offsets given as axis values (G43.1, G43.2 without H).
+// length offsets given as axis values (G43.1, G43.2).
 bool axes_are_data(const BlockWords& bw) {
     int lc = bw.g[g_length_comp];
-    return uses_axes_group0(bw.g[g_nonmodal]) || lc == 431 || (lc == 432 && !bw.has('H'));
+    return uses_axes_group0(bw.g[g_nonmodal]) || lc == 431 || lc == 432;
 }
 
 std::string lower_prefix(const std::string& s, std::size_t n) {

@@ -1,7 +1,8 @@
-// Canned cycles G73, G81, G82, G83, G85, G86, G88, G89 expanded into their moves, the way
+// Canned cycles G73, G74, G81-G86, G88, G89 expanded into their moves, the way
 // LinuxCNC's interpreter does (convert_cycle_xy/_zx/_yz and the per-cycle functions):
 // the XY move at the current level, the plunge to R, the cycle's own moves, the retract to
 // the clearance level (G98: the initial level, G99: R), repeated L times.
+#include <algorithm>
 #include <cmath>
 
 #include "interp.hpp"
@@ -45,14 +46,14 @@ void Interp::cycle(const BlockWords& bw, int code) {
             fail("cycle_q_missing", "Q word missing with " + gname);
         }
     }
-    if (code == 820 || code == 860 || code == 880 || code == 890) {
+    if (code == 740 || code == 840) {
+        if (bw.has('P')) cyc_.p = bw['P'].value;  // optional dwell at the bottom
+    } else if (code == 820 || code == 860 || code == 880 || code == 890) {
         if (bw.has('P'))
             cyc_.p = bw['P'].value;
         else if (!continuing)
             fail("cycle_p_missing", "Dwell time p word missing with " + gname);
     }
-    if ((code == 860 || code == 880) && spindle_ == 0)
-        fail("spindle_not_turning", "Spindle not turning in " + gname);
     if (feed_ <= 0) fail("zero_feed", "Cannot feed with zero feed rate");
 
     // Levels along the tool axis. The initial level is that of the first block of the cycle.
@@ -92,17 +93,37 @@ void Interp::cycle(const BlockWords& bw, int code) {
     }
     const double clear = st_.retract_initial ? old_cc : r;
     const double feed = feed_for(bw, 10, 0);
-    const double rapid_delta = 0.010 * kMmPerInch * (st_.inch ? 1.0 : 1.0);  // G83_RAPID_DELTA
+    const double rapid_delta = 0.010 * kMmPerInch;  // LinuxCNC's G83_RAPID_DELTA, 0.010 inch
     for (int rep = 0; rep < repeats; ++rep) {
         a += da;
         b += db;
-        straight(MotionKind::rapid, at(a, b, pos_[ax.c]), nan);
-        if (pos_[ax.c] != r) straight(MotionKind::rapid, at(a, b, r), nan);
+        // To the hole at the current level, but never below the clearance level (LinuxCNC
+        // 2.9 moves diagonally up to it when the tool is lower), then to R.
+        const double level = std::max(pos_[ax.c], clear);
+        straight(MotionKind::rapid, at(a, b, level), nan);
+        if (level != r) straight(MotionKind::rapid, at(a, b, r), nan);
+        // The control checks the spindle when the cycle itself starts, after the approach.
+        if ((code == 860 || code == 880 || code == 740 || code == 840) && spindle_ == 0)
+            fail("spindle_not_turning", "Spindle not turning in " + std::string(code == 740 ? "G74" : code == 840 ? "G84" : gname));
+        if (code == 840 && spindle_ < 0)
+            fail("spindle_direction", "Spindle turning counterclockwise in G84");
+        if (code == 740 && spindle_ > 0) fail("spindle_direction", "Spindle turning clockwise in G74");
         switch (code) {
+            case 740:
+            case 840:  // tapping: feed in, reverse the spindle, feed straight out to clearance
+                straight(MotionKind::line, at(a, b, bottom), feed);
+                straight(MotionKind::line, at(a, b, clear), feed);
+                break;
+            case 880:
+                // Bore, dwell, stop: the operator retracts by hand. The control then takes the
+                // tool to be at the clearance level; the path has no move for that.
+                straight(MotionKind::line, at(a, b, bottom), feed);
+                pos_ = at(a, b, clear);
+                info("manual_retract", "G88: the operator retracts the tool by hand; the next move starts at the clearance level");
+                break;
             case 810:
             case 820:
             case 860:
-            case 880:
                 straight(MotionKind::line, at(a, b, bottom), feed);
                 straight(MotionKind::rapid, at(a, b, clear), nan);
                 break;

@@ -93,9 +93,9 @@ void Interp::motion_arc(const BlockWords& bw, int code) {
         fail("arc_offset_wrong_axis",
              std::string(1, c_off) + " word given for arc in " + plane_name + " plane", bw[c_off].column);
     if (r_form && !bw.has(a_l) && !bw.has(b_l)) {
-        std::string m(1, a_l);
-        m += std::string(" and ") + static_cast<char>(b_l + ('a' - 'A')) + " words missing for arc in " + plane_name + " plane";
-        fail("arc_axis_words_missing", m);
+        // LinuxCNC names the axes in alphabetical order: "X and z words missing ... xz plane".
+        const char* names = st_.plane == Plane::xy ? "X and y" : st_.plane == Plane::zx ? "X and z" : "Y and z";
+        fail("arc_axis_words_missing", std::string(names) + " words missing for arc in " + plane_name + " plane");
     }
     int p = 1;
     if (bw.has('P')) {

@@ -53,6 +53,7 @@ public:
             if (u == '#' || u == '[')
                 fail("parameters_not_supported",
                      "Parameters and expressions ('#', '[') are not supported yet");
+            if (u == '$') fail("bad_character", "Unknown word where unary operation could be");
             if (u == 'O' && first_word)
                 fail("o_word_not_supported", "O-word subprograms and control flow are not supported yet");
             if (!is_word_letter(u) || (u == 'N' && !first_word)) {
