@@ -62,8 +62,9 @@ Tool random_tool(std::mt19937& rng, int number, bool single_edge_only) {
         e.length_wear.z() = random_value(rng) / 100;
         e.radius_wear = random_value(rng) / 100;
         const int more = std::uniform_int_distribution<int>(0, 2)(rng);
+        const CuttingEdge first = e;  // `e` dangles once edges grows
         for (int d = 2; d < 2 + more; ++d) {
-            CuttingEdge x = e;
+            CuttingEdge x = first;
             x.number = d;
             x.radius = std::abs(random_value(rng));
             t.edges.push_back(x);
