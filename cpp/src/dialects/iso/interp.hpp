@@ -6,6 +6,7 @@
 // and degrees (A B C), with machine = program + G92 + G5x + tool length offset.
 #include <Eigen/Core>
 #include <array>
+#include <type_traits>
 #include <string>
 #include <vector>
 
@@ -55,7 +56,10 @@ private:
     // current value when the word is absent.
     Vec6 find_end(const BlockWords& bw) const;
     double axis_value(const BlockWords& bw, int axis) const;  // word value in mm/deg (G7 halved)
-    Vec6 machine_offset() const { return g92_ + g5x_[st_.coord_system - 1] + tlo_; }
+    // machine = rotate(program + G92) + G5x + tool length offset; the rotation (G10 L2 R)
+    // turns X/Y about the origin of the active coordinate system.
+    Vec6 to_machine(const Vec6& prog) const;
+    Vec6 from_machine(const Vec6& machine) const;
 
     // ---- motion (interp_motion.cpp) --------------------------------------------------------
     void straight(MotionKind kind, const Vec6& end, double feed);
@@ -68,7 +72,14 @@ private:
     void g10(const BlockWords& bw);
     void g92(const BlockWords& bw, int code);
     void home(const BlockWords& bw, int code);  // G28 / G30 and G28.1 / G30.1
-    void change_offset(Vec6& offset, const Vec6& value);  // keeps the machine still
+    // Sets an offset (or rotation) while the machine stays still: the program coordinates
+    // of the current point change instead.
+    template <class T>
+    void change_offset(T& offset, const std::type_identity_t<T>& value) {
+        Vec6 m = to_machine(pos_);
+        offset = value;
+        pos_ = from_machine(m);
+    }
 
     // ---- tools (interp_tools.cpp) ------------------------------------------------------------
     void select_tool(const BlockWords& bw);
@@ -90,6 +101,7 @@ private:
     ModalState st_;
     Vec6 pos_ = Vec6::Zero();
     std::array<Vec6, 9> g5x_;
+    std::array<double, 9> rotation_{};  // XY rotation of each coordinate system, degrees
     Vec6 g92_ = Vec6::Zero(), g92_saved_ = Vec6::Zero();
     Vec6 tlo_ = Vec6::Zero();
     Vec6 g28_ = Vec6::Zero(), g30_ = Vec6::Zero();  // machine coordinates

@@ -63,9 +63,10 @@ void Interp::motion_line(const BlockWords& bw, int code, bool machine_coords) {
     Vec6 end = find_end(bw);
     if (machine_coords) {
         // G53: the words are machine coordinates of the controlled point.
-        Vec6 off = machine_offset();
+        Vec6 m = to_machine(pos_);
         for (int i = 0; i < 6; ++i)
-            if (bw.has(kAxisLetter[i])) end[i] = axis_value(bw, i) - off[i];
+            if (bw.has(kAxisLetter[i])) m[i] = axis_value(bw, i);
+        end = from_machine(m);
     }
     if (code == 10 && st_.feed_mode != 930 && feed_ <= 0)
         fail("zero_feed", "Cannot do g1 with zero feed rate", bw.axis_column());

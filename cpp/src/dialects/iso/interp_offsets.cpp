@@ -11,17 +11,29 @@ namespace {
 constexpr char kAxisLetter[6] = {'X', 'Y', 'Z', 'A', 'B', 'C'};
 }
 
-void Interp::change_offset(Vec6& offset, const Vec6& value) {
-    pos_ -= value - offset;
-    offset = value;
+Vec6 Interp::to_machine(const Vec6& prog) const {
+    Vec6 p = prog + g92_;
+    const double r = rotation_[st_.coord_system - 1] * kPi / 180;
+    if (r != 0) {
+        const double c = std::cos(r), s = std::sin(r), x = p[0], y = p[1];
+        p[0] = c * x - s * y;
+        p[1] = s * x + c * y;
+    }
+    return p + g5x_[st_.coord_system - 1] + tlo_;
 }
 
-void Interp::set_coord_system(int n) {
-    if (n == st_.coord_system) return;
-    Vec6 old = g5x_[st_.coord_system - 1];
-    st_.coord_system = n;
-    pos_ -= g5x_[n - 1] - old;
+Vec6 Interp::from_machine(const Vec6& machine) const {
+    Vec6 p = machine - g5x_[st_.coord_system - 1] - tlo_;
+    const double r = rotation_[st_.coord_system - 1] * kPi / 180;
+    if (r != 0) {
+        const double c = std::cos(r), s = std::sin(r), x = p[0], y = p[1];
+        p[0] = c * x + s * y;
+        p[1] = -s * x + c * y;
+    }
+    return p - g92_;
 }
+
+void Interp::set_coord_system(int n) { change_offset(st_.coord_system, n); }
 
 void Interp::g10(const BlockWords& bw) {
     const int col = bw.g_column[g_nonmodal];
@@ -34,25 +46,39 @@ void Interp::g10(const BlockWords& bw) {
     int p = bw.has('P') ? static_cast<int>(bw['P'].value) : -1;  // the control truncates P
     if (!bw.has('P') || p < 0 || p > 9) fail("g10_bad_p", "P value out of range (0-9) with " + which, col);
     if (l == 2 && (bw.has('I') || bw.has('J'))) fail("g10_ij", "I J words not allowed with G10 L2", col);
-    if (bw.has('R')) {
-        if (l == 20) fail("g10_l20_r", "R not allowed in G10 L20", bw['R'].column);
-        if (bw['R'].value != 0)
-            fail("unsupported_rotation", "Coordinate system rotation (G10 L2 R) is not supported by toolcomp",
-                 bw['R'].column);
-    }
+    if (l == 20 && bw.has('R')) fail("g10_l20_r", "R not allowed in G10 L20", bw['R'].column);
     int n = p == 0 ? st_.coord_system : p;
     Vec6 value = g5x_[n - 1];
-    for (int i = 0; i < 6; ++i) {
-        if (!bw.has(kAxisLetter[i])) continue;
-        double v = axis_value(bw, i);
-        // L2: the offset itself (absolute even in G91). L20: the offset that gives the
-        // current point the coordinate v in system n.
-        value[i] = l == 2 ? v : pos_[i] + g5x_[st_.coord_system - 1][i] - v;
+    double rotation = rotation_[n - 1];
+    if (l == 2) {  // the offset itself (absolute even in G91) and the rotation
+        for (int i = 0; i < 6; ++i)
+            if (bw.has(kAxisLetter[i])) value[i] = axis_value(bw, i);
+        if (bw.has('R')) rotation = bw['R'].value;
+    } else {
+        // L20: the origin that gives the current point the programmed coordinates in system
+        // n (the machine point is m = rotate_n(t + G92) + origin_n + TLO).
+        Vec6 t = pos_;
+        for (int i = 0; i < 6; ++i)
+            if (bw.has(kAxisLetter[i])) t[i] = axis_value(bw, i);
+        Vec6 m = to_machine(pos_) - tlo_;
+        Vec6 rt = t + g92_;
+        const double r = rotation * kPi / 180, c = std::cos(r), sn = std::sin(r);
+        const double x = rt[0], y = rt[1];
+        rt[0] = c * x - sn * y;
+        rt[1] = sn * x + c * y;
+        Vec6 full = m - rt;
+        for (int i = 0; i < 6; ++i)
+            if (bw.has(kAxisLetter[i])) value[i] = full[i];
     }
-    if (n == st_.coord_system)
-        change_offset(g5x_[n - 1], value);
-    else
+    if (n == st_.coord_system) {
+        Vec6 m = to_machine(pos_);
         g5x_[n - 1] = value;
+        rotation_[n - 1] = rotation;
+        pos_ = from_machine(m);
+    } else {
+        g5x_[n - 1] = value;
+        rotation_[n - 1] = rotation;
+    }
 }
 
 void Interp::g92(const BlockWords& bw, int code) {
@@ -75,7 +101,7 @@ void Interp::g92(const BlockWords& bw, int code) {
 void Interp::home(const BlockWords& bw, int code) {
     Vec6& stored = (code == 280 || code == 281) ? g28_ : g30_;
     if (code == 281 || code == 301) {  // G28.1 / G30.1: remember where the machine is
-        stored = pos_ + machine_offset();
+        stored = to_machine(pos_);
         return;
     }
     // Through the intermediate point (axis words as usual) to the stored machine position;
@@ -83,7 +109,7 @@ void Interp::home(const BlockWords& bw, int code) {
     Vec6 mid = find_end(bw);
     straight(MotionKind::rapid, mid, std::nan(""));
     Vec6 target = mid;
-    Vec6 home_prog = stored - machine_offset();
+    Vec6 home_prog = from_machine(stored);
     bool any = bw.has_axis();
     for (int i = 0; i < 6; ++i)
         if (!any || bw.has(kAxisLetter[i])) target[i] = home_prog[i];
