@@ -10,7 +10,8 @@ void bind_program(py::module_& m) {
     py::class_<Program, std::shared_ptr<Program>>(m, "Program")
         .def_static(
             "read",
-            [](const std::string& path, std::optional<std::string> dialect) {
+            [](const py::object& path_like, std::optional<std::string> dialect) {
+                std::string path = py::module_::import("os").attr("fspath")(path_like).cast<std::string>();
                 std::optional<Dialect> d;
                 if (dialect) d = dialect_from_name(*dialect);
                 py::gil_scoped_release nogil;
