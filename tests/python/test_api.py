@@ -200,3 +200,23 @@ def test_block_delete_switch():
     text = "G21 G0 X1\n/G0 X2\nG0 X3\nM2\n"
     assert len(run(text).path) == 3
     assert len(run(text, block_delete=True).path) == 2
+
+
+def test_type_stub_names_exist():
+    """Every class, method and property the stub declares exists in the compiled module."""
+    import ast
+    import pathlib
+
+    stub = pathlib.Path(tc.__file__).with_name("_core.pyi")
+    if not stub.exists():  # editable installs keep the stub in the source tree
+        stub = pathlib.Path(__file__).resolve().parents[2] / "python" / "toolcomp" / "_core.pyi"
+    tree = ast.parse(stub.read_text())
+    for node in tree.body:
+        if isinstance(node, ast.ClassDef):
+            cls = getattr(tc._core, node.name)
+            for item in node.body:
+                name = getattr(item, "name", None) or getattr(getattr(item, "target", None), "id", None)
+                if name and not (name.startswith("__") and name != "__len__"):
+                    assert hasattr(cls, name), f"{node.name}.{name}"
+        elif isinstance(node, ast.FunctionDef):
+            assert hasattr(tc._core, node.name)
