@@ -1,0 +1,76 @@
+"""Benchmarks: print figures, assert nothing. Run with `make bench`.
+
+Measures parse and run of generated CAM-like programs (lines and arcs, G17, tool length
+offset) through the Python API, and LinuxCNC's rs274 on the same program when it is
+installed. Sizes: TOOLCOMP_BENCH_BLOCKS (default 1,000,000).
+"""
+import os
+import resource
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+
+import toolcomp as tc
+
+
+def generate(n_blocks):
+    """Rows of 6 moves: long line, two corners, a CCW semicircle, a line back, a CW semicircle."""
+    out = ["G21 G17 G90 G94 G40 G49", "T1 M6", "G43 H1", "G0 X0 Y0 Z5", "G1 Z-1 F600"]
+    y = 0.0
+    rows = n_blocks // 6
+    for _ in range(rows):
+        out.append("G1 X100 Y%.3f" % y)
+        out.append("G1 X100 Y%.3f" % (y + 2))
+        out.append("G1 X95 Y%.3f" % (y + 2))
+        out.append("G3 X95 Y%.3f I0 J2.5" % (y + 7))
+        out.append("G1 X5 Y%.3f" % (y + 7))
+        out.append("G2 X5 Y%.3f I0 J-3.5" % y)
+        y += 0.001
+    out.append("M2")
+    return "\n".join(out) + "\n", rows * 6
+
+
+def best_of(fn, repeat=3):
+    best = float("inf")
+    for _ in range(repeat):
+        t = time.perf_counter()
+        value = fn()
+        best = min(best, time.perf_counter() - t)
+    return best, value
+
+
+def main():
+    n = int(os.environ.get("TOOLCOMP_BENCH_BLOCKS", "1000000"))
+    text, blocks = generate(n)
+    tools = tc.ToolTable.parse("T1 P1 Z50 D6\n", "linuxcnc")
+    print(f"program: {blocks:,} motion blocks, {len(text) / 1e6:.1f} MB")
+    t_parse, prog = best_of(lambda: tc.Program.parse(text))
+    t_run, res = best_of(lambda: tc.run(prog, tools=tools))
+    rss = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+    print(f"toolcomp parse : {t_parse:7.3f} s  {blocks / t_parse / 1e6:6.2f} M blocks/s")
+    print(f"toolcomp run   : {t_run:7.3f} s  {blocks / t_run / 1e6:6.2f} M blocks/s  ({len(res.path):,} segments)")
+    print(f"toolcomp total : {t_parse + t_run:7.3f} s  peak RSS {rss:.0f} MB")
+    if shutil.which("rs274"):
+        with tempfile.TemporaryDirectory() as d:
+            prog_path = os.path.join(d, "big.ngc")
+            with open(prog_path, "w") as f:
+                f.write(text)
+            with open(os.path.join(d, "t.tbl"), "w") as f:
+                f.write("T1 P1 Z%.6f D%.6f\n" % (50 / 25.4, 6 / 25.4))  # this rs274 reads tables in inch
+            open(os.path.join(d, "v.var"), "w").close()
+            env = dict(os.environ, HOME=d)
+            t = time.perf_counter()
+            subprocess.run(["rs274", "-g", "-t", "t.tbl", "-v", "v.var", "big.ngc", os.devnull], cwd=d, env=env,
+                           stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=False)
+            t_rs = time.perf_counter() - t
+        print(f"LinuxCNC rs274 : {t_rs:7.3f} s  {blocks / t_rs / 1e6:6.2f} M blocks/s  (output to /dev/null)")
+        print(f"speed-up       : {t_rs / (t_parse + t_run):7.1f} x")
+    else:
+        print("LinuxCNC rs274 : not installed (make oracle installs it)")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
