@@ -286,7 +286,7 @@ def plot_result(result, ax=None, plane="xy", show_nominal=True, tolerance=0.005,
     h, v = _plane_axes(plane)
     if ax is None:
         plt = _pyplot()
-        _, ax = plt.subplots(figsize=(7, 6), layout="constrained")
+        _, ax = plt.subplots(figsize=(8.5, 6), layout="constrained")
 
     path = result.path
     nominal = getattr(result, "nominal", None)
@@ -312,21 +312,26 @@ def plot_result(result, ax=None, plane="xy", show_nominal=True, tolerance=0.005,
             ax.plot(rapid[:, h], rapid[:, v], color="crimson", lw=0.8, ls=(0, (4, 3)),
                     alpha=0.7, zorder=2, label="rapid")
         tools = [int(t) for t in np.unique(tool[kind != RAPID])]
-        for k, t in enumerate(tools):
+        colour = {t: _TOOL_COLOURS[k % len(_TOOL_COLOURS)] for k, t in enumerate(tools)}
+        for t in tools:
             xy = _runs(pts, owner, (kind != RAPID) & (tool == t))
             label = f"T{t} compensated" if len(tools) > 1 else "compensated"
-            ax.plot(xy[:, h], xy[:, v], color=_TOOL_COLOURS[k % len(_TOOL_COLOURS)],
-                    lw=1.6, zorder=3, label=label, solid_capstyle="round")
-        # Feed moves along the viewing direction (plunges, drilled holes) have no extent
-        # in the plot: mark where they are.
+            ax.plot(xy[:, h], xy[:, v], color=colour[t], lw=1.6, zorder=3, label=label,
+                    solid_capstyle="round")
+        # Seen from above, feeds along Z only (plunges, drilled holes) have no extent in
+        # the plot: mark where they are.
         s = np.asarray(path.start, dtype=float).reshape(n, 3)
         e = np.asarray(path.end, dtype=float).reshape(n, 3)
         flat = np.hypot(e[:, h] - s[:, h], e[:, v] - s[:, v]) < 1e-9
-        plunge = (kind == LINE) & flat & (np.linalg.norm(e - s, axis=1) > 1e-9)
-        if plunge.any():
-            spots = np.unique(np.round(e[plunge][:, [h, v]], 6), axis=0)
-            ax.plot(spots[:, 0], spots[:, 1], "o", ms=6, mfc="none", mec="black", mew=1.0,
-                    zorder=5, label="plunge / drill")
+        plunge = (kind == LINE) & flat & (np.abs(e[:, 2] - s[:, 2]) > 1e-9) & (3 - h - v == 2)
+        label = "plunge / drill"
+        for t in tools:
+            sel = plunge & (tool == t)
+            if sel.any():
+                spots = np.unique(np.round(e[sel][:, [h, v]], 6), axis=0)
+                ax.plot(spots[:, 0], spots[:, 1], "o", ms=6, mfc="white", mec=colour[t],
+                        mew=1.3, zorder=5, label=label)
+                label = None
         if generated.any():
             xy = _runs(pts, owner, generated)
             ax.plot(xy[:, h], xy[:, v], color="darkorange", lw=3.0, alpha=0.8, zorder=4,
@@ -359,7 +364,9 @@ def plot_result(result, ax=None, plane="xy", show_nominal=True, tolerance=0.005,
     if title is not None:
         ax.set_title(title)
     if legend and ax.get_legend_handles_labels()[0]:
-        ax.legend(loc="best", fontsize=8, framealpha=0.85)
+        # beside the drawing, so it never hides part of the path
+        ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=8,
+                  frameon=False, borderaxespad=0.0)
     return ax
 
 
@@ -369,7 +376,7 @@ def save_plot(result, filename, plane="xy", dpi=150, title=None, **kwargs):
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure
 
-    fig = Figure(figsize=(7, 6), layout="constrained")
+    fig = Figure(figsize=(8.5, 6), layout="constrained")
     FigureCanvasAgg(fig)
     ax = fig.add_subplot()
     plot_result(result, ax=ax, plane=plane, title=title, **kwargs)

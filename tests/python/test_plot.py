@@ -174,3 +174,32 @@ def test_bad_plane(mpl, example_result):
 
     with pytest.raises(ValueError, match="plane"):
         plot_result(example_result, plane="uv")
+
+
+def test_plunges_and_drilled_holes_are_marked_from_above(mpl, example_result):
+    import matplotlib.pyplot as plt
+    from toolcomp.plot import plot_result
+
+    fig, (top, side) = plt.subplots(1, 2)
+    try:
+        plot_result(example_result, ax=top, plane="xy")
+        plot_result(example_result, ax=side, plane="xz")
+        top_labels = [t.get_text() for t in top.get_legend().get_texts()]
+        side_labels = [t.get_text() for t in side.get_legend().get_texts()]
+        assert "plunge / drill" in top_labels and "plunge / drill" not in side_labels
+        spots = np.concatenate([ln.get_xydata() for ln in top.lines if ln.get_marker() == "o"
+                                and ln.get_label() != "start" and ln.get_linestyle() == "None"])
+        for hole in ([10, 10], [90, 10], [90, 70], [10, 70]):  # the G81 holes of pocket.ngc
+            assert np.any(np.all(np.isclose(spots, hole), axis=1)), hole
+    finally:
+        plt.close(fig)
+
+
+def test_result_plot_method(mpl, example_result):
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots()
+    try:
+        assert example_result.plot(ax=ax, plane="yz") is ax
+    finally:
+        plt.close(fig)
