@@ -249,10 +249,14 @@ def summarize(out: Outcome) -> dict:
         if segs["compensated"]:
             segs["generated"] = int(np.count_nonzero(np.asarray(path.generated)))
             tools = sorted(int(t) for t in np.unique(np.asarray(path.tool)))
-            kind = np.asarray(path.kind)
-            lengths = segment_lengths(path)
-            length = {"feed": float(lengths[kind != 0].sum()),
-                      "rapid": float(lengths[kind == 0].sum())}
+            if hasattr(path, "length"):  # the engine's exact arc/helix lengths, O(N)
+                total, feed = path.length(True), path.length(False)
+                length = {"feed": float(feed), "rapid": max(0.0, float(total - feed))}
+            else:
+                kind = np.asarray(path.kind)
+                lengths = segment_lengths(path)
+                length = {"feed": float(lengths[kind != 0].sum()),
+                          "rapid": float(lengths[kind == 0].sum())}
     summary["segments"] = segs
     summary["tools"] = tools
     summary["length_mm"] = length

@@ -275,11 +275,24 @@ _SEVERITY_STYLE = {
 }
 
 
-def plot_result(result, ax=None, plane="xy", show_nominal=True, tolerance=0.005,
+def _drawing_tolerance(path):
+    """Chord tolerance fine enough to look round at any screen size: 1/20000 of the
+    path's extent, at least 1 micron."""
+    if path_size(path) == 0:
+        return DEFAULT_TOLERANCE
+    _, start, end, _ = _columns(path)
+    pts = np.concatenate([start, end])
+    pts = pts[np.all(np.isfinite(pts), axis=1)]
+    extent = float(np.linalg.norm(pts.max(axis=0) - pts.min(axis=0))) if len(pts) else 0.0
+    return max(DEFAULT_TOLERANCE, extent / 20000.0)
+
+
+def plot_result(result, ax=None, plane="xy", show_nominal=True, tolerance=None,
                 title=None, legend=True):
     """Draw a run result: programmed path thin grey, compensated path coloured by tool,
     rapids dashed, segments inserted by compensation highlighted, diagnostics marked with
-    their line number. Arcs are drawn as arcs (chorded within ``tolerance`` mm).
+    their line number. Arcs are drawn as arcs, chorded within ``tolerance`` mm (default:
+    1/20000 of the path's extent).
 
     ``plane`` is "xy" (default), "xz", "zx", "yz" or "g17"/"g18"/"g19". Returns the Axes.
     """
@@ -290,6 +303,8 @@ def plot_result(result, ax=None, plane="xy", show_nominal=True, tolerance=0.005,
 
     path = result.path
     nominal = getattr(result, "nominal", None)
+    if tolerance is None:
+        tolerance = _drawing_tolerance(path)
 
     if show_nominal and nominal is not None and path_size(nominal):
         pts, owner = segment_polylines(nominal, tolerance)

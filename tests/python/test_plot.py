@@ -203,3 +203,21 @@ def test_result_plot_method(mpl, example_result):
         assert example_result.plot(ax=ax, plane="yz") is ax
     finally:
         plt.close(fig)
+
+
+@pytest.mark.parametrize("program", ["pocket", "helix"])
+def test_segment_lengths_agree_with_the_engine(program, tmp_path):
+    import toolcomp as tc
+
+    if program == "pocket":
+        res = tc.run(str(EXAMPLE), tools=str(TOOLS))
+    else:  # helices in all three planes, a multi-turn one with P
+        text = ("G21 G90 G17\nG0 X10 Y0 Z0\nG3 X0 Y10 Z-2 I-10 J0 F300\nG2 X10 Y0 Z-4 R10\n"
+                "G3 X10 Y0 Z-10 I-10 J0 P3\nG18\nG2 X20 Y0 Z-10 I5 K0\nG19\n"
+                "G3 Y10 Z0 J5 K5\nM2\n")
+        res = tc.run(tc.Program.parse(text))
+    path = res.path
+    lengths = segment_lengths(path, tolerance=0.01)
+    kind = np.asarray(path.kind)
+    assert lengths.sum() == pytest.approx(path.length(True), rel=1e-9)
+    assert lengths[kind != 0].sum() == pytest.approx(path.length(False), rel=1e-9)
