@@ -58,3 +58,16 @@ TEST_CASE("G85 feeds out, G89 dwells and feeds out, G86 needs the spindle") {
     CHECK_THROWS_WITH(run_text("G21 F100\nG0 Z5\nG83 X4 R2 Z-1\nM2\n"), "Q word missing with g83");
     CHECK_THROWS_WITH(run_text("G21 F100\nG0 Z5\nG81 X4 R-2 Z-1\nM2\n"), "R less than z in cycle in xy plane");
 }
+
+TEST_CASE("G87 back boring, absolute and incremental with repeats") {
+    auto r = run_text("G21 G17 G90 F200\nM3 S100\nG0 X0 Y0 Z10\nG98 G87 X5 Y5 R2 Z-10 I1 J0.5 K-5\nM2\n");
+    check_moves(r.nominal, 1,
+                {{0, 5, 5, 10}, {0, 5, 5, 2}, {0, 6, 5.5, 2}, {0, 6, 5.5, -10}, {0, 5, 5, -10}, {1, 5, 5, -5},
+                 {1, 5, 5, -10}, {0, 6, 5.5, -10}, {0, 6, 5.5, 10}, {0, 5, 5, 10}});
+    auto inc = run_text("G21 G17 G90 F200\nM3 S100\nG0 X0 Y0 Z10\nG91 G99 G87 X5 Y5 R-2 Z-10 I1 J0.5 K3 L2\nM2\n");
+    check_moves(inc.nominal, 11,
+                {{0, 10, 10, 8}, {0, 11, 10.5, 8}, {0, 11, 10.5, -2}, {0, 10, 10, -2}, {1, 10, 10, 1},
+                 {1, 10, 10, -2}, {0, 11, 10.5, -2}, {0, 11, 10.5, 8}, {0, 10, 10, 8}});
+    CHECK_THROWS_WITH(run_text("G21 F100\nG0 Z10\nG87 X5 Y5 R2 Z-10 I1 J0.5 K-5\nM2\n"), "Spindle not turning in g87");
+    CHECK_THROWS_WITH(run_text("G21 F100\nM3\nG0 Z10\nG87 X5 Y5 R2 Z-10 I1 K-5\nM2\n"), "J word missing with g87");
+}

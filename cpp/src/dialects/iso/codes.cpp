@@ -8,7 +8,7 @@ int g_group(int c, Dialect d) {
         case 920: case 921: case 922: case 923:
             return g_nonmodal;
         case 0: case 10: case 20: case 30: case 730: case 740: case 800: case 810: case 820: case 830:
-        case 840: case 850: case 860: case 880: case 890:
+        case 840: case 850: case 860: case 870: case 880: case 890:
             return g_motion;
         case 170: case 180: case 190: return g_plane;
         case 900: case 910: return g_distance;
@@ -25,9 +25,9 @@ int g_group(int c, Dialect d) {
         case 960: case 970: return g_spindle_mode;
         case 70: case 80: return g_lathe_diameter;
         // Real LinuxCNC codes that toolcomp does not run yet: splines and NURBS, spindle-
-        // synchronised motion, probing, threading, back boring, lathe cycles, rotated planes.
+        // synchronised motion, probing, threading, lathe cycles, rotated planes.
         case 50: case 51: case 52: case 53: case 330: case 331: case 382: case 383: case 384:
-        case 385: case 760: case 870: case 171: case 181: case 191:
+        case 385: case 760: case 171: case 181: case 191:
         case 521: case 700: case 710: case 720: case 731: case 961:
             return kUnsupported;
         default:

@@ -73,6 +73,7 @@ void Interp::run() {
 void Interp::check_words(const BlockWords& bw, int motion_to_be) {
     const int g0 = bw.g[g_nonmodal];
     const bool arc = motion_to_be == 20 || motion_to_be == 30;
+    const bool g87 = motion_to_be == 870;  // back boring takes I J K too
     const bool cycle_block = is_cycle(motion_to_be);
     auto col = [&](char c) { return bw[c].column; };
     if (bw.has('D')) {
@@ -85,11 +86,11 @@ void Interp::check_words(const BlockWords& bw, int motion_to_be) {
         int lc = bw.g[g_length_comp];
         if (!(lc == 430 || lc == 432 || lc == 440)) fail("unused_word", "H word with no G43 or G76 to use it", col('H'));
     }
-    if (bw.has('I') && !(arc || g0 == 100))
+    if (bw.has('I') && !(arc || g87 || g0 == 100))
         fail("unused_word", "I word with no G2, G3, G5, G5.1, G10, G33.1, G76, or G87 to use it", col('I'));
-    if (bw.has('J') && !(arc || g0 == 100))
+    if (bw.has('J') && !(arc || g87 || g0 == 100))
         fail("unused_word", "J word with no G2, G3, G5, G5.1, G10, G76 or G87 to use it", col('J'));
-    if (bw.has('K') && !arc) fail("unused_word", "K word with no G2, G3, G33, G33.1, G76, or G87 to use it", col('K'));
+    if (bw.has('K') && !(arc || g87)) fail("unused_word", "K word with no G2, G3, G33, G33.1, G76, or G87 to use it", col('K'));
     if (bw.has('L')) {
         int rc = bw.g[g_radius_comp];
         if (!(g0 == 100 || cycle_block || rc == 411 || rc == 421))
@@ -144,6 +145,27 @@ bool Interp::execute(const BlockWords& bw) {
     }
     if (g0 == 920 && !axes) fail("g92_no_axes", "All axes missing with g52 or g92", bw.g_column[g_nonmodal]);
     check_words(bw, motion_to_be);
+    if (comp_on() && bw.g[g_radius_comp] != 400) {
+        // What LinuxCNC refuses while the tool radius is compensated.
+        if (bw.g[g_plane] >= 0 && bw.g[g_plane] != (st_.plane == Plane::xy ? 170 : st_.plane == Plane::zx ? 180 : 190))
+            fail("comp_plane_change", "Cannot change planes with cutter radius compensation on", bw.g_column[g_plane]);
+        if (bw.m[m_tool_change] == 60)
+            fail("comp_tool_change", "Cannot change tools with cutter radius compensation on", bw.m_column[m_tool_change]);
+        if (bw.g[g_length_comp] >= 0)
+            fail("comp_tool_offset", "Cannot change tool offset with cutter radius compensation on",
+                 bw.g_column[g_length_comp]);
+        if (g0 == 530) fail("comp_g53", "Cannot use g53 with cutter radius comp", bw.g_column[g_nonmodal]);
+        if (g0 == 280 || g0 == 300)
+            fail("comp_home", "Cannot use g28 or g30 with cutter radius comp", bw.g_column[g_nonmodal]);
+        if (bw.g[g_coord_system] >= 0)
+            fail("comp_coord_system", "Cannot change coordinate systems with cutter radius compensation on",
+                 bw.g_column[g_coord_system]);
+        if (g0 == 920 || g0 == 921 || g0 == 922 || g0 == 923 || g0 == 100)
+            fail("comp_axis_offsets", "Cannot change axis offsets with cutter radius comp", bw.g_column[g_nonmodal]);
+        if (is_cycle(motion_to_be))
+            fail("comp_canned_cycle", "Cannot use canned cycles with cutter compensation on",
+                 motion_code >= 0 ? bw.g_column[g_motion] : bw.axis_column());
+    }
 
     // 2-4: feed mode, feed, speed
     if (bw.g[g_feed_mode] >= 0) st_.feed_mode = bw.g[g_feed_mode];
@@ -162,10 +184,8 @@ bool Interp::execute(const BlockWords& bw) {
     if (bw.g[g_units] >= 0) st_.inch = bw.g[g_units] == 200;
     if (bw.g[g_plane] >= 0) st_.plane = bw.g[g_plane] == 170 ? Plane::xy : bw.g[g_plane] == 180 ? Plane::zx : Plane::yz;
     if (bw.g[g_lathe_diameter] >= 0) st_.diameter = bw.g[g_lathe_diameter] == 70;
-    // 13: cutter radius compensation
-    if (int rc = bw.g[g_radius_comp]; rc >= 0 && rc != 400)
-        fail("radius_comp_not_supported",
-             "Cutter radius compensation (G41/G42) is not supported by toolcomp yet", bw.g_column[g_radius_comp]);
+    // 13: cutter radius compensation (requested here, applied by the compensation stage)
+    if (bw.g[g_radius_comp] >= 0) radius_comp(bw, bw.g[g_radius_comp]);
     // 14: tool length compensation
     if (bw.g[g_length_comp] >= 0) length_comp(bw, bw.g[g_length_comp]);
     // 15: coordinate system

@@ -34,6 +34,7 @@ struct ModalState {
 // Values that stick from one canned-cycle block to the next while the cycle continues.
 struct CycleMemory {
     double r = 0, z = 0, q = 0, p = 0;  // r, z as written (mm), q mm, p seconds
+    double i = 0, j = 0, k = 0;          // G87: offsets of the back bore (mm), K as written
 };
 
 class Interp {
@@ -87,6 +88,10 @@ private:
     void length_comp(const BlockWords& bw, int code);
     Vec6 tool_offset_of(int tool, int column) const;
 
+    // ---- cutter radius compensation request (interp_radius.cpp) ----------------------------
+    void radius_comp(const BlockWords& bw, int code);
+    bool comp_on() const { return radius_.side != 0; }
+
     // ---- canned cycles (interp_cycles.cpp) ---------------------------------------------------
     void cycle(const BlockWords& bw, int code);
 
@@ -114,6 +119,7 @@ private:
     double cycle_il_ = 0;        // initial level of the running canned cycle
     bool cycle_il_set_ = false;
     int spindle_ = 0;            // 0 stopped, 1 clockwise, -1 counter-clockwise
+    RadiusRequest radius_;       // cutter radius compensation carried on every move (side 0 = off)
 };
 
 }  // namespace toolcomp::iso

@@ -1,4 +1,4 @@
-// Canned cycles G73, G74, G81-G86, G88, G89 expanded into their moves, the way
+// Canned cycles G73, G74, G81-G89 expanded into their moves, the way
 // LinuxCNC's interpreter does (convert_cycle_xy/_zx/_yz and the per-cycle functions):
 // the XY move at the current level, the plunge to R, the cycle's own moves, the retract to
 // the clearance level (G98: the initial level, G99: R), repeated L times.
@@ -54,6 +54,17 @@ void Interp::cycle(const BlockWords& bw, int code) {
         else if (!continuing)
             fail("cycle_p_missing", "Dwell time p word missing with " + gname);
     }
+    if (code == 870) {  // back boring: I J offsets from the hole, K the top of the counterbore
+        const char* names = "IJK";
+        for (int n = 0; n < 3; ++n) {
+            char c = names[n];
+            if (!bw.has(c) && !continuing)
+                fail("cycle_g87_word_missing", std::string(1, c) + " word missing with g87");
+        }
+        if (bw.has('I')) cyc_.i = bw['I'].value * sc;
+        if (bw.has('J')) cyc_.j = bw['J'].value * sc;
+        if (bw.has('K')) cyc_.k = bw['K'].value * sc;
+    }
     if (feed_ <= 0) fail("zero_feed", "Cannot feed with zero feed rate");
 
     // Levels along the tool axis. The initial level is that of the first block of the cycle.
@@ -103,7 +114,7 @@ void Interp::cycle(const BlockWords& bw, int code) {
         straight(MotionKind::rapid, at(a, b, level), nan);
         if (level != r) straight(MotionKind::rapid, at(a, b, r), nan);
         // The control checks the spindle when the cycle itself starts, after the approach.
-        if ((code == 860 || code == 880 || code == 740 || code == 840) && spindle_ == 0)
+        if ((code == 860 || code == 870 || code == 880 || code == 740 || code == 840) && spindle_ == 0)
             fail("spindle_not_turning", "Spindle not turning in " + std::string(code == 740 ? "G74" : code == 840 ? "G84" : gname));
         if (code == 840 && spindle_ < 0)
             fail("spindle_direction", "Spindle turning counterclockwise in G84");
@@ -114,6 +125,22 @@ void Interp::cycle(const BlockWords& bw, int code) {
                 straight(MotionKind::line, at(a, b, bottom), feed);
                 straight(MotionKind::line, at(a, b, clear), feed);
                 break;
+            case 870: {
+                // Back boring: in beside the hole with the spindle oriented, across to the
+                // hole's axis at the bottom, feed up to the counterbore top (K) and back, then
+                // out the same way.
+                const double oa = a + cyc_.i, ob = b + cyc_.j;
+                const double middle = st_.incremental ? bottom + cyc_.k : cyc_.k;
+                straight(MotionKind::rapid, at(oa, ob, r), nan);
+                straight(MotionKind::rapid, at(oa, ob, bottom), nan);
+                straight(MotionKind::rapid, at(a, b, bottom), nan);
+                straight(MotionKind::line, at(a, b, middle), feed);
+                straight(MotionKind::line, at(a, b, bottom), feed);
+                straight(MotionKind::rapid, at(oa, ob, bottom), nan);
+                straight(MotionKind::rapid, at(oa, ob, clear), nan);
+                straight(MotionKind::rapid, at(a, b, clear), nan);
+                break;
+            }
             case 880:
                 // Bore, dwell, stop: the operator retracts by hand. The control then takes the
                 // tool to be at the clearance level; the path has no move for that.

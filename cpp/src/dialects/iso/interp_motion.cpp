@@ -55,6 +55,7 @@ void Interp::straight(MotionKind kind, const Vec6& end, double feed) {
     m.line = line_;
     m.tool = tool_;
     m.tool_offset = tlo_.head<3>();
+    m.radius = radius_;
     sink_.push(m);
     pos_ = end;
 }
@@ -167,6 +168,7 @@ void Interp::motion_arc(const BlockWords& bw, int code) {
     m.line = line_;
     m.tool = tool_;
     m.tool_offset = tlo_.head<3>();
+    m.radius = radius_;
     m.feed = st_.feed_mode == 930 ? feed_for(bw, code, arc_length(m.arc())) : feed_for(bw, code, 0);
     sink_.push(m);
     pos_ = end;

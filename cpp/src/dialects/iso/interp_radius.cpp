@@ -1,0 +1,60 @@
+// G40, G41/G42 [D], G41.1/G42.1 D [L]: the cutter radius compensation request, with
+// LinuxCNC's checks (convert_cutter_compensation_on/off). The offset itself is computed by
+// the radius compensation stage after the Motion stream.
+#include <cmath>
+
+#include "interp.hpp"
+#include "toolcomp/tools/tool_table.hpp"
+
+namespace toolcomp::iso {
+
+void Interp::radius_comp(const BlockWords& bw, int code) {
+    const int col = bw.g_column[g_radius_comp];
+    if (code == 400) {
+        radius_ = {};
+        return;
+    }
+    const bool dynamic = code == 411 || code == 421;
+    const std::string name = code == 410 ? "G41" : code == 420 ? "G42" : code == 411 ? "G41.1" : "G42.1";
+    if (st_.plane == Plane::yz)
+        fail("comp_plane", "Cutter radius compensation allowed only in XY, XZ planes", col);
+    if (comp_on()) fail("comp_already_on", "Cannot turn cutter radius comp on when on", col);
+
+    double radius = 0;
+    int orientation = 0;
+    if (dynamic) {
+        if (!bw.has('D')) fail("comp_no_d", name + " with no D word", col);
+        radius = bw['D'].value * scale() / 2;
+        if (bw.has('L')) {
+            if (st_.plane != Plane::zx) fail("comp_l_not_g18", name + " with L word, but plane is not G18", bw['L'].column);
+            orientation = static_cast<int>(std::lround(bw['L'].value));
+        }
+    } else {
+        int tool = tool_;
+        if (bw.has('D')) {
+            double d = bw['D'].value;
+            if (std::fabs(d - std::round(d)) > 1e-9)
+                fail("comp_d_not_integer", name + " requires D word to be a whole number", bw['D'].column);
+            if (d < 0) fail("comp_negative_d", "Negative d word tool radius index used", bw['D'].column);
+            tool = static_cast<int>(std::lround(d));
+        }
+        if (tool != 0 && tools_) {
+            const Tool* t = tools_->find(tool);
+            if (!t)
+                fail("tool_not_found", "Requested tool " + std::to_string(tool) + " not found in the tool table",
+                     bw.has('D') ? bw['D'].column : col);
+            radius = t->edge().effective_radius();
+            orientation = t->edge().orientation;
+        }
+        if (orientation != 0 && orientation != 9 && st_.plane != Plane::zx)
+            fail("comp_lathe_tool_plane", name + " with lathe tool, but plane is not G18", col);
+    }
+    int side = (code == 410 || code == 411) ? 1 : -1;
+    if (radius < 0) {  // a negative radius cuts on the other side
+        side = -side;
+        radius = -radius;
+    }
+    radius_ = {static_cast<std::int8_t>(side), radius, static_cast<std::int8_t>(orientation)};
+}
+
+}  // namespace toolcomp::iso
