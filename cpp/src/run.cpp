@@ -36,12 +36,12 @@ private:
 };
 }  // namespace
 
-Program parse_program(std::string_view text, Dialect dialect, std::string name) {
+Program parse_program(std::string_view text, Dialect dialect, std::string name, bool strict) {
     if (!is_iso(dialect)) dialect_not_supported(dialect);
-    return iso::parse(text, dialect, std::move(name));
+    return iso::parse(text, dialect, std::move(name), strict);
 }
 
-Program read_program(const std::string& path, std::optional<Dialect> dialect) {
+Program read_program(const std::string& path, std::optional<Dialect> dialect, bool strict) {
     std::ifstream f(path, std::ios::binary);
     if (!f) throw ParseError("file_not_found", "Cannot open program file '" + path + "'");
     std::ostringstream ss;
@@ -55,7 +55,7 @@ Program read_program(const std::string& path, std::optional<Dialect> dialect) {
         throw ParseError("unknown_dialect",
                          "Cannot tell the dialect of '" + path + "' from its suffix; pass dialect=");
     }
-    return parse_program(ss.str(), d, path);
+    return parse_program(ss.str(), d, path, strict);
 }
 
 bool Result::ok() const {

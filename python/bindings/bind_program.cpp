@@ -10,27 +10,29 @@ void bind_program(py::module_& m) {
     py::class_<Program, std::shared_ptr<Program>>(m, "Program")
         .def_static(
             "read",
-            [](const py::object& path_like, std::optional<std::string> dialect) {
+            [](const py::object& path_like, std::optional<std::string> dialect, bool strict) {
                 std::string path = py::module_::import("os").attr("fspath")(path_like).cast<std::string>();
                 std::optional<Dialect> d;
                 if (dialect) d = dialect_from_name(*dialect);
                 py::gil_scoped_release nogil;
-                return std::make_shared<Program>(read_program(path, d));
+                return std::make_shared<Program>(read_program(path, d, strict));
             },
-            py::arg("path"), py::arg("dialect") = py::none(),
-            "Read a part program; the dialect comes from the suffix unless given.")
+            py::arg("path"), py::arg("dialect") = py::none(), py::arg("strict") = true,
+            "Read a part program; the dialect comes from the suffix unless given. strict=False keeps the "
+            "blocks before a syntax error and raises it when a run reaches that line.")
         .def_static(
             "parse",
-            [](const std::string& text, const std::string& dialect, std::string name) {
+            [](const std::string& text, const std::string& dialect, std::string name, bool strict) {
                 Dialect d = dialect_from_name(dialect);
                 py::gil_scoped_release nogil;
-                return std::make_shared<Program>(parse_program(text, d, std::move(name)));
+                return std::make_shared<Program>(parse_program(text, d, std::move(name), strict));
             },
-            py::arg("text"), py::arg("dialect") = "linuxcnc", py::arg("name") = "<string>",
+            py::arg("text"), py::arg("dialect") = "linuxcnc", py::arg("name") = "<string>", py::arg("strict") = true,
             "Parse program text in the given dialect.")
         .def_readonly("name", &Program::name)
         .def_property_readonly("dialect", [](const Program& p) { return std::string(dialect_name(p.dialect)); })
         .def_property_readonly("word_count", &Program::word_count)
+        .def_property_readonly("syntax_error", [](const Program& p) { return p.syntax_error; })
         .def("__len__", &Program::size)
         .def("__repr__", [](const Program& p) {
             return "Program(name='" + p.name + "', dialect='" + std::string(dialect_name(p.dialect)) +

@@ -48,7 +48,9 @@ def run(program, tools=None, *, dialect=None, strict=True, block_delete=False, p
     dialect's control behaviour. The GIL is released while the program runs.
     """
     if isinstance(program, (str, _os.PathLike)):
-        program = Program.read(_os.fspath(program), dialect)
+        # Read leniently: a syntax error is raised (or reported) when the run reaches its
+        # line, as the control does, and never after M2/M30.
+        program = Program.read(_os.fspath(program), dialect, strict=False)
     if isinstance(tools, (str, _os.PathLike)):
         tools = ToolTable.read(_os.fspath(tools), units=units)
     return _core.run(program, tools, strict=strict, block_delete=block_delete, profile=profile)

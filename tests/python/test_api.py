@@ -224,3 +224,20 @@ def test_type_stub_names_exist():
                     assert hasattr(cls, name), f"{node.name}.{name}"
         elif isinstance(node, ast.FunctionDef):
             assert hasattr(tc._core, node.name)
+
+
+def test_syntax_errors_are_met_when_the_run_reaches_them(tmp_path):
+    f = tmp_path / "p.ngc"
+    f.write_text("G21 G0 X1\nG1 X2 F100\nG1 X3 & Y1\nG0 X0\nM2\n")
+    with pytest.raises(tc.ParseError) as e:
+        tc.Program.read(f)  # a whole-file syntax check
+    assert (e.value.line, e.value.column) == (3, 7)
+    res = tc.run(f, strict=False)
+    assert len(res.path) == 2
+    (d,) = res.diagnostics
+    assert (d.code, d.line, d.column, d.message) == ("bad_character", 3, 7, "Bad character '&' used")
+    with pytest.raises(tc.ParseError):
+        tc.run(f)
+    # After M2 the control reads no further: a bad line there is no error.
+    f.write_text("G21 G0 X1\nM2\nG1 X3 & Y1\n")
+    assert tc.run(f).ok

@@ -15,10 +15,11 @@ namespace toolcomp {
 
 class ToolTable;
 
-// Parse program text in the given dialect. Throws ParseError.
-Program parse_program(std::string_view text, Dialect dialect, std::string name = "<string>");
+// Parse program text in the given dialect. strict: throws ParseError at the first syntax
+// error; otherwise the error is kept in the Program and raised when a run reaches it.
+Program parse_program(std::string_view text, Dialect dialect, std::string name = "<string>", bool strict = true);
 // Read a program file; the dialect comes from the suffix when not given.
-Program read_program(const std::string& path, std::optional<Dialect> dialect = std::nullopt);
+Program read_program(const std::string& path, std::optional<Dialect> dialect = std::nullopt, bool strict = true);
 
 struct RunOptions {
     bool strict = true;         // raise at the first error; else return the path up to it

@@ -11,4 +11,12 @@ void Program::begin_block(int line, bool block_delete) {
     blocks_.push_back(b);
 }
 
+void Program::drop_last_block() {
+    if (blocks_.empty()) return;
+    const Block& b = blocks_.back();
+    words_.resize(b.first_word);
+    comments_.resize(b.first_comment);
+    blocks_.pop_back();
+}
+
 }  // namespace toolcomp

@@ -4,6 +4,7 @@
 // Blocks and words are stored flat (one vector of words, blocks as ranges into it), so a
 // million-block CAM program costs two allocations rather than a million.
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -40,6 +41,10 @@ public:
     // content (for "program ended without M2/M30" errors).
     bool percent_open = false, percent_closed = false;
     int last_line = 0;
+    // A program parsed leniently keeps the blocks before its first syntax error and the
+    // error itself, which the interpreter raises when execution reaches that line (a
+    // control reports a bad line only when it gets there: never after M2).
+    std::optional<Diagnostic> syntax_error;
 
     std::size_t size() const { return blocks_.size(); }
     const std::vector<Block>& blocks() const { return blocks_; }
@@ -58,6 +63,8 @@ public:
         comments_.push_back(std::move(c));
         ++blocks_.back().comment_count;
     }
+    // Removes the last block (a front end that failed half-way through it).
+    void drop_last_block();
     void reserve(std::size_t blocks, std::size_t words) {
         blocks_.reserve(blocks);
         words_.reserve(words);

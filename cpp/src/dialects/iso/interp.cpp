@@ -61,6 +61,7 @@ void Interp::run() {
         }
     }
     sink_.finish();
+    if (const auto& e = prog_.syntax_error) throw ParseError(e->code, e->message, e->pos);
     if (prog_.dialect == Dialect::linuxcnc) {
         // LinuxCNC refuses a file that simply stops: it must end with M2/M30 or '%'.
         line_ = prog_.last_line;

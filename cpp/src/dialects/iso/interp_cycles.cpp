@@ -40,7 +40,6 @@ void Interp::cycle(const BlockWords& bw, int code) {
     if (code == 730 || code == 830) {
         if (bw.has('Q')) {
             if (bw['Q'].value < 0) fail("cycle_q_missing", "Q word missing with " + gname, bw['Q'].column);
-            if (bw['Q'].value == 0) fail("cycle_q_zero", "Negative or zero q value used", bw['Q'].column);
             cyc_.q = bw['Q'].value * sc;
         } else if (!continuing) {
             fail("cycle_q_missing", "Q word missing with " + gname);
@@ -116,6 +115,8 @@ void Interp::cycle(const BlockWords& bw, int code) {
         // The control checks the spindle when the cycle itself starts, after the approach.
         if ((code == 860 || code == 870 || code == 880 || code == 740 || code == 840) && spindle_ == 0)
             fail("spindle_not_turning", "Spindle not turning in " + std::string(code == 740 ? "G74" : code == 840 ? "G84" : gname));
+        if ((code == 730 || code == 830) && cyc_.q <= 0)
+            fail("cycle_q_zero", "Negative or zero q value used", bw.has('Q') ? bw['Q'].column : 0);
         if (code == 840 && spindle_ < 0)
             fail("spindle_direction", "Spindle turning counterclockwise in G84");
         if (code == 740 && spindle_ > 0) fail("spindle_direction", "Spindle turning clockwise in G74");

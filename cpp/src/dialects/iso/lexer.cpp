@@ -150,7 +150,7 @@ std::string_view trimmed(std::string_view l) {
 
 }  // namespace
 
-Program parse(std::string_view text, Dialect dialect, std::string name) {
+Program parse(std::string_view text, Dialect dialect, std::string name, bool strict) {
     Program prog;
     prog.name = std::move(name);
     prog.dialect = dialect;
@@ -181,7 +181,14 @@ Program parse(std::string_view text, Dialect dialect, std::string name) {
         }
         seen_content = true;
         prog.last_line = line_no;
-        LineLexer(line, line_no, prog).run();
+        try {
+            LineLexer(line, line_no, prog).run();
+        } catch (const ParseError& e) {
+            if (strict) throw;
+            prog.drop_last_block();
+            prog.syntax_error = e.diagnostic();
+            break;
+        }
         if (nl == text.size()) break;
     }
     return prog;

@@ -12,7 +12,8 @@
 
 namespace toolcomp::iso {
 
-// Throws ParseError (code, message, line, column) on the first syntax error.
-Program parse(std::string_view text, Dialect dialect, std::string name = "<string>");
+// strict: throws ParseError (code, message, line, column) on the first syntax error.
+// Otherwise the blocks before it are kept and the error is stored in Program::syntax_error.
+Program parse(std::string_view text, Dialect dialect, std::string name = "<string>", bool strict = true);
 
 }  // namespace toolcomp::iso
