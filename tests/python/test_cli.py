@@ -44,6 +44,7 @@ EXAMPLE_FEED = 855.748346
 BAD_PROGRAMS = {
     "unknown_gcode": "G21 G90 G17\nG0 X0 Y0 Z5\nG1 Z-1 F100\nG7.5 X10\nG1 X20\nM2\n",
     "arc_end_off_circle": "G21 G90 G17\nG0 X0 Y0 Z5\nG1 Z-1 F100\nG2 X10 Y0 I3 J0\nG1 X20\nM2\n",
+    "bad_character": "G21 G90 G17\nG0 X0 Y0 Z5\nG1 Z-1 F100\nG1 X10 &\nG1 X20\nM2\n",
 }
 BAD_LINE = 4
 
