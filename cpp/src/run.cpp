@@ -25,6 +25,10 @@ public:
         a_.push(m);
         b_.push(m);
     }
+    void control(const ControlEvent& e) override {
+        a_.control(e);
+        b_.control(e);
+    }
     void finish() override {
         a_.finish();
         b_.finish();

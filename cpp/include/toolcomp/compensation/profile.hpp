@@ -37,7 +37,11 @@ struct ControlProfile {
     bool length_subtract_word = false;  // G44 (subtract the offset) exists
 
     // ---- cutter radius compensation (used by the radius stage) ---------------------------
-    bool radius_comp_supported = false;
+    // Joints whose turn differs from a straight continuation by at most this angle (rad)
+    // are tangent: nothing is inserted and the next element starts where the last ended.
+    double corner_tolerance = 0.05;
+    // A pulled-back arc may sweep this much (rad) more than programmed before it gouges.
+    double arc_sweep_tolerance = 0.001;
 };
 
 ControlProfile profile_for(Dialect d);

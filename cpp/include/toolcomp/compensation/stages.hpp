@@ -3,11 +3,12 @@
 //
 // Tool length compensation is resolved by the interpreter into each move's tool_offset
 // (LinuxCNC reports program coordinates with the offset beside them, so the length stage
-// only carries it). Cutter radius compensation is the next stage to plug in here; until
-// then a move that requests it is refused.
+// only carries it). Cutter radius compensation (and lathe nose radius, its G18 case) is
+// the radius stage.
 #include <vector>
 
 #include "toolcomp/compensation/profile.hpp"
+#include "toolcomp/compensation/radius.hpp"
 #include "toolcomp/motion/motion.hpp"
 #include "toolcomp/program/diagnostic.hpp"
 
@@ -16,13 +17,13 @@ namespace toolcomp {
 class CompensationChain : public MotionSink {
 public:
     CompensationChain(const ControlProfile& profile, MotionSink& out, std::vector<Diagnostic>& diagnostics)
-        : profile_(profile), out_(out), diags_(diagnostics) {}
-    void push(const Motion& m) override;
-    void finish() override { out_.finish(); }
+        : radius_(profile, out), diags_(diagnostics) {}
+    void push(const Motion& m) override { radius_.push(m); }
+    void control(const ControlEvent& e) override { radius_.control(e); }
+    void finish() override { radius_.finish(); }
 
 private:
-    const ControlProfile& profile_;
-    MotionSink& out_;
+    RadiusCompensation radius_;
     std::vector<Diagnostic>& diags_;
 };
 

@@ -42,11 +42,21 @@ struct Motion {
     Arc arc() const { return {start, end, center, plane, kind == MotionKind::arc_ccw ? 1 : -1, turns}; }
 };
 
+// Points in the program where a compensation stage must settle what it holds back: the
+// block that cancels radius compensation (G40), a program stop (M0/M1/M60) and the program
+// end (M2/M30). Errors found there are reported at that block's line.
+enum class ControlKind : std::uint8_t { radius_off, stop, program_end };
+struct ControlEvent {
+    ControlKind kind;
+    std::int32_t line;
+};
+
 // A consumer of the stream: compensation stages and the Path collector.
 class MotionSink {
 public:
     virtual ~MotionSink() = default;
     virtual void push(const Motion& m) = 0;
+    virtual void control(const ControlEvent&) {}
     virtual void finish() {}
 };
 

@@ -221,7 +221,13 @@ bool Interp::execute(const BlockWords& bw) {
     }
     // 21: stop / end
     int stop = bw.m[m_stop];
-    return !(stop == 20 || stop == 300);
+    if (stop == 0 || stop == 10 || stop == 600) sink_.control({ControlKind::stop, line_});
+    if (stop == 20 || stop == 300) {
+        sink_.control({ControlKind::program_end, line_});
+        radius_ = {};  // M2/M30 end compensation (and reset the other modes)
+        return false;
+    }
+    return true;
 }
 
 void interpret(const Program& program, const ToolTable* tools, const ControlProfile& profile,

@@ -11,6 +11,7 @@ namespace toolcomp::iso {
 void Interp::radius_comp(const BlockWords& bw, int code) {
     const int col = bw.g_column[g_radius_comp];
     if (code == 400) {
+        if (radius_.side != 0) sink_.control({ControlKind::radius_off, line_});
         radius_ = {};
         return;
     }

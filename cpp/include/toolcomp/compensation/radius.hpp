@@ -1,0 +1,73 @@
+#pragma once
+// Cutter radius compensation (G41/G42, G41.1/G42.1) as a stage of the Motion stream.
+//
+// The stage moves the tool centre to the side of the programmed contour. It holds back the
+// last compensated plane move (and the moves without plane motion behind it) until the next
+// plane move decides where it ends: at an outside (convex) corner a transition arc about the
+// programmed corner is inserted (a straight traverse for rapids), at an inside (concave)
+// corner the held move is pulled back to the intersection of the two compensated elements,
+// joints turning by less than the profile's corner tolerance are taken as tangent. The entry
+// move ends perpendicular to itself at its programmed end (an entry arc gets a new centre),
+// the exit move runs uncompensated from the last compensated point. Pulled-back moves are
+// checked for reversal (gouging). This is LinuxCNC's interpreter's algorithm, reproduced to
+// its numbers and error messages; the profile holds what a control may choose differently.
+//
+// In G18 with a lathe tool (orientation 1..8) the emitted points are the imaginary tool tip:
+// the nose centre shifted by ±r in X and Z per orientation (LinuxCNC numbering).
+#include <vector>
+
+#include "toolcomp/compensation/profile.hpp"
+#include "toolcomp/motion/motion.hpp"
+#include "toolcomp/program/diagnostic.hpp"
+
+namespace toolcomp {
+
+class RadiusCompensation : public MotionSink {
+public:
+    RadiusCompensation(const ControlProfile& profile, MotionSink& out) : profile_(profile), out_(out) {}
+    void push(const Motion& m) override;
+    void control(const ControlEvent& e) override;
+    void finish() override;
+
+private:
+    // A move held back until the next plane move settles its end point.
+    struct Held {
+        Motion m;            // end/centre in machine naming (X Y Z), nose-centre path
+        Vec2 dir;            // straights: the direction the reversal check compares against
+        double sweep = 0;    // arcs: programmed sweep (0 = never checked: corner and entry arcs)
+    };
+
+    void passthrough(const Motion& m);
+    void entry_line(const Motion& m);
+    void entry_arc(const Motion& m);
+    void next_line(const Motion& m);
+    void next_arc(const Motion& m);
+    void hold(Motion m, const Vec2& dir, double sweep);
+    void move_end_and_flush(const Vec2& x, int line);
+    void flush();
+    void emit(Motion m);
+    void turn_off(int line);
+    [[noreturn]] void fail(const char* code, const std::string& msg, int line) const;
+
+    Vec2 plane2(const Vec3& v) const { return in_plane(v, plane_); }
+    Vec3 with_plane(Vec3 v, const Vec2& ab) const;
+
+    const ControlProfile& profile_;
+    MotionSink& out_;
+
+    bool active_ = false;          // compensating, the entry move made
+    Plane plane_ = Plane::xy;
+    int side_ = 0;                 // +1 left, -1 right
+    double r_ = 0;
+    Vec3 program_ = Vec3::Zero();  // P: last programmed end point
+    Vec3 current_ = Vec3::Zero();  // C: last compensated end point (nose/cutter centre)
+    std::vector<Held> queue_;
+    Vec2 endpoint_ = Vec2::Zero();  // start of the last held plane move
+    bool endpoint_valid_ = false;
+    bool arc_not_allowed_ = false;  // the move after G40 must be straight
+    bool exit_pending_ = false;     // the next uncompensated move starts at the last compensated point
+    bool have_out_ = false;
+    Vec3 last_out_ = Vec3::Zero();  // end of the last emitted move (start of the next)
+};
+
+}  // namespace toolcomp
