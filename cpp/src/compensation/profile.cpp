@@ -1,16 +1,35 @@
 #include "toolcomp/compensation/profile.hpp"
 
+#include "toolcomp/geometry/vec.hpp"
+
 namespace toolcomp {
 
 ControlProfile profile_for(Dialect d) {
     ControlProfile p;
     p.name = std::string(dialect_name(d));
     switch (d) {
-        case Dialect::fanuc:
+        case Dialect::fanuc: {
             // Fanuc "tool length compensation type A": the H value acts on Z; G44 subtracts.
             p.length_axes = LengthAxes::z_only;
             p.length_subtract_word = true;
+            // Cutter compensation C: start-up type A, intersections at inside and obtuse
+            // outside corners, extension blocks at acute outside corners, any plane, no arc
+            // in the start-up block. Alarm texts as printed by 0i/30i series controls.
+            RadiusRules& r = p.radius;
+            r.yz_plane = true;
+            r.entry = EntryStyle::perpendicular_to_next;
+            r.entry_arc = false;
+            r.outside_corner = OutsideCorner::extension;
+            r.corner_limit = kPi / 2;
+            r.messages.entry_arc = "PS0034 NO CIRC ALLOWED IN ST-UP/EXT BLK";
+            r.messages.exit_arc = "PS0034 NO CIRC ALLOWED IN ST-UP/EXT BLK";
+            r.messages.entry_too_short = "PS0041 INTERFERENCE IN CRC";
+            r.messages.entry_arc_too_short = "PS0041 INTERFERENCE IN CRC";
+            r.messages.arc_too_small = "PS0038 INTERFERENCE IN CIRCULAR BLOCK";
+            r.messages.gouge_feed = r.messages.gouge_traverse = "PS0041 INTERFERENCE IN CRC";
+            r.messages.gouge_arc = r.messages.arc_to_line = r.messages.arc_to_arc = "PS0033 NO INTERSECTION AT CRC";
             break;
+        }
         default:
             break;
     }

@@ -16,6 +16,55 @@ enum class LengthAxes {
     plane_normal = 2,  // type B: the length on the axis normal to the active plane
 };
 
+// How a control finishes the activation block of radius compensation (spec §1.6).
+enum class EntryStyle {
+    // The activation block ends perpendicular to itself at its programmed end, then the
+    // ordinary corner rule joins it to the next element (LinuxCNC; Fanuc start-up type B;
+    // Sinumerik KONT).
+    perpendicular_to_entry = 0,
+    // The activation block ends where the next element's equidistant starts, perpendicular
+    // to the next element (Fanuc start-up type A; Sinumerik NORM; Heidenhain RL/RR).
+    perpendicular_to_next = 1,
+};
+
+// What fills the gap at an outside corner (spec §1.4.1).
+enum class OutsideCorner {
+    arc = 0,           // transition arc of the tool radius about the programmed corner
+    intersection = 1,  // meet at the intersection of the equidistants; sharper turns than
+                       // `corner_limit` get the transition arc
+    extension = 2,     // intersection for turns up to `corner_limit`; sharper ones extend both
+                       // elements by r and join the extensions with a line
+};
+
+// Error texts of the radius stage: each control's own wording.
+struct RadiusMessages {
+    std::string plane = "Cutter radius compensation allowed only in XY, XZ planes";
+    std::string entry_too_short = "Length of cutter compensation entry move is not greater than the tool radius";
+    std::string entry_arc_too_short = "Radius of cutter compensation entry arc is not greater than the tool radius";
+    std::string entry_arc = "";  // set when an arc may not switch compensation on
+    std::string arc_too_small = "Tool radius not less than arc radius with comp";
+    std::string gouge_feed = "Straight feed in concave corner cannot be reached by the tool without gouging";
+    std::string gouge_traverse = "Straight traverse in concave corner cannot be reached by the tool without gouging";
+    std::string gouge_arc = "Arc move in concave corner cannot be reached by the tool without gouging";
+    std::string arc_to_line = "Arc to straight motion makes a corner the compensated tool can't fit in without gouging";
+    std::string arc_to_arc = "Arc to arc motion makes a corner the compensated tool can't fit in without gouging";
+    std::string exit_arc = "The move just after exiting cutter compensation mode must be straight, not an arc";
+};
+
+struct RadiusRules {
+    bool yz_plane = false;  // compensation in G19 (LinuxCNC refuses it)
+    EntryStyle entry = EntryStyle::perpendicular_to_entry;
+    bool entry_arc = true;  // an arc may be the activation block (LinuxCNC: yes)
+    OutsideCorner outside_corner = OutsideCorner::arc;
+    double corner_limit = 0;  // rad, see OutsideCorner
+    // Joints whose turn differs from a straight continuation by at most this angle (rad)
+    // are tangent: nothing is inserted and the next element starts where the last ended.
+    double corner_tolerance = 0.05;
+    // A pulled-back arc may sweep this much (rad) more than programmed before it gouges.
+    double arc_sweep_tolerance = 0.001;
+    RadiusMessages messages;
+};
+
 struct ControlProfile {
     std::string name = "linuxcnc";
 
@@ -37,11 +86,7 @@ struct ControlProfile {
     bool length_subtract_word = false;  // G44 (subtract the offset) exists
 
     // ---- cutter radius compensation (used by the radius stage) ---------------------------
-    // Joints whose turn differs from a straight continuation by at most this angle (rad)
-    // are tangent: nothing is inserted and the next element starts where the last ended.
-    double corner_tolerance = 0.05;
-    // A pulled-back arc may sweep this much (rad) more than programmed before it gouges.
-    double arc_sweep_tolerance = 0.001;
+    RadiusRules radius;
 };
 
 ControlProfile profile_for(Dialect d);

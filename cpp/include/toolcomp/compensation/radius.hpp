@@ -14,9 +14,11 @@
 //
 // In G18 with a lathe tool (orientation 1..8) the emitted points are the imaginary tool tip:
 // the nose centre shifted by ±r in X and Z per orientation (LinuxCNC numbering).
+#include <optional>
 #include <vector>
 
 #include "toolcomp/compensation/profile.hpp"
+#include "toolcomp/geometry/element.hpp"
 #include "toolcomp/motion/motion.hpp"
 #include "toolcomp/program/diagnostic.hpp"
 
@@ -42,8 +44,11 @@ private:
     void entry_arc(const Motion& m);
     void next_line(const Motion& m);
     void next_arc(const Motion& m);
+    std::optional<Element2> held_element() const;
+    void outside_corner(const Motion& m, const Vec2& P, const Element2& next, double turn, bool check_held);
+    bool close_open_entry(const Vec2& mid, int line);
     void hold(Motion m, const Vec2& dir, double sweep);
-    void move_end_and_flush(const Vec2& x, int line);
+    void move_end_and_flush(const Vec2& x, int line, bool check = true);
     void flush();
     void emit(Motion m);
     void turn_off(int line);
@@ -66,6 +71,7 @@ private:
     bool endpoint_valid_ = false;
     bool arc_not_allowed_ = false;  // the move after G40 must be straight
     bool exit_pending_ = false;     // the next uncompensated move starts at the last compensated point
+    bool entry_open_ = false;       // the entry block waits for the next element (type A entry)
     bool have_out_ = false;
     Vec3 last_out_ = Vec3::Zero();  // end of the last emitted move (start of the next)
 };

@@ -1,0 +1,215 @@
+// Joints between compensated elements: where the held move ends and the next one starts.
+// Tangent, outside and inside corners for lines and arcs (LinuxCNC's decisions and formulas),
+// with the profile's choice of what fills an outside corner and how the entry block ends.
+#include <cmath>
+
+#include "radius_math.hpp"
+#include "toolcomp/compensation/radius.hpp"
+#include "toolcomp/geometry/element.hpp"
+
+namespace toolcomp {
+
+using namespace radius_math;
+
+// The held plane move as a compensated element (its start is endpoint_, its end C).
+std::optional<Element2> RadiusCompensation::held_element() const {
+    if (queue_.empty() || !endpoint_valid_) return std::nullopt;
+    const Motion& f = queue_.front().m;
+    const Vec2 c = plane2(current_);
+    if (f.is_arc()) return Element2::arc(endpoint_, c, plane2(f.center), f.kind == MotionKind::arc_ccw ? 1 : -1);
+    if ((c - endpoint_).norm() < tol::length) return std::nullopt;
+    return Element2::line(endpoint_, c);
+}
+
+// Fill the gap of an outside corner between the held element (ending at C) and the next
+// element's equidistant `next` (starting at `mid`). `turn` is the turning angle (> 0).
+void RadiusCompensation::outside_corner(const Motion& m, const Vec2& P, const Element2& next, double turn,
+                                        bool check_held) {
+    const RadiusRules& rules = profile_.radius;
+    const Vec2 C = plane2(current_);
+    const Vec2 mid = next.p0;
+    const auto held = held_element();
+    if (rules.outside_corner != OutsideCorner::arc && held && turn <= rules.corner_limit) {
+        // Meet where the two equidistants (extended) cross, nearest to the programmed corner.
+        auto xs = intersect(*held, next);
+        if (!xs.empty()) {
+            Vec2 v = xs[0];
+            for (const Vec2& x : xs)
+                if ((x - P).norm() < (v - P).norm()) v = x;
+            move_end_and_flush(v, m.line, /*check=*/false);
+            return;
+        }
+    }
+    if (check_held)
+        move_end_and_flush(C, m.line);
+    else
+        flush();
+    Motion fill = m;
+    fill.generated = true;
+    fill.turns = 0;
+    fill.center = Vec3::Constant(std::nan(""));
+    if (rules.outside_corner == OutsideCorner::extension && held && turn > rules.corner_limit) {
+        // Extend both elements by r along their tangents and join the extensions.
+        const Vec2 e1 = C + r_ * held->end_tangent(), e2 = mid - r_ * next.start_tangent();
+        if (m.kind != MotionKind::rapid) fill.kind = MotionKind::line;
+        for (const Vec2& pt : {e1, e2, mid}) {
+            fill.end = with_plane(current_, pt);
+            hold(fill, Vec2::Zero(), 0);
+        }
+    } else if (m.kind == MotionKind::rapid) {  // no arc traverse exists: a straight one
+        fill.end = with_plane(current_, mid);
+        hold(fill, Vec2::Zero(), 0);
+    } else {  // transition arc of the tool radius about the programmed corner
+        fill.kind = side_ > 0 ? MotionKind::arc_cw : MotionKind::arc_ccw;
+        fill.end = with_plane(current_, mid);
+        fill.center = with_plane(current_, P);
+        hold(fill, Vec2::Zero(), 0);
+    }
+    flush();
+    endpoint_ = mid;
+    endpoint_valid_ = true;
+}
+
+// Type A entry: the activation block ends where the next element's equidistant starts.
+bool RadiusCompensation::close_open_entry(const Vec2& mid, int line) {
+    if (!entry_open_) return false;
+    entry_open_ = false;
+    (void)line;
+    for (auto& h : queue_) h.m.end = with_plane(h.m.end, mid);
+    flush();
+    endpoint_ = mid;
+    endpoint_valid_ = true;
+    return true;
+}
+
+void RadiusCompensation::next_line(const Motion& m) {
+    const RadiusRules& rules = profile_.radius;
+    const double small = rules.corner_tolerance;
+    const Vec2 P = plane2(program_), C = plane2(current_), p = plane2(m.end);
+    if (p == P) {  // no motion in the plane: held at the compensated point
+        Motion h = m;
+        h.end = with_plane(m.end, C);
+        hold(h, Vec2::Zero(), 0);
+        current_ = h.end;
+        program_ = m.end;
+        return;
+    }
+    double theta = ang(C - P), alpha = ang(p - P), beta, gamma;
+    if (side_ > 0) {
+        if (theta < alpha) theta += 2 * kPi;
+        beta = theta - alpha - kHalfPi;
+        gamma = kHalfPi;
+    } else {
+        if (alpha < theta) alpha += 2 * kPi;
+        beta = alpha - theta - kHalfPi;
+        gamma = -kHalfPi;
+    }
+    const Vec2 e = p + r_ * u(alpha + gamma);
+    const Vec2 mid = P + r_ * u(alpha + gamma);  // compensated start of the new move
+    const bool front_arc = !queue_.empty() && queue_.front().m.is_arc();
+    bool concave = beta < -small || beta > kPi + small;
+    if (!concave && beta > kPi - small && front_arc && !tool_inside(side_, turn_of(queue_.front().m)))
+        concave = true;  // 180 degrees off an arc the tool was outside of ("h" shape)
+
+    if (close_open_entry(mid, m.line)) {
+        // the entry block already ends at the new element's start
+    } else if (!concave && beta > small) {
+        outside_corner(m, P, Element2::line(mid, e), beta, /*check_held=*/true);
+    } else if (!concave) {  // tangent: the new move starts where the last one ended
+        flush();
+        endpoint_ = C;
+        endpoint_valid_ = true;
+    } else if (!front_arc) {  // inside corner after a line: pull it back to the intersection
+        const double halfcorner = (beta + kPi) / 2;
+        if (halfcorner == 0.0)
+            fail("comp_zero_corner", "Zero degree inside corner is invalid for cutter compensation", m.line);
+        const double retreat = r_ / std::tan(halfcorner);
+        move_end_and_flush(C + retreat * u(theta + gamma), m.line);
+    } else {  // inside corner after an arc: intersect the compensated circle and the new line
+        const Motion& prev = queue_.front().m;
+        const int pturn = turn_of(prev);
+        const Vec2 cp = plane2(prev.center);
+        const double rho = (cp - plane2(prev.end)).norm();
+        const double base = ang(p - P);
+        const double th = pturn > 0 ? base + kHalfPi : base - kHalfPi;
+        const double phi = ang(cp - P);
+        const bool inside = tool_inside(side_, pturn);
+        const double d = (inside ? rho + r_ : rho - r_) * std::cos(th - phi);
+        const double l = inside ? (d - r_) / rho : (d + r_) / rho;
+        if (l > 1 || l < -1) fail("comp_gouge", rules.messages.arc_to_line, m.line);
+        const double ac = inside ? (pturn > 0 ? -std::acos(l) : std::acos(l)) : (pturn > 0 ? std::acos(l) : -std::acos(l));
+        move_end_and_flush(cp + rho * u(ac + th + kPi), m.line);
+    }
+    Motion h = m;
+    h.end = with_plane(m.end, e);
+    hold(h, p - P, 0);
+    current_ = h.end;
+    program_ = m.end;
+}
+
+void RadiusCompensation::next_arc(const Motion& m) {
+    const RadiusRules& rules = profile_.radius;
+    const double small = rules.corner_tolerance;
+    const Vec2 P = plane2(program_), C = plane2(current_), p = plane2(m.end), centre = plane2(m.center);
+    const int turn = turn_of(m);
+    const bool ccw = turn > 0;
+    const double rho0 = (centre - p).norm();
+    double theta = ang(C - P);
+    theta = side_ > 0 ? theta - kHalfPi : theta + kHalfPi;  // end direction of the previous element
+    double delta = ang(centre - P);
+    const double alpha = ccw ? delta - kHalfPi : delta + kHalfPi;  // start direction of the arc
+    double beta = side_ > 0 ? theta - alpha : alpha - theta;
+    beta = beta > 1.5 * kPi ? beta - 2 * kPi : (beta < -kHalfPi ? beta + 2 * kPi : beta);
+    const bool inside = tool_inside(side_, turn);
+    double gamma;
+    if (inside) {
+        gamma = ang(centre - p);
+        if (rho0 <= r_) fail("comp_arc_too_small", rules.messages.arc_too_small, m.line);
+    } else {
+        gamma = ang(p - centre);
+        delta += kPi;
+    }
+    const Vec2 e = p + r_ * u(gamma);
+    const Vec2 mid = P + r_ * u(delta);  // compensated start of the arc
+    const bool concave = beta < -small || beta > kPi + small || (std::fabs(beta - kPi) < small && !inside);
+    const bool front_arc = !queue_.empty() && queue_.front().m.is_arc();
+
+    if (close_open_entry(mid, m.line)) {
+        // the entry block already ends at the arc's start
+    } else if (concave && !front_arc) {  // inside corner after a line
+        const double y = rho0 * std::sin(beta - kHalfPi);
+        const double dist = inside ? rho0 - r_ : rho0 + r_;
+        const double l = inside ? (y + r_) / dist : (y - r_) / dist;
+        if (l > 1 || l < -1) fail("comp_gouge", rules.messages.gouge_arc, m.line);
+        const double ac = inside ? (ccw ? theta + std::asin(l) : theta - std::asin(l))
+                                 : (ccw ? theta + kPi - std::asin(l) : theta + kPi + std::asin(l));
+        move_end_and_flush(centre + dist * u(ac), m.line);
+    } else if (concave) {  // inside corner after an arc: intersect the two compensated circles
+        const Motion& prev = queue_.front().m;
+        const int pturn = turn_of(prev);
+        const Vec2 pc = plane2(prev.center);
+        const double rp = (pc - plane2(prev.end)).norm();
+        const double rn = inside ? rho0 - r_ : rho0 + r_;
+        const double dcc = (pc - centre).norm();
+        if (rp == 0 || dcc == 0)
+            fail("comp_same_center", "Arc to arc motion is invalid because the arcs have the same center", m.line);
+        const double a = (rp * rp + dcc * dcc - rn * rn) / (2 * rp * dcc);
+        if (a > 1 || a < -1) fail("comp_gouge", rules.messages.arc_to_arc, m.line);
+        const double pull = std::acos(a), ccd = ang(centre - pc);
+        const double dir = tool_inside(side_, pturn) ? (ccw ? ccd + pull : ccd - pull) : (ccw ? ccd - pull : ccd + pull);
+        move_end_and_flush(pc + rp * u(dir), m.line);
+    } else if (beta > small) {
+        outside_corner(m, P, Element2::arc(mid, e, centre, ccw ? 1 : -1), beta, /*check_held=*/false);
+    } else {  // tangent
+        flush();
+        endpoint_ = C;
+        endpoint_valid_ = true;
+    }
+    Motion h = m;
+    h.end = with_plane(m.end, e);
+    hold(h, Vec2::Zero(), find_turn(P, centre, turn, p));
+    current_ = h.end;
+    program_ = m.end;
+}
+
+}  // namespace toolcomp

@@ -1,0 +1,87 @@
+// Radius compensation by profile: start-up type A (perpendicular to the next element),
+// intersections at outside corners with a corner limit (Sinumerik G451 style), extension
+// blocks at acute outside corners (Fanuc). Numbers: spec §1.4, §1.6.1 and hand calculation.
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "run_helpers.hpp"
+
+using namespace toolcomp;
+using tctest::end_of;
+
+namespace {
+Result run_with(const std::string& text, const ControlProfile& prof, Dialect d = Dialect::linuxcnc) {
+    RunOptions o;
+    o.profile = prof;
+    return run(parse_program(text, d), nullptr, o);
+}
+void check_xy(const Path& p, std::size_t i, double x, double y) {
+    INFO("segment " << i);
+    REQUIRE(i < p.size());
+    CHECK(end_of(p, i).x() == Approx(x).margin(1e-6));
+    CHECK(end_of(p, i).y() == Approx(y).margin(1e-6));
+}
+}  // namespace
+
+TEST_CASE("Fanuc start-up type A: the activation block ends perpendicular to the next element") {
+    // spec 1.6.1: S = (-10,-10), G41 G01 X0 Y0, next X50 Y0, r = 5 -> (0,5) -> (50,5).
+    auto r = run_with("G21 G0 X-10 Y-10\nG41.1 D10\nG1 X0 Y0 F100\nX50\nG40 G0 X60 Y-10\nM30\n",
+                      profile_for(Dialect::fanuc));
+    REQUIRE(r.path.size() == 4);
+    check_xy(r.path, 1, 0, 5);
+    check_xy(r.path, 2, 50, 5);
+    check_xy(r.path, 3, 60, -10);
+}
+
+TEST_CASE("Fanuc outside corners: intersection when obtuse, extension blocks when acute") {
+    const ControlProfile fanuc = profile_for(Dialect::fanuc);
+    // A(0,0) -> B(50,0) -> C(80,-20): a right turn of 33.7 degrees, outside for G41.
+    // Intersection of y = 5 with BC's equidistant: x = 50 + 5 tan(16.845 deg) = 51.5139.
+    auto obtuse = run_with("G21 G0 X-10 Y5\nG41.1 D10\nG1 X0 Y0 F100\nX50\nX80 Y-20\nG40 G0 X90 Y-30\nM30\n", fanuc);
+    check_xy(obtuse.path, 2, 51.513878, 5.0);
+    // A(0,0) -> B(50,0) -> C(0,-20): a right turn of 158.2 degrees. Extend AB' by r to
+    // (55,5), BC' backwards by r from M = (51.857, -4.642) to (56.499, -2.785), join.
+    auto acute = run_with("G21 G0 X-10 Y5\nG41.1 D10\nG1 X0 Y0 F100\nX50\nX0 Y-20\nG40 G0 X-10 Y-30\nM30\n", fanuc);
+    const Path& p = acute.path;
+    REQUIRE(p.size() == 8);
+    check_xy(p, 2, 50, 5);
+    check_xy(p, 3, 55, 5);
+    check_xy(p, 4, 56.499337, -2.785430);
+    check_xy(p, 5, 51.856953, -4.642383);
+    CHECK(p.generated[3]);
+    CHECK(p.generated[4]);
+    CHECK(p.generated[5]);
+    CHECK(p.kind[4] == 1);
+}
+
+TEST_CASE("Intersection style with a corner limit (Sinumerik G451 style) on the L-shape") {
+    ControlProfile g451 = profile_for(Dialect::linuxcnc);
+    g451.radius.outside_corner = OutsideCorner::intersection;
+    g451.radius.corner_limit = 100 * kPi / 180;
+    // spec 1.4: joint C of A(0,0) B(50,0) C(50,30) D(80,30) with G41 r = 5 meets at (45,35).
+    auto r = run_with("G21 G0 X0 Y-10\nG41.1 D10\nG1 X0 Y0 F100\nX50\nY30\nX80\nG40 G0 X90 Y40\nM2\n", g451);
+    const Path& p = r.path;
+    bool found = false;
+    for (std::size_t i = 0; i < p.size(); ++i)
+        if ((end_of(p, i) - Vec3(45, 35, 0)).norm() < 1e-9) found = true;
+    CHECK(found);
+    for (std::size_t i = 0; i < p.size(); ++i) CHECK_FALSE(p.generated[i]);  // nothing inserted
+    // A sharper corner than the limit falls back to the transition arc.
+    auto sharp = run_with("G21 G0 X0 Y-10\nG41.1 D10\nG1 X0 Y0 F100\nX50\nX0 Y-20\nG40 G0 X-10 Y-30\nM2\n", g451);
+    bool arc = false;
+    for (std::size_t i = 0; i < sharp.path.size(); ++i) arc = arc || (sharp.path.generated[i] && sharp.path.kind[i] == 2);
+    CHECK(arc);
+}
+
+TEST_CASE("Planes: Fanuc compensates in G19, LinuxCNC refuses; Fanuc refuses an arc start-up") {
+    auto yz = run_with("G21 G19 G0 Y-10 Z0\nG41.1 D10\nG1 Y0 Z0 F100\nZ50\nG40 G0 Y-10 Z60\nM30\n",
+                       profile_for(Dialect::fanuc));
+    // G19: (a, b) = (Y, Z); moving +Z along Y = 0 with the tool on the left (seen from +X):
+    // left of +b is -a, so the tool centre runs at Y = -5.
+    CHECK(end_of(yz.path, 2).y() == Approx(-5));
+    CHECK(end_of(yz.path, 2).z() == Approx(50));
+    CHECK_THROWS_WITH(run_with("G21 G19 G41.1 D10\nM2\n", profile_for(Dialect::linuxcnc)),
+                      "Cutter radius compensation allowed only in XY, XZ planes");
+    CHECK_THROWS_WITH(run_with("G21 G0 X-10\nG41.1 D10\nG3 X10 Y0 R10 F100\nM30\n", profile_for(Dialect::fanuc)),
+                      "PS0034 NO CIRC ALLOWED IN ST-UP/EXT BLK");
+}
