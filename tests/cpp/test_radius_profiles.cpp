@@ -85,3 +85,27 @@ TEST_CASE("Planes: Fanuc compensates in G19, LinuxCNC refuses; Fanuc refuses an 
     CHECK_THROWS_WITH(run_with("G21 G0 X-10\nG41.1 D10\nG3 X10 Y0 R10 F100\nM30\n", profile_for(Dialect::fanuc)),
                       "PS0034 NO CIRC ALLOWED IN ST-UP/EXT BLK");
 }
+
+TEST_CASE("Blocks without plane motion: limit and reaction by profile") {
+    // Inside corner at (20,0) with three Z moves between: LinuxCNC looks past them all.
+    const std::string text =
+        "G21 G0 X0 Y-10\nG41.1 D10\nG1 X0 Y0 F100\nX20\nZ-1\nZ-2\nZ-3\nY20\nG40 G0 X-10 Y30\nM30\n";
+    auto lcnc = run_with(text, profile_for(Dialect::linuxcnc));
+    // The inside corner is reached: the move along y = 5 ends at x = 15 (pulled back).
+    bool pulled = false;
+    for (std::size_t i = 0; i < lcnc.path.size(); ++i) pulled = pulled || (end_of(lcnc.path, i) - Vec3(15, 5, 0)).norm() < 1e-9;
+    CHECK(pulled);
+    // Fanuc looks past two: the third ends the move perpendicular at (20,5) and warns.
+    ControlProfile f = profile_for(Dialect::fanuc);
+    f.radius.entry = EntryStyle::perpendicular_to_entry;
+    auto fanuc = run_with(text, f);
+    bool perpendicular = false;
+    for (std::size_t i = 0; i < fanuc.path.size(); ++i)
+        perpendicular = perpendicular || (end_of(fanuc.path, i) - Vec3(20, 5, 0)).norm() < 1e-9;
+    CHECK(perpendicular);
+    REQUIRE(fanuc.diagnostics.size() == 1);
+    CHECK(fanuc.diagnostics[0].code == "comp_overcut");
+    CHECK(fanuc.diagnostics[0].pos.line == 7);
+    f.radius.non_plane_reaction = NonPlaneReaction::error;
+    CHECK_THROWS_WITH(run_with(text, f), "Too many blocks without motion in the compensation plane");
+}

@@ -21,6 +21,9 @@ ControlProfile profile_for(Dialect d) {
             r.entry_arc = false;
             r.outside_corner = OutsideCorner::extension;
             r.corner_limit = kPi / 2;
+            // Two blocks without plane motion are looked past; more may overcut (warning).
+            r.max_non_plane_moves = 2;
+            r.non_plane_reaction = NonPlaneReaction::overcut;
             r.messages.entry_arc = "PS0034 NO CIRC ALLOWED IN ST-UP/EXT BLK";
             r.messages.exit_arc = "PS0034 NO CIRC ALLOWED IN ST-UP/EXT BLK";
             r.messages.entry_too_short = "PS0041 INTERFERENCE IN CRC";

@@ -87,6 +87,20 @@ void RadiusCompensation::next_line(const Motion& m) {
     const double small = rules.corner_tolerance;
     const Vec2 P = plane2(program_), C = plane2(current_), p = plane2(m.end);
     if (p == P) {  // no motion in the plane: held at the compensated point
+        const RadiusRules& rr = profile_.radius;
+        if (rr.max_non_plane_moves >= 0 && ++non_plane_run_ > rr.max_non_plane_moves) {
+            if (rr.non_plane_reaction == NonPlaneReaction::error)
+                fail("comp_non_plane_moves", rr.messages.too_many_non_plane, m.line);
+            // The control stops looking ahead: the held move ends perpendicular to its
+            // programmed end, which can leave material or cut into an inside corner.
+            if (!queue_.empty()) {
+                diags_.push_back({"comp_overcut", Severity::warning,
+                                  "Too many blocks without plane motion: the previous move ends perpendicular "
+                                  "to its end point, which may overcut",
+                                  {m.line, 0}});
+                flush();
+            }
+        }
         Motion h = m;
         h.end = with_plane(m.end, C);
         hold(h, Vec2::Zero(), 0);
@@ -94,6 +108,7 @@ void RadiusCompensation::next_line(const Motion& m) {
         program_ = m.end;
         return;
     }
+    non_plane_run_ = 0;
     double theta = ang(C - P), alpha = ang(p - P), beta, gamma;
     if (side_ > 0) {
         if (theta < alpha) theta += 2 * kPi;
@@ -154,6 +169,7 @@ void RadiusCompensation::next_arc(const Motion& m) {
     const int turn = turn_of(m);
     const bool ccw = turn > 0;
     const double rho0 = (centre - p).norm();
+    non_plane_run_ = 0;
     double theta = ang(C - P);
     theta = side_ > 0 ? theta - kHalfPi : theta + kHalfPi;  // end direction of the previous element
     double delta = ang(centre - P);

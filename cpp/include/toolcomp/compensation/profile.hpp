@@ -49,6 +49,14 @@ struct RadiusMessages {
     std::string arc_to_line = "Arc to straight motion makes a corner the compensated tool can't fit in without gouging";
     std::string arc_to_arc = "Arc to arc motion makes a corner the compensated tool can't fit in without gouging";
     std::string exit_arc = "The move just after exiting cutter compensation mode must be straight, not an arc";
+    std::string too_many_non_plane = "Too many blocks without motion in the compensation plane";
+};
+
+// What happens when too many blocks without motion in the plane follow each other while
+// compensating (the control cannot see where the contour goes on).
+enum class NonPlaneReaction {
+    error = 0,    // refuse the program (Sinumerik alarm 10762)
+    overcut = 1,  // end the held move perpendicular to its programmed end and warn (9/Series)
 };
 
 struct RadiusRules {
@@ -62,6 +70,10 @@ struct RadiusRules {
     double corner_tolerance = 0.05;
     // A pulled-back arc may sweep this much (rad) more than programmed before it gouges.
     double arc_sweep_tolerance = 0.001;
+    // Consecutive blocks without plane motion the control looks past; -1 = no limit
+    // (LinuxCNC holds them all back with the plane move before them).
+    int max_non_plane_moves = -1;
+    NonPlaneReaction non_plane_reaction = NonPlaneReaction::error;
     RadiusMessages messages;
 };
 

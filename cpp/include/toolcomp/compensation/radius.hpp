@@ -26,7 +26,8 @@ namespace toolcomp {
 
 class RadiusCompensation : public MotionSink {
 public:
-    RadiusCompensation(const ControlProfile& profile, MotionSink& out) : profile_(profile), out_(out) {}
+    RadiusCompensation(const ControlProfile& profile, MotionSink& out, std::vector<Diagnostic>& diagnostics)
+        : profile_(profile), out_(out), diags_(diagnostics) {}
     void push(const Motion& m) override;
     void control(const ControlEvent& e) override;
     void finish() override;
@@ -59,6 +60,8 @@ private:
 
     const ControlProfile& profile_;
     MotionSink& out_;
+    std::vector<Diagnostic>& diags_;
+    int non_plane_run_ = 0;  // blocks without plane motion since the last plane move
 
     bool active_ = false;          // compensating, the entry move made
     Plane plane_ = Plane::xy;

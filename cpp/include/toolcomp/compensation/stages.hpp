@@ -17,14 +17,13 @@ namespace toolcomp {
 class CompensationChain : public MotionSink {
 public:
     CompensationChain(const ControlProfile& profile, MotionSink& out, std::vector<Diagnostic>& diagnostics)
-        : radius_(profile, out), diags_(diagnostics) {}
+        : radius_(profile, out, diagnostics) {}
     void push(const Motion& m) override { radius_.push(m); }
     void control(const ControlEvent& e) override { radius_.control(e); }
     void finish() override { radius_.finish(); }
 
 private:
     RadiusCompensation radius_;
-    std::vector<Diagnostic>& diags_;
 };
 
 }  // namespace toolcomp
