@@ -109,3 +109,42 @@ TEST_CASE("Blocks without plane motion: limit and reaction by profile") {
     f.radius.non_plane_reaction = NonPlaneReaction::error;
     CHECK_THROWS_WITH(run_with(text, f), "Too many blocks without motion in the compensation plane");
 }
+
+TEST_CASE("An unreachable step: error, skip with look-ahead, or report") {
+    // y = 0 to x = 30, a 2 mm step down, on along y = -2; tool radius 5 on the left (above).
+    // The step's equidistant would run upwards: the tool cannot reach it.
+    const std::string text =
+        "G21 G0 X-10 Y5\nG41.1 D10\nG1 X0 Y0 F100\nX30\nY-2\nX60\nG40 G0 X70 Y10\nM2\n";
+    ControlProfile p = profile_for(Dialect::linuxcnc);
+    CHECK_THROWS_WITH(run_with(text, p), "Straight feed in concave corner cannot be reached by the tool without gouging");
+    // Skip: the tool leaves the step out and meets y = -2 + 5 = 3 on the corner arc about
+    // (30,0): x = 30 + sqrt(25 - 9) = 34.
+    p.radius.gouge = GougeReaction::skip;
+    p.radius.lookahead = 3;
+    auto skip = run_with(text, p);
+    const Path& s = skip.path;
+    bool met = false, step_left = true;
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        if ((end_of(s, i) - Vec3(34, 3, 0)).norm() < 1e-9) met = true;
+        if (s.line[i] == 5 && !s.generated[i]) step_left = false;
+    }
+    CHECK(met);
+    CHECK(step_left);
+    REQUIRE(skip.diagnostics.size() == 1);
+    CHECK(skip.diagnostics[0].code == "comp_skipped");
+    CHECK(skip.diagnostics[0].message.find("line(s) 5") != std::string::npos);
+    CHECK(skip.diagnostics[0].pos.line == 6);
+    // A look-ahead of one move cannot see past the step: the control stops.
+    p.radius.lookahead = 1;
+    CHECK_THROWS(run_with(text, p));
+    // Report: the path is kept as computed (the step runs backwards) with a warning.
+    p.radius.gouge = GougeReaction::report;
+    auto rep = run_with(text, p);
+    REQUIRE(rep.diagnostics.size() == 1);
+    CHECK(rep.diagnostics[0].code == "comp_gouge");
+    CHECK(rep.diagnostics[0].message.find("line 5") != std::string::npos);
+    bool reversed = false;
+    for (std::size_t i = 0; i < rep.path.size(); ++i)
+        if (rep.path.line[i] == 5 && !rep.path.generated[i]) reversed = end_of(rep.path, i).y() > rep.path.start[3 * i + 1];
+    CHECK(reversed);
+}

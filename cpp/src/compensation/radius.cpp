@@ -23,84 +23,6 @@ void RadiusCompensation::fail(const char* code, const std::string& msg, int line
     throw CompensationError(code, msg, {line, 0});
 }
 
-// ---- output -------------------------------------------------------------------------------
-
-void RadiusCompensation::emit(Motion m) {
-    // Lathe tools: the controlled point is the imaginary tip, the nose centre shifted by the
-    // nose radius per orientation (LinuxCNC numbering; only in the ZX plane).
-    const int o = m.radius.orientation;
-    const double r = m.radius.radius;
-    if (m.plane == Plane::zx && r > 0 && o >= 1 && o <= 8) {
-        double dx = (o == 1 || o == 2 || o == 6) ? -r : (o == 3 || o == 4 || o == 8) ? r : 0;
-        double dz = (o == 2 || o == 3 || o == 7) ? -r : (o == 1 || o == 4 || o == 5) ? r : 0;
-        m.end.x() += dx;
-        m.end.z() += dz;
-        if (m.is_arc()) {
-            m.center.x() += dx;
-            m.center.z() += dz;
-        }
-    }
-    if (have_out_) m.start = last_out_;
-    if (m.is_arc()) m.center[axes(m.plane).c] = m.start[axes(m.plane).c];
-    last_out_ = m.end;
-    have_out_ = true;
-    out_.push(m);
-}
-
-void RadiusCompensation::passthrough(const Motion& m) {
-    Motion o = m;
-    if (!exit_pending_) {
-        last_out_ = m.end;
-        have_out_ = true;
-        out_.push(o);
-        return;
-    }
-    // The exit move runs from the last compensated point to the programmed target.
-    exit_pending_ = false;
-    emit(o);
-}
-
-void RadiusCompensation::hold(Motion m, const Vec2& dir, double sweep) { queue_.push_back({std::move(m), dir, sweep}); }
-
-void RadiusCompensation::flush() {
-    for (auto& h : queue_) emit(h.m);
-    queue_.clear();
-    endpoint_valid_ = false;
-}
-
-// Every held move gets the new in-plane end point x; a pulled-back move that would now run
-// against its programmed direction (or an arc that would sweep further) gouges.
-void RadiusCompensation::move_end_and_flush(const Vec2& x, int line, bool check) {
-    if (queue_.empty()) return;
-    for (auto& h : queue_) {
-        Motion& m = h.m;
-        if (m.is_arc()) {
-            Vec2 c = plane2(m.center);
-            double r1 = (plane2(m.end) - c).norm();
-            m.end = with_plane(m.end, x);
-            double r2 = (x - c).norm();
-            double sweep = find_turn(endpoint_, c, turn_of(m), x);
-            if (std::fabs(r1 - r2) > 0.01)
-                fail("comp_invalid_arc", "BUG: cutter compensation has generated an invalid arc with mismatched radii",
-                     line);
-            if (check && h.sweep != 0 && endpoint_valid_ &&
-                std::fabs(sweep) > std::fabs(h.sweep) + profile_.radius.arc_sweep_tolerance)
-                fail("comp_gouge", profile_.radius.messages.gouge_arc, line);
-        } else {
-            double dot = h.dir.dot(x - endpoint_);
-            if (check && endpoint_valid_ && dot < 0)
-                fail("comp_gouge",
-                     m.kind == MotionKind::rapid ? profile_.radius.messages.gouge_traverse
-                                                 : profile_.radius.messages.gouge_feed,
-                     line);
-            m.end = with_plane(m.end, x);
-        }
-    }
-    flush();
-    endpoint_ = x;
-    endpoint_valid_ = true;
-}
-
 // ---- entry --------------------------------------------------------------------------------
 
 void RadiusCompensation::entry_line(const Motion& m) {
@@ -193,6 +115,7 @@ void RadiusCompensation::turn_off(int line) {
     entry_open_ = false;
     move_end_and_flush(plane2(current_), line);
     flush();
+    release(0);
     active_ = false;
     arc_not_allowed_ = true;
     exit_pending_ = true;
@@ -206,6 +129,7 @@ void RadiusCompensation::control(const ControlEvent& e) {
         case ControlKind::stop:
             entry_open_ = false;
             if (active_) move_end_and_flush(plane2(current_), e.line);
+            release(0);
             break;
         case ControlKind::program_end:
             entry_open_ = false;
@@ -214,6 +138,7 @@ void RadiusCompensation::control(const ControlEvent& e) {
                 flush();
                 active_ = false;
             }
+            release(0);
             break;
     }
     out_.control(e);
@@ -221,6 +146,7 @@ void RadiusCompensation::control(const ControlEvent& e) {
 
 void RadiusCompensation::finish() {
     flush();
+    release(0);
     out_.finish();
 }
 

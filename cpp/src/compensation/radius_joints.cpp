@@ -71,10 +71,9 @@ void RadiusCompensation::outside_corner(const Motion& m, const Vec2& P, const El
 }
 
 // Type A entry: the activation block ends where the next element's equidistant starts.
-bool RadiusCompensation::close_open_entry(const Vec2& mid, int line) {
+bool RadiusCompensation::close_open_entry(const Vec2& mid) {
     if (!entry_open_) return false;
     entry_open_ = false;
-    (void)line;
     for (auto& h : queue_) h.m.end = with_plane(h.m.end, mid);
     flush();
     endpoint_ = mid;
@@ -126,10 +125,11 @@ void RadiusCompensation::next_line(const Motion& m) {
     if (!concave && beta > kPi - small && front_arc && !tool_inside(side_, turn_of(queue_.front().m)))
         concave = true;  // 180 degrees off an arc the tool was outside of ("h" shape)
 
-    if (close_open_entry(mid, m.line)) {
+    const Element2 next = Element2::line(mid, e);  // the new move's equidistant
+    if (close_open_entry(mid)) {
         // the entry block already ends at the new element's start
     } else if (!concave && beta > small) {
-        outside_corner(m, P, Element2::line(mid, e), beta, /*check_held=*/true);
+        outside_corner(m, P, next, beta, /*check_held=*/true);
     } else if (!concave) {  // tangent: the new move starts where the last one ended
         flush();
         endpoint_ = C;
@@ -139,7 +139,7 @@ void RadiusCompensation::next_line(const Motion& m) {
         if (halfcorner == 0.0)
             fail("comp_zero_corner", "Zero degree inside corner is invalid for cutter compensation", m.line);
         const double retreat = r_ / std::tan(halfcorner);
-        move_end_and_flush(C + retreat * u(theta + gamma), m.line);
+        move_end_and_flush(C + retreat * u(theta + gamma), m.line, true, &next);
     } else {  // inside corner after an arc: intersect the compensated circle and the new line
         const Motion& prev = queue_.front().m;
         const int pturn = turn_of(prev);
@@ -151,9 +151,13 @@ void RadiusCompensation::next_line(const Motion& m) {
         const bool inside = tool_inside(side_, pturn);
         const double d = (inside ? rho + r_ : rho - r_) * std::cos(th - phi);
         const double l = inside ? (d - r_) / rho : (d + r_) / rho;
-        if (l > 1 || l < -1) fail("comp_gouge", rules.messages.arc_to_line, m.line);
-        const double ac = inside ? (pturn > 0 ? -std::acos(l) : std::acos(l)) : (pturn > 0 ? std::acos(l) : -std::acos(l));
-        move_end_and_flush(cp + rho * u(ac + th + kPi), m.line);
+        if (l > 1 || l < -1) {
+            no_intersection(next, m.line, rules.messages.arc_to_line);
+        } else {
+            const double ac =
+                inside ? (pturn > 0 ? -std::acos(l) : std::acos(l)) : (pturn > 0 ? std::acos(l) : -std::acos(l));
+            move_end_and_flush(cp + rho * u(ac + th + kPi), m.line, true, &next);
+        }
     }
     Motion h = m;
     h.end = with_plane(m.end, e);
@@ -189,17 +193,21 @@ void RadiusCompensation::next_arc(const Motion& m) {
     const Vec2 mid = P + r_ * u(delta);  // compensated start of the arc
     const bool concave = beta < -small || beta > kPi + small || (std::fabs(beta - kPi) < small && !inside);
     const bool front_arc = !queue_.empty() && queue_.front().m.is_arc();
+    const Element2 next = Element2::arc(mid, e, centre, ccw ? 1 : -1, m.turns);  // the arc's equidistant
 
-    if (close_open_entry(mid, m.line)) {
+    if (close_open_entry(mid)) {
         // the entry block already ends at the arc's start
     } else if (concave && !front_arc) {  // inside corner after a line
         const double y = rho0 * std::sin(beta - kHalfPi);
         const double dist = inside ? rho0 - r_ : rho0 + r_;
         const double l = inside ? (y + r_) / dist : (y - r_) / dist;
-        if (l > 1 || l < -1) fail("comp_gouge", rules.messages.gouge_arc, m.line);
-        const double ac = inside ? (ccw ? theta + std::asin(l) : theta - std::asin(l))
-                                 : (ccw ? theta + kPi - std::asin(l) : theta + kPi + std::asin(l));
-        move_end_and_flush(centre + dist * u(ac), m.line);
+        if (l > 1 || l < -1) {
+            no_intersection(next, m.line, rules.messages.gouge_arc);
+        } else {
+            const double ac = inside ? (ccw ? theta + std::asin(l) : theta - std::asin(l))
+                                     : (ccw ? theta + kPi - std::asin(l) : theta + kPi + std::asin(l));
+            move_end_and_flush(centre + dist * u(ac), m.line, true, &next);
+        }
     } else if (concave) {  // inside corner after an arc: intersect the two compensated circles
         const Motion& prev = queue_.front().m;
         const int pturn = turn_of(prev);
@@ -210,12 +218,16 @@ void RadiusCompensation::next_arc(const Motion& m) {
         if (rp == 0 || dcc == 0)
             fail("comp_same_center", "Arc to arc motion is invalid because the arcs have the same center", m.line);
         const double a = (rp * rp + dcc * dcc - rn * rn) / (2 * rp * dcc);
-        if (a > 1 || a < -1) fail("comp_gouge", rules.messages.arc_to_arc, m.line);
-        const double pull = std::acos(a), ccd = ang(centre - pc);
-        const double dir = tool_inside(side_, pturn) ? (ccw ? ccd + pull : ccd - pull) : (ccw ? ccd - pull : ccd + pull);
-        move_end_and_flush(pc + rp * u(dir), m.line);
+        if (a > 1 || a < -1) {
+            no_intersection(next, m.line, rules.messages.arc_to_arc);
+        } else {
+            const double pull = std::acos(a), ccd = ang(centre - pc);
+            const double dir =
+                tool_inside(side_, pturn) ? (ccw ? ccd + pull : ccd - pull) : (ccw ? ccd - pull : ccd + pull);
+            move_end_and_flush(pc + rp * u(dir), m.line, true, &next);
+        }
     } else if (beta > small) {
-        outside_corner(m, P, Element2::arc(mid, e, centre, ccw ? 1 : -1), beta, /*check_held=*/false);
+        outside_corner(m, P, next, beta, /*check_held=*/false);
     } else {  // tangent
         flush();
         endpoint_ = C;

@@ -59,6 +59,15 @@ enum class NonPlaneReaction {
     overcut = 1,  // end the held move perpendicular to its programmed end and warn (9/Series)
 };
 
+// What the control does when the compensated tool cannot reach part of the contour (a
+// step or groove narrower than the tool, an inside corner without an intersection).
+enum class GougeReaction {
+    error = 0,   // stop with the control's alarm (LinuxCNC, Fanuc, Heidenhain default)
+    skip = 1,    // leave out the unreachable elements and join the neighbours where their
+                 // equidistants cross, within the look-ahead (Sinumerik CDON, Heidenhain M120)
+    report = 2,  // keep the path as computed (it gouges) and report a warning
+};
+
 struct RadiusRules {
     bool yz_plane = false;  // compensation in G19 (LinuxCNC refuses it)
     EntryStyle entry = EntryStyle::perpendicular_to_entry;
@@ -73,6 +82,9 @@ struct RadiusRules {
     // Consecutive blocks without plane motion the control looks past; -1 = no limit
     // (LinuxCNC holds them all back with the plane move before them).
     int max_non_plane_moves = -1;
+    // Plane moves looked at when an element turns out unreachable (LinuxCNC: 1).
+    int lookahead = 1;
+    GougeReaction gouge = GougeReaction::error;
     NonPlaneReaction non_plane_reaction = NonPlaneReaction::error;
     RadiusMessages messages;
 };

@@ -39,21 +39,39 @@ private:
         Vec2 dir;            // straights: the direction the reversal check compares against
         double sweep = 0;    // arcs: programmed sweep (0 = never checked: corner and entry arcs)
     };
+    // An emitted move kept for the look-ahead before it leaves the stage.
+    struct Emitted {
+        Motion m;            // nose-centre path, start set
+        Vec2 dir;
+        double sweep = 0;
+        bool in_plane = false;  // a programmed move with plane motion (not a corner fill)
+    };
 
-    void passthrough(const Motion& m);
+    // joints and entry (radius.cpp, radius_joints.cpp)
     void entry_line(const Motion& m);
     void entry_arc(const Motion& m);
     void next_line(const Motion& m);
     void next_arc(const Motion& m);
     std::optional<Element2> held_element() const;
     void outside_corner(const Motion& m, const Vec2& P, const Element2& next, double turn, bool check_held);
-    bool close_open_entry(const Vec2& mid, int line);
-    void hold(Motion m, const Vec2& dir, double sweep);
-    void move_end_and_flush(const Vec2& x, int line, bool check = true);
-    void flush();
-    void emit(Motion m);
+    bool close_open_entry(const Vec2& mid);
     void turn_off(int line);
     [[noreturn]] void fail(const char* code, const std::string& msg, int line) const;
+
+    // held moves, gouge reactions and output (radius_output.cpp)
+    void hold(Motion m, const Vec2& dir, double sweep);
+    // Gives every held move the in-plane end x and emits them. A move that would run
+    // backwards (or an arc that would sweep further) is a gouge, met by the profile's
+    // reaction; `next` is the next element's equidistant, for skipping the unreachable move.
+    void move_end_and_flush(const Vec2& x, int line, bool check = true, const Element2* next = nullptr);
+    // An inside corner without an intersection: the reaction decides, as for gouges.
+    void no_intersection(const Element2& next, int line, const std::string& msg);
+    bool skip_unreachable(const Element2& next, int line);
+    void flush();
+    void emit(const Held& h);
+    void release(std::size_t keep_plane_moves);
+    void passthrough(const Motion& m);
+    void warn(const char* code, const std::string& msg, int line);
 
     Vec2 plane2(const Vec3& v) const { return in_plane(v, plane_); }
     Vec3 with_plane(Vec3 v, const Vec2& ab) const;
@@ -75,8 +93,11 @@ private:
     bool arc_not_allowed_ = false;  // the move after G40 must be straight
     bool exit_pending_ = false;     // the next uncompensated move starts at the last compensated point
     bool entry_open_ = false;       // the entry block waits for the next element (type A entry)
+    std::vector<Emitted> window_;   // emitted, not yet released (look-ahead for bottlenecks)
+    bool have_last_ = false;
+    Vec3 last_ = Vec3::Zero();      // end of the last emitted move (nose centre)
     bool have_out_ = false;
-    Vec3 last_out_ = Vec3::Zero();  // end of the last emitted move (start of the next)
+    Vec3 last_out_ = Vec3::Zero();  // end of the last released move (controlled point)
 };
 
 }  // namespace toolcomp

@@ -1,0 +1,197 @@
+// Held moves, the gouge check when a held move's end is pulled back, the profile's reaction
+// to an unreachable element (error, skip with look-ahead, report), and the output window.
+#include <cmath>
+#include <string>
+
+#include "radius_math.hpp"
+#include "toolcomp/compensation/radius.hpp"
+
+namespace toolcomp {
+
+using namespace radius_math;
+
+void RadiusCompensation::warn(const char* code, const std::string& msg, int line) {
+    diags_.push_back({code, Severity::warning, msg, {line, 0}});
+}
+
+void RadiusCompensation::hold(Motion m, const Vec2& dir, double sweep) { queue_.push_back({std::move(m), dir, sweep}); }
+
+void RadiusCompensation::emit(const Held& h) {
+    Emitted e{h.m, h.dir, h.sweep, false};
+    if (have_last_) e.m.start = last_;
+    if (e.m.is_arc()) e.m.center[axes(e.m.plane).c] = e.m.start[axes(e.m.plane).c];
+    e.in_plane = !e.m.generated && (plane2(e.m.end) - plane2(e.m.start)).norm() > tol::length;
+    last_ = e.m.end;
+    have_last_ = true;
+    window_.push_back(std::move(e));
+    const auto& rules = profile_.radius;
+    release(rules.gouge == GougeReaction::skip ? static_cast<std::size_t>(std::max(0, rules.lookahead - 1)) : 0);
+}
+
+// Sends the oldest emitted moves downstream until at most `keep` plane moves stay for the
+// look-ahead. Lathe tools: the controlled point is the imaginary tip, the nose centre shifted
+// by the nose radius per orientation (LinuxCNC numbering; only in the ZX plane).
+void RadiusCompensation::release(std::size_t keep) {
+    std::size_t in_plane = 0;
+    for (const auto& e : window_) in_plane += e.in_plane;
+    std::size_t n = 0;
+    while (n < window_.size() && in_plane > keep) in_plane -= window_[n++].in_plane;
+    if (keep == 0) n = window_.size();
+    for (std::size_t i = 0; i < n; ++i) {
+        Motion m = window_[i].m;
+        const int o = m.radius.orientation;
+        const double r = m.radius.radius;
+        if (m.plane == Plane::zx && r > 0 && o >= 1 && o <= 8) {
+            double dx = (o == 1 || o == 2 || o == 6) ? -r : (o == 3 || o == 4 || o == 8) ? r : 0;
+            double dz = (o == 2 || o == 3 || o == 7) ? -r : (o == 1 || o == 4 || o == 5) ? r : 0;
+            m.end.x() += dx;
+            m.end.z() += dz;
+            if (m.is_arc()) {
+                m.center.x() += dx;
+                m.center.z() += dz;
+            }
+        }
+        if (have_out_) m.start = last_out_;
+        if (m.is_arc()) m.center[axes(m.plane).c] = m.start[axes(m.plane).c];
+        last_out_ = m.end;
+        have_out_ = true;
+        out_.push(m);
+    }
+    window_.erase(window_.begin(), window_.begin() + static_cast<std::ptrdiff_t>(n));
+}
+
+void RadiusCompensation::passthrough(const Motion& m) {
+    release(0);
+    Motion o = m;
+    // The exit move runs from the last compensated point to the programmed target.
+    if (exit_pending_ && have_out_) o.start = last_out_;
+    exit_pending_ = false;
+    last_out_ = o.end;
+    have_out_ = true;
+    last_ = o.end;
+    have_last_ = true;
+    out_.push(o);
+}
+
+void RadiusCompensation::flush() {
+    for (auto& h : queue_) emit(h);
+    queue_.clear();
+    endpoint_valid_ = false;
+}
+
+void RadiusCompensation::move_end_and_flush(const Vec2& x, int line, bool check, const Element2* next) {
+    if (queue_.empty()) return;
+    const RadiusRules& rules = profile_.radius;
+    // Would any held move run backwards (or sweep further) with this end point?
+    const std::string* gouge = nullptr;
+    for (const auto& h : queue_) {
+        const Motion& m = h.m;
+        if (m.is_arc()) {
+            const Vec2 c = plane2(m.center);
+            if (std::fabs((plane2(m.end) - c).norm() - (x - c).norm()) > 0.01)
+                fail("comp_invalid_arc", "BUG: cutter compensation has generated an invalid arc with mismatched radii",
+                     line);
+            const double sweep = find_turn(endpoint_, c, turn_of(m), x);
+            if (check && !gouge && h.sweep != 0 && endpoint_valid_ &&
+                std::fabs(sweep) > std::fabs(h.sweep) + rules.arc_sweep_tolerance)
+                gouge = &rules.messages.gouge_arc;
+        } else if (check && !gouge && endpoint_valid_ && h.dir.dot(x - endpoint_) < 0) {
+            gouge = m.kind == MotionKind::rapid ? &rules.messages.gouge_traverse : &rules.messages.gouge_feed;
+        }
+    }
+    if (gouge) {
+        const int held_line = queue_.front().m.line;
+        switch (rules.gouge) {
+            case GougeReaction::error:
+                fail("comp_gouge", *gouge, line);
+            case GougeReaction::skip:
+                if (next && skip_unreachable(*next, line)) return;
+                fail("comp_gouge", *gouge, line);
+            case GougeReaction::report:
+                warn("comp_gouge",
+                     *gouge + " (the move of line " + std::to_string(held_line) + ", at line " + std::to_string(line) +
+                         ")",
+                     line);
+                break;
+        }
+    }
+    for (auto& h : queue_) h.m.end = with_plane(h.m.end, x);
+    flush();
+    endpoint_ = x;
+    endpoint_valid_ = true;
+}
+
+void RadiusCompensation::no_intersection(const Element2& next, int line, const std::string& msg) {
+    switch (profile_.radius.gouge) {
+        case GougeReaction::error:
+            fail("comp_gouge", msg, line);
+        case GougeReaction::skip:
+            if (skip_unreachable(next, line)) return;
+            fail("comp_gouge", msg, line);
+        case GougeReaction::report:
+            warn("comp_gouge", msg + " (at line " + std::to_string(line) + "; the previous move keeps its end)", line);
+            move_end_and_flush(plane2(current_), line, false);
+            return;
+    }
+}
+
+// The held plane move cannot be reached: leave it out (and any corner pieces after the
+// moves before it) and join the newest emitted plane move that the next element's
+// equidistant crosses, looking back at most `lookahead` plane moves.
+bool RadiusCompensation::skip_unreachable(const Element2& next, int line) {
+    const int lookahead = std::max(1, profile_.radius.lookahead);
+    int looked = 0;
+    std::string skipped = std::to_string(queue_.front().m.line);
+    for (std::size_t k = window_.size(); k-- > 0;) {
+        const Emitted& w = window_[k];
+        const Vec2 s = plane2(w.m.start), e = plane2(w.m.end);
+        // Programmed moves count against the look-ahead; corner pieces between them are
+        // part of the tool's path too and may be where the next element is met.
+        if (!w.in_plane && !(w.m.generated && (e - s).norm() > tol::length)) continue;
+        if (w.in_plane) {
+            if (looked == lookahead - 1) break;
+            ++looked;
+        }
+        Element2 elem = w.m.is_arc() ? Element2::arc(s, e, plane2(w.m.center), w.m.kind == MotionKind::arc_ccw ? 1 : -1)
+                                     : Element2::line(s, e);
+        auto xs = intersect(elem, next);
+        bool found = false;
+        Vec2 x = Vec2::Zero();
+        for (const Vec2& cand : xs) {
+            // The joined move must keep its direction (lines) or not sweep further (arcs).
+            bool ok = w.m.is_arc() ? std::fabs(find_turn(s, plane2(w.m.center), turn_of(w.m), cand)) <=
+                                         std::fabs(w.sweep == 0 ? elem.sweep() : w.sweep) + profile_.radius.arc_sweep_tolerance
+                                   : w.dir.dot(cand - s) > 0;
+            if (ok && (!found || (cand - e).norm() < (x - e).norm())) {
+                x = cand;
+                found = true;
+            }
+        }
+        if (!found) {
+            if (w.in_plane) skipped = std::to_string(w.m.line) + ", " + skipped;
+            continue;
+        }
+        // Join at x: everything after w goes, the held moves without plane motion stay there.
+        window_[k].m.end = with_plane(window_[k].m.end, x);
+        window_.erase(window_.begin() + static_cast<std::ptrdiff_t>(k) + 1, window_.end());
+        last_ = window_[k].m.end;
+        std::vector<Held> keep;
+        for (std::size_t i = 1; i < queue_.size(); ++i) {
+            Held h = queue_[i];
+            h.m.end = with_plane(h.m.end, x);
+            keep.push_back(h);
+        }
+        queue_ = std::move(keep);
+        warn("comp_skipped",
+             "Elements of line(s) " + skipped + " cannot be reached by the tool and are left out (at line " +
+                 std::to_string(line) + ")",
+             line);
+        flush();
+        endpoint_ = x;
+        endpoint_valid_ = true;
+        return true;
+    }
+    return false;
+}
+
+}  // namespace toolcomp
