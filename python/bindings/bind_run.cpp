@@ -13,6 +13,34 @@ void bind_run(py::module_& m) {
         .value("z_only", LengthAxes::z_only)
         .value("plane_normal", LengthAxes::plane_normal);
 
+    py::enum_<EntryStyle>(m, "EntryStyle")
+        .value("perpendicular_to_entry", EntryStyle::perpendicular_to_entry)
+        .value("perpendicular_to_next", EntryStyle::perpendicular_to_next);
+    py::enum_<OutsideCorner>(m, "OutsideCorner")
+        .value("arc", OutsideCorner::arc)
+        .value("intersection", OutsideCorner::intersection)
+        .value("extension", OutsideCorner::extension);
+    py::enum_<GougeReaction>(m, "GougeReaction")
+        .value("error", GougeReaction::error)
+        .value("skip", GougeReaction::skip)
+        .value("report", GougeReaction::report);
+    py::enum_<NonPlaneReaction>(m, "NonPlaneReaction")
+        .value("error", NonPlaneReaction::error)
+        .value("overcut", NonPlaneReaction::overcut);
+
+    py::class_<RadiusRules>(m, "RadiusRules", "How a control applies cutter radius compensation.")
+        .def_readwrite("yz_plane", &RadiusRules::yz_plane)
+        .def_readwrite("entry", &RadiusRules::entry)
+        .def_readwrite("entry_arc", &RadiusRules::entry_arc)
+        .def_readwrite("outside_corner", &RadiusRules::outside_corner)
+        .def_readwrite("corner_limit", &RadiusRules::corner_limit, "radians")
+        .def_readwrite("corner_tolerance", &RadiusRules::corner_tolerance, "radians")
+        .def_readwrite("arc_sweep_tolerance", &RadiusRules::arc_sweep_tolerance, "radians")
+        .def_readwrite("max_non_plane_moves", &RadiusRules::max_non_plane_moves)
+        .def_readwrite("non_plane_reaction", &RadiusRules::non_plane_reaction)
+        .def_readwrite("lookahead", &RadiusRules::lookahead)
+        .def_readwrite("gouge", &RadiusRules::gouge);
+
     py::class_<ControlProfile>(m, "ControlProfile")
         .def(py::init([](const std::string& dialect) { return profile_for(dialect_from_name(dialect)); }),
              py::arg("dialect") = "linuxcnc")
@@ -20,6 +48,7 @@ void bind_run(py::module_& m) {
         .def_readwrite("startup_inch", &ControlProfile::startup_inch)
         .def_readwrite("length_axes", &ControlProfile::length_axes)
         .def_readwrite("length_subtract_word", &ControlProfile::length_subtract_word)
+        .def_readwrite("radius", &ControlProfile::radius)
         .def("__repr__", [](const ControlProfile& p) { return "ControlProfile('" + p.name + "')"; });
 
     py::class_<Result, std::shared_ptr<Result>>(m, "Result")

@@ -18,9 +18,14 @@ from ._core import (
     ControlProfile,
     CuttingEdge,
     Diagnostic,
+    EntryStyle,
+    GougeReaction,
     LengthAxes,
+    NonPlaneReaction,
+    OutsideCorner,
     Path,
     Program,
+    RadiusRules,
     Result,
     Tool,
     ToolTable,
@@ -30,8 +35,9 @@ from ._errors import CompensationError, Error, ParseError, ProgramError, ToolTab
 
 __all__ = [
     "ARC_CCW", "ARC_CW", "LINE", "RAPID",
-    "CompensationError", "ControlProfile", "CuttingEdge", "Diagnostic", "Error", "LengthAxes",
-    "ParseError", "Path", "Program", "ProgramError", "Result", "Tool", "ToolTable",
+    "CompensationError", "ControlProfile", "CuttingEdge", "Diagnostic", "EntryStyle", "Error",
+    "GougeReaction", "LengthAxes", "NonPlaneReaction", "OutsideCorner", "ParseError", "Path",
+    "Program", "ProgramError", "RadiusRules", "Result", "Tool", "ToolTable",
     "ToolTableError", "run", "__version__",
 ]
 

@@ -142,12 +142,44 @@ class LengthAxes(enum.Enum):
     z_only = 1
     plane_normal = 2
 
+class EntryStyle(enum.Enum):
+    perpendicular_to_entry = 0
+    perpendicular_to_next = 1
+
+class OutsideCorner(enum.Enum):
+    arc = 0
+    intersection = 1
+    extension = 2
+
+class GougeReaction(enum.Enum):
+    error = 0
+    skip = 1
+    report = 2
+
+class NonPlaneReaction(enum.Enum):
+    error = 0
+    overcut = 1
+
+class RadiusRules:
+    yz_plane: bool
+    entry: EntryStyle
+    entry_arc: bool
+    outside_corner: OutsideCorner
+    corner_limit: float
+    corner_tolerance: float
+    arc_sweep_tolerance: float
+    max_non_plane_moves: int
+    non_plane_reaction: NonPlaneReaction
+    lookahead: int
+    gouge: GougeReaction
+
 class ControlProfile:
     def __init__(self, dialect: str = "linuxcnc") -> None: ...
     name: str
     startup_inch: bool
     length_axes: LengthAxes
     length_subtract_word: bool
+    radius: RadiusRules
 
 class Result:
     @property
