@@ -35,7 +35,14 @@ void bind_run(py::module_& m) {
         .def_readwrite("outside_corner", &RadiusRules::outside_corner)
         .def_readwrite("corner_limit", &RadiusRules::corner_limit, "radians")
         .def_readwrite("corner_tolerance", &RadiusRules::corner_tolerance, "radians")
-        .def_readwrite("arc_sweep_tolerance", &RadiusRules::arc_sweep_tolerance, "radians")
+        .def_property(
+            "arc_sweep_tolerance",
+            [](const RadiusRules& r) { return std::make_pair(r.arc_sweep_tolerance[0], r.arc_sweep_tolerance[1]); },
+            [](RadiusRules& r, std::pair<double, double> v) {
+                r.arc_sweep_tolerance[0] = v.first;
+                r.arc_sweep_tolerance[1] = v.second;
+            },
+            "radians, (mm programs, inch programs)")
         .def_readwrite("max_non_plane_moves", &RadiusRules::max_non_plane_moves)
         .def_readwrite("non_plane_reaction", &RadiusRules::non_plane_reaction)
         .def_readwrite("lookahead", &RadiusRules::lookahead)

@@ -167,7 +167,7 @@ class RadiusRules:
     outside_corner: OutsideCorner
     corner_limit: float
     corner_tolerance: float
-    arc_sweep_tolerance: float
+    arc_sweep_tolerance: Tuple[float, float]
     max_non_plane_moves: int
     non_plane_reaction: NonPlaneReaction
     lookahead: int

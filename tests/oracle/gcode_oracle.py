@@ -232,11 +232,8 @@ class Collector:
 
     # --- moves -----------------------------------------------------------------------------
     def _feed_mm(self):
-        # The module divides F by 25.4 while the program is in G21, so the value is always inch/min.
-        # In G93 (inverse time) that division is meaningless and is undone (approximately: the
-        # units are those of the block's start).
-        if self.inverse_time:
-            return self.feed * (MM_PER_INCH if self.metric else 1.0)
+        # The module hands every rate over in inch/min: F divided by 25.4 in G21, and in G93 the
+        # interpreter's own rate (programmed length x F, in program units per minute) likewise.
         return self.feed * MM_PER_INCH
 
     def _row(self, kind, end, center, turns, abc):

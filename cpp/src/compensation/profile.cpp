@@ -17,6 +17,7 @@ ControlProfile profile_for(Dialect d) {
             // in the start-up block. Alarm texts as printed by 0i/30i series controls.
             RadiusRules& r = p.radius;
             r.yz_plane = true;
+            r.side_change = true;
             r.entry = EntryStyle::perpendicular_to_next;
             r.entry_arc = false;
             r.outside_corner = OutsideCorner::extension;

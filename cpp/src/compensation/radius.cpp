@@ -104,10 +104,44 @@ void RadiusCompensation::push(const Motion& m) {
         exit_pending_ = false;
         return;
     }
+    if (m.radius.side != side_ || m.radius.radius != r_) change_side(m);
     if (m.is_arc())
         next_arc(m);
     else
         next_line(m);
+}
+
+// G41 <-> G42 (or a new radius) without G40: the held move ends perpendicular at its end,
+// the next element starts perpendicular at its start with the new side, joined by a line.
+void RadiusCompensation::change_side(const Motion& m) {
+    const Vec2 P = plane2(program_), C = plane2(current_);
+    side_ = m.radius.side;
+    r_ = m.radius.radius;
+    Vec2 start;
+    if (m.is_arc()) {
+        const Vec2 centre = plane2(m.center);
+        const double R = (P - centre).norm();
+        const int dir = m.kind == MotionKind::arc_ccw ? 1 : -1;
+        start = centre + (P - centre) * ((R - side_ * dir * r_) / R);
+    } else {
+        const Vec2 d = plane2(m.end) - P;
+        if (d.norm() < tol::length) return;  // decided at the next plane move
+        start = P + side_ * r_ * left_normal(d.normalized());
+    }
+    move_end_and_flush(C, m.line);
+    flush();
+    Motion link = m;
+    link.kind = m.kind == MotionKind::rapid ? MotionKind::rapid : MotionKind::line;
+    link.center = Vec3::Constant(std::nan(""));
+    link.turns = 0;
+    link.generated = true;
+    link.end = with_plane(current_, start);
+    hold(link, Vec2::Zero(), 0);
+    flush();
+    current_ = link.end;
+    endpoint_ = start;
+    endpoint_valid_ = true;
+    joint_free_ = true;
 }
 
 void RadiusCompensation::turn_off(int line) {

@@ -126,7 +126,9 @@ void RadiusCompensation::next_line(const Motion& m) {
         concave = true;  // 180 degrees off an arc the tool was outside of ("h" shape)
 
     const Element2 next = Element2::line(mid, e);  // the new move's equidistant
-    if (close_open_entry(mid)) {
+    if (joint_free_) {
+        joint_free_ = false;  // a side change already placed the tool at the new start
+    } else if (close_open_entry(mid)) {
         // the entry block already ends at the new element's start
     } else if (!concave && beta > small) {
         outside_corner(m, P, next, beta, /*check_held=*/true);
@@ -194,6 +196,11 @@ void RadiusCompensation::next_arc(const Motion& m) {
     const bool concave = beta < -small || beta > kPi + small || (std::fabs(beta - kPi) < small && !inside);
     const bool front_arc = !queue_.empty() && queue_.front().m.is_arc();
     const Element2 next = Element2::arc(mid, e, centre, ccw ? 1 : -1, m.turns);  // the arc's equidistant
+    if (joint_free_) {
+        joint_free_ = false;  // a side change already placed the tool at the new start
+        hold_arc_and_advance(m, e, centre, turn, P, p);
+        return;
+    }
 
     if (close_open_entry(mid)) {
         // the entry block already ends at the arc's start
@@ -215,6 +222,8 @@ void RadiusCompensation::next_arc(const Motion& m) {
         const double rp = (pc - plane2(prev.end)).norm();
         const double rn = inside ? rho0 - r_ : rho0 + r_;
         const double dcc = (pc - centre).norm();
+        // Concentric arcs, compared exactly as LinuxCNC does (in inch programs its inch
+        // arithmetic and toolcomp's millimetres can round differently: message only).
         if (rp == 0 || dcc == 0)
             fail("comp_same_center", "Arc to arc motion is invalid because the arcs have the same center", m.line);
         const double a = (rp * rp + dcc * dcc - rn * rn) / (2 * rp * dcc);
@@ -233,6 +242,11 @@ void RadiusCompensation::next_arc(const Motion& m) {
         endpoint_ = C;
         endpoint_valid_ = true;
     }
+    hold_arc_and_advance(m, e, centre, turn, P, p);
+}
+
+void RadiusCompensation::hold_arc_and_advance(const Motion& m, const Vec2& e, const Vec2& centre, int turn,
+                                              const Vec2& P, const Vec2& p) {
     Motion h = m;
     h.end = with_plane(m.end, e);
     hold(h, Vec2::Zero(), find_turn(P, centre, turn, p));

@@ -1,6 +1,7 @@
 // Held moves, the gouge check when a held move's end is pulled back, the profile's reaction
 // to an unreachable element (error, skip with look-ahead, report), and the output window.
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "radius_math.hpp"
@@ -88,12 +89,16 @@ void RadiusCompensation::move_end_and_flush(const Vec2& x, int line, bool check,
         const Motion& m = h.m;
         if (m.is_arc()) {
             const Vec2 c = plane2(m.center);
-            if (std::fabs((plane2(m.end) - c).norm() - (x - c).norm()) > 0.01)
-                fail("comp_invalid_arc", "BUG: cutter compensation has generated an invalid arc with mismatched radii",
-                     line);
+            const double unit = m.inch ? kMmPerInch : 1.0;  // the control compares in program units
+            const double r1 = (plane2(m.end) - c).norm() / unit, r2 = (x - c).norm() / unit;
+            if (std::fabs(r1 - r2) > 0.01) {
+                char buf[256];
+                std::snprintf(buf, sizeof buf, rules.messages.arc_mismatch.c_str(), r1, r2);
+                fail("comp_invalid_arc", buf, line);
+            }
             const double sweep = find_turn(endpoint_, c, turn_of(m), x);
             if (check && !gouge && h.sweep != 0 && endpoint_valid_ &&
-                std::fabs(sweep) > std::fabs(h.sweep) + rules.arc_sweep_tolerance)
+                std::fabs(sweep) > std::fabs(h.sweep) + rules.arc_sweep_tolerance[m.inch ? 1 : 0])
                 gouge = &rules.messages.gouge_arc;
         } else if (check && !gouge && endpoint_valid_ && h.dir.dot(x - endpoint_) < 0) {
             gouge = m.kind == MotionKind::rapid ? &rules.messages.gouge_traverse : &rules.messages.gouge_feed;
@@ -160,7 +165,8 @@ bool RadiusCompensation::skip_unreachable(const Element2& next, int line) {
         for (const Vec2& cand : xs) {
             // The joined move must keep its direction (lines) or not sweep further (arcs).
             bool ok = w.m.is_arc() ? std::fabs(find_turn(s, plane2(w.m.center), turn_of(w.m), cand)) <=
-                                         std::fabs(w.sweep == 0 ? elem.sweep() : w.sweep) + profile_.radius.arc_sweep_tolerance
+                                         std::fabs(w.sweep == 0 ? elem.sweep() : w.sweep) +
+                                             profile_.radius.arc_sweep_tolerance[w.m.inch ? 1 : 0]
                                    : w.dir.dot(cand - s) > 0;
             if (ok && (!found || (cand - e).norm() < (x - e).norm())) {
                 x = cand;

@@ -39,6 +39,7 @@ enum class OutsideCorner {
 // Error texts of the radius stage: each control's own wording.
 struct RadiusMessages {
     std::string plane = "Cutter radius compensation allowed only in XY, XZ planes";
+    std::string already_on = "Cannot turn cutter radius comp on when on";
     std::string entry_too_short = "Length of cutter compensation entry move is not greater than the tool radius";
     std::string entry_arc_too_short = "Radius of cutter compensation entry arc is not greater than the tool radius";
     std::string entry_arc = "";  // set when an arc may not switch compensation on
@@ -48,6 +49,8 @@ struct RadiusMessages {
     std::string gouge_arc = "Arc move in concave corner cannot be reached by the tool without gouging";
     std::string arc_to_line = "Arc to straight motion makes a corner the compensated tool can't fit in without gouging";
     std::string arc_to_arc = "Arc to arc motion makes a corner the compensated tool can't fit in without gouging";
+    // printf format with the two radii in program units
+    std::string arc_mismatch = "BUG: cutter compensation has generated an invalid arc with mismatched radii r1 %f r2 %f\n";
     std::string exit_arc = "The move just after exiting cutter compensation mode must be straight, not an arc";
     std::string too_many_non_plane = "Too many blocks without motion in the compensation plane";
 };
@@ -70,6 +73,10 @@ enum class GougeReaction {
 
 struct RadiusRules {
     bool yz_plane = false;  // compensation in G19 (LinuxCNC refuses it)
+    // G41 while G42 is on (and back) without G40 between: LinuxCNC and Heidenhain refuse it;
+    // Fanuc, Sinumerik and the 9/Series end the old move perpendicular at its end, start the
+    // new one perpendicular at its start and join the two with a line.
+    bool side_change = false;
     EntryStyle entry = EntryStyle::perpendicular_to_entry;
     bool entry_arc = true;  // an arc may be the activation block (LinuxCNC: yes)
     OutsideCorner outside_corner = OutsideCorner::arc;
@@ -77,8 +84,9 @@ struct RadiusRules {
     // Joints whose turn differs from a straight continuation by at most this angle (rad)
     // are tangent: nothing is inserted and the next element starts where the last ended.
     double corner_tolerance = 0.05;
-    // A pulled-back arc may sweep this much (rad) more than programmed before it gouges.
-    double arc_sweep_tolerance = 0.001;
+    // A pulled-back arc may sweep this much (rad) more than programmed before it gouges,
+    // [0] in mm programs, [1] in inch programs (LinuxCNC's constants: 0.0254 and 0.001).
+    double arc_sweep_tolerance[2] = {0.0254, 0.001};
     // Consecutive blocks without plane motion the control looks past; -1 = no limit
     // (LinuxCNC holds them all back with the plane move before them).
     int max_non_plane_moves = -1;

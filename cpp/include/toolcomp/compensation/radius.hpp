@@ -52,10 +52,13 @@ private:
     void entry_arc(const Motion& m);
     void next_line(const Motion& m);
     void next_arc(const Motion& m);
+    void hold_arc_and_advance(const Motion& m, const Vec2& e, const Vec2& centre, int turn, const Vec2& P,
+                              const Vec2& p);
     std::optional<Element2> held_element() const;
     void outside_corner(const Motion& m, const Vec2& P, const Element2& next, double turn, bool check_held);
     bool close_open_entry(const Vec2& mid);
     void turn_off(int line);
+    void change_side(const Motion& m);
     [[noreturn]] void fail(const char* code, const std::string& msg, int line) const;
 
     // held moves, gouge reactions and output (radius_output.cpp)
@@ -93,6 +96,7 @@ private:
     bool arc_not_allowed_ = false;  // the move after G40 must be straight
     bool exit_pending_ = false;     // the next uncompensated move starts at the last compensated point
     bool entry_open_ = false;       // the entry block waits for the next element (type A entry)
+    bool joint_free_ = false;       // the next element starts at C without a joint (side change)
     std::vector<Emitted> window_;   // emitted, not yet released (look-ahead for bottlenecks)
     bool have_last_ = false;
     Vec3 last_ = Vec3::Zero();      // end of the last emitted move (nose centre)

@@ -37,6 +37,8 @@ struct Motion {
     Vec3 tool_offset = Vec3::Zero();
     RadiusRequest radius;
     bool generated = false;  // inserted by a compensation stage
+    bool inch = false;       // the block was programmed in inches (tolerances and messages
+                             // of a control are in program units)
 
     bool is_arc() const { return kind == MotionKind::arc_cw || kind == MotionKind::arc_ccw; }
     Arc arc() const { return {start, end, center, plane, kind == MotionKind::arc_ccw ? 1 : -1, turns}; }

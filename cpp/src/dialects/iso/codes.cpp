@@ -7,6 +7,7 @@ int g_group(int c, Dialect d) {
         case 40: case 100: case 280: case 281: case 300: case 301: case 530:
         case 920: case 921: case 922: case 923:
             return g_nonmodal;
+        case 382: case 383: case 384: case 385:  // probing: refused when run (see interp.cpp)
         case 0: case 10: case 20: case 30: case 730: case 740: case 800: case 810: case 820: case 830:
         case 840: case 850: case 860: case 870: case 880: case 890:
             return g_motion;
@@ -26,8 +27,7 @@ int g_group(int c, Dialect d) {
         case 70: case 80: return g_lathe_diameter;
         // Real LinuxCNC codes that toolcomp does not run yet: splines and NURBS, spindle-
         // synchronised motion, probing, threading, lathe cycles, rotated planes.
-        case 50: case 51: case 52: case 53: case 330: case 331: case 382: case 383: case 384:
-        case 385: case 760: case 171: case 181: case 191:
+        case 50: case 51: case 52: case 53: case 330: case 331: case 760: case 171: case 181: case 191:
         case 521: case 700: case 710: case 720: case 731: case 961:
             return kUnsupported;
         default:
@@ -42,8 +42,9 @@ int m_group(int c, Dialect d) {
         case 30: case 40: case 50: return m_spindle;
         case 70: case 80: case 90: return m_coolant;
         case 480: case 490: case 500: case 510: case 520: case 530: return m_override;
-        case 190: case 620: case 630: case 640: case 650: case 660: case 670: case 680:
-        case 700: case 710: case 720: case 730:
+        case 620: case 630: case 640: case 650: case 660: case 670: case 680:
+            return m_io;  // digital/analog I/O: refused when run (see interp.cpp)
+        case 190: case 700: case 710: case 720: case 730:
             return kUnsupported;
         case 980: case 990:
             return d == Dialect::fanuc ? kUnsupported : kUnknown;

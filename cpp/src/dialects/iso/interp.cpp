@@ -82,7 +82,8 @@ void Interp::check_words(const BlockWords& bw, int motion_to_be) {
         if (!(rc == 410 || rc == 411 || rc == 420 || rc == 421 || bw.g[g_spindle_mode] == 960))
             fail("unused_word", "D word with no G41, G41.1, G42, G42.1, G71, G71.1, G71.2 or G96 to use it", col('D'));
     }
-    if (bw.has('E')) fail("unused_word", "E word with no G70, G76, M66, M67 or M68 to use it", col('E'));
+    const bool io = bw.m[m_io] >= 0;  // M62-M68 take P, Q and E
+    if (bw.has('E') && !(io && bw.m[m_io] >= 660)) fail("unused_word", "E word with no G70, G76, M66, M67 or M68 to use it", col('E'));
     if (bw.has('H')) {
         int lc = bw.g[g_length_comp];
         if (!(lc == 430 || lc == 432 || lc == 440)) fail("unused_word", "H word with no G43 or G76 to use it", col('H'));
@@ -101,7 +102,7 @@ void Interp::check_words(const BlockWords& bw, int motion_to_be) {
     }
     if (bw.has('P')) {
         int m = bw.m[m_override];
-        bool ok = arc || g0 == 40 || g0 == 100 || bw.g[g_path_control] == 640 || motion_to_be == 820 ||
+        bool ok = arc || io || g0 == 40 || g0 == 100 || bw.g[g_path_control] == 640 || motion_to_be == 820 ||
                   motion_to_be == 860 || motion_to_be == 880 || motion_to_be == 890 ||
                   (m >= 500 && m <= 530);
         if (!ok)
@@ -111,7 +112,7 @@ void Interp::check_words(const BlockWords& bw, int motion_to_be) {
                  col('P'));
     }
     if (bw.has('Q')) {
-        bool ok = g0 == 100 || bw.g[g_path_control] == 640 || motion_to_be == 730 || motion_to_be == 830 ||
+        bool ok = (io && bw.m[m_io] >= 660) || g0 == 100 || bw.g[g_path_control] == 640 || motion_to_be == 730 || motion_to_be == 830 ||
                   bw.m[m_tool_change] == 610;
         if (!ok)
             fail("unused_word",
@@ -155,7 +156,32 @@ bool Interp::execute(const BlockWords& bw) {
         if (bw.g[g_length_comp] >= 0)
             fail("comp_tool_offset", "Cannot change tool offset with cutter radius compensation on",
                  bw.g_column[g_length_comp]);
-        if (g0 == 530) fail("comp_g53", "Cannot use g53 with cutter radius comp", bw.g_column[g_nonmodal]);
+        if (g0 == 530 && radius_.radius > 0)
+            fail("comp_g53", "Cannot use g53 with cutter radius comp", bw.g_column[g_nonmodal]);
+        if (bw.g[g_path_control] >= 0)
+            fail("comp_control_mode", "Cannot change control mode with cutter radius compensation on",
+                 bw.g_column[g_path_control]);
+        if (bw.g[g_retract] >= 0)
+            fail("comp_retract_mode", "Cannot change retract mode with cutter radius compensation on",
+                 bw.g_column[g_retract]);
+        if (int ov = bw.m[m_override]; ov >= 0) {
+            bool enable = ov == 480 || (ov >= 500 && (!bw.has('P') || bw['P'].value != 0));
+            fail("comp_overrides",
+                 enable ? "Cannot enable overrides with cutter radius compensation on"
+                        : "Cannot disable overrides with cutter radius compensation on",
+                 bw.m_column[m_override]);
+        }
+        if (motion_code >= 382 && motion_code <= 385)
+            fail("comp_probe", "Cannot probe with cutter radius comp on", bw.g_column[g_motion]);
+        if (int io = bw.m[m_io]; io >= 0) {
+            const char* what = io == 620 ? "Cannot set motion output with cutter radius compensation on"
+                             : io == 630 ? "Cannot set motion digital output with cutter radius compensation on"
+                             : io <= 650 ? "Cannot set auxiliary digital output with cutter radius compensation on"
+                             : io == 660 ? "Cannot wait for digital input with cutter radius compensation on"
+                             : io == 670 ? "Cannot set motion analog output with cutter radius compensation on"
+                                         : "Cannot set auxiliary analog output with cutter radius compensation on";
+            fail("comp_io", what, bw.m_column[m_io]);
+        }
         if (g0 == 280 || g0 == 300)
             fail("comp_home", "Cannot use g28 or g30 with cutter radius comp", bw.g_column[g_nonmodal]);
         if (bw.g[g_coord_system] >= 0)
@@ -167,6 +193,14 @@ bool Interp::execute(const BlockWords& bw) {
             fail("comp_canned_cycle", "Cannot use canned cycles with cutter compensation on",
                  motion_code >= 0 ? bw.g_column[g_motion] : bw.axis_column());
     }
+
+    // Real codes of the control that toolcomp does not run (after the control's own refusals
+    // above, which come first on the control too).
+    if (motion_code >= 382 && motion_code <= 385)
+        fail("unsupported_g_code", "G38." + std::to_string(motion_code - 380) + " is not supported by toolcomp",
+             bw.g_column[g_motion]);
+    if (int io = bw.m[m_io]; io >= 0)
+        fail("unsupported_m_code", "M" + std::to_string(io / 10) + " is not supported by toolcomp", bw.m_column[m_io]);
 
     // 2-4: feed mode, feed, speed
     if (bw.g[g_feed_mode] >= 0) st_.feed_mode = bw.g[g_feed_mode];

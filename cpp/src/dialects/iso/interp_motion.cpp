@@ -56,6 +56,7 @@ void Interp::straight(MotionKind kind, const Vec6& end, double feed) {
     m.tool = tool_;
     m.tool_offset = tlo_.head<3>();
     m.radius = radius_;
+    m.inch = st_.inch;
     sink_.push(m);
     pos_ = end;
 }
@@ -169,6 +170,7 @@ void Interp::motion_arc(const BlockWords& bw, int code) {
     m.tool = tool_;
     m.tool_offset = tlo_.head<3>();
     m.radius = radius_;
+    m.inch = st_.inch;
     m.feed = st_.feed_mode == 930 ? feed_for(bw, code, arc_length(m.arc())) : feed_for(bw, code, 0);
     sink_.push(m);
     pos_ = end;

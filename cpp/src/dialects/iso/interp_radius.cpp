@@ -18,7 +18,7 @@ void Interp::radius_comp(const BlockWords& bw, int code) {
     const bool dynamic = code == 411 || code == 421;
     const std::string name = code == 410 ? "G41" : code == 420 ? "G42" : code == 411 ? "G41.1" : "G42.1";
     if (st_.plane == Plane::yz && !profile_.radius.yz_plane) fail("comp_plane", profile_.radius.messages.plane, col);
-    if (comp_on()) fail("comp_already_on", "Cannot turn cutter radius comp on when on", col);
+    if (comp_on() && !profile_.radius.side_change) fail("comp_already_on", profile_.radius.messages.already_on, col);
 
     double radius = 0;
     int orientation = 0;
