@@ -148,3 +148,22 @@ TEST_CASE("An unreachable step: error, skip with look-ahead, or report") {
         if (rep.path.line[i] == 5 && !rep.path.generated[i]) reversed = end_of(rep.path, i).y() > rep.path.start[3 * i + 1];
     CHECK(reversed);
 }
+
+TEST_CASE("Side change without G40: refused by LinuxCNC, a perpendicular link where allowed") {
+    const std::string text = "G21 G0 X-10 Y-10\nG41.1 D10\nG1 X0 Y0 F100\nX50\nG42.1 D10\nX100\nG40 G0 X110 Y-10\nM30\n";
+    CHECK_THROWS_WITH(run_with(text, profile_for(Dialect::linuxcnc)), "Cannot turn cutter radius comp on when on");
+    ControlProfile f = profile_for(Dialect::fanuc);
+    auto r = run_with(text, f);
+    const Path& p = r.path;
+    // Left of the first line at y = 5 up to (50,5); then a link straight down to the right
+    // side's start (50,-5); along y = -5 to (100,-5).
+    bool at_left_end = false, linked = false, right_end = false;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        if ((end_of(p, i) - Vec3(50, 5, 0)).norm() < 1e-9) at_left_end = true;
+        if ((end_of(p, i) - Vec3(50, -5, 0)).norm() < 1e-9 && p.generated[i]) linked = true;
+        if ((end_of(p, i) - Vec3(100, -5, 0)).norm() < 1e-9 && p.side[i] == -1) right_end = true;
+    }
+    CHECK(at_left_end);
+    CHECK(linked);
+    CHECK(right_end);
+}
