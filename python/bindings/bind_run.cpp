@@ -34,6 +34,8 @@ void bind_run(py::module_& m) {
         .def_readwrite("entry_arc", &RadiusRules::entry_arc)
         .def_readwrite("outside_corner", &RadiusRules::outside_corner)
         .def_readwrite("corner_limit", &RadiusRules::corner_limit, "radians")
+        .def_readwrite("disc", &RadiusRules::disc, "Sinumerik DISC, 0..100")
+        .def_readwrite("side_change", &RadiusRules::side_change)
         .def_readwrite("corner_tolerance", &RadiusRules::corner_tolerance, "radians")
         .def_property(
             "arc_sweep_tolerance",

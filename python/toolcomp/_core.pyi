@@ -166,6 +166,8 @@ class RadiusRules:
     entry_arc: bool
     outside_corner: OutsideCorner
     corner_limit: float
+    disc: float
+    side_change: bool
     corner_tolerance: float
     arc_sweep_tolerance: Tuple[float, float]
     max_non_plane_moves: int

@@ -167,3 +167,27 @@ TEST_CASE("Side change without G40: refused by LinuxCNC, a perpendicular link wh
     CHECK(linked);
     CHECK(right_end);
 }
+
+TEST_CASE("DISC distorts the transition arc from the arc (0) to the intersection (100)") {
+    // L-shape joint C of spec 1.4: equidistants x = 45 and y = 35 meet at V = (45,35); the
+    // transition arc runs (45,30) -> (50,35) about (50,30). DISC 50: fillet of radius 2.5
+    // from (45,32.5) to (47.5,35) about (47.5,32.5).
+    const std::string text = "G21 G0 X0 Y-10\nG41.1 D10\nG1 X0 Y0 F100\nX50\nY30\nX80\nG40 G0 X90 Y40\nM2\n";
+    auto find = [](const Path& p, Vec3 pt) {
+        for (std::size_t i = 0; i < p.size(); ++i)
+            if ((end_of(p, i) - pt).norm() < 1e-9) return static_cast<int>(i);
+        return -1;
+    };
+    ControlProfile p = profile_for(Dialect::linuxcnc);
+    p.radius.disc = 50;
+    auto r = run_with(text, p);
+    int a = find(r.path, Vec3(45, 32.5, 0)), b = find(r.path, Vec3(47.5, 35, 0));
+    REQUIRE(a >= 0);
+    REQUIRE(b == a + 1);
+    CHECK(r.path.kind[b] == 2);
+    CHECK(r.path.center[3 * b] == Approx(47.5));
+    CHECK(r.path.center[3 * b + 1] == Approx(32.5));
+    p.radius.disc = 100;
+    auto sharp = run_with(text, p);
+    CHECK(find(sharp.path, Vec3(45, 35, 0)) >= 0);
+}

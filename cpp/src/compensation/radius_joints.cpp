@@ -1,6 +1,7 @@
 // Joints between compensated elements: where the held move ends and the next one starts.
 // Tangent, outside and inside corners for lines and arcs (LinuxCNC's decisions and formulas),
 // with the profile's choice of what fills an outside corner and how the entry block ends.
+#include <algorithm>
 #include <cmath>
 
 #include "radius_math.hpp"
@@ -37,6 +38,30 @@ void RadiusCompensation::outside_corner(const Motion& m, const Vec2& P, const El
             for (const Vec2& x : xs)
                 if ((x - P).norm() < (v - P).norm()) v = x;
             move_end_and_flush(v, m.line, /*check=*/false);
+            return;
+        }
+    }
+    if (rules.outside_corner == OutsideCorner::arc && rules.disc > 0 && held && !held->is_arc && !next.is_arc &&
+        m.kind != MotionKind::rapid) {
+        // DISC: a fillet of radius r(1 - k) between the extended equidistants, k = DISC/100.
+        auto xs = intersect(*held, next);
+        if (!xs.empty()) {
+            const double k = std::min(rules.disc, 100.0) / 100;
+            const Vec2 v = xs[0];
+            const Vec2 t1 = C + k * (v - C), t2 = mid + k * (v - mid);
+            move_end_and_flush(t1, m.line, /*check=*/false);
+            if (k < 1) {
+                Motion fillet = m;
+                fillet.generated = true;
+                fillet.turns = 0;
+                fillet.kind = side_ > 0 ? MotionKind::arc_cw : MotionKind::arc_ccw;
+                fillet.end = with_plane(current_, t2);
+                fillet.center = with_plane(current_, t1 + (1 - k) * (P - C));
+                hold(fillet, Vec2::Zero(), 0);
+                flush();
+            }
+            endpoint_ = t2;
+            endpoint_valid_ = true;
             return;
         }
     }

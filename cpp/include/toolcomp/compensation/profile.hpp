@@ -81,6 +81,12 @@ struct RadiusRules {
     bool entry_arc = true;  // an arc may be the activation block (LinuxCNC: yes)
     OutsideCorner outside_corner = OutsideCorner::arc;
     double corner_limit = 0;  // rad, see OutsideCorner
+    // Sinumerik DISC (0..100) with the transition arc between two straight moves: the corner
+    // becomes a fillet of radius r·(1 − DISC/100) tangent to the extended equidistants, so
+    // 0 is the transition arc about the corner and 100 the sharp intersection. (Siemens does
+    // not publish its law; this one is continuous in DISC and exact at both ends.) Joints
+    // with an arc keep the transition arc.
+    double disc = 0;
     // Joints whose turn differs from a straight continuation by at most this angle (rad)
     // are tangent: nothing is inserted and the next element starts where the last ended.
     double corner_tolerance = 0.05;
