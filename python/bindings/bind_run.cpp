@@ -16,6 +16,9 @@ void bind_run(py::module_& m) {
     py::enum_<EntryStyle>(m, "EntryStyle")
         .value("perpendicular_to_entry", EntryStyle::perpendicular_to_entry)
         .value("perpendicular_to_next", EntryStyle::perpendicular_to_next);
+    py::enum_<ExitStyle>(m, "ExitStyle")
+        .value("perpendicular_to_last", ExitStyle::perpendicular_to_last)
+        .value("corner_with_exit", ExitStyle::corner_with_exit);
     py::enum_<OutsideCorner>(m, "OutsideCorner")
         .value("arc", OutsideCorner::arc)
         .value("intersection", OutsideCorner::intersection)
@@ -32,6 +35,7 @@ void bind_run(py::module_& m) {
         .def_readwrite("yz_plane", &RadiusRules::yz_plane)
         .def_readwrite("entry", &RadiusRules::entry)
         .def_readwrite("entry_arc", &RadiusRules::entry_arc)
+        .def_readwrite("exit", &RadiusRules::exit)
         .def_readwrite("outside_corner", &RadiusRules::outside_corner)
         .def_readwrite("corner_limit", &RadiusRules::corner_limit, "radians")
         .def_readwrite("disc", &RadiusRules::disc, "Sinumerik DISC, 0..100")

@@ -19,6 +19,7 @@ from ._core import (
     CuttingEdge,
     Diagnostic,
     EntryStyle,
+    ExitStyle,
     GougeReaction,
     LengthAxes,
     NonPlaneReaction,
@@ -35,7 +36,7 @@ from ._errors import CompensationError, Error, ParseError, ProgramError, ToolTab
 
 __all__ = [
     "ARC_CCW", "ARC_CW", "LINE", "RAPID",
-    "CompensationError", "ControlProfile", "CuttingEdge", "Diagnostic", "EntryStyle", "Error",
+    "CompensationError", "ControlProfile", "CuttingEdge", "Diagnostic", "EntryStyle", "Error", "ExitStyle",
     "GougeReaction", "LengthAxes", "NonPlaneReaction", "OutsideCorner", "ParseError", "Path",
     "Program", "ProgramError", "RadiusRules", "Result", "Tool", "ToolTable",
     "ToolTableError", "run", "__version__",

@@ -146,6 +146,10 @@ class EntryStyle(enum.Enum):
     perpendicular_to_entry = 0
     perpendicular_to_next = 1
 
+class ExitStyle(enum.Enum):
+    perpendicular_to_last = 0
+    corner_with_exit = 1
+
 class OutsideCorner(enum.Enum):
     arc = 0
     intersection = 1
@@ -164,6 +168,7 @@ class RadiusRules:
     yz_plane: bool
     entry: EntryStyle
     entry_arc: bool
+    exit: ExitStyle
     outside_corner: OutsideCorner
     corner_limit: float
     disc: float

@@ -191,3 +191,33 @@ TEST_CASE("DISC distorts the transition arc from the arc (0) to the intersection
     auto sharp = run_with(text, p);
     CHECK(find(sharp.path, Vec3(45, 35, 0)) >= 0);
 }
+
+TEST_CASE("Exit: perpendicular to the last move, or joined to the cancel move (type B)") {
+    // y = 0 to (50,0) with G41 r = 5, then G40 G1 X60 Y-10 (a 45 degree right turn).
+    const std::string text = "G21 G0 X-10 Y5\nG41.1 D10\nG1 X0 Y0 F100\nX50\nG40 X60 Y-10\nM2\n";
+    auto find = [](const Path& p, Vec3 pt) {
+        for (std::size_t i = 0; i < p.size(); ++i)
+            if ((end_of(p, i) - pt).norm() < 1e-6) return static_cast<int>(i);
+        return -1;
+    };
+    auto a = run_with(text, profile_for(Dialect::linuxcnc));
+    CHECK(find(a.path, Vec3(50, 5, 0)) == static_cast<int>(a.path.size()) - 2);  // then straight out
+    // Type B with intersections: y = 5 meets the cancel move's equidistant (through
+    // (53.536, 3.536), direction (1,-1)) at x = 50 + 5 tan(22.5 deg) = 52.071.
+    ControlProfile b = profile_for(Dialect::fanuc);
+    b.radius.entry = EntryStyle::perpendicular_to_entry;
+    b.radius.exit = ExitStyle::corner_with_exit;
+    auto r = run_with(text, b);
+    const int k = find(r.path, Vec3(50 + 5 * std::tan(kPi / 8), 5, 0));
+    REQUIRE(k >= 0);
+    CHECK(end_of(r.path, k + 1).isApprox(Vec3(60, -10, 0)));
+    CHECK(static_cast<std::size_t>(k + 2) == r.path.size());
+    // Type B with the transition arc: the arc about (50,0) to (53.536, 3.536), then out.
+    ControlProfile arc = profile_for(Dialect::linuxcnc);
+    arc.radius.exit = ExitStyle::corner_with_exit;
+    auto s = run_with(text, arc);
+    const int j = find(s.path, Vec3(50 + 5 / std::sqrt(2.0), 5 / std::sqrt(2.0), 0));
+    REQUIRE(j >= 0);
+    CHECK(s.path.kind[j] == 2);
+    CHECK(end_of(s.path, j + 1).isApprox(Vec3(60, -10, 0)));
+}

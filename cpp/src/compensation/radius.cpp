@@ -83,7 +83,24 @@ void RadiusCompensation::entry_arc(const Motion& m) {
 // ---- stream -------------------------------------------------------------------------------
 
 void RadiusCompensation::push(const Motion& m) {
-    if (m.is_arc() && arc_not_allowed_) fail("comp_exit_arc", profile_.radius.messages.exit_arc, m.line);
+    if (m.is_arc() && (arc_not_allowed_ || exit_open_))
+        fail("comp_exit_arc", profile_.radius.messages.exit_arc, m.line);
+    if (exit_open_ && m.radius.side == 0 && (plane2(m.end) - plane2(program_)).norm() > tol::length) {
+        // Type B cancel: the cancel move is joined like a compensated move, then runs to its
+        // programmed (uncompensated) end point.
+        exit_open_ = false;
+        Motion c = m;
+        c.radius = {static_cast<std::int8_t>(side_), r_, exit_orientation_};
+        next_line(c);
+        queue_.back().m.end = m.end;
+        queue_.back().m.radius = m.radius;
+        flush();
+        release(0);
+        active_ = false;
+        arc_not_allowed_ = true;
+        exit_pending_ = false;
+        return;
+    }
     if (m.radius.side == 0 || m.radius.radius <= 0) {
         if (!m.is_arc()) arc_not_allowed_ = false;
         passthrough(m);
@@ -158,14 +175,27 @@ void RadiusCompensation::turn_off(int line) {
 void RadiusCompensation::control(const ControlEvent& e) {
     switch (e.kind) {
         case ControlKind::radius_off:
+            if (active_ && profile_.radius.exit == ExitStyle::corner_with_exit && !queue_.empty()) {
+                exit_open_ = true;  // settled by the cancel move
+                exit_orientation_ = queue_.front().m.radius.orientation;
+                break;
+            }
             turn_off(e.line);
             break;
         case ControlKind::stop:
+            if (exit_open_) {
+                exit_open_ = false;
+                turn_off(e.line);
+            }
             entry_open_ = false;
             if (active_) move_end_and_flush(plane2(current_), e.line);
             release(0);
             break;
         case ControlKind::program_end:
+            if (exit_open_) {
+                exit_open_ = false;
+                turn_off(e.line);
+            }
             entry_open_ = false;
             if (active_) {
                 move_end_and_flush(plane2(current_), e.line);
@@ -179,6 +209,10 @@ void RadiusCompensation::control(const ControlEvent& e) {
 }
 
 void RadiusCompensation::finish() {
+    if (exit_open_) {
+        exit_open_ = false;
+        turn_off(0);
+    }
     flush();
     release(0);
     out_.finish();

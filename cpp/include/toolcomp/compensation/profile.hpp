@@ -27,6 +27,16 @@ enum class EntryStyle {
     perpendicular_to_next = 1,
 };
 
+// How the compensated path leaves the contour when compensation is cancelled (spec §1.6).
+enum class ExitStyle {
+    // The last compensated move ends perpendicular to itself at its programmed end; the
+    // cancel move runs from there to its programmed end point (LinuxCNC; Fanuc type A).
+    perpendicular_to_last = 0,
+    // The cancel move starts perpendicular to itself at its start, joined to the last move by
+    // the corner rule, and ends uncompensated (Fanuc type B; Sinumerik KONT).
+    corner_with_exit = 1,
+};
+
 // What fills the gap at an outside corner (spec §1.4.1).
 enum class OutsideCorner {
     arc = 0,           // transition arc of the tool radius about the programmed corner
@@ -79,6 +89,7 @@ struct RadiusRules {
     bool side_change = false;
     EntryStyle entry = EntryStyle::perpendicular_to_entry;
     bool entry_arc = true;  // an arc may be the activation block (LinuxCNC: yes)
+    ExitStyle exit = ExitStyle::perpendicular_to_last;
     OutsideCorner outside_corner = OutsideCorner::arc;
     double corner_limit = 0;  // rad, see OutsideCorner
     // Sinumerik DISC (0..100) with the transition arc between two straight moves: the corner

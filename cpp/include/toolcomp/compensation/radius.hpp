@@ -97,6 +97,8 @@ private:
     bool exit_pending_ = false;     // the next uncompensated move starts at the last compensated point
     bool entry_open_ = false;       // the entry block waits for the next element (type A entry)
     bool joint_free_ = false;       // the next element starts at C without a joint (side change)
+    bool exit_open_ = false;        // G40 seen, the cancel move settles the last joint (type B exit)
+    std::int8_t exit_orientation_ = 0;
     std::vector<Emitted> window_;   // emitted, not yet released (look-ahead for bottlenecks)
     bool have_last_ = false;
     Vec3 last_ = Vec3::Zero();      // end of the last emitted move (nose centre)
