@@ -25,11 +25,11 @@ void Path::reserve(std::size_t n) {
 
 void Path::push(const Motion& m) {
     kind.push_back(static_cast<std::uint8_t>(m.kind));
-    put3(start, m.start);
-    put3(end, m.end);
-    put3(center, m.center);
+    put3(start, m.start * m.unit);
+    put3(end, m.end * m.unit);
+    put3(center, m.center * m.unit);
     abc.insert(abc.end(), m.abc.begin(), m.abc.end());
-    put3(tool_offset, m.tool_offset);
+    put3(tool_offset, m.tool_offset * m.unit);
     line.push_back(m.line);
     tool.push_back(m.tool);
     turns.push_back(m.turns);

@@ -317,17 +317,7 @@ def generated(tmp_path_factory):
     return out
 
 
-# Known, documented differences (message only; both reject the program at the same line).
-# LinuxCNC tests concentric arcs with an exact comparison of centres computed in inches; toolcomp
-# computes in millimetres, so the two roundings can disagree by 1e-16 and pick the other message.
-KNOWN = {
-    "same_centre_g91_inch": "exact centre comparison: inch vs millimetre rounding (message only)",
-    "same_centre_r_form_inch": "exact centre comparison: inch vs millimetre rounding (message only)",
-}
-
-
-@pytest.mark.parametrize("prog", [pytest.param(p, marks=pytest.mark.xfail(reason=KNOWN[p.stem], strict=True))
-                                  if p.stem in KNOWN else p for p in HAND], ids=lambda p: p.stem)
+@pytest.mark.parametrize("prog", HAND, ids=lambda p: p.stem)
 def test_hand_written_program(prog, generated):
     _, mod = generated[prog.stem]
     diffs = check(prog, _table_for(prog), mod)

@@ -67,7 +67,7 @@ def test_column_values():
     np.testing.assert_allclose(p.end, [[0, 0, 5], [0, 0, -1], [10, 0, -1], [0, 0, -1]])
     np.testing.assert_allclose(p.start[1:], p.end[:-1])
     assert np.isnan(p.center[:2]).all()
-    np.testing.assert_allclose(p.center[2:], [[5, 0, -1], [5, 0, -1]])
+    np.testing.assert_allclose(p.center[2:], [[5, 0, -1], [5, 0, -1]], atol=1e-12)
     np.testing.assert_allclose(p.abc[:, 0], 10)
     assert math.isnan(p.feed[0]) and list(p.feed[1:]) == [200, 200, 200]
     assert list(p.side) == [0, 0, 0, 0] and not p.generated.any()

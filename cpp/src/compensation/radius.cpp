@@ -82,7 +82,32 @@ void RadiusCompensation::entry_arc(const Motion& m) {
 
 // ---- stream -------------------------------------------------------------------------------
 
+// G20/G21 while moves are held: everything kept is converted to the new program unit (the
+// control rescales its queue the same way).
+void RadiusCompensation::rescale(double new_unit) {
+    const double f = unit_ / new_unit;
+    unit_ = new_unit;
+    if (f == 1.0) return;
+    auto conv = [f, new_unit](Motion& m) {
+        m.start *= f;
+        m.end *= f;
+        m.center *= f;
+        m.tool_offset *= f;
+        m.radius.radius *= f;
+        m.unit = new_unit;
+    };
+    for (auto& h : queue_) conv(h.m);
+    for (auto& w : window_) conv(w.m);
+    program_ *= f;
+    current_ *= f;
+    endpoint_ *= f;
+    last_ *= f;
+    last_out_ *= f;
+    r_ *= f;
+}
+
 void RadiusCompensation::push(const Motion& m) {
+    rescale(m.unit);
     if (m.is_arc() && (arc_not_allowed_ || exit_open_))
         fail("comp_exit_arc", profile_.radius.messages.exit_arc, m.line);
     if (exit_open_ && m.radius.side == 0 && (plane2(m.end) - plane2(program_)).norm() > tol::length) {

@@ -89,8 +89,7 @@ void RadiusCompensation::move_end_and_flush(const Vec2& x, int line, bool check,
         const Motion& m = h.m;
         if (m.is_arc()) {
             const Vec2 c = plane2(m.center);
-            const double unit = m.inch ? kMmPerInch : 1.0;  // the control compares in program units
-            const double r1 = (plane2(m.end) - c).norm() / unit, r2 = (x - c).norm() / unit;
+            const double r1 = (plane2(m.end) - c).norm(), r2 = (x - c).norm();  // program units
             if (std::fabs(r1 - r2) > 0.01) {
                 char buf[256];
                 std::snprintf(buf, sizeof buf, rules.messages.arc_mismatch.c_str(), r1, r2);
@@ -98,7 +97,7 @@ void RadiusCompensation::move_end_and_flush(const Vec2& x, int line, bool check,
             }
             const double sweep = find_turn(endpoint_, c, turn_of(m), x);
             if (check && !gouge && h.sweep != 0 && endpoint_valid_ &&
-                std::fabs(sweep) > std::fabs(h.sweep) + rules.arc_sweep_tolerance[m.inch ? 1 : 0])
+                std::fabs(sweep) > std::fabs(h.sweep) + rules.arc_sweep_tolerance[m.inch() ? 1 : 0])
                 gouge = &rules.messages.gouge_arc;
         } else if (check && !gouge && endpoint_valid_ && h.dir.dot(x - endpoint_) < 0) {
             gouge = m.kind == MotionKind::rapid ? &rules.messages.gouge_traverse : &rules.messages.gouge_feed;
@@ -166,7 +165,7 @@ bool RadiusCompensation::skip_unreachable(const Element2& next, int line) {
             // The joined move must keep its direction (lines) or not sweep further (arcs).
             bool ok = w.m.is_arc() ? std::fabs(find_turn(s, plane2(w.m.center), turn_of(w.m), cand)) <=
                                          std::fabs(w.sweep == 0 ? elem.sweep() : w.sweep) +
-                                             profile_.radius.arc_sweep_tolerance[w.m.inch ? 1 : 0]
+                                             profile_.radius.arc_sweep_tolerance[w.m.inch() ? 1 : 0]
                                    : w.dir.dot(cand - s) > 0;
             if (ok && (!found || (cand - e).norm() < (x - e).norm())) {
                 x = cand;

@@ -59,6 +59,7 @@ private:
     bool close_open_entry(const Vec2& mid);
     void turn_off(int line);
     void change_side(const Motion& m);
+    void rescale(double new_unit);
     [[noreturn]] void fail(const char* code, const std::string& msg, int line) const;
 
     // held moves, gouge reactions and output (radius_output.cpp)
@@ -84,6 +85,7 @@ private:
     std::vector<Diagnostic>& diags_;
     int non_plane_run_ = 0;  // blocks without plane motion since the last plane move
 
+    double unit_ = 1.0;            // program unit (mm per unit) of everything held below
     bool active_ = false;          // compensating, the entry move made
     Plane plane_ = Plane::xy;
     int side_ = 0;                 // +1 left, -1 right

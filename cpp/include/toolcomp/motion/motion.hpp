@@ -1,10 +1,11 @@
 #pragma once
 // The Motion stream: the control-independent output of every interpreter.
 //
-// One Motion is one canonical move (rapid, line, arc/helix) in program coordinates
-// (millimetres, before work offsets, the way LinuxCNC's interpreter reports them), with the
-// state the compensation stages need: the active tool, the tool length offset vector and the
-// cutter radius compensation request.
+// One Motion is one canonical move (rapid, line, arc/helix) in program coordinates (before
+// work offsets, the way LinuxCNC's interpreter reports them) and in the program's units, as
+// the control computes: `unit` is millimetres per program unit (25.4 in a G20 program). The
+// Path converts to millimetres. A Motion carries the state the compensation stages need: the
+// active tool, the tool length offset vector and the cutter radius compensation request.
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -20,7 +21,7 @@ enum class MotionKind : std::uint8_t { rapid = 0, line = 1, arc_cw = 2, arc_ccw 
 // Cutter radius compensation requested for a move (carried, applied by a later stage).
 struct RadiusRequest {
     std::int8_t side = 0;     // 0 off, +1 left (G41), -1 right (G42)
-    double radius = 0;        // mm
+    double radius = 0;        // program units
     std::int8_t orientation = 0;  // lathe tip number, 0 = none
 };
 
@@ -37,8 +38,9 @@ struct Motion {
     Vec3 tool_offset = Vec3::Zero();
     RadiusRequest radius;
     bool generated = false;  // inserted by a compensation stage
-    bool inch = false;       // the block was programmed in inches (tolerances and messages
-                             // of a control are in program units)
+    double unit = 1.0;       // mm per program unit of all lengths above (feed is mm/min)
+
+    bool inch() const { return unit != 1.0; }
 
     bool is_arc() const { return kind == MotionKind::arc_cw || kind == MotionKind::arc_ccw; }
     Arc arc() const { return {start, end, center, plane, kind == MotionKind::arc_ccw ? 1 : -1, turns}; }

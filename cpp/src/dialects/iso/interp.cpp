@@ -37,6 +37,24 @@ Interp::Interp(const Program& prog, const ToolTable* tools, const ControlProfile
     st_.inch = profile.startup_inch;
 }
 
+// G20/G21: everything the interpreter keeps in program units is converted, so the machine
+// stays where it is (LinuxCNC's convert_length_units).
+void Interp::set_units(bool inch) {
+    if (st_.inch == inch) return;
+    st_.inch = inch;
+    const double f = inch ? 1 / kMmPerInch : kMmPerInch;
+    auto lengths = [f](Vec6& v) { v.head<3>() *= f; };
+    lengths(pos_);
+    for (auto& o : g5x_) lengths(o);
+    lengths(g92_);
+    lengths(g92_saved_);
+    lengths(tlo_);
+    lengths(g28_);
+    lengths(g30_);
+    for (double* v : {&cyc_.r, &cyc_.z, &cyc_.q, &cyc_.i, &cyc_.j, &cyc_.k, &cycle_il_}) *v *= f;
+    radius_.radius *= f;
+}
+
 void Interp::fail(const char* code, const std::string& msg, int column) const {
     throw ProgramError(code, msg, {line_, column});
 }
@@ -216,7 +234,7 @@ bool Interp::execute(const BlockWords& bw) {
     if (g0 == 40 && (!bw.has('P') || bw['P'].value < 0))
         fail("dwell_missing", "Dwell time missing with g4", bw.g_column[g_nonmodal]);
     // 11-12: plane, units (an F in the same block was read in the old units, as LinuxCNC does)
-    if (bw.g[g_units] >= 0) st_.inch = bw.g[g_units] == 200;
+    if (bw.g[g_units] >= 0) set_units(bw.g[g_units] == 200);
     if (bw.g[g_plane] >= 0) st_.plane = bw.g[g_plane] == 170 ? Plane::xy : bw.g[g_plane] == 180 ? Plane::zx : Plane::yz;
     if (bw.g[g_lathe_diameter] >= 0) st_.diameter = bw.g[g_lathe_diameter] == 70;
     // 13: cutter radius compensation (requested here, applied by the compensation stage)

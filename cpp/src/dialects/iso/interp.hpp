@@ -2,8 +2,9 @@
 // The ISO interpreter's working data (modal state, positions, offsets) and its operations.
 // Private to the ISO front end; the entry point is toolcomp::iso::interpret().
 //
-// Positions are kept as LinuxCNC keeps them: program coordinates in millimetres (X Y Z)
-// and degrees (A B C), with machine = program + G92 + G5x + tool length offset.
+// Positions are kept as LinuxCNC keeps them: program coordinates in the current program
+// units (X Y Z; converted when G20/G21 changes them) and degrees (A B C), with
+// machine = program + G92 + G5x + tool length offset. Moves leave in millimetres.
 #include <Eigen/Core>
 #include <array>
 #include <type_traits>
@@ -33,8 +34,8 @@ struct ModalState {
 
 // Values that stick from one canned-cycle block to the next while the cycle continues.
 struct CycleMemory {
-    double r = 0, z = 0, q = 0, p = 0;  // r, z as written (mm), q mm, p seconds
-    double i = 0, j = 0, k = 0;          // G87: offsets of the back bore (mm), K as written
+    double r = 0, z = 0, q = 0, p = 0;  // r, z, q as written (program units), p seconds
+    double i = 0, j = 0, k = 0;          // G87: offsets of the back bore, K as written
 };
 
 class Interp {
@@ -53,17 +54,20 @@ private:
     // ---- units and coordinates -----------------------------------------------------------
     double scale() const { return st_.inch ? kMmPerInch : 1.0; }
     int unit_index() const { return st_.inch ? 1 : 0; }
-    // Axis word of `bw` as an absolute program coordinate in mm/deg (G90/G91, G7), or the
-    // current value when the word is absent.
+    // Axis words of `bw` as an absolute program position (G90/G91, G7); the current value
+    // where a word is absent.
     Vec6 find_end(const BlockWords& bw) const;
-    double axis_value(const BlockWords& bw, int axis) const;  // word value in mm/deg (G7 halved)
+    double axis_value(const BlockWords& bw, int axis) const;  // word value (G7 halves X)
     // machine = rotate(program + G92) + G5x + tool length offset; the rotation (G10 L2 R)
     // turns X/Y about the origin of the active coordinate system.
     Vec6 to_machine(const Vec6& prog) const;
     Vec6 from_machine(const Vec6& machine) const;
 
     // ---- motion (interp_motion.cpp) --------------------------------------------------------
+    Motion motion_to(MotionKind kind, const Vec6& end) const;
     void straight(MotionKind kind, const Vec6& end, double feed);
+    Vec2 center_from_radius_lcnc(const Vec2& s, const Vec2& e, double R, int dir) const;
+    void set_units(bool inch);
     void motion_line(const BlockWords& bw, int code, bool machine_coords);
     void motion_arc(const BlockWords& bw, int code);
     double feed_for(const BlockWords& bw, int code, double length) const;

@@ -16,7 +16,6 @@ void Interp::cycle(const BlockWords& bw, int code) {
     const char* plane_name = st_.plane == Plane::xy ? "xy" : st_.plane == Plane::zx ? "xz" : "yz";
     const bool continuing = prev_motion_ == code;
     const std::string gname = "g" + std::to_string(code / 10);
-    const double sc = scale();
 
     for (char c : {'A', 'B', 'C'})
         if (bw.has(c))
@@ -30,17 +29,17 @@ void Interp::cycle(const BlockWords& bw, int code) {
         if (repeats == 0) fail("zero_repeats", "Cannot do zero repeats of cycle", bw['L'].column);
     }
     if (bw.has('R'))
-        cyc_.r = bw['R'].value * sc;
+        cyc_.r = bw['R'].value;
     else if (!continuing)
         fail("cycle_r_missing", "R clearance plane unspecified in cycle");
     if (bw.has(cl))
-        cyc_.z = bw[cl].value * sc;
+        cyc_.z = bw[cl].value;
     else if (!continuing)
         fail("cycle_depth_missing", std::string(1, cl) + " value unspecified in " + plane_name + " plane canned cycle");
     if (code == 730 || code == 830) {
         if (bw.has('Q')) {
             if (bw['Q'].value < 0) fail("cycle_q_missing", "Q word missing with " + gname, bw['Q'].column);
-            cyc_.q = bw['Q'].value * sc;
+            cyc_.q = bw['Q'].value;
         } else if (!continuing) {
             fail("cycle_q_missing", "Q word missing with " + gname);
         }
@@ -60,9 +59,9 @@ void Interp::cycle(const BlockWords& bw, int code) {
             if (!bw.has(c) && !continuing)
                 fail("cycle_g87_word_missing", std::string(1, c) + " word missing with g87");
         }
-        if (bw.has('I')) cyc_.i = bw['I'].value * sc;
-        if (bw.has('J')) cyc_.j = bw['J'].value * sc;
-        if (bw.has('K')) cyc_.k = bw['K'].value * sc;
+        if (bw.has('I')) cyc_.i = bw['I'].value;
+        if (bw.has('J')) cyc_.j = bw['J'].value;
+        if (bw.has('K')) cyc_.k = bw['K'].value;
     }
     if (feed_ <= 0) fail("zero_feed", "Cannot feed with zero feed rate");
 
@@ -103,7 +102,7 @@ void Interp::cycle(const BlockWords& bw, int code) {
     }
     const double clear = st_.retract_initial ? old_cc : r;
     const double feed = feed_for(bw, 10, 0);
-    const double rapid_delta = 0.010 * kMmPerInch;  // LinuxCNC's G83_RAPID_DELTA, 0.010 inch
+    const double rapid_delta = st_.inch ? 0.010 : 0.010 * kMmPerInch;  // LinuxCNC's G83_RAPID_DELTA
     for (int rep = 0; rep < repeats; ++rep) {
         a += da;
         b += db;

@@ -10,12 +10,24 @@ namespace {
 constexpr char kAxisLetter[6] = {'X', 'Y', 'Z', 'A', 'B', 'C'};
 }
 
+// Centre of an R-format arc with LinuxCNC's own arithmetic (arc_data_r), so that exact
+// comparisons of centres later decide as the control does. NaN when R cannot reach.
+Vec2 Interp::center_from_radius_lcnc(const Vec2& s, const Vec2& e, double R, int dir) const {
+    const double abs_r = std::fabs(R);
+    const Vec2 mid((e.x() + s.x()) / 2.0, (e.y() + s.y()) / 2.0);
+    double half = std::hypot(mid.x() - e.x(), mid.y() - e.y());
+    if (half - abs_r > profile_.arc_min_radius[unit_index()]) return Vec2(std::nan(""), std::nan(""));
+    if (half / abs_r > 1 - 1e-12) half = abs_r;  // a half circle, centre at the midpoint
+    const long double quarter = 1.570796326794896619231321691639751442L;
+    const long double base = std::atan2(e.y() - s.y(), e.x() - s.x());
+    const double theta = static_cast<double>(((dir < 0 && R > 0) || (dir > 0 && R < 0)) ? base - quarter : base + quarter);
+    const double offset = abs_r * std::cos(std::asin(half / abs_r));
+    return {mid.x() + offset * std::cos(theta), mid.y() + offset * std::sin(theta)};
+}
+
 double Interp::axis_value(const BlockWords& bw, int axis) const {
     double v = bw[kAxisLetter[axis]].value;
-    if (axis < 3) {
-        v *= scale();
-        if (axis == 0 && st_.diameter) v *= 0.5;  // G7: every X word is a diameter
-    }
+    if (axis == 0 && st_.diameter) v *= 0.5;  // G7: every X word is a diameter
     return v;
 }
 
@@ -44,19 +56,24 @@ double Interp::feed_for(const BlockWords& bw, int code, double length) const {
     }
 }
 
-void Interp::straight(MotionKind kind, const Vec6& end, double feed) {
+Motion Interp::motion_to(MotionKind kind, const Vec6& end) const {
     Motion m;
     m.kind = kind;
     m.plane = st_.plane;
     m.start = pos_.head<3>();
     m.end = end.head<3>();
     m.abc = {end[3], end[4], end[5]};
-    m.feed = feed;
     m.line = line_;
     m.tool = tool_;
     m.tool_offset = tlo_.head<3>();
     m.radius = radius_;
-    m.inch = st_.inch;
+    m.unit = scale();
+    return m;
+}
+
+void Interp::straight(MotionKind kind, const Vec6& end, double feed) {
+    Motion m = motion_to(kind, end);
+    m.feed = feed;
     sink_.push(m);
     pos_ = end;
 }
@@ -72,7 +89,7 @@ void Interp::motion_line(const BlockWords& bw, int code, bool machine_coords) {
     }
     if (code == 10 && st_.feed_mode != 930 && feed_ <= 0)
         fail("zero_feed", "Cannot do g1 with zero feed rate", bw.axis_column());
-    double feed = feed_for(bw, code, (end.head<3>() - pos_.head<3>()).norm());
+    double feed = feed_for(bw, code, (end.head<3>() - pos_.head<3>()).norm() * scale());
     straight(code == 0 ? MotionKind::rapid : MotionKind::line, end, feed);
 }
 
@@ -83,8 +100,6 @@ void Interp::motion_arc(const BlockWords& bw, int code) {
     const char offset_letter[3] = {'I', 'J', 'K'};  // centre word of each axis
     const char a_l = letters[ax.a], b_l = letters[ax.b];
     const char a_off = offset_letter[ax.a], b_off = offset_letter[ax.b], c_off = offset_letter[ax.c];
-    const double sc = scale();
-
     if (st_.feed_mode != 930 && feed_ <= 0) fail("zero_feed", "Cannot make arc with zero feed rate");
     const bool r_form = bw.has('R');
     if (r_form && (bw.has('I') || bw.has('J') || bw.has('K')))
@@ -112,27 +127,22 @@ void Interp::motion_arc(const BlockWords& bw, int code) {
     Vec6 end = find_end(bw);
     Vec2 s(pos_[ax.a], pos_[ax.b]), e(end[ax.a], end[ax.b]);
     Vec2 c;
-    const double min_r = profile_.arc_min_radius[unit_index()] * sc;
+    const double min_r = profile_.arc_min_radius[unit_index()];
     const int dir = code == 30 ? 1 : -1;
     if (r_form) {
         if (s == e) fail("arc_same_point", "Current point same as end point of arc", bw['R'].column);
-        double R = bw['R'].value * sc;
-        double half = 0.5 * (e - s).norm();
-        if (half - std::fabs(R) > min_r)
-            fail("arc_radius_too_small", "Arc radius too small to reach end point", bw['R'].column);
-        if (half > std::fabs(R)) R = std::copysign(half, R);
-        auto cc = center_from_radius(s, e, R, dir);
-        c = cc ? *cc : 0.5 * (s + e);
+        const double R = bw['R'].value;
+        c = center_from_radius_lcnc(s, e, R, dir);
+        if (std::isnan(c.x())) fail("arc_radius_too_small", "Arc radius too small to reach end point", bw['R'].column);
     } else {
         auto centre_word = [&](char off, int axis) -> double {
             if (st_.arc_absolute) {
                 if (!bw.has(off))
                     fail("arc_center_missing", std::string(1, off) + " word missing in absolute center arc");
-                double v = bw[off].value * sc;
-                return v;
+                return bw[off].value;
             }
             (void)axis;
-            return bw.has(off) ? bw[off].value * sc : 0.0;
+            return bw.has(off) ? bw[off].value : 0.0;
         };
         double ci = centre_word(a_off, ax.a), cj = centre_word(b_off, ax.b);
         c = st_.arc_absolute ? Vec2(ci, cj) : Vec2(s.x() + ci, s.y() + cj);
@@ -141,13 +151,12 @@ void Interp::motion_arc(const BlockWords& bw, int code) {
             char buf[512];
             std::snprintf(buf, sizeof buf,
                           "%sstart=(%c%.4f,%c%.4f) center=(%c%.4f,%c%.4f) end=(%c%.4f,%c%.4f) r1=%.4f r2=%.4f", head,
-                          a_l, s.x() / sc, b_l, s.y() / sc, a_l, c.x() / sc, b_l, c.y() / sc, a_l, e.x() / sc, b_l,
-                          e.y() / sc, r1 / sc, r2 / sc);
+                          a_l, s.x(), b_l, s.y(), a_l, c.x(), b_l, c.y(), a_l, e.x(), b_l, e.y(), r1, r2);
             return std::string(buf);
         };
         if (r1 < min_r || r2 < min_r) fail("arc_zero_radius", describe("Zero-radius arc: "));
-        double abs_err = std::fabs(r1 - r2) / sc;  // program units, as the control compares
-        double rel_err = abs_err * sc / std::max(r1, r2);
+        double abs_err = std::fabs(r1 - r2);  // program units, as the control compares
+        double rel_err = abs_err / std::max(r1, r2);
         double tol = profile_.arc_spiral_abs[unit_index()];
         if (abs_err > profile_.arc_spiral_hard_factor * tol || (rel_err > profile_.arc_spiral_rel && abs_err > tol)) {
             char tail[96];
@@ -156,22 +165,13 @@ void Interp::motion_arc(const BlockWords& bw, int code) {
         }
     }
 
-    Motion m;
-    m.kind = code == 30 ? MotionKind::arc_ccw : MotionKind::arc_cw;
-    m.plane = st_.plane;
-    m.start = pos_.head<3>();
-    m.end = end.head<3>();
-    m.center = pos_.head<3>();
-    m.center[ax.a] = c.x();
-    m.center[ax.b] = c.y();
+    Vec6 centre = pos_;
+    centre[ax.a] = c.x();
+    centre[ax.b] = c.y();
+    Motion m = motion_to(code == 30 ? MotionKind::arc_ccw : MotionKind::arc_cw, end);
+    m.center = centre.head<3>();
     m.turns = p - 1;
-    m.abc = {end[3], end[4], end[5]};
-    m.line = line_;
-    m.tool = tool_;
-    m.tool_offset = tlo_.head<3>();
-    m.radius = radius_;
-    m.inch = st_.inch;
-    m.feed = st_.feed_mode == 930 ? feed_for(bw, code, arc_length(m.arc())) : feed_for(bw, code, 0);
+    m.feed = st_.feed_mode == 930 ? feed_for(bw, code, arc_length(m.arc()) * scale()) : feed_for(bw, code, 0);
     sink_.push(m);
     pos_ = end;
 }

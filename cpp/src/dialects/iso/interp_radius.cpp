@@ -24,7 +24,7 @@ void Interp::radius_comp(const BlockWords& bw, int code) {
     int orientation = 0;
     if (dynamic) {
         if (!bw.has('D')) fail("comp_no_d", name + " with no D word", col);
-        radius = bw['D'].value * scale() / 2;
+        radius = bw['D'].value / 2;  // program units
         if (bw.has('L')) {
             if (st_.plane != Plane::zx) fail("comp_l_not_g18", name + " with L word, but plane is not G18", bw['L'].column);
             orientation = static_cast<int>(std::lround(bw['L'].value));
@@ -43,7 +43,7 @@ void Interp::radius_comp(const BlockWords& bw, int code) {
             if (!t)
                 fail("tool_not_found", "Requested tool " + std::to_string(tool) + " not found in the tool table",
                      bw.has('D') ? bw['D'].column : col);
-            radius = t->edge().effective_radius();
+            radius = t->edge().effective_radius() / scale();  // the table is in mm
             orientation = t->edge().orientation;
         }
         if (orientation != 0 && orientation != 9 && st_.plane != Plane::zx)

@@ -20,7 +20,7 @@ Vec6 Interp::tool_offset_of(int tool, int column) const {
         fail("tool_not_found", "Requested tool " + std::to_string(tool) + " not found in the tool table", column);
     }
     const CuttingEdge& e = t->edge();
-    Eigen::Vector3d len = e.effective_length();
+    Eigen::Vector3d len = e.effective_length() / scale();  // the table is in mm
     switch (profile_.length_axes) {
         case LengthAxes::all:
             v << len.x(), len.y(), len.z(), e.rotary[0], e.rotary[1], e.rotary[2];
@@ -86,7 +86,7 @@ void Interp::length_comp(const BlockWords& bw, int code) {
         case 431: {  // dynamic: the named components are replaced
             Vec6 v = tlo_;
             for (int i = 0; i < 6; ++i)
-                if (bw.has(kAxisLetter[i])) v[i] = i < 3 ? bw[kAxisLetter[i]].value * scale() : bw[kAxisLetter[i]].value;
+                if (bw.has(kAxisLetter[i])) v[i] = bw[kAxisLetter[i]].value;
             change_offset(tlo_, v);
             break;
         }
@@ -99,7 +99,7 @@ void Interp::length_comp(const BlockWords& bw, int code) {
                 add = tool_offset_of(h_tool(), bw['H'].column);
             } else {
                 for (int i = 0; i < 6; ++i)
-                    if (bw.has(kAxisLetter[i])) add[i] = i < 3 ? bw[kAxisLetter[i]].value * scale() : bw[kAxisLetter[i]].value;
+                    if (bw.has(kAxisLetter[i])) add[i] = bw[kAxisLetter[i]].value;
             }
             change_offset(tlo_, tlo_ + add);
             break;
