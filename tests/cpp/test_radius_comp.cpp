@@ -113,3 +113,20 @@ TEST_CASE("LinuxCNC V5: a step narrower than the tool gouges, reported at the ne
     CHECK_THROWS_WITH(run_text("G21 G0 X0 Y0\nG41.1 D10\nG1 X20 F100\nG3 X24 Y0 R2\nM2\n"),
                       "Tool radius not less than arc radius with comp");
 }
+
+TEST_CASE("Inside corners with arcs: arc to line and arc to arc meet where the equidistants cross") {
+    // Left compensation r = 1 around G3 (10,0) -> (0,10) about the origin (tool inside, radius 9).
+    // Then a line to (-10,0): a 45 degree left turn. Its equidistant (through (0.7071, 9.2929),
+    // direction (-1,-1)/sqrt 2) meets the circle of radius 9 at (0.405092, 8.990879).
+    auto al = run_text("G21 G0 X10 Y-5\nG41.1 D2\nG1 X10 Y0 F100\nG3 X0 Y10 R10\nG1 X-10 Y0\nG40 G0 X-20 Y0\nM2\n");
+    check_path(al.path, 1,
+               {{1, 9, 0},                      // entry, tangent to the arc
+                {3, 0.405092, 8.990879, 0, 0},  // the arc, pulled back
+                {1, -10 + 0.707107, -0.707107},  // the line's equidistant to its end
+                {0, -20, 0}});
+    // Arc to arc: then G2 about (-10,10) (a 90 degree left turn; tool outside, radius 11).
+    // Circles r 9 about (0,0) and r 11 about (-10,10): x = 80/sqrt 200, h = 7, nearest the
+    // corner (0.949747, 8.949747).
+    auto aa = run_text("G21 G0 X10 Y-5\nG41.1 D2\nG1 X10 Y0 F100\nG3 X0 Y10 R10\nG2 X-10 Y0 I-10 J0\nG40 G0 X-20 Y0\nM2\n");
+    check_path(aa.path, 1, {{1, 9, 0}, {3, 0.949747, 8.949747, 0, 0}, {2, -10, -1, -10, 10}, {0, -20, 0}});
+}
