@@ -221,3 +221,19 @@ TEST_CASE("Exit: perpendicular to the last move, or joined to the cancel move (t
     CHECK(s.path.kind[j] == 2);
     CHECK(end_of(s.path, j + 1).isApprox(Vec3(60, -10, 0)));
 }
+
+TEST_CASE("An inside arc smaller than the tool: error, or left out with the skip reaction") {
+    // A 2 mm radius notch (G3, tool inside) in a straight edge, tool radius 5 on the left.
+    const std::string text =
+        "G21 G0 X-10 Y5\nG41.1 D10\nG1 X0 Y0 F100\nX20\nG3 X24 Y0 R2\nG1 X50\nG40 G0 X60 Y10\nM2\n";
+    ControlProfile p = profile_for(Dialect::linuxcnc);
+    CHECK_THROWS_WITH(run_with(text, p), "Tool radius not less than arc radius with comp");
+    p.radius.gouge = GougeReaction::skip;
+    p.radius.lookahead = 2;
+    auto r = run_with(text, p);
+    // Both lines run at y = 5: the tool passes straight over the notch.
+    for (std::size_t i = 1; i + 1 < r.path.size(); ++i) CHECK(end_of(r.path, i).y() == Approx(5));
+    for (std::size_t i = 0; i < r.path.size(); ++i) CHECK(r.path.line[i] != 5);
+    REQUIRE(r.diagnostics.size() == 1);
+    CHECK(r.diagnostics[0].message.find("line(s) 5") != std::string::npos);
+}

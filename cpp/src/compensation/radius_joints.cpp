@@ -106,6 +106,42 @@ bool RadiusCompensation::close_open_entry(const Vec2& mid) {
     return true;
 }
 
+// Arcs left out because the tool does not fit into them (skip reaction): the held element
+// and the next one meet where their equidistants cross.
+void RadiusCompensation::bridge(const Element2& next, int line) {
+    const std::string lines = bridge_lines_;
+    bridge_lines_.clear();
+    if (auto held = held_element()) {
+        bool found = false;
+        Vec2 x = Vec2::Zero();
+        for (const Vec2& cand : intersect(*held, next)) {
+            const bool ahead = held->is_arc ? true : (cand - held->p0).dot(held->p1 - held->p0) > 0;
+            const bool before = next.is_arc ? true : (next.p1 - cand).dot(next.p1 - next.p0) > 0;
+            if (ahead && before && (!found || (cand - held->p1).norm() < (x - held->p1).norm())) {
+                x = cand;
+                found = true;
+            }
+        }
+        if (!found && !held->is_arc && !next.is_arc) {
+            // On one line (a notch in a straight edge): the held move runs on to the next start.
+            const Vec2 d = held->p1 - held->p0, q = next.p0 - held->p0;
+            if (std::fabs(cross2(d.normalized(), q)) < 1e-9 && d.dot(next.p1 - next.p0) > 0 && d.dot(q) > 0) {
+                x = next.p0;
+                found = true;
+            }
+        }
+        if (found) {
+            move_end_and_flush(x, line, /*check=*/false);
+            warn("comp_skipped",
+                 "Elements of line(s) " + lines + " cannot be reached by the tool and are left out (at line " +
+                     std::to_string(line) + ")",
+                 line);
+            return;
+        }
+    }
+    if (!skip_unreachable(next, line)) fail("comp_arc_too_small", profile_.radius.messages.arc_too_small, line);
+}
+
 void RadiusCompensation::next_line(const Motion& m) {
     const RadiusRules& rules = profile_.radius;
     const double small = rules.corner_tolerance;
@@ -151,7 +187,9 @@ void RadiusCompensation::next_line(const Motion& m) {
         concave = true;  // 180 degrees off an arc the tool was outside of ("h" shape)
 
     const Element2 next = Element2::line(mid, e);  // the new move's equidistant
-    if (joint_free_) {
+    if (!bridge_lines_.empty()) {
+        bridge(next, m.line);
+    } else if (joint_free_) {
         joint_free_ = false;  // a side change already placed the tool at the new start
     } else if (close_open_entry(mid)) {
         // the entry block already ends at the new element's start
@@ -211,7 +249,13 @@ void RadiusCompensation::next_arc(const Motion& m) {
     double gamma;
     if (inside) {
         gamma = ang(centre - p);
-        if (rho0 <= r_) fail("comp_arc_too_small", rules.messages.arc_too_small, m.line);
+        if (rho0 <= r_) {
+            if (rules.gouge != GougeReaction::skip) fail("comp_arc_too_small", rules.messages.arc_too_small, m.line);
+            // The tool does not fit into the arc: leave it out, the next element decides.
+            bridge_lines_ += (bridge_lines_.empty() ? "" : ", ") + std::to_string(m.line);
+            program_ = m.end;
+            return;
+        }
     } else {
         gamma = ang(p - centre);
         delta += kPi;
@@ -221,6 +265,11 @@ void RadiusCompensation::next_arc(const Motion& m) {
     const bool concave = beta < -small || beta > kPi + small || (std::fabs(beta - kPi) < small && !inside);
     const bool front_arc = !queue_.empty() && queue_.front().m.is_arc();
     const Element2 next = Element2::arc(mid, e, centre, ccw ? 1 : -1, m.turns);  // the arc's equidistant
+    if (!bridge_lines_.empty()) {
+        bridge(next, m.line);
+        hold_arc_and_advance(m, e, centre, turn, P, p);
+        return;
+    }
     if (joint_free_) {
         joint_free_ = false;  // a side change already placed the tool at the new start
         hold_arc_and_advance(m, e, centre, turn, P, p);

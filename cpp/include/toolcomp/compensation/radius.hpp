@@ -59,6 +59,7 @@ private:
     bool close_open_entry(const Vec2& mid);
     void turn_off(int line);
     void change_side(const Motion& m);
+    void bridge(const Element2& next, int line);
     void rescale(double new_unit);
     [[noreturn]] void fail(const char* code, const std::string& msg, int line) const;
 
@@ -99,6 +100,7 @@ private:
     bool exit_pending_ = false;     // the next uncompensated move starts at the last compensated point
     bool entry_open_ = false;       // the entry block waits for the next element (type A entry)
     bool joint_free_ = false;       // the next element starts at C without a joint (side change)
+    std::string bridge_lines_;      // lines of arcs left out, waiting for the next element
     bool exit_open_ = false;        // G40 seen, the cancel move settles the last joint (type B exit)
     std::int8_t exit_orientation_ = 0;
     std::vector<Emitted> window_;   // emitted, not yet released (look-ahead for bottlenecks)
