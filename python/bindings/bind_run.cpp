@@ -36,6 +36,7 @@ void bind_run(py::module_& m) {
         .def_readwrite("entry", &RadiusRules::entry)
         .def_readwrite("entry_arc", &RadiusRules::entry_arc)
         .def_readwrite("exit", &RadiusRules::exit)
+        .def_readwrite("tip_convention", &RadiusRules::tip_convention)
         .def_readwrite("outside_corner", &RadiusRules::outside_corner)
         .def_readwrite("corner_limit", &RadiusRules::corner_limit, "radians")
         .def_readwrite("disc", &RadiusRules::disc, "Sinumerik DISC, 0..100")
@@ -54,9 +55,21 @@ void bind_run(py::module_& m) {
         .def_readwrite("lookahead", &RadiusRules::lookahead)
         .def_readwrite("gouge", &RadiusRules::gouge);
 
+    py::enum_<TipConvention>(m, "TipConvention")
+        .value("linuxcnc", TipConvention::linuxcnc)
+        .value("fanuc", TipConvention::fanuc);
+    py::enum_<Machine>(m, "Machine").value("mill", Machine::mill).value("lathe", Machine::lathe);
+
     py::class_<ControlProfile>(m, "ControlProfile")
-        .def(py::init([](const std::string& dialect) { return profile_for(dialect_from_name(dialect)); }),
-             py::arg("dialect") = "linuxcnc")
+        .def(py::init([](const std::string& dialect, const std::string& machine) {
+                 if (machine != "mill" && machine != "lathe") throw py::value_error("machine must be 'mill' or 'lathe'");
+                 return profile_for(dialect_from_name(dialect), machine == "lathe" ? Machine::lathe : Machine::mill);
+             }),
+             py::arg("dialect") = "linuxcnc", py::arg("machine") = "mill")
+        .def_readonly("machine", &ControlProfile::machine)
+        .def_readwrite("x_diameter", &ControlProfile::x_diameter)
+        .def_readwrite("incremental_uw", &ControlProfile::incremental_uw)
+        .def_readwrite("t_offsets", &ControlProfile::t_offsets)
         .def_readwrite("name", &ControlProfile::name)
         .def_readwrite("startup_inch", &ControlProfile::startup_inch)
         .def_readwrite("length_axes", &ControlProfile::length_axes)

@@ -22,12 +22,14 @@ from ._core import (
     ExitStyle,
     GougeReaction,
     LengthAxes,
+    Machine,
     NonPlaneReaction,
     OutsideCorner,
     Path,
     Program,
     RadiusRules,
     Result,
+    TipConvention,
     Tool,
     ToolTable,
     __version__,
@@ -37,8 +39,8 @@ from ._errors import CompensationError, Error, ParseError, ProgramError, ToolTab
 __all__ = [
     "ARC_CCW", "ARC_CW", "LINE", "RAPID",
     "CompensationError", "ControlProfile", "CuttingEdge", "Diagnostic", "EntryStyle", "Error", "ExitStyle",
-    "GougeReaction", "LengthAxes", "NonPlaneReaction", "OutsideCorner", "ParseError", "Path",
-    "Program", "ProgramError", "RadiusRules", "Result", "Tool", "ToolTable",
+    "GougeReaction", "LengthAxes", "Machine", "NonPlaneReaction", "OutsideCorner", "ParseError", "Path",
+    "Program", "ProgramError", "RadiusRules", "Result", "TipConvention", "Tool", "ToolTable",
     "ToolTableError", "run", "__version__",
 ]
 

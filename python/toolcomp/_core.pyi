@@ -164,11 +164,20 @@ class NonPlaneReaction(enum.Enum):
     error = 0
     overcut = 1
 
+class TipConvention(enum.Enum):
+    linuxcnc = 0
+    fanuc = 1
+
+class Machine(enum.Enum):
+    mill = 0
+    lathe = 1
+
 class RadiusRules:
     yz_plane: bool
     entry: EntryStyle
     entry_arc: bool
     exit: ExitStyle
+    tip_convention: TipConvention
     outside_corner: OutsideCorner
     corner_limit: float
     disc: float
@@ -181,7 +190,12 @@ class RadiusRules:
     gouge: GougeReaction
 
 class ControlProfile:
-    def __init__(self, dialect: str = "linuxcnc") -> None: ...
+    def __init__(self, dialect: str = "linuxcnc", machine: str = "mill") -> None: ...
+    @property
+    def machine(self) -> Machine: ...
+    x_diameter: bool
+    incremental_uw: bool
+    t_offsets: bool
     name: str
     startup_inch: bool
     length_axes: LengthAxes

@@ -4,9 +4,10 @@
 
 namespace toolcomp {
 
-ControlProfile profile_for(Dialect d) {
+ControlProfile profile_for(Dialect d, Machine machine) {
     ControlProfile p;
     p.name = std::string(dialect_name(d));
+    p.machine = machine;
     switch (d) {
         case Dialect::fanuc: {
             // Fanuc "tool length compensation type A": the H value acts on Z; G44 subtracts.
@@ -32,6 +33,15 @@ ControlProfile profile_for(Dialect d) {
             r.messages.arc_too_small = "PS0038 INTERFERENCE IN CIRCULAR BLOCK";
             r.messages.gouge_feed = r.messages.gouge_traverse = "PS0041 INTERFERENCE IN CRC";
             r.messages.gouge_arc = r.messages.arc_to_line = r.messages.arc_to_arc = "PS0033 NO INTERSECTION AT CRC";
+            if (machine == Machine::lathe) {
+                // Fanuc T series: diameter X, U/W incremental, T with offset numbers, tip
+                // numbers in Fanuc/Haas numbering, the offset's X and Z both act.
+                p.x_diameter = true;
+                p.incremental_uw = true;
+                p.t_offsets = true;
+                p.length_axes = LengthAxes::all;
+                r.tip_convention = TipConvention::fanuc;
+            }
             break;
         }
         default:

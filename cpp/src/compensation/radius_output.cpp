@@ -31,7 +31,7 @@ void RadiusCompensation::emit(const Held& h) {
 
 // Sends the oldest emitted moves downstream until at most `keep` plane moves stay for the
 // look-ahead. Lathe tools: the controlled point is the imaginary tip, the nose centre shifted
-// by the nose radius per orientation (LinuxCNC numbering; only in the ZX plane).
+// by the nose radius toward the tip (only in the ZX plane; numbering per profile).
 void RadiusCompensation::release(std::size_t keep) {
     std::size_t in_plane = 0;
     for (const auto& e : window_) in_plane += e.in_plane;
@@ -40,17 +40,12 @@ void RadiusCompensation::release(std::size_t keep) {
     if (keep == 0) n = window_.size();
     for (std::size_t i = 0; i < n; ++i) {
         Motion m = window_[i].m;
-        const int o = m.radius.orientation;
+        const TipVector tip = tip_vector(m.radius.orientation, profile_.radius.tip_convention);
         const double r = m.radius.radius;
-        if (m.plane == Plane::zx && r > 0 && o >= 1 && o <= 8) {
-            double dx = (o == 1 || o == 2 || o == 6) ? -r : (o == 3 || o == 4 || o == 8) ? r : 0;
-            double dz = (o == 2 || o == 3 || o == 7) ? -r : (o == 1 || o == 4 || o == 5) ? r : 0;
-            m.end.x() += dx;
-            m.end.z() += dz;
-            if (m.is_arc()) {
-                m.center.x() += dx;
-                m.center.z() += dz;
-            }
+        if (m.plane == Plane::zx && r > 0 && (tip.x || tip.z)) {
+            const Vec3 shift(tip.x * r, 0, tip.z * r);
+            m.end += shift;
+            if (m.is_arc()) m.center += shift;
         }
         if (have_out_) m.start = last_out_;
         if (m.is_arc()) m.center[axes(m.plane).c] = m.start[axes(m.plane).c];

@@ -5,6 +5,7 @@
 // Profiles for the built-in dialects come from profile_for(); users may adjust fields.
 #include <string>
 
+#include "toolcomp/compensation/nose.hpp"
 #include "toolcomp/program/dialect.hpp"
 
 namespace toolcomp {
@@ -90,6 +91,8 @@ struct RadiusRules {
     EntryStyle entry = EntryStyle::perpendicular_to_entry;
     bool entry_arc = true;  // an arc may be the activation block (LinuxCNC: yes)
     ExitStyle exit = ExitStyle::perpendicular_to_last;
+    // Lathe tools: how the table's tip numbers are read (the imaginary tip's direction).
+    TipConvention tip_convention = TipConvention::linuxcnc;
     OutsideCorner outside_corner = OutsideCorner::arc;
     double corner_limit = 0;  // rad, see OutsideCorner
     // Sinumerik DISC (0..100) with the transition arc between two straight moves: the corner
@@ -114,8 +117,11 @@ struct RadiusRules {
     RadiusMessages messages;
 };
 
+enum class Machine { mill = 0, lathe = 1 };
+
 struct ControlProfile {
     std::string name = "linuxcnc";
+    Machine machine = Machine::mill;
 
     // ---- interpreter ------------------------------------------------------------------
     bool startup_inch = false;  // G20 active at program start
@@ -130,6 +136,13 @@ struct ControlProfile {
     double arc_spiral_hard_factor = 100;
     double arc_min_radius[2] = {0.00005 * 25.4, 0.00005};
 
+    // Lathes (Fanuc style): X words are diameters from the start; U and W are incremental X
+    // and Z; a T word is tool and offset number (T0313: tool 3, offset 13) and applies the
+    // offset at once (geometry + wear X and Z, nose radius and tip for G41/G42; no D word).
+    bool x_diameter = false;
+    bool incremental_uw = false;
+    bool t_offsets = false;
+
     // ---- tool length compensation ------------------------------------------------------
     LengthAxes length_axes = LengthAxes::all;
     bool length_subtract_word = false;  // G44 (subtract the offset) exists
@@ -138,6 +151,6 @@ struct ControlProfile {
     RadiusRules radius;
 };
 
-ControlProfile profile_for(Dialect d);
+ControlProfile profile_for(Dialect d, Machine machine = Machine::mill);
 
 }  // namespace toolcomp

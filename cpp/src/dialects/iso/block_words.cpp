@@ -62,7 +62,7 @@ void add_m(BlockWords& bw, const Word& w, Dialect d) {
 
 int BlockWords::axis_column() const {
     int col = 0;
-    for (char c : {'X', 'Y', 'Z', 'A', 'B', 'C'})
+    for (char c : {'X', 'Y', 'Z', 'A', 'B', 'C', 'U', 'V', 'W'})
         if (has(c) && (col == 0 || (*this)[c].column < col)) col = (*this)[c].column;
     return col;
 }

@@ -26,7 +26,8 @@ struct BlockWords {
     const WordSlot& operator[](char c) const { return letter[c - 'A']; }
     bool has(char c) const { return letter[c - 'A'].set; }
     bool has_axis() const {
-        return has('X') || has('Y') || has('Z') || has('A') || has('B') || has('C');
+        return has('X') || has('Y') || has('Z') || has('A') || has('B') || has('C') || has('U') || has('V') ||
+               has('W');
     }
     // Column of the first axis word (for error positions), or 0.
     int axis_column() const;

@@ -35,6 +35,7 @@ Interp::Interp(const Program& prog, const ToolTable* tools, const ControlProfile
     : prog_(prog), tools_(tools), profile_(profile), opts_(opts), sink_(sink), diags_(diags) {
     for (auto& o : g5x_) o.setZero();
     st_.inch = profile.startup_inch;
+    st_.diameter = profile.x_diameter;
 }
 
 // G20/G21: everything the interpreter keeps in program units is converted, so the machine
@@ -165,6 +166,13 @@ bool Interp::execute(const BlockWords& bw) {
     }
     if (g0 == 920 && !axes) fail("g92_no_axes", "All axes missing with g52 or g92", bw.g_column[g_nonmodal]);
     check_words(bw, motion_to_be);
+    if (bw.has('U') || bw.has('V') || bw.has('W')) {
+        char l = bw.has('U') ? 'U' : bw.has('V') ? 'V' : 'W';
+        if (!profile_.incremental_uw || l == 'V')
+            fail("unsupported_axis", std::string(1, l) + " axis words are not supported by toolcomp", bw[l].column);
+        if ((bw.has('U') && bw.has('X')) || (bw.has('W') && bw.has('Z')))
+            fail("absolute_and_incremental", "X and U (or Z and W) in one block", bw[l].column);
+    }
     if (comp_on() && bw.g[g_radius_comp] != 400) {
         // What LinuxCNC refuses while the tool radius is compensated.
         if (bw.g[g_plane] >= 0 && bw.g[g_plane] != (st_.plane == Plane::xy ? 170 : st_.plane == Plane::zx ? 180 : 190))
@@ -222,6 +230,8 @@ bool Interp::execute(const BlockWords& bw) {
 
     // 2-4: feed mode, feed, speed
     if (bw.g[g_feed_mode] >= 0) st_.feed_mode = bw.g[g_feed_mode];
+    if (profile_.t_offsets && bw.g[g_retract] >= 0)  // Fanuc lathes: G98 per minute, G99 per revolution
+        st_.feed_mode = bw.g[g_retract] == 980 ? 940 : 950;
     if (bw.has('F')) feed_ = bw['F'].value * (st_.feed_mode == 930 ? 1.0 : scale());
     if (bw.has('S')) speed_ = bw['S'].value;
     // 5-6: tools
@@ -250,7 +260,7 @@ bool Interp::execute(const BlockWords& bw) {
     if (bw.g[g_path_control] >= 0) st_.path_control = bw.g[g_path_control];
     if (bw.g[g_distance] >= 0) st_.incremental = bw.g[g_distance] == 910;
     if (bw.g[g_arc_distance] >= 0) st_.arc_absolute = bw.g[g_arc_distance] == 901;
-    if (bw.g[g_retract] >= 0) st_.retract_initial = bw.g[g_retract] == 980;
+    if (bw.g[g_retract] >= 0 && !profile_.t_offsets) st_.retract_initial = bw.g[g_retract] == 980;
     // 19: G10, G28/G30, G92
     switch (g0) {
         case 100: g10(bw); break;

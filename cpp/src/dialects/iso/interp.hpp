@@ -94,6 +94,7 @@ private:
 
     // ---- cutter radius compensation request (interp_radius.cpp) ----------------------------
     void radius_comp(const BlockWords& bw, int code);
+    void set_radius_from_offset();
     bool comp_on() const { return radius_.side != 0; }
 
     // ---- canned cycles (interp_cycles.cpp) ---------------------------------------------------
@@ -118,6 +119,7 @@ private:
     double speed_ = 0;  // S, rev/min
     int tool_ = 0;      // tool in the spindle
     int selected_ = -1; // tool prepared by T
+    int offset_ = 0;    // lathes with T offsets: the active offset number
     CycleMemory cyc_;
     int prev_motion_ = 800;      // motion mode before the current block
     double cycle_il_ = 0;        // initial level of the running canned cycle

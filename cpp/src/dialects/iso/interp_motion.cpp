@@ -38,6 +38,9 @@ Vec6 Interp::find_end(const BlockWords& bw) const {
         double v = axis_value(bw, i);
         end[i] = st_.incremental ? pos_[i] + v : v;
     }
+    // Fanuc lathes: U and W are increments of X (a diameter in diameter mode) and Z.
+    if (bw.has('U')) end[0] = pos_[0] + bw['U'].value * (st_.diameter ? 0.5 : 1.0);
+    if (bw.has('W')) end[2] = pos_[2] + bw['W'].value;
     return end;
 }
 
@@ -110,7 +113,10 @@ void Interp::motion_arc(const BlockWords& bw, int code) {
     if (bw.has(c_off))
         fail("arc_offset_wrong_axis",
              std::string(1, c_off) + " word given for arc in " + plane_name + " plane", bw[c_off].column);
-    if (r_form && !bw.has(a_l) && !bw.has(b_l)) {
+    auto has_axis_word = [&](char l) {
+        return bw.has(l) || (l == 'X' && bw.has('U')) || (l == 'Z' && bw.has('W'));
+    };
+    if (r_form && !has_axis_word(a_l) && !has_axis_word(b_l)) {
         // LinuxCNC names the axes in alphabetical order: "X and z words missing ... xz plane".
         const char* names = st_.plane == Plane::xy ? "X and y" : st_.plane == Plane::zx ? "X and z" : "Y and z";
         fail("arc_axis_words_missing", std::string(names) + " words missing for arc in " + plane_name + " plane");

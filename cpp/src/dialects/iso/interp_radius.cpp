@@ -29,6 +29,12 @@ void Interp::radius_comp(const BlockWords& bw, int code) {
             if (st_.plane != Plane::zx) fail("comp_l_not_g18", name + " with L word, but plane is not G18", bw['L'].column);
             orientation = static_cast<int>(std::lround(bw['L'].value));
         }
+    } else if (profile_.t_offsets) {
+        if (bw.has('D'))
+            fail("comp_d_on_lathe", "D word is not used here: the T word's offset gives the nose radius", bw['D'].column);
+        radius_.side = static_cast<std::int8_t>(code == 410 ? 1 : -1);
+        set_radius_from_offset();
+        return;
     } else {
         int tool = tool_;
         if (bw.has('D')) {
@@ -55,6 +61,17 @@ void Interp::radius_comp(const BlockWords& bw, int code) {
         radius = -radius;
     }
     radius_ = {static_cast<std::int8_t>(side), radius, static_cast<std::int8_t>(orientation)};
+}
+
+// Lathes with T offsets: the nose radius and tip of the active offset (geometry + wear).
+void Interp::set_radius_from_offset() {
+    radius_.radius = 0;
+    radius_.orientation = 0;
+    if (offset_ == 0 || !tools_) return;
+    if (const Tool* t = tools_->find(offset_)) {
+        radius_.radius = t->edge().effective_radius() / scale();
+        radius_.orientation = static_cast<std::int8_t>(t->edge().orientation);
+    }
 }
 
 }  // namespace toolcomp::iso

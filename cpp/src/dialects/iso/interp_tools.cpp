@@ -37,6 +37,20 @@ Vec6 Interp::tool_offset_of(int tool, int column) const {
 
 void Interp::select_tool(const BlockWords& bw) {
     int t = static_cast<int>(std::lround(bw['T'].value));
+    if (profile_.t_offsets) {
+        // Lathe turret: T<tool><offset>, the turret indexes and the offset applies at once.
+        const int tool = t / 100, offset = t % 100;
+        if (offset != 0 && tools_ && !tools_->find(offset))
+            fail("offset_not_found", "Offset " + std::to_string(offset) + " not found in the offset table",
+                 bw['T'].column);
+        if (radius_.side != 0 && tool != tool_)
+            fail("comp_tool_change", "Cannot change tools with cutter radius compensation on", bw['T'].column);
+        selected_ = tool_ = tool;
+        offset_ = offset;
+        change_offset(tlo_, tool_offset_of(offset, bw['T'].column));
+        if (radius_.side != 0) set_radius_from_offset();
+        return;
+    }
     if (t != 0 && tools_ && !tools_->find(t))
         fail("tool_not_found", "Requested tool " + std::to_string(t) + " not found in the tool table", bw['T'].column);
     if (t != 0 && !tools_)

@@ -12,7 +12,9 @@ bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' |
 
 // Letters that are address words in ISO G-code (LinuxCNC's set for a machine with axes
 // XYZABC; O, #, [ are the programming features of a later stage, reported as unsupported).
-bool is_word_letter(char u) {
+bool is_word_letter(char u, Dialect d) {
+    // Fanuc: U V W are words too (incremental X Y Z on lathes, extra axes on mills).
+    if ((u == 'U' || u == 'V' || u == 'W') && d == Dialect::fanuc) return true;
     switch (u) {
         case 'A': case 'B': case 'C': case 'D': case 'E': case 'F': case 'G': case 'H': case 'I':
         case 'J': case 'K': case 'L': case 'M': case 'N': case 'P': case 'Q': case 'R':
@@ -56,7 +58,7 @@ public:
             if (u == '$') fail("bad_character", "Unknown word where unary operation could be");
             if (u == 'O' && first_word)
                 fail("o_word_not_supported", "O-word subprograms and control flow are not supported yet");
-            if (!is_word_letter(u) || (u == 'N' && !first_word)) {
+            if (!is_word_letter(u, prog_.dialect) || (u == 'N' && !first_word)) {
                 char lower = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
                 fail("bad_character", std::string("Bad character '") + lower + "' used");
             }

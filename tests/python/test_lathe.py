@@ -1,0 +1,81 @@
+"""Lathes: Fanuc-style T offsets, diameter X, U/W increments, and the nose radius worked
+example of the spec (§1.10): a 45 degree chamfer turned without nose radius compensation
+leaves r(sqrt 2 - 1) = 0.331 mm for r = 0.8; with it, none."""
+import math
+
+import numpy as np
+import pytest
+
+import toolcomp as tc
+
+# Offset table (X, Z of the offset in radius mm, nose radius, Fanuc tip number in Q).
+OFFSETS = "T1 P1 X-2.5 Z1.25 D1.6 Q3 ;OD finishing, r 0.8, tip 3\nT2 P2 Z-3 D0.8 Q2\n"
+
+
+def lathe_run(text, **kw):
+    prof = tc.ControlProfile("fanuc", machine="lathe")
+    return tc.run(tc.Program.parse(text, dialect="fanuc"), tools=tc.ToolTable.parse(OFFSETS, "linuxcnc"),
+                  profile=prof, **kw)
+
+
+def test_t_word_offsets_diameter_x_and_uw_increments():
+    res = lathe_run("G21 G18 G98\nT0101\nG0 X50 Z5\nG1 U-10 F100\nW-10\nT0202\nG0 X60\nM30\n")
+    p = res.path
+    np.testing.assert_allclose(p.end[:3], [[25, 0, 5], [20, 0, 5], [20, 0, -5]])  # X is a diameter
+    np.testing.assert_allclose(p.tool_offset[:3], [[-2.5, 0, 1.25]] * 3)
+    assert list(p.tool[:3]) == [1, 1, 1]
+    np.testing.assert_allclose(p.tool_offset[3], [0, 0, -3])  # T0202: tool 2, offset 2
+    assert p.tool[3] == 2
+    assert p.feed[1] == 100
+
+
+def test_offset_must_exist():
+    with pytest.raises(tc.ProgramError, match="Offset 7 not found"):
+        lathe_run("G21 G18\nT0107\nM30\n")
+
+
+CHAMFER = """G21 G18 G98
+T0101
+G0 X0 Z2
+{on}G1 X0 Z0 F100
+G1 X20
+G1 X30 Z-5
+G1 Z-20
+G1 X40
+{off}G0 X50 Z5
+M30
+"""
+
+
+def chamfer_form_error(compensate):
+    text = CHAMFER.format(on="G42 " if compensate else "", off="G40 " if compensate else "")
+    res = lathe_run(text)
+    p = res.path
+    r = 0.8
+    # The controlled point is the imaginary tip P; tip 3 (Fanuc) lies at -X, -Z from the
+    # nose centre, so the centre is C = P + r (1, 1) in (X, Z).
+    centre = p.end[:, [0, 2]] + r
+    chamfer = np.flatnonzero(p.line == 6)
+    # Chamfer from (x 10, z 0) to (x 15, z -5) in radius: the line x - 10 = -(z - 0).
+    n = np.array([1, 1]) / math.sqrt(2)
+    ends = np.vstack([p.start[chamfer][:, [0, 2]] + r, centre[chamfer]])
+    dist = (ends - np.array([10.0, 0.0])) @ n
+    return dist.min() - r
+
+
+def test_chamfer_form_error_without_and_with_nose_radius_compensation():
+    assert chamfer_form_error(False) == pytest.approx(0.8 * (math.sqrt(2) - 1), abs=1e-9)  # 0.331
+    assert chamfer_form_error(True) == pytest.approx(0.0, abs=1e-9)
+
+
+def test_tip_convention_is_a_setting():
+    text = CHAMFER.format(on="G42 ", off="G40 ")
+    fanuc = lathe_run(text)
+    prof = tc.ControlProfile("fanuc", machine="lathe")
+    prof.radius.tip_convention = tc.TipConvention.linuxcnc  # tip 3 read as LinuxCNC's (+X, -Z)
+    other = tc.run(tc.Program.parse(text, dialect="fanuc"), tools=tc.ToolTable.parse(OFFSETS, "linuxcnc"),
+                   profile=prof)
+    d = other.path.end - fanuc.path.end
+    comp = fanuc.path.side != 0
+    np.testing.assert_allclose(d[comp][:, 0], 2 * 0.8)  # the X shift flips sign
+    np.testing.assert_allclose(d[comp][:, 2], 0, atol=1e-12)
