@@ -10,7 +10,7 @@
 namespace toolcomp {
 
 namespace {
-bool is_iso(Dialect d) { return d == Dialect::linuxcnc || d == Dialect::fanuc; }
+bool is_iso(Dialect d) { return d == Dialect::linuxcnc || d == Dialect::fanuc || d == Dialect::rockwell; }
 
 [[noreturn]] void dialect_not_supported(Dialect d) {
     throw ParseError("dialect_not_supported",

@@ -178,6 +178,7 @@ class RadiusRules:
     entry_arc: bool
     exit: ExitStyle
     tip_convention: TipConvention
+    extension_min_length: float
     outside_corner: OutsideCorner
     corner_limit: float
     disc: float
@@ -196,6 +197,8 @@ class ControlProfile:
     x_diameter: bool
     incremental_uw: bool
     t_offsets: bool
+    t_format: int
+    wear_sign: float
     name: str
     startup_inch: bool
     length_axes: LengthAxes

@@ -44,6 +44,39 @@ ControlProfile profile_for(Dialect d, Machine machine) {
             }
             break;
         }
+        case Dialect::rockwell: {
+            // Allen-Bradley 9/Series lathe TTRC: T-word format 2 (T0016: geometry and wear 16),
+            // diameter X, U/W increments, type A entry and exit, extension blocks at outside
+            // corners sharper than 90 degrees, side and radius changes without G40, no arc
+            // in the entry or exit block, checks switchable with M800/M801. The texts of the
+            // control's messages are not in the manual excerpt: these name the condition.
+            p.machine = Machine::lathe;
+            p.x_diameter = true;
+            p.incremental_uw = true;
+            p.t_offsets = true;
+            p.t_format = 2;
+            p.length_axes = LengthAxes::all;
+            RadiusRules& r = p.radius;
+            r.yz_plane = true;
+            r.side_change = true;
+            r.entry = EntryStyle::perpendicular_to_next;
+            r.entry_arc = false;
+            r.outside_corner = OutsideCorner::extension;
+            r.corner_limit = kPi / 2;
+            r.tip_convention = TipConvention::fanuc;
+            r.max_non_plane_moves = 2;
+            r.non_plane_reaction = NonPlaneReaction::overcut;
+            r.messages.entry_arc = "Block format error: TTRC entry in a circular block";
+            r.messages.exit_arc = "Block format error: TTRC exit in a circular block";
+            r.messages.gouge_feed = r.messages.gouge_traverse = r.messages.gouge_arc =
+                "Backwards motion: the compensated move runs against the programmed move";
+            r.messages.arc_to_line = r.messages.arc_to_arc = "Interference: the compensation vectors cross";
+            r.messages.arc_too_small = "Circular departure too small: the tool radius does not fit the arc";
+            r.messages.entry_too_short = r.messages.entry_arc_too_short =
+                "Interference: the entry move is shorter than the tool radius";
+            r.messages.g10 = "G10 is not allowed while TTRC is active";
+            break;
+        }
         default:
             break;
     }

@@ -108,6 +108,8 @@ void RadiusCompensation::rescale(double new_unit) {
 
 void RadiusCompensation::push(const Motion& m) {
     rescale(m.unit);
+    checks_ = m.radius.checks;
+    if (active_ && m.radius.side != 0 && m.radius.radius <= 0) turn_off(m.line, /*cancel=*/false);  // radius 0 (T00)
     if (m.is_arc() && (arc_not_allowed_ || exit_open_))
         fail("comp_exit_arc", profile_.radius.messages.exit_arc, m.line);
     if (exit_open_ && m.radius.side == 0 && (plane2(m.end) - plane2(program_)).norm() > tol::length) {
@@ -186,14 +188,14 @@ void RadiusCompensation::change_side(const Motion& m) {
     joint_free_ = true;
 }
 
-void RadiusCompensation::turn_off(int line) {
+void RadiusCompensation::turn_off(int line, bool cancel) {
     if (!active_) return;
     entry_open_ = false;
     move_end_and_flush(plane2(current_), line);
     flush();
     release(0);
     active_ = false;
-    arc_not_allowed_ = true;
+    arc_not_allowed_ = cancel;  // after G40 the next move must be straight
     exit_pending_ = true;
 }
 

@@ -3,6 +3,7 @@
 // with the profile's choice of what fills an outside corner and how the entry block ends.
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "radius_math.hpp"
 #include "toolcomp/compensation/radius.hpp"
@@ -77,7 +78,13 @@ void RadiusCompensation::outside_corner(const Motion& m, const Vec2& P, const El
         // Extend both elements by r along their tangents and join the extensions.
         const Vec2 e1 = C + r_ * held->end_tangent(), e2 = mid - r_ * next.start_tangent();
         if (m.kind != MotionKind::rapid) fill.kind = MotionKind::line;
-        for (const Vec2& pt : {e1, e2, mid}) {
+        // A middle block shorter than the minimum in both axes is dropped; the last block then
+        // runs from the first extension straight to the next element's start.
+        const double min_len = rules.extension_min_length / m.unit;
+        const bool drop_middle = min_len > 0 && std::fabs(e2.x() - e1.x()) < min_len && std::fabs(e2.y() - e1.y()) < min_len;
+        std::vector<Vec2> points{e1, e2, mid};
+        if (drop_middle) points.erase(points.begin() + 1);
+        for (const Vec2& pt : points) {
             fill.end = with_plane(current_, pt);
             hold(fill, Vec2::Zero(), 0);
         }

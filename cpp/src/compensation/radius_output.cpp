@@ -100,7 +100,7 @@ void RadiusCompensation::move_end_and_flush(const Vec2& x, int line, bool check,
     }
     if (gouge) {
         const int held_line = queue_.front().m.line;
-        switch (rules.gouge) {
+        switch (checks_ ? rules.gouge : GougeReaction::report) {
             case GougeReaction::error:
                 fail("comp_gouge", *gouge, line);
             case GougeReaction::skip:
@@ -121,7 +121,7 @@ void RadiusCompensation::move_end_and_flush(const Vec2& x, int line, bool check,
 }
 
 void RadiusCompensation::no_intersection(const Element2& next, int line, const std::string& msg) {
-    switch (profile_.radius.gouge) {
+    switch (checks_ ? profile_.radius.gouge : GougeReaction::report) {
         case GougeReaction::error:
             fail("comp_gouge", msg, line);
         case GougeReaction::skip:

@@ -64,6 +64,7 @@ struct RadiusMessages {
     std::string arc_mismatch = "BUG: cutter compensation has generated an invalid arc with mismatched radii r1 %f r2 %f\n";
     std::string exit_arc = "The move just after exiting cutter compensation mode must be straight, not an arc";
     std::string too_many_non_plane = "Too many blocks without motion in the compensation plane";
+    std::string g10 = "";  // set when G10 is refused whatever it changes
 };
 
 // What happens when too many blocks without motion in the plane follow each other while
@@ -114,6 +115,8 @@ struct RadiusRules {
     int lookahead = 1;
     GougeReaction gouge = GougeReaction::error;
     NonPlaneReaction non_plane_reaction = NonPlaneReaction::error;
+    double extension_min_length = 0;  // extension blocks: a middle block shorter than this (mm)
+                                      // in both plane axes is dropped (9/Series AMP minimum)
     RadiusMessages messages;
 };
 
@@ -142,6 +145,12 @@ struct ControlProfile {
     bool x_diameter = false;
     bool incremental_uw = false;
     bool t_offsets = false;
+    // How a T word splits into tool, geometry offset and wear offset numbers. 0: T<tool><offset>
+    // with two offset digits, the offset giving geometry and wear (Fanuc). 1..6: the 9/Series
+    // installer formats: 1-3 geometry and wear from the last 1, 2 or 3 digits; 4-6 wear from
+    // the last 1, 2 or 3 digits and geometry from the tool number.
+    int t_format = 0;
+    double wear_sign = 1;  // effective = geometry + wear_sign * wear
 
     // ---- tool length compensation ------------------------------------------------------
     LengthAxes length_axes = LengthAxes::all;

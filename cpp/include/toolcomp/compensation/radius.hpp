@@ -57,7 +57,7 @@ private:
     std::optional<Element2> held_element() const;
     void outside_corner(const Motion& m, const Vec2& P, const Element2& next, double turn, bool check_held);
     bool close_open_entry(const Vec2& mid);
-    void turn_off(int line);
+    void turn_off(int line, bool cancel = true);
     void change_side(const Motion& m);
     void bridge(const Element2& next, int line);
     void rescale(double new_unit);
@@ -87,6 +87,7 @@ private:
     int non_plane_run_ = 0;  // blocks without plane motion since the last plane move
 
     double unit_ = 1.0;            // program unit (mm per unit) of everything held below
+    bool checks_ = true;           // gouge checks of the current move (switchable on the 9/Series)
     bool active_ = false;          // compensating, the entry move made
     Plane plane_ = Plane::xy;
     int side_ = 0;                 // +1 left, -1 right

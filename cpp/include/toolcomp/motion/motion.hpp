@@ -23,6 +23,7 @@ struct RadiusRequest {
     std::int8_t side = 0;     // 0 off, +1 left (G41), -1 right (G42)
     double radius = 0;        // program units
     std::int8_t orientation = 0;  // lathe tip number, 0 = none
+    bool checks = true;           // gouge and interference checks on (9/Series M800 turns them off)
 };
 
 struct Motion {

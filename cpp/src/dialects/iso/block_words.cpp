@@ -46,7 +46,8 @@ void add_m(BlockWords& bw, const Word& w, Dialect d) {
     if (std::fabs(w.value - std::round(w.value)) > 1e-9)
         fail("non_integer_value", "Non integer value for integer", bw.line, w.column);
     int m = static_cast<int>(std::lround(w.value));
-    if (m > 199) fail("m_code_out_of_range", "M-code greater than 199: M" + std::to_string(m), bw.line, w.column);
+    if (m > 199 && d == Dialect::linuxcnc)
+        fail("m_code_out_of_range", "M-code greater than 199: M" + std::to_string(m), bw.line, w.column);
     int group = m_group(m * 10, d);
     if (group == kUnknown) fail("unknown_m_code", "Unknown m code used: M" + std::to_string(m), bw.line, w.column);
     if (group == kUnsupported)

@@ -48,6 +48,8 @@ int m_group(int c, Dialect d) {
             return kUnsupported;
         case 980: case 990:
             return d == Dialect::fanuc ? kUnsupported : kUnknown;
+        case 8000: case 8010:  // 9/Series: M800 / M801 disable / enable the TTRC checks
+            return d == Dialect::rockwell ? m_checks : kUnknown;
         default:
             // M100-M199 are user programs on LinuxCNC: without them the code is unknown.
             return kUnknown;

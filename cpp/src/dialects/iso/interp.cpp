@@ -165,6 +165,9 @@ bool Interp::execute(const BlockWords& bw) {
         if (incremental) fail("g53_incremental", "Cannot use g53 incremental", bw.g_column[g_nonmodal]);
     }
     if (g0 == 920 && !axes) fail("g92_no_axes", "All axes missing with g52 or g92", bw.g_column[g_nonmodal]);
+    if (bw.g[g_radius_comp] == 400 && profile_.t_offsets && (bw.has('I') || bw.has('K')))
+        fail("unsupported_exit_ik", "An exit move modified with I/K is not supported by toolcomp",
+             bw[bw.has('I') ? 'I' : 'K'].column);
     check_words(bw, motion_to_be);
     if (bw.has('U') || bw.has('V') || bw.has('W')) {
         char l = bw.has('U') ? 'U' : bw.has('V') ? 'V' : 'W';
@@ -213,8 +216,16 @@ bool Interp::execute(const BlockWords& bw) {
         if (bw.g[g_coord_system] >= 0)
             fail("comp_coord_system", "Cannot change coordinate systems with cutter radius compensation on",
                  bw.g_column[g_coord_system]);
-        if (g0 == 920 || g0 == 921 || g0 == 922 || g0 == 923 || g0 == 100)
+        if (g0 == 920 || g0 == 921 || g0 == 922 || g0 == 923)
             fail("comp_axis_offsets", "Cannot change axis offsets with cutter radius comp", bw.g_column[g_nonmodal]);
+        if (g0 == 100) {
+            if (!profile_.radius.messages.g10.empty())
+                fail("comp_g10", profile_.radius.messages.g10, bw.g_column[g_nonmodal]);
+            const int p = bw.has('P') ? static_cast<int>(bw['P'].value) : -1;
+            if (p == 0 || p == st_.coord_system)
+                fail("comp_g10", "Cannot change the active coordinate system with cutter radius compensation on",
+                     bw.g_column[g_nonmodal]);
+        }
         if (is_cycle(motion_to_be))
             fail("comp_canned_cycle", "Cannot use canned cycles with cutter compensation on",
                  motion_code >= 0 ? bw.g_column[g_motion] : bw.axis_column());
@@ -237,6 +248,10 @@ bool Interp::execute(const BlockWords& bw) {
     // 5-6: tools
     if (bw.has('T')) select_tool(bw);
     if (bw.m[m_tool_change] >= 0) change_tool(bw, bw.m[m_tool_change]);
+    if (int ch = bw.m[m_checks]; ch >= 0) {  // 9/Series M800 / M801
+        checks_ = ch == 8010;
+        radius_.checks = checks_;
+    }
     // 7-9: spindle, coolant, overrides: state of the machine, not of the path (the spindle
     // direction matters to the boring cycles).
     if (int sp = bw.m[m_spindle]; sp >= 0) spindle_ = sp == 30 ? 1 : sp == 40 ? -1 : 0;

@@ -91,6 +91,12 @@ private:
     void change_tool(const BlockWords& bw, int mcode);
     void length_comp(const BlockWords& bw, int code);
     Vec6 tool_offset_of(int tool, int column) const;
+    struct OffsetValues {
+        Vec6 length = Vec6::Zero();  // program units
+        double radius = 0;           // program units
+        int orientation = 0;
+    };
+    OffsetValues offset_values() const;
 
     // ---- cutter radius compensation request (interp_radius.cpp) ----------------------------
     void radius_comp(const BlockWords& bw, int code);
@@ -119,7 +125,8 @@ private:
     double speed_ = 0;  // S, rev/min
     int tool_ = 0;      // tool in the spindle
     int selected_ = -1; // tool prepared by T
-    int offset_ = 0;    // lathes with T offsets: the active offset number
+    int geometry_offset_ = 0, wear_offset_ = 0;  // lathes with T offsets: the active numbers
+    bool checks_ = true;  // gouge checks on (9/Series M801) or off (M800)
     CycleMemory cyc_;
     int prev_motion_ = 800;      // motion mode before the current block
     double cycle_il_ = 0;        // initial level of the running canned cycle

@@ -33,6 +33,7 @@ void Interp::radius_comp(const BlockWords& bw, int code) {
         if (bw.has('D'))
             fail("comp_d_on_lathe", "D word is not used here: the T word's offset gives the nose radius", bw['D'].column);
         radius_.side = static_cast<std::int8_t>(code == 410 ? 1 : -1);
+        radius_.checks = checks_;
         set_radius_from_offset();
         return;
     } else {
@@ -60,18 +61,14 @@ void Interp::radius_comp(const BlockWords& bw, int code) {
         side = -side;
         radius = -radius;
     }
-    radius_ = {static_cast<std::int8_t>(side), radius, static_cast<std::int8_t>(orientation)};
+    radius_ = {static_cast<std::int8_t>(side), radius, static_cast<std::int8_t>(orientation), checks_};
 }
 
 // Lathes with T offsets: the nose radius and tip of the active offset (geometry + wear).
 void Interp::set_radius_from_offset() {
-    radius_.radius = 0;
-    radius_.orientation = 0;
-    if (offset_ == 0 || !tools_) return;
-    if (const Tool* t = tools_->find(offset_)) {
-        radius_.radius = t->edge().effective_radius() / scale();
-        radius_.orientation = static_cast<std::int8_t>(t->edge().orientation);
-    }
+    const OffsetValues v = offset_values();
+    radius_.radius = v.radius;
+    radius_.orientation = static_cast<std::int8_t>(v.orientation);
 }
 
 }  // namespace toolcomp::iso

@@ -35,19 +35,47 @@ Vec6 Interp::tool_offset_of(int tool, int column) const {
     return v;
 }
 
+// Lathes with T offsets: geometry of one offset plus (wear_sign times) wear of another.
+Interp::OffsetValues Interp::offset_values() const {
+    OffsetValues v;
+    if (!tools_) return v;
+    const Tool* g = geometry_offset_ ? tools_->find(geometry_offset_) : nullptr;
+    const Tool* w = wear_offset_ ? tools_->find(wear_offset_) : nullptr;
+    const double ws = profile_.wear_sign, sc = scale();
+    Eigen::Vector3d len = Eigen::Vector3d::Zero();
+    if (g) {
+        len += g->edge().length;
+        v.radius += g->edge().radius;
+        v.orientation = g->edge().orientation;
+    }
+    if (w) {
+        len += ws * w->edge().length_wear;
+        v.radius += ws * w->edge().radius_wear;
+    }
+    v.length << len.x() / sc, len.y() / sc, len.z() / sc, 0, 0, 0;
+    v.radius /= sc;
+    return v;
+}
+
 void Interp::select_tool(const BlockWords& bw) {
     int t = static_cast<int>(std::lround(bw['T'].value));
     if (profile_.t_offsets) {
-        // Lathe turret: T<tool><offset>, the turret indexes and the offset applies at once.
-        const int tool = t / 100, offset = t % 100;
-        if (offset != 0 && tools_ && !tools_->find(offset))
-            fail("offset_not_found", "Offset " + std::to_string(offset) + " not found in the offset table",
-                 bw['T'].column);
-        if (radius_.side != 0 && tool != tool_)
+        // Lathe turret: the turret indexes and the offsets apply at once. The T word is
+        // <tool><offset> with the profile's format (geometry and wear numbers).
+        const int f = profile_.t_format;
+        const int digits = f == 0 ? 2 : (f - 1) % 3 + 1;
+        const int div = digits == 1 ? 10 : digits == 2 ? 100 : 1000;
+        const int tool = t / div, wear = t % div, geometry = (f >= 4) ? tool : wear;
+        for (int n : {geometry, wear})
+            if (n != 0 && tools_ && !tools_->find(n))
+                fail("offset_not_found", "Offset " + std::to_string(n) + " not found in the offset table",
+                     bw['T'].column);
+        if (radius_.side != 0 && tool != tool_ && profile_.machine != Machine::lathe)
             fail("comp_tool_change", "Cannot change tools with cutter radius compensation on", bw['T'].column);
         selected_ = tool_ = tool;
-        offset_ = offset;
-        change_offset(tlo_, tool_offset_of(offset, bw['T'].column));
+        geometry_offset_ = geometry;
+        wear_offset_ = wear;
+        change_offset(tlo_, offset_values().length);
         if (radius_.side != 0) set_radius_from_offset();
         return;
     }

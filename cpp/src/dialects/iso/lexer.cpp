@@ -13,8 +13,8 @@ bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' |
 // Letters that are address words in ISO G-code (LinuxCNC's set for a machine with axes
 // XYZABC; O, #, [ are the programming features of a later stage, reported as unsupported).
 bool is_word_letter(char u, Dialect d) {
-    // Fanuc: U V W are words too (incremental X Y Z on lathes, extra axes on mills).
-    if ((u == 'U' || u == 'V' || u == 'W') && d == Dialect::fanuc) return true;
+    // Fanuc and 9/Series: U V W are words too (incremental X Y Z on lathes, extra axes on mills).
+    if ((u == 'U' || u == 'V' || u == 'W') && (d == Dialect::fanuc || d == Dialect::rockwell)) return true;
     switch (u) {
         case 'A': case 'B': case 'C': case 'D': case 'E': case 'F': case 'G': case 'H': case 'I':
         case 'J': case 'K': case 'L': case 'M': case 'N': case 'P': case 'Q': case 'R':
