@@ -106,9 +106,21 @@ def test_t00_continues_with_radius_zero():
     assert p.side[last] == 1 or p.side[last] == -1  # still in TTRC, with radius 0
 
 
-def test_exit_modified_with_i_k_is_refused_explicitly():
-    e = error_of("G21 G18 G0 X20 Z5\nT0016\nG42 G1 X20 Z0 F100\nZ-10\nG40 X30 Z-12 I1 K1\nM30\n")
-    assert e.code == "unsupported_exit_ik" and e.line == 5
+def test_exit_modified_with_i_k():
+    # Along -Z at radius 10 (X20) under G42 (nose radius 0.82), then G40 towards (X30, Z-12).
+    # Plain exit: the last move ends perpendicular at (x 10.82, z -10). With I1 K-1 (the
+    # contour taken to go on towards +X -Z, an inside corner for G42) the Z move is pulled
+    # back to that direction's equidistant: z = -10 + 0.82 tan(22.5 deg).
+    base = "G21 G18 G0 X20 Z5\nT0016\nG42 G1 X20 Z0 F100\nZ-10\nG40 X30 Z-12{ik}\nM30\n"
+    plain = rw(base.format(ik=""))
+    mod = rw(base.format(ik=" I1 K-1"))
+    r = 0.82
+    z_move = np.flatnonzero(plain.path.line == 4)[-1]
+    # the tip (tip 3, Fanuc) is the nose centre shifted by (-r, -r) in (X, Z)
+    np.testing.assert_allclose(plain.path.end[z_move][[0, 2]], [10 + r - r, -10 - r])
+    k = np.flatnonzero(mod.path.line == 4)[-1]
+    np.testing.assert_allclose(mod.path.end[k][[0, 2]], [10, -10 + r * np.tan(np.pi / 8) - r])
+    np.testing.assert_allclose(mod.path.end[-1][[0, 2]], [15, -12])
 
 
 def test_extension_blocks_and_the_minimum_length_rule():

@@ -202,6 +202,21 @@ void RadiusCompensation::turn_off(int line, bool cancel) {
 void RadiusCompensation::control(const ControlEvent& e) {
     switch (e.kind) {
         case ControlKind::radius_off:
+            if (active_ && e.direction.squaredNorm() > 0 && !queue_.empty()) {
+                // Let the last move end as if the contour went on in the given direction.
+                Motion v = queue_.front().m;
+                v.kind = MotionKind::line;
+                v.generated = true;
+                v.turns = 0;
+                v.center = Vec3::Constant(std::nan(""));
+                v.start = program_;
+                v.end = program_ + e.direction;
+                v.line = e.line;
+                if ((plane2(v.end) - plane2(v.start)).norm() > tol::length) {
+                    next_line(v);
+                    queue_.pop_back();  // the virtual element itself is not cut
+                }
+            }
             if (active_ && profile_.radius.exit == ExitStyle::corner_with_exit && !queue_.empty()) {
                 exit_open_ = true;  // settled by the cancel move
                 exit_orientation_ = queue_.front().m.radius.orientation;

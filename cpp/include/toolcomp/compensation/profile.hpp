@@ -92,6 +92,9 @@ struct RadiusRules {
     EntryStyle entry = EntryStyle::perpendicular_to_entry;
     bool entry_arc = true;  // an arc may be the activation block (LinuxCNC: yes)
     ExitStyle exit = ExitStyle::perpendicular_to_last;
+    // I/K (or I/J) in the cancel block give the direction in which the contour is taken to
+    // go on, for the last move's end (9/Series exit modified with I/K).
+    bool exit_direction_words = false;
     // Lathe tools: how the table's tip numbers are read (the imaginary tip's direction).
     TipConvention tip_convention = TipConvention::linuxcnc;
     OutsideCorner outside_corner = OutsideCorner::arc;

@@ -54,6 +54,9 @@ enum class ControlKind : std::uint8_t { radius_off, stop, program_end };
 struct ControlEvent {
     ControlKind kind;
     std::int32_t line;
+    // radius_off: a direction given in the cancel block (9/Series I/K): the last compensated
+    // move ends as if the contour went on in this direction (program units, XYZ); zero = none.
+    Vec3 direction = Vec3::Zero();
 };
 
 // A consumer of the stream: compensation stages and the Path collector.

@@ -107,11 +107,12 @@ void Interp::check_words(const BlockWords& bw, int motion_to_be) {
         int lc = bw.g[g_length_comp];
         if (!(lc == 430 || lc == 432 || lc == 440)) fail("unused_word", "H word with no G43 or G76 to use it", col('H'));
     }
-    if (bw.has('I') && !(arc || g87 || g0 == 100))
+    const bool exit_dir = bw.g[g_radius_comp] == 400 && profile_.radius.exit_direction_words;
+    if (bw.has('I') && !(arc || g87 || exit_dir || g0 == 100))
         fail("unused_word", "I word with no G2, G3, G5, G5.1, G10, G33.1, G76, or G87 to use it", col('I'));
-    if (bw.has('J') && !(arc || g87 || g0 == 100))
+    if (bw.has('J') && !(arc || g87 || exit_dir || g0 == 100))
         fail("unused_word", "J word with no G2, G3, G5, G5.1, G10, G76 or G87 to use it", col('J'));
-    if (bw.has('K') && !(arc || g87)) fail("unused_word", "K word with no G2, G3, G33, G33.1, G76, or G87 to use it", col('K'));
+    if (bw.has('K') && !(arc || g87 || exit_dir)) fail("unused_word", "K word with no G2, G3, G33, G33.1, G76, or G87 to use it", col('K'));
     if (bw.has('L')) {
         int rc = bw.g[g_radius_comp];
         if (!(g0 == 100 || cycle_block || rc == 411 || rc == 421))
@@ -165,9 +166,6 @@ bool Interp::execute(const BlockWords& bw) {
         if (incremental) fail("g53_incremental", "Cannot use g53 incremental", bw.g_column[g_nonmodal]);
     }
     if (g0 == 920 && !axes) fail("g92_no_axes", "All axes missing with g52 or g92", bw.g_column[g_nonmodal]);
-    if (bw.g[g_radius_comp] == 400 && profile_.t_offsets && (bw.has('I') || bw.has('K')))
-        fail("unsupported_exit_ik", "An exit move modified with I/K is not supported by toolcomp",
-             bw[bw.has('I') ? 'I' : 'K'].column);
     check_words(bw, motion_to_be);
     if (bw.has('U') || bw.has('V') || bw.has('W')) {
         char l = bw.has('U') ? 'U' : bw.has('V') ? 'V' : 'W';

@@ -11,7 +11,13 @@ namespace toolcomp::iso {
 void Interp::radius_comp(const BlockWords& bw, int code) {
     const int col = bw.g_column[g_radius_comp];
     if (code == 400) {
-        if (radius_.side != 0) sink_.control({ControlKind::radius_off, line_});
+        Vec3 dir = Vec3::Zero();
+        if (profile_.radius.exit_direction_words) {
+            const char* offs = "IJK";
+            for (int i = 0; i < 3; ++i)
+                if (bw.has(offs[i])) dir[i] = bw[offs[i]].value;
+        }
+        if (radius_.side != 0) sink_.control({ControlKind::radius_off, line_, dir});
         radius_ = {};
         return;
     }
