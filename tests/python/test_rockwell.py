@@ -135,3 +135,39 @@ def test_extension_blocks_and_the_minimum_length_rule():
     short = tc.run(tc.Program.parse(text, dialect="rockwell"), tools=tc.ToolTable.parse(TABLE, "csv"), profile=prof)
     assert short.path.generated.sum() == 2  # the middle block is dropped, the last re-aimed
     np.testing.assert_allclose(short.path.end[short.path.generated][-1], full.path.end[gen][-1])
+
+
+@pytest.mark.parametrize("fmt, word, tool, geometry, wear", [
+    (1, 213, 21, 3, 3), (2, 213, 2, 13, 13), (3, 2013, 2, 13, 13),
+    (4, 213, 21, 21, 3), (5, 213, 2, 2, 13), (6, 2013, 2, 2, 13),
+])
+def test_all_six_t_word_formats(fmt, word, tool, geometry, wear):
+    # Offsets n carry geometry X = -n/10 and wear Z = n/100, so the sums show which were used.
+    rows = "tool,x,z,radius,orientation,x_wear,z_wear,radius_wear\n" + "".join(
+        f"{n},{-n / 10},0,0.4,3,0,{n / 100},0\n" for n in sorted({3, 13, 21, 2}))
+    prof = tc.ControlProfile("rockwell")
+    prof.t_format = fmt
+    res = tc.run(tc.Program.parse(f"G21 G18\nT{word}\nG0 X20 Z5\nM30\n", dialect="rockwell"),
+                 tools=tc.ToolTable.parse(rows, "csv"), profile=prof)
+    assert res.path.tool[0] == tool
+    np.testing.assert_allclose(res.path.tool_offset[0], [-geometry / 10, 0, wear / 100])
+
+
+def test_side_and_radius_change_in_a_circular_block():
+    base = "G21 G18 G0 X20 Z5\nT0016\nG42 G1 X20 Z0 F100\nG1 Z-10\n{arc}\nG1 Z-30\nG40 G0 X40 Z5\nM30\n"
+    res = rw(base.format(arc="G41 G2 X20 Z-20 R5"))  # G41 in a circular block: side changes
+    arc = np.flatnonzero((res.path.line == 5) & ~res.path.generated)
+    assert (res.path.side[arc] == 1).all()
+    res = rw(base.format(arc="T0002 G2 X20 Z-20 R5"))  # T word in a circular block: radius 0.4
+    assert res.ok
+
+
+def test_interference_is_switchable():
+    # A small arc (R 0.9 against a nose of 0.82, tool outside) and a line going straight back:
+    # the compensated elements do not meet (interference), unless M800 switches the check off.
+    text = "{m}G21 G18 G0 X40 Z5\nT0016\nG42 G1 X40 Z0 F100\nG1 Z-10\nG2 U1 W-0.5 R0.9\nG1 U-1 W0.5\nG1 W-20\nM30\n"
+    with pytest.raises(tc.CompensationError) as e:
+        rw(text.format(m=""))
+    assert (e.value.message, e.value.line) == ("Interference: the compensation vectors cross", 6)
+    res = rw(text.format(m="M800\n"))
+    assert res.ok and any(d.code == "comp_gouge" and d.severity == "warning" for d in res.diagnostics)

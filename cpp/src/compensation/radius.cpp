@@ -148,7 +148,10 @@ void RadiusCompensation::push(const Motion& m) {
         exit_pending_ = false;
         return;
     }
-    if (m.radius.side != side_ || m.radius.radius != r_) change_side(m);
+    // A new side or radius (9/Series: G41/G42 or a T word while active), or a jump of the
+    // programmed path (a new length offset from that T word): end the held move
+    // perpendicular, link to the new start.
+    if (m.radius.side != side_ || m.radius.radius != r_ || (m.start - program_).norm() > tol::length) change_side(m);
     if (m.is_arc())
         next_arc(m);
     else
@@ -158,7 +161,7 @@ void RadiusCompensation::push(const Motion& m) {
 // G41 <-> G42 (or a new radius) without G40: the held move ends perpendicular at its end,
 // the next element starts perpendicular at its start with the new side, joined by a line.
 void RadiusCompensation::change_side(const Motion& m) {
-    const Vec2 P = plane2(program_), C = plane2(current_);
+    const Vec2 P = plane2(m.start), C = plane2(current_);
     side_ = m.radius.side;
     r_ = m.radius.radius;
     Vec2 start;
@@ -172,6 +175,7 @@ void RadiusCompensation::change_side(const Motion& m) {
         if (d.norm() < tol::length) return;  // decided at the next plane move
         start = P + side_ * r_ * left_normal(d.normalized());
     }
+    program_ = m.start;
     move_end_and_flush(C, m.line);
     flush();
     Motion link = m;
