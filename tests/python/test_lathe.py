@@ -79,3 +79,18 @@ def test_tip_convention_is_a_setting():
     comp = fanuc.path.side != 0
     np.testing.assert_allclose(d[comp][:, 0], 2 * 0.8)  # the X shift flips sign
     np.testing.assert_allclose(d[comp][:, 2], 0, atol=1e-12)
+
+
+def test_lathe_offset_table_csv_round_trip_and_use(tmp_path):
+    import pathlib
+    src = pathlib.Path(__file__).resolve().parents[1] / "programs" / "tables" / "lathe_offsets.csv"
+    table = tc.ToolTable.read(src)
+    out = tmp_path / "offsets.csv"
+    table.write(out)
+    assert out.read_bytes() == src.read_bytes()  # lossless
+    e = table[1].edge()
+    assert (e.radius, e.orientation, e.radius_wear) == (0.8, 3, 0.005)
+    np.testing.assert_allclose(e.length_wear, [0.02, 0, -0.01])
+    res = tc.run(tc.Program.parse("G21 G18\nT0101\nG0 X50 Z5\nM30\n", dialect="fanuc"), tools=table,
+                 profile=tc.ControlProfile("fanuc", machine="lathe"))
+    np.testing.assert_allclose(res.path.tool_offset[0], [-2.5 + 0.02, 0, 1.25 - 0.01])

@@ -34,11 +34,27 @@ constexpr std::array<FieldInfo, 26> kFields{{
     {Field::back_angle, "back_angle", K::angle, true, 22},
     {Field::orientation, "orientation", K::integer, true, 23},
 }};
+
+// Names of lathe offset pages (Fanuc offset screen, 9/Series geometry and wear tables) for
+// the same fields: an offset number is a tool entry, the nose radius a radius, the tip a
+// tool orientation.
+struct Alias {
+    std::string_view name;
+    Field field;
+};
+constexpr std::array<Alias, 4> kAliases{{
+    {"offset", Field::tool},
+    {"nose_radius", Field::radius},
+    {"tip", Field::orientation},
+    {"nose_radius_wear", Field::radius_wear},
+}};
 }  // namespace
 
 const FieldInfo* find_field(std::string_view name) {
     for (const auto& f : kFields)
         if (f.name == name) return &f;
+    for (const auto& a : kAliases)
+        if (a.name == name) return &field_info(a.field);
     return nullptr;
 }
 
