@@ -171,3 +171,9 @@ def test_interference_is_switchable():
     assert (e.value.message, e.value.line) == ("Interference: the compensation vectors cross", 6)
     res = rw(text.format(m="M800\n"))
     assert res.ok and any(d.code == "comp_gouge" and d.severity == "warning" for d in res.diagnostics)
+
+
+def test_threading_during_ttrc_is_refused_at_its_line():
+    for cycle in ("G33 Z-20 K1.5", "G76 Z-20 K1.5"):
+        e = error_of(f"G21 G18 G0 X20 Z5\nT0016\nG42 G1 X20 Z0 F100\n{cycle}\nM30\n")
+        assert e.line == 4 and e.code == "unsupported_g_code"
