@@ -4,6 +4,8 @@
 #include <sstream>
 
 #include "toolcomp/compensation/stages.hpp"
+#include "toolcomp/dialects/heidenhain/interpreter.hpp"
+#include "toolcomp/dialects/heidenhain/lexer.hpp"
 #include "toolcomp/dialects/iso/interpreter.hpp"
 #include "toolcomp/dialects/iso/lexer.hpp"
 
@@ -41,6 +43,7 @@ private:
 }  // namespace
 
 Program parse_program(std::string_view text, Dialect dialect, std::string name, bool strict) {
+    if (dialect == Dialect::heidenhain) return heidenhain::parse(text, std::move(name), strict);
     if (!is_iso(dialect)) dialect_not_supported(dialect);
     return iso::parse(text, dialect, std::move(name), strict);
 }
@@ -77,8 +80,12 @@ Result run(const Program& program, const ToolTable* tools, const RunOptions& opt
     iso::InterpretOptions iopts;
     iopts.block_delete = options.block_delete;
     try {
-        if (!is_iso(program.dialect)) dialect_not_supported(program.dialect);
-        iso::interpret(program, tools, profile, iopts, tee, res.diagnostics);
+        if (program.dialect == Dialect::heidenhain)
+            heidenhain::interpret(program, tools, profile, tee, res.diagnostics);
+        else if (is_iso(program.dialect))
+            iso::interpret(program, tools, profile, iopts, tee, res.diagnostics);
+        else
+            dialect_not_supported(program.dialect);
     } catch (const Error& e) {
         if (options.strict) throw;
         tee.finish();

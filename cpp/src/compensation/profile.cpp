@@ -44,6 +44,24 @@ ControlProfile profile_for(Dialect d, Machine machine) {
             }
             break;
         }
+        case Dialect::heidenhain: {
+            // TNC 426: RL/RR act at the end of the first block (perpendicular at the programmed
+            // point), R0 leaves the same way, RL <-> RR needs an R0 block between, no start in a
+            // circle block, transition arcs at outside corners, TOOL RADIUS TOO LARGE where the
+            // tool does not fit. Texts other than TOOL RADIUS TOO LARGE are not in the manuals
+            // read: these name the condition.
+            RadiusRules& r = p.radius;
+            r.yz_plane = true;
+            r.entry = EntryStyle::perpendicular_to_next;
+            r.entry_arc = false;
+            r.entry_length_check = false;
+            r.messages.entry_arc = "Radius compensation cannot start in a circle block";
+            r.messages.exit_arc = "Radius compensation cannot end in a circle block";
+            r.messages.side_change = "RL and RR must be separated by an R0 block";
+            r.messages.gouge_feed = r.messages.gouge_traverse = r.messages.gouge_arc = r.messages.arc_to_line =
+                r.messages.arc_to_arc = r.messages.arc_too_small = "TOOL RADIUS TOO LARGE";
+            break;
+        }
         case Dialect::rockwell: {
             // Allen-Bradley 9/Series lathe TTRC: T-word format 2 (T0016: geometry and wear 16),
             // diameter X, U/W increments, type A entry and exit, extension blocks at outside

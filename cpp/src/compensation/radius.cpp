@@ -27,7 +27,7 @@ void RadiusCompensation::fail(const char* code, const std::string& msg, int line
 
 void RadiusCompensation::entry_line(const Motion& m) {
     const Vec2 c = plane2(m.start), p = plane2(m.end);
-    if ((p - c).norm() <= r_)
+    if (profile_.radius.entry_length_check && (p - c).norm() <= r_)
         fail("comp_entry_too_short", profile_.radius.messages.entry_too_short, m.line);
     // Perpendicular to the entry move itself, at its programmed end.
     const double alpha = ang(p - c) + (side_ > 0 ? kHalfPi : -kHalfPi);
@@ -45,7 +45,7 @@ void RadiusCompensation::entry_line(const Motion& m) {
 void RadiusCompensation::entry_arc(const Motion& m) {
     const Vec2 c = plane2(m.start), p = plane2(m.end), centre = plane2(m.center);
     const int turn = turn_of(m);
-    if ((p - c).norm() <= r_)
+    if (profile_.radius.entry_length_check && (p - c).norm() <= r_)
         fail("comp_entry_too_short", profile_.radius.messages.entry_arc_too_short, m.line);
     if ((centre - c).norm() <= r_ && tool_inside(side_, turn))
         fail("comp_arc_too_small", profile_.radius.messages.arc_too_small, m.line);
@@ -109,6 +109,7 @@ void RadiusCompensation::rescale(double new_unit) {
 void RadiusCompensation::push(const Motion& m) {
     rescale(m.unit);
     checks_ = m.radius.checks;
+    lookahead_ = m.radius.lookahead;
     if (active_ && m.radius.side != 0 && m.radius.radius <= 0) turn_off(m.line, /*cancel=*/false);  // radius 0 (T00)
     if (m.is_arc() && (arc_not_allowed_ || exit_open_))
         fail("comp_exit_arc", profile_.radius.messages.exit_arc, m.line);

@@ -31,7 +31,9 @@ void RadiusCompensation::outside_corner(const Motion& m, const Vec2& P, const El
     const Vec2 C = plane2(current_);
     const Vec2 mid = next.p0;
     const auto held = held_element();
-    if (rules.outside_corner != OutsideCorner::arc && held && turn <= rules.corner_limit) {
+    // Heidenhain M97 in the block before the corner: meet at the intersection, whatever the angle.
+    const bool m97 = !queue_.empty() && queue_.front().m.radius.corner == static_cast<int>(OutsideCorner::intersection);
+    if ((m97 || (rules.outside_corner != OutsideCorner::arc && turn <= rules.corner_limit)) && held) {
         // Meet where the two equidistants (extended) cross, nearest to the programmed corner.
         auto xs = intersect(*held, next);
         if (!xs.empty()) {
@@ -100,6 +102,24 @@ void RadiusCompensation::outside_corner(const Motion& m, const Vec2& P, const El
     flush();
     endpoint_ = mid;
     endpoint_valid_ = true;
+}
+
+// Heidenhain M98 on the held move: both elements end and start perpendicular to themselves
+// and a straight line joins them, so an open contour's corners are machined fully.
+bool RadiusCompensation::open_corner(const Motion& m, const Vec2& mid) {
+    if (queue_.empty() || !queue_.front().m.radius.open_corner) return false;
+    flush();
+    Motion link = m;
+    link.kind = m.kind == MotionKind::rapid ? MotionKind::rapid : MotionKind::line;
+    link.center = Vec3::Constant(std::nan(""));
+    link.turns = 0;
+    link.generated = true;
+    link.end = with_plane(current_, mid);
+    hold(link, Vec2::Zero(), 0);
+    flush();
+    endpoint_ = mid;
+    endpoint_valid_ = true;
+    return true;
 }
 
 // Type A entry: the activation block ends where the next element's equidistant starts.
@@ -194,7 +214,9 @@ void RadiusCompensation::next_line(const Motion& m) {
         concave = true;  // 180 degrees off an arc the tool was outside of ("h" shape)
 
     const Element2 next = Element2::line(mid, e);  // the new move's equidistant
-    if (!bridge_lines_.empty()) {
+    if (open_corner(m, mid)) {
+        // M98: the corner is left open
+    } else if (!bridge_lines_.empty()) {
         bridge(next, m.line);
     } else if (joint_free_) {
         joint_free_ = false;  // a side change already placed the tool at the new start
@@ -272,6 +294,10 @@ void RadiusCompensation::next_arc(const Motion& m) {
     const bool concave = beta < -small || beta > kPi + small || (std::fabs(beta - kPi) < small && !inside);
     const bool front_arc = !queue_.empty() && queue_.front().m.is_arc();
     const Element2 next = Element2::arc(mid, e, centre, ccw ? 1 : -1, m.turns);  // the arc's equidistant
+    if (open_corner(m, mid)) {
+        hold_arc_and_advance(m, e, centre, turn, P, p);
+        return;
+    }
     if (!bridge_lines_.empty()) {
         bridge(next, m.line);
         hold_arc_and_advance(m, e, centre, turn, P, p);

@@ -26,7 +26,8 @@ void RadiusCompensation::emit(const Held& h) {
     have_last_ = true;
     window_.push_back(std::move(e));
     const auto& rules = profile_.radius;
-    release(rules.gouge == GougeReaction::skip ? static_cast<std::size_t>(std::max(0, rules.lookahead - 1)) : 0);
+    release(rules.gouge == GougeReaction::skip || lookahead_ > 0 ? static_cast<std::size_t>(std::max(0, lookahead() - 1))
+                                                                   : 0);
 }
 
 // Sends the oldest emitted moves downstream until at most `keep` plane moves stay for the
@@ -100,7 +101,7 @@ void RadiusCompensation::move_end_and_flush(const Vec2& x, int line, bool check,
     }
     if (gouge) {
         const int held_line = queue_.front().m.line;
-        switch (checks_ ? rules.gouge : GougeReaction::report) {
+        switch (reaction()) {
             case GougeReaction::error:
                 fail("comp_gouge", *gouge, line);
             case GougeReaction::skip:
@@ -121,7 +122,7 @@ void RadiusCompensation::move_end_and_flush(const Vec2& x, int line, bool check,
 }
 
 void RadiusCompensation::no_intersection(const Element2& next, int line, const std::string& msg) {
-    switch (checks_ ? profile_.radius.gouge : GougeReaction::report) {
+    switch (reaction()) {
         case GougeReaction::error:
             fail("comp_gouge", msg, line);
         case GougeReaction::skip:
@@ -138,7 +139,7 @@ void RadiusCompensation::no_intersection(const Element2& next, int line, const s
 // moves before it) and join the newest emitted plane move that the next element's
 // equidistant crosses, looking back at most `lookahead` plane moves.
 bool RadiusCompensation::skip_unreachable(const Element2& next, int line) {
-    const int lookahead = std::max(1, profile_.radius.lookahead);
+    const int lookahead = std::max(1, this->lookahead());
     int looked = 0;
     std::string skipped = std::to_string(queue_.front().m.line);
     for (std::size_t k = window_.size(); k-- > 0;) {

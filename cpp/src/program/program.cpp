@@ -8,6 +8,7 @@ void Program::begin_block(int line, bool block_delete) {
     b.block_delete = block_delete;
     b.first_word = static_cast<std::uint32_t>(words_.size());
     b.first_comment = static_cast<std::uint32_t>(comments_.size());
+    b.first_token = static_cast<std::uint32_t>(tokens_.size());
     blocks_.push_back(b);
 }
 
@@ -16,6 +17,7 @@ void Program::drop_last_block() {
     const Block& b = blocks_.back();
     words_.resize(b.first_word);
     comments_.resize(b.first_comment);
+    tokens_.resize(b.first_token);
     blocks_.pop_back();
 }
 

@@ -19,6 +19,7 @@ std::string_view to_string(TableFormat f) {
         case TableFormat::linuxcnc: return "linuxcnc";
         case TableFormat::csv: return "csv";
         case TableFormat::json: return "json";
+        case TableFormat::heidenhain: return "heidenhain";
     }
     return "?";
 }
@@ -28,8 +29,9 @@ TableFormat table_format_from_string(std::string_view s) {
     if (f == "linuxcnc" || f == "tbl") return TableFormat::linuxcnc;
     if (f == "csv") return TableFormat::csv;
     if (f == "json") return TableFormat::json;
+    if (f == "heidenhain" || f == "t") return TableFormat::heidenhain;
     throw ToolTableError("table_unknown_format",
-                         "unknown tool table format '" + std::string(s) + "' (use linuxcnc, csv or json)");
+                         "unknown tool table format '" + std::string(s) + "' (use linuxcnc, csv, json or heidenhain)");
 }
 
 TableFormat table_format_from_path(const std::string& path) {
@@ -40,10 +42,11 @@ TableFormat table_format_from_path(const std::string& path) {
         if (ext == "tbl") return TableFormat::linuxcnc;
         if (ext == "csv") return TableFormat::csv;
         if (ext == "json") return TableFormat::json;
+        if (ext == "t") return TableFormat::heidenhain;
     }
     throw ToolTableError("table_unknown_format",
                          "cannot tell the tool table format from the name '" + path +
-                             "' (suffix .tbl, .csv or .json, or pass the format)");
+                             "' (suffix .tbl, .csv, .json or .t, or pass the format)");
 }
 
 }  // namespace toolcomp

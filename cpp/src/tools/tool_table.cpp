@@ -2,6 +2,7 @@
 
 #include "toolcomp/program/diagnostic.hpp"
 #include "toolcomp/tools/format_csv.hpp"
+#include "toolcomp/tools/format_heidenhain.hpp"
 #include "toolcomp/tools/format_json.hpp"
 #include "toolcomp/tools/format_linuxcnc.hpp"
 
@@ -44,6 +45,7 @@ ToolTable read_tool_table(std::string_view text, TableFormat format, LengthUnit 
         case TableFormat::linuxcnc: return read_linuxcnc_table(text, units);
         case TableFormat::csv: return read_csv_table(text, units);
         case TableFormat::json: return read_json_table(text, units);
+        case TableFormat::heidenhain: return read_heidenhain_table(text, units);
     }
     throw ToolTableError("table_unknown_format", "unknown tool table format");
 }
@@ -53,6 +55,7 @@ std::string write_tool_table(const ToolTable& table, TableFormat format) {
         case TableFormat::linuxcnc: return write_linuxcnc_table(table);
         case TableFormat::csv: return write_csv_table(table);
         case TableFormat::json: return write_json_table(table);
+        case TableFormat::heidenhain: return write_heidenhain_table(table);
     }
     throw ToolTableError("table_unknown_format", "unknown tool table format");
 }

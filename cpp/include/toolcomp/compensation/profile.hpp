@@ -65,6 +65,7 @@ struct RadiusMessages {
     std::string exit_arc = "The move just after exiting cutter compensation mode must be straight, not an arc";
     std::string too_many_non_plane = "Too many blocks without motion in the compensation plane";
     std::string g10 = "";  // set when G10 is refused whatever it changes
+    std::string side_change = "";  // set when RL <-> RR needs a cancel block between
 };
 
 // What happens when too many blocks without motion in the plane follow each other while
@@ -91,6 +92,7 @@ struct RadiusRules {
     bool side_change = false;
     EntryStyle entry = EntryStyle::perpendicular_to_entry;
     bool entry_arc = true;  // an arc may be the activation block (LinuxCNC: yes)
+    bool entry_length_check = true;  // the entry move must be longer than the radius (LinuxCNC)
     ExitStyle exit = ExitStyle::perpendicular_to_last;
     // I/K (or I/J) in the cancel block give the direction in which the contour is taken to
     // go on, for the last move's end (9/Series exit modified with I/K).

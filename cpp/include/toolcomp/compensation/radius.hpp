@@ -57,6 +57,7 @@ private:
     std::optional<Element2> held_element() const;
     void outside_corner(const Motion& m, const Vec2& P, const Element2& next, double turn, bool check_held);
     bool close_open_entry(const Vec2& mid);
+    bool open_corner(const Motion& m, const Vec2& mid);
     void turn_off(int line, bool cancel = true);
     void change_side(const Motion& m);
     void bridge(const Element2& next, int line);
@@ -88,6 +89,12 @@ private:
 
     double unit_ = 1.0;            // program unit (mm per unit) of everything held below
     bool checks_ = true;           // gouge checks of the current move (switchable on the 9/Series)
+    int lookahead_ = 0;            // block-local look-ahead with skipping (Heidenhain M120 LA)
+    GougeReaction reaction() const {
+        if (lookahead_ > 0) return GougeReaction::skip;
+        return checks_ ? profile_.radius.gouge : GougeReaction::report;
+    }
+    int lookahead() const { return lookahead_ > 0 ? lookahead_ : profile_.radius.lookahead; }
     bool active_ = false;          // compensating, the entry move made
     Plane plane_ = Plane::xy;
     int side_ = 0;                 // +1 left, -1 right

@@ -24,6 +24,12 @@ struct RadiusRequest {
     double radius = 0;        // program units
     std::int8_t orientation = 0;  // lathe tip number, 0 = none
     bool checks = true;           // gouge and interference checks on (9/Series M800 turns them off)
+    // Block-local overrides (Heidenhain M97 / M98 / M120): the outside corner after this move
+    // (-1: the profile's; else an OutsideCorner value, met at the intersection), an open
+    // contour corner after this move, and a look-ahead that skips what the tool cannot reach.
+    std::int8_t corner = -1;
+    bool open_corner = false;
+    std::int8_t lookahead = 0;
 };
 
 struct Motion {

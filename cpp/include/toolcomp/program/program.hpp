@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "toolcomp/program/dialect.hpp"
+#include "toolcomp/geometry/vec.hpp"
 #include "toolcomp/program/diagnostic.hpp"
 
 namespace toolcomp {
@@ -19,6 +20,18 @@ struct Word {
     char letter = 0;   // upper case
     double value = 0;  // as written (program units)
     int column = 0;    // 1-based column of the letter
+};
+
+// A token of a conversational block (Heidenhain Klartext): a keyword or address with an
+// optional number ("X+10" -> key "X", value 10; "DR-" -> key "DR", sign -1, no value; "RL";
+// "1"; a quoted name).
+struct Token {
+    std::string key;         // upper case letters (empty for a plain number or a name)
+    double value = 0;        // the number, or ±1 for a bare sign ("DR+")
+    bool has_value = false;  // a number was written
+    bool sign_only = false;  // "DR+" / "DR-"
+    std::string text;        // a quoted name, without the quotes
+    int column = 0;
 };
 
 struct Comment {
@@ -31,6 +44,13 @@ struct Block {
     bool block_delete = false;  // the block starts with '/'
     std::uint32_t first_word = 0, word_count = 0;
     std::uint32_t first_comment = 0, comment_count = 0;
+    std::uint32_t first_token = 0, token_count = 0;
+};
+
+// The workpiece blank (Heidenhain BLK FORM 0.1 / 0.2), program units.
+struct Blank {
+    Vec3 min = Vec3::Zero(), max = Vec3::Zero();
+    int axis = 2;  // tool axis 0 X, 1 Y, 2 Z
 };
 
 class Program {
@@ -45,6 +65,8 @@ public:
     // error itself, which the interpreter raises when execution reaches that line (a
     // control reports a bad line only when it gets there: never after M2).
     std::optional<Diagnostic> syntax_error;
+    std::optional<Blank> blank;
+    bool inch = false;  // conversational programs declare their unit (BEGIN PGM ... INCH)
 
     std::size_t size() const { return blocks_.size(); }
     const std::vector<Block>& blocks() const { return blocks_; }
@@ -54,11 +76,16 @@ public:
     std::span<const Comment> comments(const Block& b) const {
         return {comments_.data() + b.first_comment, b.comment_count};
     }
+    std::span<const Token> tokens(const Block& b) const { return {tokens_.data() + b.first_token, b.token_count}; }
     std::size_t word_count() const { return words_.size(); }
 
     // Building (front ends): open a block, add its words and comments, close it.
     void begin_block(int line, bool block_delete);
     void add_word(Word w) { words_.push_back(w); ++blocks_.back().word_count; }
+    void add_token(Token t) {
+        tokens_.push_back(std::move(t));
+        ++blocks_.back().token_count;
+    }
     void add_comment(Comment c) {
         comments_.push_back(std::move(c));
         ++blocks_.back().comment_count;
@@ -74,6 +101,7 @@ private:
     std::vector<Block> blocks_;
     std::vector<Word> words_;
     std::vector<Comment> comments_;
+    std::vector<Token> tokens_;
 };
 
 }  // namespace toolcomp

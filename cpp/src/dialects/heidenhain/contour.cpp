@@ -1,0 +1,229 @@
+// Klartext contour elements: circle centre / pole (CC), arcs (C, CR, CT), polar moves (LP, CP
+// with helix), and the corner elements RND and CHF, which change the elements on both sides
+// (so the last element is held back until the next one is known).
+#include <cmath>
+
+#include "interp.hpp"
+#include "toolcomp/geometry/arc.hpp"
+#include "toolcomp/geometry/element.hpp"
+
+namespace toolcomp::heidenhain {
+
+namespace {
+constexpr double kArcTolerance = 0.016;  // mm: start and end radius of C blocks (TNC)
+double deg(double rad) { return rad * 180 / kPi; }
+double rad(double deg) { return deg * kPi / 180; }
+}  // namespace
+
+Vec2 Interp::end_tangent() const {
+    if (!pending_) fail("no_previous_element", "No preceding contour element to be tangent to");
+    const Motion& m = *pending_;
+    const Vec2 s = plane2(m.start), e = plane2(m.end);
+    if (!m.is_arc()) return (e - s).normalized();
+    const Vec2 u = (e - plane2(m.center)).normalized();
+    return (m.kind == MotionKind::arc_ccw ? 1.0 : -1.0) * left_normal(u);
+}
+
+void Interp::settle_pending() {
+    if ((pending_round_ > 0 || pending_chamfer_ > 0))
+        throw ProgramError("corner_without_element", "RND and CHF need a contour element after them",
+                           {pending_corner_line_, 0});
+}
+
+// Emits the held element (after a RND or CHF between it and m has cut it back) and holds m.
+void Interp::put(Motion m) {
+    if (pending_ && (pending_round_ > 0 || pending_chamfer_ > 0)) {
+        Motion& prev = *pending_;
+        const bool round = pending_round_ > 0;
+        const int at = pending_corner_line_;
+        if (prev.is_arc() || m.is_arc() || prev.kind == MotionKind::rapid || m.kind == MotionKind::rapid)
+            throw ProgramError("corner_between_arcs",
+                               std::string(round ? "RND" : "CHF") + " is supported between two straight feed moves only",
+                               {at, 0});
+        const Vec2 p = plane2(prev.end);
+        const Vec2 a = plane2(prev.start), b = plane2(m.end);
+        const double l1 = (p - a).norm(), l2 = (b - p).norm();
+        const Vec2 t1 = (p - a) / l1, t2 = (b - p) / l2;
+        const double theta = turn_angle(t1, t2);
+        const double d = round ? pending_round_ * std::tan(std::fabs(theta) / 2) : pending_chamfer_;
+        if (d > l1 || d > l2 || std::fabs(theta) < 1e-12)
+            throw ProgramError(round ? "rounding_too_large" : "chamfer_not_permitted",
+                               round ? "ROUNDING-OFF RADIUS TOO LARGE" : "CHAMFER NOT PERMITTED", {at, 0});
+        const Vec2 c1 = p - d * t1, c2 = p + d * t2;
+        Motion corner = prev;
+        corner.line = at;
+        corner.start = with_plane(prev.end, c1);
+        corner.end = with_plane(prev.end, c2);
+        if (round) {
+            corner.kind = theta > 0 ? MotionKind::arc_ccw : MotionKind::arc_cw;
+            corner.center = with_plane(prev.end, c1 + (theta > 0 ? 1.0 : -1.0) * pending_round_ * left_normal(t1));
+        }
+        prev.end = corner.start;
+        m.start = corner.end;
+        sink_.push(prev);
+        pending_ = corner;
+        pending_round_ = pending_chamfer_ = 0;
+    }
+    if (pending_) sink_.push(*pending_);
+    pending_ = m;
+}
+
+void Interp::circle_centre(Tokens t) {
+    auto ax = axes(plane_);
+    static const char* names[3] = {"X", "Y", "Z"};
+    static const char* inc[3] = {"IX", "IY", "IZ"};
+    Vec2 c = plane2(pos_);
+    for (const Token& k : t) {
+        for (int i : {ax.a, ax.b}) {
+            const double base = i == ax.a ? pos_[ax.a] : pos_[ax.b];
+            double& v = i == ax.a ? c.x() : c.y();
+            if (k.key == names[i] && k.has_value) v = k.value;
+            if (k.key == inc[i] && k.has_value) v = base + k.value;
+        }
+    }
+    pole_ = c;
+}
+
+namespace {
+int arc_direction(std::span<const Token> t) {
+    for (const Token& k : t)
+        if (k.key == "DR" && k.sign_only) return k.value > 0 ? 1 : -1;
+    return 0;
+}
+}  // namespace
+
+// Arc blocks may keep RL/RR but not switch compensation on or off.
+static void check_arc_comp(std::span<const Token> t, int side, const ControlProfile& p, int line) {
+    for (const Token& k : t) {
+        if ((k.key == "RL" || k.key == "RR") && side == 0)
+            throw ProgramError("comp_entry_arc", p.radius.messages.entry_arc, {line, k.column});
+        if (k.key == "R" && k.has_value && k.value == 0 && side != 0 && t[0].key != "CR")
+            throw ProgramError("comp_exit_arc", p.radius.messages.exit_arc, {line, k.column});
+    }
+}
+
+void Interp::arc_about_pole(Tokens t) {
+    if (!pole_) fail("no_circle_centre", "CIRCLE CENTER UNDEFINED", t[0].column);
+    check_arc_comp(t, side_, profile_, line_);
+    modal_words(t, 1);
+    const int dir = arc_direction(t);
+    if (dir == 0) fail("arc_direction_missing", "C needs DR+ or DR-", t[0].column);
+    const Vec3 end = end_point(t, 1);
+    const double r1 = (plane2(pos_) - *pole_).norm(), r2 = (plane2(end) - *pole_).norm();
+    if (std::fabs(r1 - r2) > kArcTolerance / unit_) fail("arc_end_incorrect", "ARC END POS. INCORRECT", t[0].column);
+    if (feed_ <= 0) fail("no_feed", "No feed rate programmed");
+    Motion m = motion_to(dir > 0 ? MotionKind::arc_ccw : MotionKind::arc_cw, end);
+    m.center = with_plane(pos_, *pole_);
+    ++plane_moves_;
+    put(m);
+    pos_ = end;
+}
+
+void Interp::arc_radius(Tokens t) {
+    check_arc_comp(t, side_, profile_, line_);
+    modal_words(t, 1);
+    const int dir = arc_direction(t);
+    if (dir == 0) fail("arc_direction_missing", "CR needs DR+ or DR-", t[0].column);
+    const auto R = number(t, "R");
+    if (!R || *R == 0) fail("arc_radius_missing", "CR needs a radius R", t[0].column);
+    const Vec3 end = end_point(t, 1);
+    const Vec2 s = plane2(pos_), e = plane2(end);
+    if (s == e) fail("arc_end_incorrect", "ARC END POS. INCORRECT", t[0].column);
+    const double half = (e - s).norm() / 2;
+    double Ruse = *R;
+    if (half > std::fabs(Ruse)) {
+        if (half - std::fabs(Ruse) > 1e-9 / unit_) fail("arc_end_incorrect", "ARC END POS. INCORRECT", t[0].column);
+        Ruse = std::copysign(half, Ruse);
+    }
+    auto c = center_from_radius(s, e, Ruse, dir);
+    if (feed_ <= 0) fail("no_feed", "No feed rate programmed");
+    Motion m = motion_to(dir > 0 ? MotionKind::arc_ccw : MotionKind::arc_cw, end);
+    m.center = with_plane(pos_, c ? *c : 0.5 * (s + e));
+    ++plane_moves_;
+    put(m);
+    pos_ = end;
+}
+
+void Interp::arc_tangential(Tokens t) {
+    check_arc_comp(t, side_, profile_, line_);
+    modal_words(t, 1);
+    if (plane_moves_ < 1 || !pending_) fail("ct_without_element", "CT needs a preceding contour element", t[0].column);
+    const Vec2 t0 = end_tangent();
+    const Vec3 end = end_point(t, 1);
+    const Vec2 s = plane2(pos_), v = plane2(end) - s;
+    const double den = 2 * v.dot(left_normal(t0));
+    if (std::fabs(den) < 1e-12) fail("arc_end_incorrect", "ARC END POS. INCORRECT", t[0].column);
+    const double rho = v.squaredNorm() / den;
+    if (feed_ <= 0) fail("no_feed", "No feed rate programmed");
+    Motion m = motion_to(rho > 0 ? MotionKind::arc_ccw : MotionKind::arc_cw, end);
+    m.center = with_plane(pos_, s + rho * left_normal(t0));
+    ++plane_moves_;
+    put(m);
+    pos_ = end;
+}
+
+void Interp::polar_line(Tokens t) {
+    if (!pole_) fail("no_circle_centre", "CIRCLE CENTER UNDEFINED", t[0].column);
+    modal_words(t, 1);
+    const Vec2 rel = plane2(pos_) - *pole_;
+    double pr = rel.norm(), pa = deg(std::atan2(rel.y(), rel.x()));
+    if (auto v = number(t, "PR")) pr = *v;
+    if (auto v = number(t, "IPR")) pr += *v;
+    if (auto v = number(t, "PA")) pa = *v;
+    if (auto v = number(t, "IPA")) pa += *v;
+    Vec3 end = end_point(t, 1);
+    end = with_plane(end, *pole_ + pr * Vec2(std::cos(rad(pa)), std::sin(rad(pa))));
+    if (end == pos_) return;
+    if (!rapid_ && feed_ <= 0) fail("no_feed", "No feed rate programmed");
+    ++plane_moves_;
+    put(motion_to(rapid_ ? MotionKind::rapid : MotionKind::line, end));
+    pos_ = end;
+}
+
+void Interp::polar_arc(Tokens t) {
+    if (!pole_) fail("no_circle_centre", "CIRCLE CENTER UNDEFINED", t[0].column);
+    check_arc_comp(t, side_, profile_, line_);
+    modal_words(t, 1);
+    const int dir = arc_direction(t);
+    if (dir == 0) fail("arc_direction_missing", "CP needs DR+ or DR-", t[0].column);
+    const Vec2 rel = plane2(pos_) - *pole_;
+    const double r = rel.norm(), a0 = deg(std::atan2(rel.y(), rel.x()));
+    if (r < 1e-9) fail("arc_end_incorrect", "ARC END POS. INCORRECT", t[0].column);
+    double pa = a0;
+    int turns = 0;
+    if (auto v = number(t, "PA")) pa = *v;
+    if (auto v = number(t, "IPA")) {
+        pa = a0 + *v;
+        if (std::fabs(*v) > 5400) fail("helix_angle", "The helix angle is limited to 5400 degrees", t[0].column);
+        turns = std::max(0, static_cast<int>(std::floor((std::fabs(*v) - 1e-9) / 360)));
+    }
+    Vec3 end = end_point(t, 1);
+    end = with_plane(end, *pole_ + r * Vec2(std::cos(rad(pa)), std::sin(rad(pa))));
+    if (feed_ <= 0) fail("no_feed", "No feed rate programmed");
+    Motion m = motion_to(dir > 0 ? MotionKind::arc_ccw : MotionKind::arc_cw, end);
+    m.center = with_plane(pos_, *pole_);
+    m.turns = turns;
+    ++plane_moves_;
+    put(m);
+    pos_ = end;
+}
+
+void Interp::rounding(Tokens t) {
+    modal_words(t, 1);
+    const auto r = number(t, "R");
+    if (!r || *r <= 0) fail("rounding_radius", "RND needs a radius R > 0", t[0].column);
+    if (!pending_) fail("corner_without_element", "RND cannot be the first element of a contour", t[0].column);
+    pending_round_ = *r;
+    pending_corner_line_ = line_;
+}
+
+void Interp::chamfer(Tokens t) {
+    modal_words(t, 1);
+    double n = t[0].has_value ? t[0].value : (t.size() > 1 && t[1].key.empty() && t[1].has_value ? t[1].value : 0);
+    if (n <= 0) fail("chamfer_length", "CHF needs a length > 0", t[0].column);
+    if (!pending_) fail("chamfer_not_permitted", "CHAMFER NOT PERMITTED", t[0].column);
+    pending_chamfer_ = n;
+    pending_corner_line_ = line_;
+}
+
+}  // namespace toolcomp::heidenhain

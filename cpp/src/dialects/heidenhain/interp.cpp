@@ -1,0 +1,241 @@
+// Klartext block execution: program frame, tools, straight lines, feeds, M functions and
+// radius compensation requests. Arcs, polar moves, RND and CHF are in contour.cpp.
+#include <cmath>
+
+#include "interp.hpp"
+#include "toolcomp/tools/tool_table.hpp"
+
+namespace toolcomp::heidenhain {
+
+Interp::Interp(const Program& prog, const ToolTable* tools, const ControlProfile& profile, MotionSink& sink,
+               std::vector<Diagnostic>& diags)
+    : prog_(prog), tools_(tools), profile_(profile), sink_(sink), diags_(diags), unit_(prog.inch ? kMmPerInch : 1.0) {}
+
+void Interp::fail(const char* code, const std::string& msg, int column) const {
+    throw ProgramError(code, msg, {line_, column});
+}
+
+const Token* Interp::find(Tokens t, std::string_view key) const {
+    for (const Token& k : t)
+        if (k.key == key) return &k;
+    return nullptr;
+}
+
+std::optional<double> Interp::number(Tokens t, std::string_view key) const {
+    const Token* k = find(t, key);
+    if (!k) return std::nullopt;
+    if (!k->has_value) fail("missing_value", std::string(key) + " needs a value", k->column);
+    return k->value;
+}
+
+Vec3 Interp::with_plane(Vec3 v, const Vec2& ab) const {
+    auto ax = axes(plane_);
+    v[ax.a] = ab.x();
+    v[ax.b] = ab.y();
+    return v;
+}
+
+Vec3 Interp::end_point(Tokens t, std::size_t from) const {
+    Vec3 e = pos_;
+    static const char* names[3] = {"X", "Y", "Z"};
+    static const char* inc[3] = {"IX", "IY", "IZ"};
+    for (std::size_t i = from; i < t.size(); ++i) {
+        for (int a = 0; a < 3; ++a) {
+            if (t[i].key == names[a] && t[i].has_value) e[a] = t[i].value;
+            if (t[i].key == inc[a] && t[i].has_value) e[a] = pos_[a] + t[i].value;
+        }
+    }
+    return e;
+}
+
+// Words that can stand in any positioning block: radius compensation, feed, M functions.
+void Interp::modal_words(Tokens t, std::size_t from) {
+    for (std::size_t i = from; i < t.size(); ++i) {
+        const Token& k = t[i];
+        if (k.key == "RL" || k.key == "RR" || (k.key == "R" && k.has_value && k.value == 0 && t[0].key != "CR")) {
+            const int side = k.key == "RL" ? 1 : k.key == "RR" ? -1 : 0;
+            if (side != 0 && side_ != 0 && side != side_) fail("comp_side_change", profile_.radius.messages.side_change, k.column);
+            if (side == 0 && side_ != 0) {
+                settle_pending();
+                if (pending_) {
+                    sink_.push(*pending_);
+                    pending_.reset();
+                }
+                sink_.control({ControlKind::radius_off, line_});
+                lookahead_ = 0;
+            }
+            side_ = side;
+        } else if (k.key == "R" && k.sign_only) {
+            fail("unsupported_paraxial", "Paraxial compensation R+/R- is not supported by toolcomp", k.column);
+        } else if (k.key == "F" && k.has_value) {
+            feed_ = k.value * (prog_.inch ? 2.54 : 1.0);  // mm/min, or 1/10 inch/min in INCH programs
+        } else if (k.key == "FMAX") {
+            rapid_ = true;
+        } else if (k.key == "FAUTO") {
+            fail("unsupported_word", "FAUTO is not supported by toolcomp", k.column);
+        } else if (k.key == "M" && k.has_value) {
+            const int m = static_cast<int>(k.value);
+            switch (m) {
+                case 97: corner_ = static_cast<std::int8_t>(OutsideCorner::intersection); break;
+                case 98: open_corner_ = true; break;
+                case 120: {
+                    const Token* la = find(t, "LA");
+                    lookahead_ = la && la->has_value ? static_cast<int>(la->value) : 0;
+                    if (lookahead_ > 99) fail("bad_lookahead", "M120 LA allows at most 99 blocks", la->column);
+                    break;
+                }
+                case 0: case 1: case 2: case 3: case 4: case 5: case 6: case 8: case 9: case 13: case 14:
+                case 30: case 89: case 90: case 99:
+                    break;  // machine functions without a geometric effect on the path
+                default:
+                    fail("unsupported_m_code", "M" + std::to_string(m) + " is not supported by toolcomp", k.column);
+            }
+        }
+    }
+}
+
+Motion Interp::motion_to(MotionKind kind, const Vec3& end) const {
+    Motion m;
+    m.kind = kind;
+    m.plane = plane_;
+    m.start = pos_;
+    m.end = end;
+    m.abc = abc_;
+    m.line = line_;
+    m.tool = tool_;
+    m.tool_offset = tlo_;
+    m.unit = unit_;
+    m.feed = kind == MotionKind::rapid ? std::nan("") : feed_;
+    m.radius.side = static_cast<std::int8_t>(side_);
+    m.radius.radius = radius_;
+    m.radius.corner = corner_;
+    m.radius.open_corner = open_corner_;
+    m.radius.lookahead = static_cast<std::int8_t>(lookahead_);
+    return m;
+}
+
+void Interp::tool_def(Tokens t) {
+    if (t.size() < 3 || !t[2].has_value || !t[2].key.empty()) fail("tool_def", "TOOL DEF needs a tool number");
+    ToolDef d;
+    d.length = number(t, "L").value_or(0);
+    d.radius = number(t, "R").value_or(0);
+    d.r2 = number(t, "R2").value_or(0);
+    defs_[static_cast<int>(t[2].value)] = d;
+}
+
+// TOOL CALL n|"name" X|Y|Z [S] [F] [DL] [DR] [DR2]: the tool axis sets the working plane;
+// effective length L + DL(TOOL CALL) + DL(table), radius R + DR(TOOL CALL) + DR(table).
+void Interp::tool_call(Tokens t) {
+    std::size_t i = 2;
+    int number_ = -1;
+    const Tool* table_tool = nullptr;
+    if (i < t.size() && t[i].key.empty() && t[i].has_value) {
+        if (std::fabs(t[i].value - std::round(t[i].value)) > 1e-9)
+            fail("unsupported_tool_index", "Tool indexes (TOOL CALL n.i) are not supported by toolcomp", t[i].column);
+        number_ = static_cast<int>(t[i].value);
+        ++i;
+    } else if (i < t.size() && !t[i].text.empty()) {
+        if (tools_)
+            for (const Tool& tool : tools_->tools())
+                if (tool.name == t[i].text) table_tool = &tool;
+        if (!table_tool) fail("tool_not_found", "Tool \"" + t[i].text + "\" not found in the tool table", t[i].column);
+        number_ = table_tool->number;
+        ++i;
+    }
+    for (; i < t.size(); ++i) {
+        const std::string& k = t[i].key;
+        if ((k == "X" || k == "Y" || k == "Z") && !t[i].has_value)
+            plane_ = k == "Z" ? Plane::xy : k == "Y" ? Plane::zx : Plane::yz;
+        else if (k == "F" && t[i].has_value)
+            feed_ = t[i].value * (prog_.inch ? 2.54 : 1.0);
+    }
+    const double dl = number(t, "DL").value_or(0), dr = number(t, "DR").value_or(0);
+    double length = 0, radius = 0;
+    if (number_ > 0) {
+        if (!table_tool && tools_) table_tool = tools_->find(number_);
+        if (table_tool) {
+            const CuttingEdge& e = table_tool->edge();
+            length = (e.length.z() + e.length_wear.z()) / unit_;
+            radius = (e.radius + e.radius_wear) / unit_;
+        } else if (auto d = defs_.find(number_); d != defs_.end()) {
+            length = d->second.length;
+            radius = d->second.radius;
+        } else {
+            fail("tool_not_found", "Tool " + std::to_string(number_) + " is neither in the tool table nor defined");
+        }
+    }
+    if (number_ >= 0) tool_ = number_;
+    radius_ = number_ == 0 ? 0 : radius + dr;
+    tlo_.setZero();
+    tlo_[axes(plane_).c] = number_ == 0 ? 0 : length + dl;
+}
+
+void Interp::line(Tokens t) {
+    modal_words(t, 1);
+    const Vec3 end = end_point(t, 1);
+    for (std::size_t i = 1; i < t.size(); ++i) {
+        if (t[i].key == "A" && t[i].has_value) abc_[0] = t[i].value;
+        if (t[i].key == "B" && t[i].has_value) abc_[1] = t[i].value;
+        if (t[i].key == "C" && t[i].has_value) abc_[2] = t[i].value;
+    }
+    if (end == pos_) return;
+    if (!rapid_ && feed_ <= 0) fail("no_feed", "No feed rate programmed");
+    if (plane2(end) != plane2(pos_)) ++plane_moves_;
+    put(motion_to(rapid_ ? MotionKind::rapid : MotionKind::line, end));
+    pos_ = end;
+}
+
+bool Interp::execute(Tokens t) {
+    const std::string& k0 = t[0].key;
+    const std::string k1 = t.size() > 1 ? t[1].key : "";
+    corner_ = -1;
+    open_corner_ = false;
+    rapid_ = false;
+    if (k0 == "BEGIN" || k0 == "BLK") return true;
+    if (k0 == "END" && k1 == "PGM") return false;
+    if (k0 == "TOOL" && k1 == "DEF") tool_def(t);
+    else if (k0 == "TOOL" && k1 == "CALL") tool_call(t);
+    else if (k0 == "L") line(t);
+    else if (k0 == "CC") circle_centre(t);
+    else if (k0 == "C") arc_about_pole(t);
+    else if (k0 == "CR") arc_radius(t);
+    else if (k0 == "CT") arc_tangential(t);
+    else if (k0 == "LP") polar_line(t);
+    else if (k0 == "CP") polar_arc(t);
+    else if (k0 == "RND") rounding(t);
+    else if (k0 == "CHF") chamfer(t);
+    else if (k0 == "STOP") {
+        modal_words(t, 1);
+        settle_pending();
+        sink_.control({ControlKind::stop, line_});
+    } else if (k0 == "CTP" || k0 == "APPR" || k0 == "DEP" || k0 == "LN" || k0 == "CYCL" || k0 == "LBL" || k0 == "CALL" ||
+               k0 == "FN" || (k0.size() > 1 && k0[0] == 'Q'))
+        fail("unsupported_block", k0 + (k1.empty() ? "" : " " + k1) + " is not supported by toolcomp yet", t[0].column);
+    else
+        fail("unknown_block", "Unknown block '" + k0 + "'", t[0].column);
+    return true;
+}
+
+void Interp::run() {
+    for (const Block& b : prog_.blocks()) {
+        auto t = prog_.tokens(b);
+        if (t.empty()) continue;
+        line_ = b.line;
+        if (!execute(t)) break;
+    }
+    settle_pending();
+    if (pending_) {
+        sink_.push(*pending_);
+        pending_.reset();
+    }
+    if (const auto& e = prog_.syntax_error) throw ParseError(e->code, e->message, e->pos);
+    sink_.control({ControlKind::program_end, line_});
+    sink_.finish();
+}
+
+void interpret(const Program& program, const ToolTable* tools, const ControlProfile& profile, MotionSink& sink,
+               std::vector<Diagnostic>& diagnostics) {
+    Interp(program, tools, profile, sink, diagnostics).run();
+}
+
+}  // namespace toolcomp::heidenhain

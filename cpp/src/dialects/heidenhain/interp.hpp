@@ -1,0 +1,83 @@
+#pragma once
+// Working data of the Klartext interpreter. Positions in program units (BEGIN PGM MM|INCH),
+// in machine axis order X Y Z; the working plane follows the tool axis of TOOL CALL.
+#include <map>
+#include <optional>
+#include <string>
+
+#include "toolcomp/dialects/heidenhain/interpreter.hpp"
+
+namespace toolcomp::heidenhain {
+
+struct ToolDef {
+    double length = 0, radius = 0, r2 = 0;
+};
+
+class Interp {
+public:
+    Interp(const Program& prog, const ToolTable* tools, const ControlProfile& profile, MotionSink& sink,
+           std::vector<Diagnostic>& diags);
+    void run();
+
+private:
+    using Tokens = std::span<const Token>;
+    bool execute(Tokens t);  // false at END PGM
+    [[noreturn]] void fail(const char* code, const std::string& msg, int column = 0) const;
+
+    // words
+    const Token* find(Tokens t, std::string_view key) const;
+    std::optional<double> number(Tokens t, std::string_view key) const;
+    Vec3 end_point(Tokens t, std::size_t from) const;  // X Y Z with I-prefix increments
+    void modal_words(Tokens t, std::size_t from);      // R0/RL/RR, F/FMAX, M functions
+
+    // blocks
+    void tool_def(Tokens t);
+    void tool_call(Tokens t);
+    void line(Tokens t);
+    void circle_centre(Tokens t);
+    void arc_about_pole(Tokens t);
+    void arc_radius(Tokens t);
+    void arc_tangential(Tokens t);
+    void polar_line(Tokens t);
+    void polar_arc(Tokens t);
+    void rounding(Tokens t);
+    void chamfer(Tokens t);
+
+    // motion output, one element held back for RND/CHF
+    Motion motion_to(MotionKind kind, const Vec3& end) const;
+    void put(Motion m);
+    void settle_pending();
+    Vec2 plane2(const Vec3& v) const { return in_plane(v, plane_); }
+    Vec3 with_plane(Vec3 v, const Vec2& ab) const;
+    Vec2 end_tangent() const;  // direction at the end of the last element
+
+    const Program& prog_;
+    const ToolTable* tools_;
+    const ControlProfile& profile_;
+    MotionSink& sink_;
+    std::vector<Diagnostic>& diags_;
+
+    int line_ = 0;
+    double unit_ = 1.0;  // mm per program unit
+    Plane plane_ = Plane::xy;
+    Vec3 pos_ = Vec3::Zero();
+    std::array<double, 3> abc_{0, 0, 0};
+    std::optional<Vec2> pole_;
+    double feed_ = 0;  // mm/min
+    bool rapid_ = false;
+    int side_ = 0;     // 0 R0, +1 RL, -1 RR
+    bool comp_started_ = false;
+    int tool_ = 0;
+    double radius_ = 0;  // effective tool radius, program units
+    Vec3 tlo_ = Vec3::Zero();
+    std::map<int, ToolDef> defs_;
+    std::int8_t corner_ = -1;  // M97 in this block
+    bool open_corner_ = false; // M98 in this block
+    int lookahead_ = 0;        // M120 LA n, modal until R0
+    std::optional<Motion> pending_;
+    double pending_round_ = 0, pending_chamfer_ = 0;  // RND / CHF between pending_ and the next
+    int pending_corner_line_ = 0;
+    int plane_moves_ = 0;  // positioning blocks in the plane (CT needs two)
+};
+
+}  // namespace toolcomp::heidenhain

@@ -1,0 +1,169 @@
+#include "toolcomp/dialects/heidenhain/lexer.hpp"
+
+#include <cctype>
+#include <charconv>
+
+namespace toolcomp::heidenhain {
+
+namespace {
+
+bool blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+
+class LineLexer {
+public:
+    LineLexer(std::string_view line, int line_no, Program& prog) : s_(line), line_(line_no), prog_(prog) {}
+
+    void run() {
+        skip();
+        // Block number.
+        while (i_ < s_.size() && std::isdigit(static_cast<unsigned char>(s_[i_]))) ++i_;
+        skip();
+        prog_.begin_block(line_, false);
+        if (i_ < s_.size() && s_[i_] == '*') {  // structure block
+            prog_.add_comment({std::string(s_.substr(i_ + 1)), col()});
+            return;
+        }
+        while (true) {
+            skip();
+            if (i_ >= s_.size()) break;
+            if (s_[i_] == ';') {
+                prog_.add_comment({std::string(s_.substr(i_ + 1)), col()});
+                break;
+            }
+            if (s_[i_] == '"') {
+                quoted();
+                continue;
+            }
+            token();
+        }
+    }
+
+private:
+    int col() const { return static_cast<int>(i_) + 1; }
+    void skip() {
+        while (i_ < s_.size() && blank(s_[i_])) ++i_;
+    }
+    [[noreturn]] void fail(const char* code, const std::string& msg, int column) {
+        throw ParseError(code, msg, {line_, column});
+    }
+    void quoted() {
+        int column = col();
+        std::size_t end = s_.find('"', i_ + 1);
+        if (end == std::string_view::npos) fail("unclosed_name", "Unclosed quotation mark", column);
+        Token t;
+        t.text = std::string(s_.substr(i_ + 1, end - i_ - 1));
+        t.column = column;
+        prog_.add_token(std::move(t));
+        i_ = end + 1;
+    }
+    void token() {
+        Token t;
+        t.column = col();
+        while (i_ < s_.size() && (std::isalpha(static_cast<unsigned char>(s_[i_])) || s_[i_] == '.' || s_[i_] == ':' ||
+                                  s_[i_] == '_')) {
+            // A '.' belongs to the key only between letters (CUR.TIME); "0.1" is a number.
+            if (s_[i_] == '.' && (t.key.empty() || i_ + 1 >= s_.size() || !std::isalpha(static_cast<unsigned char>(s_[i_ + 1]))))
+                break;
+            t.key.push_back(static_cast<char>(std::toupper(static_cast<unsigned char>(s_[i_]))));
+            ++i_;
+        }
+        std::string num;
+        int sign = 1;
+        bool have_sign = false;
+        if (i_ < s_.size() && (s_[i_] == '+' || s_[i_] == '-')) {
+            sign = s_[i_] == '-' ? -1 : 1;
+            have_sign = true;
+            ++i_;
+        }
+        while (i_ < s_.size() && (std::isdigit(static_cast<unsigned char>(s_[i_])) || s_[i_] == '.' || s_[i_] == ',')) {
+            num.push_back(s_[i_] == ',' ? '.' : s_[i_]);
+            ++i_;
+        }
+        if (i_ < s_.size() && !blank(s_[i_]) && s_[i_] != ';')
+            fail("bad_word", "Unexpected character '" + std::string(1, s_[i_]) + "'", col());
+        if (!num.empty()) {
+            if (num.front() == '.') num.insert(num.begin(), '0');
+            double v = 0;
+            auto r = std::from_chars(num.data(), num.data() + num.size(), v);
+            if (r.ec != std::errc() || r.ptr != num.data() + num.size())
+                fail("bad_number_format", "Bad number '" + num + "'", t.column);
+            t.value = sign * v;
+            t.has_value = true;
+        } else if (have_sign) {
+            t.value = sign;
+            t.sign_only = true;
+        } else if (t.key.empty()) {
+            fail("bad_word", "Unexpected character", t.column);
+        }
+        prog_.add_token(std::move(t));
+    }
+
+    std::string_view s_;
+    std::size_t i_ = 0;
+    int line_;
+    Program& prog_;
+};
+
+bool is_blank_line(std::string_view l) {
+    for (char c : l)
+        if (!blank(c)) return false;
+    return true;
+}
+
+// BLK FORM 0.1 <axis> X Y Z (minimum corner) and 0.2 X Y Z (maximum), kept as the blank.
+void read_blank(Program& prog, const Block& b) {
+    auto t = prog.tokens(b);
+    if (t.size() < 3 || t[0].key != "BLK" || t[1].key != "FORM" || !t[2].has_value) return;
+    Blank bl = prog.blank.value_or(Blank{});
+    const bool first = t[2].value < 0.15;
+    Vec3& corner = first ? bl.min : bl.max;
+    for (std::size_t i = 3; i < t.size(); ++i) {
+        const std::string& k = t[i].key;
+        int axis = k == "X" || k == "IX" ? 0 : k == "Y" || k == "IY" ? 1 : k == "Z" || k == "IZ" ? 2 : -1;
+        if (axis < 0) continue;
+        if (!t[i].has_value) {  // the tool axis letter of BLK FORM 0.1
+            bl.axis = axis;
+            continue;
+        }
+        corner[axis] = (k[0] == 'I' ? bl.min[axis] : 0) + t[i].value;
+    }
+    prog.blank = bl;
+}
+
+}  // namespace
+
+Program parse(std::string_view text, std::string name, bool strict) {
+    Program prog;
+    prog.name = std::move(name);
+    prog.dialect = Dialect::heidenhain;
+    std::size_t pos = 0;
+    int line_no = 0;
+    while (pos <= text.size()) {
+        std::size_t nl = text.find('\n', pos);
+        if (nl == std::string_view::npos) nl = text.size();
+        std::string_view line = text.substr(pos, nl - pos);
+        ++line_no;
+        pos = nl + 1;
+        if (!is_blank_line(line)) {
+            try {
+                LineLexer(line, line_no, prog).run();
+            } catch (const ParseError& e) {
+                if (strict) throw;
+                prog.drop_last_block();
+                prog.syntax_error = e.diagnostic();
+                break;
+            }
+            const Block& b = prog.blocks().back();
+            prog.last_line = line_no;
+            auto t = prog.tokens(b);
+            if (t.size() >= 2 && t[0].key == "BEGIN" && t[1].key == "PGM")
+                for (const Token& k : t) prog.inch = prog.inch || k.key == "INCH";
+            read_blank(prog, b);
+            if (t.size() >= 2 && t[0].key == "END" && t[1].key == "PGM") break;
+        }
+        if (nl == text.size()) break;
+    }
+    return prog;
+}
+
+}  // namespace toolcomp::heidenhain
