@@ -74,6 +74,10 @@ bool Result::ok() const {
 Result run(const Program& program, const ToolTable* tools, const RunOptions& options) {
     Result res;
     res.blocks = program.size();
+    if (program.blank) {
+        const double unit = program.inch ? kMmPerInch : 1.0;
+        res.blank = Blank{program.blank->min * unit, program.blank->max * unit, program.blank->axis};
+    }
     ControlProfile profile = options.profile ? *options.profile : profile_for(program.dialect);
     CompensationChain chain(profile, res.path, res.diagnostics);
     Tee tee(res.nominal, chain);

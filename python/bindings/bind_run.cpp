@@ -87,6 +87,14 @@ void bind_run(py::module_& m) {
                                [](std::shared_ptr<Result> r) { return std::shared_ptr<Path>(r, &r->nominal); })
         .def_property_readonly("path", [](std::shared_ptr<Result> r) { return std::shared_ptr<Path>(r, &r->path); })
         .def_readonly("blocks", &Result::blocks)
+        .def_property_readonly(
+            "blank",
+            [](const Result& r) -> py::object {
+                if (!r.blank) return py::none();
+                auto t = [](const Vec3& v) { return py::make_tuple(v.x(), v.y(), v.z()); };
+                return py::make_tuple(t(r.blank->min), t(r.blank->max));
+            },
+            "the workpiece blank the program declares (Heidenhain BLK FORM), ((min), (max)) in mm, or None")
         .def("__repr__", [](const Result& r) {
             return "Result(ok=" + std::string(r.ok() ? "True" : "False") + ", segments=" +
                    std::to_string(r.path.size()) + ", diagnostics=" + std::to_string(r.diagnostics.size()) + ")";

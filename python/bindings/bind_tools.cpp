@@ -135,7 +135,7 @@ void bind_tools(py::module_& m) {
         });
 
     py::class_<ToolTable>(m, "ToolTable",
-                          "Tool table; reads and writes LinuxCNC .tbl, CSV and JSON losslessly. "
+                          "Tool table; reads and writes LinuxCNC .tbl, CSV, JSON and Heidenhain TOOL.T losslessly. "
                           "Tools are stored in mm and degrees; `units` is the unit of the file.")
         .def(py::init([](const std::string& units) { return ToolTable(length_unit_from_string(units)); }),
              py::arg("units") = "mm")
@@ -148,8 +148,9 @@ void bind_tools(py::module_& m) {
                 return read_tool_table_file(path.string(), f, u);
             },
             py::arg("path"), py::arg("format") = py::none(), py::arg("units") = "mm",
-            "Read a table; format ('linuxcnc'/'tbl', 'csv', 'json') from the suffix unless given; "
-            "units ('mm'/'inch') of the file's lengths (a JSON file's own \"units\" wins).")
+            "Read a table; format ('linuxcnc'/'tbl', 'csv', 'json', 'heidenhain'/'t') from the suffix unless "
+            "given; units ('mm'/'inch') of the file's lengths (a JSON file's \"units\" or a TOOL.T's "
+            "BEGIN line wins).")
         .def_static(
             "parse",
             [](const std::string& text, const std::string& format, const std::string& units) {

@@ -178,7 +178,7 @@ def test_dialect_and_suffix(tmp_path):
     with pytest.raises(tc.ParseError):
         tc.Program.read(tmp_path / "p.xyz")
     with pytest.raises(tc.ParseError, match="not supported"):
-        tc.Program.parse("BEGIN PGM X MM", dialect="heidenhain")
+        tc.Program.parse("G1 X1", dialect="sinumerik")
 
 
 def test_run_accepts_paths(tmp_path):

@@ -32,6 +32,7 @@ struct Result {
     Path path;     // after the compensation stages
     std::vector<Diagnostic> diagnostics;
     std::size_t blocks = 0;
+    std::optional<Blank> blank;  // the workpiece blank the program declares (mm), if any
     bool ok() const;
 };
 

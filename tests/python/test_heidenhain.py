@@ -1,0 +1,178 @@
+"""Heidenhain conversational (Klartext) programs: the spec's worked numbers through real
+programs (§1.4 L-shape, §2.2 TOOL CALL deltas), contour functions, RL/RR/R0 and the TNC
+errors at their lines."""
+import math
+
+import numpy as np
+import pytest
+
+import toolcomp as tc
+
+
+def pgm(body, tools=None, strict=True):
+    """A program with BEGIN PGM on line 1: the body's k-th line is source line k + 1."""
+    lines = ["BEGIN PGM T MM"] + body.strip().splitlines() + ["END PGM T MM"]
+    text = "\n".join(f"{i} {l.strip()}" for i, l in enumerate(lines))
+    return tc.run(tc.Program.parse(text, dialect="heidenhain"), tools=tools, strict=strict)
+
+
+def ends(p, i=None):
+    return p.end[:, :2] if i is None else p.end[i, :2]
+
+
+L_SHAPE = """
+TOOL DEF 1 L+0 R+5
+TOOL CALL 1 Z S3500
+L X-10 Y-20 Z+10 R0 FMAX
+L Z-5 F200
+L X+0 Y+0 RL F300
+L X+50
+L Y+30
+L X+80
+L X+90 Y+40 R0
+"""
+
+
+def test_l_shape_inside_intersection_and_outside_transition_arc():
+    # spec 1.4: A(0,0) B(50,0) C(50,30) D(80,30), RL, r = 5: inside joint B (45,5), outside
+    # joint C: transition arc (45,30) -> (50,35) about (50,30); RL starts perpendicular at A.
+    p = pgm(L_SHAPE).path
+    on = np.flatnonzero(p.side == 1)
+    np.testing.assert_allclose(ends(p)[on], [[0, 5], [45, 5], [45, 30], [50, 35], [80, 35]], atol=1e-12)
+    arc = on[3]
+    assert p.kind[arc] == tc.ARC_CW and p.generated[arc]
+    np.testing.assert_allclose(p.center[arc, :2], [50, 30])
+    assert list(p.line[on]) == [6, 7, 8, 9, 9]
+    np.testing.assert_allclose(ends(p, -1), [90, 40])  # R0 leaves to the programmed point
+
+
+def test_cr_arc_and_rnd():
+    # CR from (40,40) to (70,40) R+20 DR-: centre (55, 26.771) (spec 1.3), then RND R5 between
+    # two lines meeting at (80,40)...(80,10) (a right turn): tangent points 5 before and after.
+    p = pgm("""
+TOOL DEF 1 L+0 R+0
+TOOL CALL 1 Z
+L X+40 Y+40 Z+0 R0 F100
+CR X+70 Y+40 R+20 DR-
+L X+80 Y+40
+RND R5
+L X+80 Y+10
+""").path
+    arc = np.flatnonzero(p.line == 5)[0]
+    np.testing.assert_allclose(p.center[arc, :2], [55, 40 - math.sqrt(400 - 225)])
+    rnd = np.flatnonzero(p.line == 7)[0]
+    assert p.kind[rnd] == tc.ARC_CW
+    np.testing.assert_allclose(p.start[rnd, :2], [75, 40])
+    np.testing.assert_allclose(ends(p, rnd), [80, 35])
+    np.testing.assert_allclose(p.center[rnd, :2], [75, 35])
+
+
+def test_tool_call_deltas_are_summed_as_the_manual_states():
+    # L_eff = L + DL(TOOL CALL) + DL(table), R_eff = R + DR(TOOL CALL) + DR(table).
+    table = tc.ToolTable.parse("tool,z,radius,z_wear,radius_wear\n5,100,6,0.1,-0.05\n", "csv")
+    p = pgm("""
+TOOL CALL 5 Z S2500 F350 DL+0.2 DR-1
+L X-20 Y+0 R0 FMAX
+L X+0 Y+0 RL
+L X+50 Y+0
+L X+60 Y-20 R0
+""", tools=table).path
+    np.testing.assert_allclose(p.tool_offset[0], [0, 0, 100 + 0.2 + 0.1])
+    r = 6 - 1 - 0.05
+    comp = np.flatnonzero(p.side == 1)
+    np.testing.assert_allclose(ends(p, comp[-1]), [50, r])
+
+
+def test_tool_axis_sets_the_working_plane():
+    p = pgm("""
+TOOL DEF 2 L+10 R+2
+TOOL CALL 2 Y
+L X+0 Y+0 Z+0 R0 FMAX
+CC X+0 Z+10
+C X+10 Z+10 DR+ F100
+""").path
+    assert p.plane[-1] == 1  # ZX plane for tool axis Y
+    np.testing.assert_allclose(p.tool_offset[-1], [0, 10, 0])
+
+
+def test_polar_moves_and_helix():
+    p = pgm("""
+TOOL DEF 1 L+0 R+0
+TOOL CALL 1 Z
+CC X+0 Y+0
+L X+10 Y+0 Z+0 R0 F100
+LP PR+10 PA+90
+CP IPA+720 IZ-5 DR+
+""").path
+    np.testing.assert_allclose(p.end[1], [0, 10, 0], atol=1e-12)
+    assert p.kind[2] == tc.ARC_CCW and p.turns[2] == 1
+    np.testing.assert_allclose(p.end[2], [0, 10, -5], atol=1e-12)
+
+
+@pytest.mark.parametrize("body, message, line", [
+    ("TOOL DEF 1 L+0 R+5\nTOOL CALL 1 Z\nL X+0 Y+0 R0 F100\nL X+10 RL\nL Y+10 RR", "RL and RR must be separated by an R0 block", 6),
+    ("TOOL DEF 1 L+0 R+5\nTOOL CALL 1 Z\nL X+0 Y+0 R0 F100\nCC X+5 Y+0\nC X+10 Y+0 DR+ RL", "Radius compensation cannot start in a circle block", 6),
+    ("TOOL DEF 1 L+0 R+0\nTOOL CALL 1 Z\nL X+0 Y+0 R0 F100\nC X+10 Y+0 DR+", "CIRCLE CENTER UNDEFINED", 5),
+    ("TOOL DEF 1 L+0 R+0\nTOOL CALL 1 Z\nL X+0 Y+0 R0 F100\nCR X+50 Y+0 R+20 DR+", "ARC END POS. INCORRECT", 5),
+    ("TOOL DEF 1 L+0 R+0\nTOOL CALL 1 Z\nL X+0 Y+0 R0 F100\nCC X+5 Y+0\nC X+10.1 Y+0 DR+", "ARC END POS. INCORRECT", 6),
+    ("TOOL DEF 1 L+0 R+0\nTOOL CALL 1 Z\nL X+0 Y+0 R0 F100\nL X+10\nRND R50\nL Y+10", "ROUNDING-OFF RADIUS TOO LARGE", 6),
+    ("TOOL DEF 1 L+0 R+0\nTOOL CALL 1 Z\nCHF 2\nL X+10 F100", "CHAMFER NOT PERMITTED", 4),
+    ("TOOL DEF 1 L+0 R+5\nTOOL CALL 1 Z\nL X+0 Y-10 R0 F100\nL X+0 Y+0 RL\nL X+20\nCR X+24 Y+0 R+2 DR+\nL X+40", "TOOL RADIUS TOO LARGE", 7),
+    ("TOOL DEF 1 L+0 R+5\nTOOL CALL 1 Z\nL X+0 Y-10 R0 F100\nL X+0 Y+0 RL\nL X+30\nL Y+4\nL X+0", "TOOL RADIUS TOO LARGE", 8),
+])
+def test_errors_at_their_lines(body, message, line):
+    with pytest.raises(tc.Error) as e:
+        pgm(body)
+    assert (e.value.message, e.value.line) == (message, line)
+
+
+STEP = """
+TOOL DEF 1 L+0 R+5
+TOOL CALL 1 Z
+L X-10 Y+5 R0 F100
+L X+0 Y+0 RL{m}
+L X+30
+L Y-2
+L X+60
+L X+70 Y+10 R0
+"""
+
+
+def test_m120_look_ahead_skips_what_the_tool_cannot_reach():
+    with pytest.raises(tc.CompensationError, match="TOOL RADIUS TOO LARGE"):
+        pgm(STEP.format(m=""))
+    res = pgm(STEP.format(m=" M120 LA3"))
+    assert any(d.code == "comp_skipped" for d in res.diagnostics)
+    # the 2 mm step down is left out: the tool meets y = -2 + 5 on the corner arc about (30,0)
+    assert any(np.allclose(e, [34, 3]) for e in ends(res.path))
+
+
+def test_m97_meets_at_the_intersection_and_m98_leaves_the_corner_open():
+    base = """
+TOOL DEF 1 L+0 R+5
+TOOL CALL 1 Z
+L X+0 Y-10 R0 F100
+L X+0 Y+0 RL
+L X+50{m}
+L Y-30
+L X+60 Y-40 R0
+"""
+    plain = pgm(base.format(m="")).path
+    assert plain.generated.any()  # transition arc at the outside corner (50,0)
+    m97 = pgm(base.format(m=" M97")).path
+    assert not m97.generated.any()
+    assert any(np.allclose(e, [55, 5]) for e in ends(m97))  # intersection of y = 5 and x = 55
+    m98 = pgm(base.format(m=" M98")).path
+    link = np.flatnonzero(m98.generated)
+    assert len(link) == 1 and m98.kind[link[0]] == tc.LINE
+    np.testing.assert_allclose(m98.start[link[0], :2], [50, 5])
+    np.testing.assert_allclose(ends(m98, link[0]), [55, 0])
+
+
+def test_blank_and_units():
+    text = "0 BEGIN PGM B INCH\n1 BLK FORM 0.1 Z X+0 Y+0 Z-1\n2 BLK FORM 0.2 X+4 Y+3 Z+0\n3 TOOL DEF 1 L+0 R+0\n4 TOOL CALL 1 Z\n5 L X+1 Y+1 Z+0 R0 F10\n6 END PGM B INCH\n"
+    prog = tc.Program.parse(text, dialect="heidenhain")
+    res = tc.run(prog)
+    np.testing.assert_allclose(res.path.end[0], [25.4, 25.4, 0])
+    assert res.path.feed[0] == pytest.approx(25.4)  # F in 1/10 inch/min
+    np.testing.assert_allclose(res.blank, [[0, 0, -25.4], [101.6, 76.2, 0]])
