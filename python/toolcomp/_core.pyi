@@ -179,6 +179,10 @@ class RadiusRules:
     exit: ExitStyle
     tip_convention: TipConvention
     extension_min_length: float
+    ct_radius_on_contour: bool
+    lct_tangency_tool_space: bool
+    exit_must_be_straight: bool
+    entry_length_check: bool
     outside_corner: OutsideCorner
     corner_limit: float
     disc: float

@@ -176,3 +176,85 @@ def test_blank_and_units():
     np.testing.assert_allclose(res.path.end[0], [25.4, 25.4, 0])
     assert res.path.feed[0] == pytest.approx(25.4)  # F in 1/10 inch/min
     np.testing.assert_allclose(res.blank, [[0, 0, -25.4], [101.6, 76.2, 0]])
+
+
+# spec 2.5.4: r = 5, RR, PS = (40,10) via L X+40 Y+10 R0 FMAX.
+APPR = """
+TOOL DEF 1 L+0 R+5
+TOOL CALL 1 Z
+L X+40 Y+10 Z+0 R0 FMAX
+{appr}
+{next}
+L X+40 Y+60
+DEP LT LEN5
+"""
+
+
+@pytest.mark.parametrize("appr, nxt, ph, pa", [
+    ("APPR LT X+20 Y+20 Z-10 LEN15 RR F100", "L X+35 Y+35", (12.929, 5.858), (23.536, 16.464)),
+    ("APPR LN X+10 Y+20 Z-10 LEN+15 RR F100", "L X+20 Y+35", (26.641, 8.906), (14.160, 17.226)),
+    ("APPR CT X+10 Y+20 Z-10 CCA180 R+10 RR F100", "L X+20 Y+35", (22.481, 11.679), (14.160, 17.226)),
+    ("APPR LCT X+10 Y+20 Z-10 R10 RR F100", "L X+20 Y+35", (18.447, 9.455), (14.160, 17.226)),
+])
+def test_appr_worked_examples(appr, nxt, ph, pa):
+    res = pgm(APPR.format(appr=appr, next=nxt))
+    p = res.path
+    appr_moves = np.flatnonzero(p.line == 5)
+    np.testing.assert_allclose(p.end[appr_moves[0], :2], ph, atol=1e-3)       # PS -> PH in the plane
+    np.testing.assert_allclose(p.end[appr_moves[1]], [*ph, -10], atol=1e-3)  # then to depth at PH
+    np.testing.assert_allclose(p.end[appr_moves[-1], :2], pa, atol=1e-3)     # PH -> PA (tool centre)
+    assert (p.side[appr_moves] == 0).all()
+    first = np.flatnonzero(p.line == 6)[0]  # the first contour element starts at PA_tool
+    np.testing.assert_allclose(p.start[first, :2], pa, atol=1e-3)
+    assert p.side[first] == -1
+
+
+@pytest.mark.parametrize("dep, pn", [
+    ("DEP LT LEN12.5", (15, 32.5)),
+    ("DEP LN LEN+20", (35, 20)),
+    ("DEP CT CCA180 R+8", (21, 20)),
+    ("DEP LCT X+40 Y+40 R8", (40, 40)),
+])
+def test_dep_worked_examples(dep, pn):
+    # last element L X+10 Y+20 RR coming from (10,0): t_E = +Y, PE_tool = (15, 20)
+    res = pgm(f"""
+TOOL DEF 1 L+0 R+5
+TOOL CALL 1 Z
+L X+10 Y-10 Z+0 R0 F100
+L X+10 Y+0 RR
+L X+10 Y+20
+{dep}
+""")
+    p = res.path
+    dep_moves = np.flatnonzero(p.line == 7)
+    np.testing.assert_allclose(p.start[dep_moves[0], :2], [15, 20], atol=1e-9)
+    np.testing.assert_allclose(p.end[dep_moves[-1], :2], pn, atol=1e-3)
+    assert (p.side[dep_moves] == 0).all()
+    if dep.startswith("DEP LCT"):
+        np.testing.assert_allclose(p.end[dep_moves[0], :2], [16.216, 22.412], atol=1e-3)
+    if dep.startswith("DEP CT"):
+        np.testing.assert_allclose(p.center[dep_moves[0], :2], [18, 20], atol=1e-9)
+
+
+def test_appr_lct_needs_a_feed_and_ct_radius_too_large():
+    with pytest.raises(tc.Error, match="feed"):
+        pgm("TOOL DEF 1 L+0 R+5\nTOOL CALL 1 Z\nL X+40 Y+10 Z+0 R0 FMAX\nAPPR LCT X+10 Y+20 R10 RR\nL X+20 Y+35")
+    with pytest.raises(tc.CompensationError, match="TOOL RADIUS TOO LARGE") as e:
+        pgm("TOOL DEF 1 L+0 R+5\nTOOL CALL 1 Z\nL X+40 Y+10 Z+0 R0 FMAX\nAPPR CT X+10 Y+20 CCA90 R+4 RR F100\nL X+20 Y+35")
+    assert e.value.line == 5
+
+
+def test_appr_with_r0_computes_the_path_for_radius_0_and_rr():
+    p = pgm("TOOL DEF 1 L+0 R+5\nTOOL CALL 1 Z\nL X+40 Y+10 Z+0 R0 FMAX\nAPPR LN X+10 Y+20 LEN+15 R0 F100\nL X+20 Y+35").path
+    # PH = PA + LEN * n_s with r = 0 and n_s the right normal of (0.5547, 0.8321)
+    np.testing.assert_allclose(p.end[np.flatnonzero(p.line == 5)[0], :2], [10 + 15 * 0.83205, 20 - 15 * 0.5547], atol=1e-3)
+    assert (p.side == 0).all()
+
+
+def test_ct_radius_reading_is_a_profile_option():
+    prof = tc.ControlProfile("heidenhain")
+    prof.radius.ct_radius_on_contour = False  # R is the tool-centre radius
+    text = "0 BEGIN PGM T MM\n1 TOOL DEF 1 L+0 R+5\n2 TOOL CALL 1 Z\n3 L X+40 Y+10 Z+0 R0 FMAX\n4 APPR CT X+10 Y+20 CCA180 R+10 RR F100\n5 L X+20 Y+35\n6 END PGM T MM\n"
+    p = tc.run(tc.Program.parse(text, dialect="heidenhain"), profile=prof).path
+    arc = np.flatnonzero((p.line == 5) & (p.kind >= tc.ARC_CW))[0]
+    assert math.dist(p.start[arc, :2], p.center[arc, :2]) == pytest.approx(10)

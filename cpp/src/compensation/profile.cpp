@@ -55,6 +55,7 @@ ControlProfile profile_for(Dialect d, Machine machine) {
             r.entry = EntryStyle::perpendicular_to_next;
             r.entry_arc = false;
             r.entry_length_check = false;
+            r.exit_must_be_straight = false;  // DEP CT / LCT leave on an arc; R0 in a circle block is refused by the front end
             r.messages.entry_arc = "Radius compensation cannot start in a circle block";
             r.messages.exit_arc = "Radius compensation cannot end in a circle block";
             r.messages.side_change = "RL and RR must be separated by an R0 block";

@@ -200,7 +200,7 @@ void RadiusCompensation::turn_off(int line, bool cancel) {
     flush();
     release(0);
     active_ = false;
-    arc_not_allowed_ = cancel;  // after G40 the next move must be straight
+    arc_not_allowed_ = cancel && profile_.radius.exit_must_be_straight;  // after G40 the next move must be straight
     exit_pending_ = true;
 }
 

@@ -49,7 +49,8 @@ std::vector<std::size_t> char_starts(std::string_view s) {
 
 std::size_t char_count(std::string_view s) { return char_starts(s).size() - 1; }
 
-bool is_blank(char c) { return c == ' ' || c == '\t'; }
+// A stray '\r' (a line ending "\r\r\n") counts as a blank too.
+bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 
 struct Word {
     std::string text;

@@ -94,6 +94,7 @@ struct RadiusRules {
     bool entry_arc = true;  // an arc may be the activation block (LinuxCNC: yes)
     bool entry_length_check = true;  // the entry move must be longer than the radius (LinuxCNC)
     ExitStyle exit = ExitStyle::perpendicular_to_last;
+    bool exit_must_be_straight = true;  // the move after the cancel may not be an arc
     // I/K (or I/J) in the cancel block give the direction in which the contour is taken to
     // go on, for the last move's end (9/Series exit modified with I/K).
     bool exit_direction_words = false;
@@ -120,6 +121,11 @@ struct RadiusRules {
     int lookahead = 1;
     GougeReaction gouge = GougeReaction::error;
     NonPlaneReaction non_plane_reaction = NonPlaneReaction::error;
+    // Heidenhain APPR/DEP readings the manuals leave open (spec §8): R of CT/LCT is the
+    // contour radius (tool arc R - r) or the tool-centre radius; LCT tangency in tool-centre
+    // space or on the contour circle.
+    bool ct_radius_on_contour = true;
+    bool lct_tangency_tool_space = true;
     double extension_min_length = 0;  // extension blocks: a middle block shorter than this (mm)
                                       // in both plane axes is dropped (9/Series AMP minimum)
     RadiusMessages messages;

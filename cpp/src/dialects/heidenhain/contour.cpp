@@ -32,6 +32,13 @@ void Interp::settle_pending() {
 
 // Emits the held element (after a RND or CHF between it and m has cut it back) and holds m.
 void Interp::put(Motion m) {
+    if (approach_) {
+        if (pending_) {
+            sink_.push(*pending_);
+            pending_.reset();
+        }
+        emit_approach(m);
+    }
     if (pending_ && (pending_round_ > 0 || pending_chamfer_ > 0)) {
         Motion& prev = *pending_;
         const bool round = pending_round_ > 0;

@@ -181,6 +181,7 @@ void Interp::line(Tokens t) {
     if (end == pos_) return;
     if (!rapid_ && feed_ <= 0) fail("no_feed", "No feed rate programmed");
     if (plane2(end) != plane2(pos_)) ++plane_moves_;
+    last_rapid_ = rapid_;
     put(motion_to(rapid_ ? MotionKind::rapid : MotionKind::line, end));
     pos_ = end;
 }
@@ -208,7 +209,11 @@ bool Interp::execute(Tokens t) {
         modal_words(t, 1);
         settle_pending();
         sink_.control({ControlKind::stop, line_});
-    } else if (k0 == "CTP" || k0 == "APPR" || k0 == "DEP" || k0 == "LN" || k0 == "CYCL" || k0 == "LBL" || k0 == "CALL" ||
+    } else if (k0 == "APPR") {
+        approach(t);
+    } else if (k0 == "DEP") {
+        departure(t);
+    } else if (k0 == "CTP" || k0 == "LN" || k0 == "CYCL" || k0 == "LBL" || k0 == "CALL" ||
                k0 == "FN" || (k0.size() > 1 && k0[0] == 'Q'))
         fail("unsupported_block", k0 + (k1.empty() ? "" : " " + k1) + " is not supported by toolcomp yet", t[0].column);
     else
@@ -224,6 +229,7 @@ void Interp::run() {
         if (!execute(t)) break;
     }
     settle_pending();
+    if (approach_) throw ProgramError("approach_without_contour", "APPR needs a contour element after it", {approach_->line, 0});
     if (pending_) {
         sink_.push(*pending_);
         pending_.reset();

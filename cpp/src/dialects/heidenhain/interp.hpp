@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "toolcomp/compensation/approach.hpp"
 #include "toolcomp/dialects/heidenhain/interpreter.hpp"
 
 namespace toolcomp::heidenhain {
@@ -42,6 +43,14 @@ private:
     void polar_arc(Tokens t);
     void rounding(Tokens t);
     void chamfer(Tokens t);
+    void approach(Tokens t);
+    void departure(Tokens t);
+    void emit_approach(const Motion& first);  // once the first contour element is known
+    void emit_pieces(const std::vector<PathPiece>& pieces, double h, double feed_first, double feed_rest,
+                     std::size_t depth_after);
+    ApproachOptions approach_options() const {
+        return {profile_.radius.ct_radius_on_contour, profile_.radius.lct_tangency_tool_space};
+    }
 
     // motion output, one element held back for RND/CHF
     Motion motion_to(MotionKind kind, const Vec3& end) const;
@@ -78,6 +87,15 @@ private:
     double pending_round_ = 0, pending_chamfer_ = 0;  // RND / CHF between pending_ and the next
     int pending_corner_line_ = 0;
     int plane_moves_ = 0;  // positioning blocks in the plane (CT needs two)
+    bool last_rapid_ = false;  // the last positioning block was FMAX
+    struct PendingApproach {
+        Approach a;
+        Vec3 ps = Vec3::Zero();  // where the tool is (tool centre)
+        double depth = 0;        // tool-axis coordinate of the APPR block
+        double feed_lead = 0, feed_arc = 0;
+        int line = 0;
+    };
+    std::optional<PendingApproach> approach_;
 };
 
 }  // namespace toolcomp::heidenhain
