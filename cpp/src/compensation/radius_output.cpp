@@ -41,11 +41,6 @@ void RadiusCompensation::release(std::size_t keep) {
     if (keep == 0) n = window_.size();
     for (std::size_t i = 0; i < n; ++i) {
         Motion m = window_[i].m;
-        // A generated link of zero length (an activation that already stands at the contour's
-        // equidistant, as after APPR) is not a move.
-        if (m.generated && m.kind == MotionKind::line && m.radius.side != 0 && (m.end - m.start).norm() < 1e-12 &&
-            have_out_ && (m.end - last_out_).norm() < 1e-12)
-            continue;
         const TipVector tip = tip_vector(m.radius.orientation, profile_.radius.tip_convention);
         const double r = m.radius.radius;
         if (m.plane == Plane::zx && r > 0 && (tip.x || tip.z)) {
@@ -54,6 +49,11 @@ void RadiusCompensation::release(std::size_t keep) {
             if (m.is_arc()) m.center += shift;
         }
         if (have_out_) m.start = last_out_;
+        // A generated link of zero length (an activation that already stands at the contour's
+        // equidistant, as after APPR) is not a move.
+        if (m.generated && m.kind == MotionKind::line && !m.is_arc() && have_out_ && (m.end - m.start).norm() < 1e-12 &&
+            m.radius.side != 0 && m.radius.orientation == 0)
+            continue;
         if (m.is_arc()) m.center[axes(m.plane).c] = m.start[axes(m.plane).c];
         last_out_ = m.end;
         have_out_ = true;

@@ -106,7 +106,6 @@ Role role_of(std::string_view title) {
     return Role::other;
 }
 
-bool is_numeric(Role r) { return r == Role::l || r == Role::r || r == Role::r2 || r == Role::dl || r == Role::dr || r == Role::dr2; }
 bool is_mapped(Role r) { return r != Role::other; }
 
 constexpr Role kMappedRoles[] = {Role::t, Role::name, Role::l, Role::r, Role::r2, Role::dl, Role::dr, Role::dr2, Role::doc};
@@ -567,17 +566,21 @@ ToolTable read_heidenhain_table(std::string_view text, LengthUnit units) {
 // ---- writing -------------------------------------------------------------------------------
 
 std::string write_heidenhain_table(const ToolTable& table) {
-    for (const Tool& t : table.tools()) check_representable(t);
     const auto* src = dynamic_cast<const HhSource*>(table.source());
-    if (!src || src->units != table.units()) return write_canonical(table);
+    if (!src || src->units != table.units()) {
+        for (const Tool& t : table.tools()) check_representable(t);
+        return write_canonical(table);
+    }
     const double scale = mm_per_unit(table.units());
 
-    // Which tools the file has, and whether the others fit its columns.
+    // Which tools the file has; the changed and new ones must fit TOOL.T and its columns
+    // (an unchanged row is written as it was, whatever it holds).
     std::map<int, const Row*> in_file;
     for (const Row& r : src->rows) in_file.emplace(r.tool, &r);
     for (const Tool& t : table.tools()) {
         auto it = in_file.find(t.number);
         if (it != in_file.end() && t == it->second->snapshot) continue;
+        check_representable(t);
         for (Role r : kMappedRoles)
             if (!src->has(r) && !is_default(t, r))
                 refuse(t, std::string("a ") + title_of(r) + " value: the file has no " + title_of(r) + " column");
