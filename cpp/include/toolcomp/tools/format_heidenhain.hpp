@@ -57,7 +57,8 @@
 //   every line padded to the full width, CRLF line endings, "[END]" last. The columns the
 //   model does not map are then lost (as are unknown columns of CSV/JSON when converting
 //   to TOOL.T, and TOOL.T's own unmapped columns when converting to other formats).
-// * What TOOL.T cannot hold is refused ("heidenhain_unrepresentable"): more than one
+// * What TOOL.T cannot hold is refused ("heidenhain_unrepresentable"; checked for changed
+//   and new tools, and for every tool of a canonical write): more than one
 //   cutting edge or an edge number other than 1, X/Y length or wear, A B C / U V W offsets,
 //   an orientation or front/back angles, a line break in NAME or DOC, or a non-zero value
 //   (non-empty text) for a mapped column the file's header does not have. The pocket number
