@@ -1,5 +1,10 @@
 #include "toolcomp/path.hpp"
 
+#include "toolcomp/compensation/three_d.hpp"
+
+#include <cmath>
+#include <limits>
+
 namespace toolcomp {
 
 namespace {
@@ -13,7 +18,7 @@ Vec3 get3(const std::vector<double>& v, std::size_t i) { return {v[3 * i], v[3 *
 
 void Path::reserve(std::size_t n) {
     kind.reserve(n);
-    for (auto* v : {&start, &end, &center, &abc, &tool_offset}) v->reserve(3 * n);
+    for (auto* v : {&start, &end, &center, &abc, &tool_offset, &normal, &tool_axis}) v->reserve(3 * n);
     line.reserve(n);
     tool.reserve(n);
     turns.reserve(n);
@@ -30,6 +35,8 @@ void Path::push(const Motion& m) {
     put3(center, m.center * m.unit);
     abc.insert(abc.end(), m.abc.begin(), m.abc.end());
     put3(tool_offset, m.tool_offset * m.unit);
+    put3(normal, m.surface.active() ? Vec3(m.surface.normal.normalized()) : m.surface.normal);
+    put3(tool_axis, m.tool_axis);
     line.push_back(m.line);
     tool.push_back(m.tool);
     turns.push_back(m.turns);
@@ -52,6 +59,8 @@ Motion Path::segment(std::size_t i) const {
     m.line = line[i];
     m.tool = tool[i];
     m.tool_offset = get3(tool_offset, i);
+    m.surface.normal = get3(normal, i);
+    m.tool_axis = get3(tool_axis, i);
     m.radius.side = side[i];
     m.generated = generated[i] != 0;
     return m;
@@ -91,6 +100,16 @@ double Path::length(bool include_rapids) const {
         total += m.is_arc() ? arc_length(m.arc()) : (m.end - m.start).norm();
     }
     return total;
+}
+
+void Path::contact_points(double r, double r2, std::vector<double>& out) const {
+    out.assign(3 * size(), std::numeric_limits<double>::quiet_NaN());
+    for (std::size_t i = 0; i < size(); ++i) {
+        const Vec3 n = get3(normal, i);
+        if (std::isnan(n.x())) continue;
+        const Vec3 c = contact_point(get3(end, i), n, get3(tool_axis, i), r, r2);
+        out[3 * i] = c.x(), out[3 * i + 1] = c.y(), out[3 * i + 2] = c.z();
+    }
 }
 
 }  // namespace toolcomp

@@ -53,6 +53,20 @@ void bind_path(py::module_& m) {
         .def_property_readonly("plane", column(&Path::plane, 1),
                                "working plane of each segment: 0 XY (G17), 1 ZX (G18), 2 YZ (G19)")
         .def_property_readonly("turns", column(&Path::turns, 1), "arcs: extra full turns (LinuxCNC P word - 1)")
+        .def_property_readonly("normal", column(&Path::normal, 3),
+                               "surface normal of 3D-compensated segments (Heidenhain LN), unit length; NaN elsewhere")
+        .def_property_readonly("tool_axis", column(&Path::tool_axis, 3), "unit tool axis (tip towards the spindle)")
+        .def(
+            "contact_points",
+            [](const Path& p, double r, double r2) {
+                auto* v = new std::vector<double>();
+                p.contact_points(r, r2, *v);
+                py::capsule c(v, [](void* x) { delete static_cast<std::vector<double>*>(x); });
+                return py::array_t<double>({static_cast<py::ssize_t>(p.size()), py::ssize_t(3)}, v->data(), c);
+            },
+            py::arg("r"), py::arg("r2"),
+            "Where a tool of radius r and corner radius r2 at the segment ends touches the surface (segments "
+            "with a normal; NaN elsewhere), (N, 3) mm.")
         .def(
             "sample",
             [](const Path& p, double tolerance) {

@@ -2,6 +2,9 @@
 
 #include <pybind11/stl.h>
 
+#include <pybind11/numpy.h>
+
+#include "toolcomp/compensation/three_d.hpp"
 #include "toolcomp/run.hpp"
 #include "toolcomp/tools/tool_table.hpp"
 
@@ -103,6 +106,40 @@ void bind_run(py::module_& m) {
             return "Result(ok=" + std::string(r.ok() ? "True" : "False") + ", segments=" +
                    std::to_string(r.path.size()) + ", diagnostics=" + std::to_string(r.diagnostics.size()) + ")";
         });
+
+    m.def(
+        "compensate_3d",
+        [](py::array_t<double, py::array::c_style | py::array::forcecast> points,
+           py::array_t<double, py::array::c_style | py::array::forcecast> normals, std::optional<py::array_t<double, py::array::c_style | py::array::forcecast>> tool_axes,
+           double R, double R2, double DR, double DR2, const py::object& out) {
+            auto shape_ok = [](const py::array& a) { return a.ndim() == 2 && a.shape(1) == 3; };
+            if (!shape_ok(points) || !shape_ok(normals) || normals.shape(0) != points.shape(0))
+                throw py::value_error("points and normals must be (N, 3) arrays of the same length");
+            if (tool_axes && (!shape_ok(*tool_axes) || tool_axes->shape(0) != points.shape(0)))
+                throw py::value_error("tool_axes must be an (N, 3) array like points");
+            if (!(R >= 0) || !(R2 >= 0) || R2 > R) throw py::value_error("need 0 <= R2 <= R");
+            const auto n = static_cast<std::size_t>(points.shape(0));
+            // The result goes into `out` itself (no hidden copy), or a new array.
+            py::array result = out.is_none() ? py::array(py::array_t<double>({points.shape(0), py::ssize_t(3)}))
+                                             : out.cast<py::array>();
+            if (!result.dtype().is(py::dtype::of<double>()) || !(result.flags() & py::array::c_style) ||
+                !result.writeable() || !shape_ok(result) || static_cast<std::size_t>(result.shape(0)) != n)
+                throw py::value_error("out must be a writeable C-contiguous float64 array of shape (N, 3)");
+            const double* p = points.data();
+            const double* q = normals.data();
+            const double* t = tool_axes ? tool_axes->data() : nullptr;
+            double* o = static_cast<double*>(result.mutable_data());
+            {
+                py::gil_scoped_release nogil;
+                compensate_3d(p, q, t, n, DR, DR2, o);
+            }
+            return result;
+        },
+        py::arg("points"), py::arg("normals"), py::arg("tool_axes") = py::none(), py::kw_only(), py::arg("R"),
+        py::arg("R2"), py::arg("DR") = 0.0, py::arg("DR2") = 0.0, py::arg("out") = py::none(),
+        "3D tool compensation of CAM tool datum points along surface normals: PT + DR2*N - (DR - DR2)*w "
+        "(the same code as Heidenhain LN blocks). Arrays are (N, 3) float64; C-contiguous input is not "
+        "copied, and `out` (which may be `points`) receives the result.");
 
     m.def(
         "run",

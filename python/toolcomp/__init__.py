@@ -33,6 +33,7 @@ from ._core import (
     Tool,
     ToolTable,
     __version__,
+    compensate_3d,
 )
 from ._errors import CompensationError, Error, ParseError, ProgramError, ToolTableError
 
@@ -41,7 +42,7 @@ __all__ = [
     "CompensationError", "ControlProfile", "CuttingEdge", "Diagnostic", "EntryStyle", "Error", "ExitStyle",
     "GougeReaction", "LengthAxes", "Machine", "NonPlaneReaction", "OutsideCorner", "ParseError", "Path",
     "Program", "ProgramError", "RadiusRules", "Result", "TipConvention", "Tool", "ToolTable",
-    "ToolTableError", "run", "__version__",
+    "ToolTableError", "compensate_3d", "run", "__version__",
 ]
 
 

@@ -13,7 +13,7 @@ namespace toolcomp {
 class Path : public MotionSink {
 public:
     std::vector<std::uint8_t> kind;
-    std::vector<double> start, end, center, abc, tool_offset;  // 3 per segment
+    std::vector<double> start, end, center, abc, tool_offset, normal, tool_axis;  // 3 per segment
     std::vector<std::int32_t> line, tool, turns;
     std::vector<double> feed;
     std::vector<std::int8_t> side;
@@ -30,6 +30,9 @@ public:
     // segment 0; every point carries the index of the segment it ends.
     void sample(double tolerance, std::vector<double>& points, std::vector<std::int64_t>& seg) const;
     double length(bool include_rapids = true) const;
+    // Where a tool of radius r and corner radius r2 touches the surface at the end of each
+    // segment with a surface normal (3D compensation); NaN rows elsewhere. mm.
+    void contact_points(double r, double r2, std::vector<double>& out) const;
 };
 
 }  // namespace toolcomp

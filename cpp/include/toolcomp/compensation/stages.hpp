@@ -4,11 +4,12 @@
 // Tool length compensation is resolved by the interpreter into each move's tool_offset
 // (LinuxCNC reports program coordinates with the offset beside them, so the length stage
 // only carries it). Cutter radius compensation (and lathe nose radius, its G18 case) is
-// the radius stage.
+// the radius stage; 3D compensation along surface normals follows it.
 #include <vector>
 
 #include "toolcomp/compensation/profile.hpp"
 #include "toolcomp/compensation/radius.hpp"
+#include "toolcomp/compensation/surface.hpp"
 #include "toolcomp/motion/motion.hpp"
 #include "toolcomp/program/diagnostic.hpp"
 
@@ -17,12 +18,13 @@ namespace toolcomp {
 class CompensationChain : public MotionSink {
 public:
     CompensationChain(const ControlProfile& profile, MotionSink& out, std::vector<Diagnostic>& diagnostics)
-        : radius_(profile, out, diagnostics) {}
+        : surface_(out), radius_(profile, surface_, diagnostics) {}
     void push(const Motion& m) override { radius_.push(m); }
     void control(const ControlEvent& e) override { radius_.control(e); }
     void finish() override { radius_.finish(); }
 
 private:
+    SurfaceCompensation surface_;  // after the radius stage
     RadiusCompensation radius_;
 };
 

@@ -32,6 +32,14 @@ struct RadiusRequest {
     std::int8_t lookahead = 0;
 };
 
+// 3D compensation requested for a move (Heidenhain LN): the surface normal at its end and
+// the summed deltas of the tool (ΔR = ΣDR, ΔR2 = ΣDR2), program units.
+struct SurfaceRequest {
+    Vec3 normal = Vec3::Constant(std::numeric_limits<double>::quiet_NaN());  // NaN: none
+    double d_r = 0, d_r2 = 0;
+    bool active() const { return !std::isnan(normal.x()); }
+};
+
 struct Motion {
     MotionKind kind = MotionKind::line;
     Plane plane = Plane::xy;
@@ -44,6 +52,8 @@ struct Motion {
     std::int32_t tool = 0;
     Vec3 tool_offset = Vec3::Zero();
     RadiusRequest radius;
+    SurfaceRequest surface;
+    Vec3 tool_axis = Vec3(0, 0, 1);  // unit vector from the tip towards the spindle
     bool generated = false;  // inserted by a compensation stage
     double unit = 1.0;       // mm per program unit of all lengths above (feed is mm/min)
 

@@ -215,6 +215,48 @@ void Interp::polar_arc(Tokens t) {
     pos_ = end;
 }
 
+// LN X Y Z NX NY NZ [TX TY TZ]: a line to the datum point PT computed by CAM, with the surface
+// normal N; the tool is displaced along N by the deltas of the tool called (3D compensation).
+void Interp::surface_line(Tokens t) {
+    static const char* order[9] = {"X", "Y", "Z", "NX", "NY", "NZ", "TX", "TY", "TZ"};
+    std::size_t i = 1;
+    double v[9] = {0};
+    for (int k = 0; k < 9; ++k) {
+        if (i < t.size() && t[i].key == order[k] && t[i].has_value) {
+            v[k] = t[i++].value;
+        } else if (k < 6 || (k > 6 && i > 7 && t[i - 1].key[0] == 'T')) {
+            fail("ln_block_format",
+                 "LN block format: X Y Z NX NY NZ [TX TY TZ] must all be given, in this order",
+                 i < t.size() ? t[i].column : t[0].column);
+        } else {
+            break;
+        }
+    }
+    modal_words(t, i);
+    const Vec3 pt(v[0], v[1], v[2]);
+    Vec3 n(v[3], v[4], v[5]);
+    const bool has_t = i >= 10;
+    if (n.norm() < 1e-12) fail("ln_normal_zero", "LN: the normal vector is zero", t[0].column);
+    if (!warned_normal_ && std::fabs(n.norm() - 1) > 1e-3) {
+        diags_.push_back({"ln_normal_not_unit", Severity::warning,
+                          "LN normal vectors are not of unit length (|N| = " + std::to_string(n.norm()) +
+                              "); they are normalised",
+                          {line_, t[0].column}});
+        warned_normal_ = true;
+    }
+    if ((sum_dr_ > 0 || sum_dr2_ > 0) && !m107_)
+        fail("positive_delta_3d", "Positive tool deltas are not allowed with 3D compensation (M107 allows them)",
+             t[0].column);
+    if (!rapid_ && feed_ <= 0) fail("no_feed", "No feed rate programmed");
+    Motion m = motion_to(rapid_ ? MotionKind::rapid : MotionKind::line, pt);
+    m.surface.normal = n.normalized();
+    m.surface.d_r = sum_dr_;
+    m.surface.d_r2 = sum_dr2_;
+    if (m128_) m.tool_axis = has_t ? Vec3(Vec3(v[6], v[7], v[8]).normalized()) : m.surface.normal;  // T only with M128
+    put(m);
+    pos_ = pt;
+}
+
 void Interp::rounding(Tokens t) {
     modal_words(t, 1);
     const auto r = number(t, "R");

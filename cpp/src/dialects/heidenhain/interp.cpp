@@ -84,6 +84,10 @@ void Interp::modal_words(Tokens t, std::size_t from) {
                     if (lookahead_ > 99) fail("bad_lookahead", "M120 LA allows at most 99 blocks", la->column);
                     break;
                 }
+                case 107: m107_ = true; break;
+                case 108: m107_ = false; break;
+                case 128: m128_ = true; break;
+                case 129: m128_ = false; break;
                 case 0: case 1: case 2: case 3: case 4: case 5: case 6: case 8: case 9: case 13: case 14:
                 case 30: case 89: case 90: case 99:
                     break;  // machine functions without a geometric effect on the path
@@ -107,7 +111,10 @@ Motion Interp::motion_to(MotionKind kind, const Vec3& end) const {
     m.unit = unit_;
     m.feed = kind == MotionKind::rapid ? std::nan("") : feed_;
     m.radius.side = static_cast<std::int8_t>(side_);
-    m.radius.radius = radius_;
+    // Peripheral milling with M128 and RL/RR: the tool is displaced by the deltas ΣDR only.
+    m.radius.radius = m128_ ? sum_dr_ : radius_;
+    m.tool_axis = Vec3::Zero();
+    m.tool_axis[axes(plane_).c] = 1;
     m.radius.corner = corner_;
     m.radius.open_corner = open_corner_;
     m.radius.lookahead = static_cast<std::int8_t>(lookahead_);
@@ -150,13 +157,16 @@ void Interp::tool_call(Tokens t) {
             feed_ = t[i].value * (prog_.inch ? 2.54 : 1.0);
     }
     const double dl = number(t, "DL").value_or(0), dr = number(t, "DR").value_or(0);
-    double length = 0, radius = 0;
+    const double dr2 = number(t, "DR2").value_or(0);
+    double length = 0, radius = 0, dr_tab = 0, dr2_tab = 0;
     if (number_ > 0) {
         if (!table_tool && tools_) table_tool = tools_->find(number_);
         if (table_tool) {
             const CuttingEdge& e = table_tool->edge();
             length = (e.length.z() + e.length_wear.z()) / unit_;
             radius = (e.radius + e.radius_wear) / unit_;
+            dr_tab = e.radius_wear / unit_;
+            dr2_tab = e.corner_radius_wear / unit_;
         } else if (auto d = defs_.find(number_); d != defs_.end()) {
             length = d->second.length;
             radius = d->second.radius;
@@ -166,6 +176,8 @@ void Interp::tool_call(Tokens t) {
     }
     if (number_ >= 0) tool_ = number_;
     radius_ = number_ == 0 ? 0 : radius + dr;
+    sum_dr_ = number_ == 0 ? 0 : dr + dr_tab;
+    sum_dr2_ = number_ == 0 ? 0 : dr2 + dr2_tab;
     tlo_.setZero();
     tlo_[axes(plane_).c] = number_ == 0 ? 0 : length + dl;
 }
@@ -213,7 +225,9 @@ bool Interp::execute(Tokens t) {
         approach(t);
     } else if (k0 == "DEP") {
         departure(t);
-    } else if (k0 == "CTP" || k0 == "LN" || k0 == "CYCL" || k0 == "LBL" || k0 == "CALL" ||
+    } else if (k0 == "LN") {
+        surface_line(t);
+    } else if (k0 == "CTP" || k0 == "CYCL" || k0 == "LBL" || k0 == "CALL" ||
                k0 == "FN" || (k0.size() > 1 && k0[0] == 'Q'))
         fail("unsupported_block", k0 + (k1.empty() ? "" : " " + k1) + " is not supported by toolcomp yet", t[0].column);
     else

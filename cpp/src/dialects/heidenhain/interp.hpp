@@ -43,6 +43,7 @@ private:
     void polar_arc(Tokens t);
     void rounding(Tokens t);
     void chamfer(Tokens t);
+    void surface_line(Tokens t);  // LN
     void approach(Tokens t);
     void departure(Tokens t);
     void emit_approach(const Motion& first);  // once the first contour element is known
@@ -83,6 +84,10 @@ private:
     std::int8_t corner_ = -1;  // M97 in this block
     bool open_corner_ = false; // M98 in this block
     int lookahead_ = 0;        // M120 LA n, modal until R0
+    bool m128_ = false;        // M128: tool orientation follows the program (TCPM)
+    bool m107_ = false;        // M107: positive deltas allowed with 3D compensation
+    double sum_dr_ = 0, sum_dr2_ = 0;  // ΣDR, ΣDR2 of the called tool (TOOL CALL + table)
+    bool warned_normal_ = false;
     std::optional<Motion> pending_;
     double pending_round_ = 0, pending_chamfer_ = 0;  // RND / CHF between pending_ and the next
     int pending_corner_line_ = 0;

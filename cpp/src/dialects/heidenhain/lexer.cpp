@@ -67,6 +67,13 @@ private:
             t.key.push_back(static_cast<char>(std::toupper(static_cast<unsigned char>(s_[i_]))));
             ++i_;
         }
+        // Digits followed by a sign belong to the address (R2+3, DR2-0.1, DR2+).
+        std::size_t j = i_;
+        while (j < s_.size() && std::isdigit(static_cast<unsigned char>(s_[j]))) ++j;
+        if (j > i_ && j < s_.size() && (s_[j] == '+' || s_[j] == '-') && !t.key.empty()) {
+            t.key.append(s_.substr(i_, j - i_));
+            i_ = j;
+        }
         std::string num;
         int sign = 1;
         bool have_sign = false;

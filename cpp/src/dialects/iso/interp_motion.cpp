@@ -71,6 +71,8 @@ Motion Interp::motion_to(MotionKind kind, const Vec6& end) const {
     m.tool_offset = tlo_.head<3>();
     m.radius = radius_;
     m.unit = scale();
+    m.tool_axis = Vec3::Zero();
+    m.tool_axis[axes(st_.plane).c] = 1;
     return m;
 }
 
