@@ -1,8 +1,9 @@
 """Benchmarks: print figures, assert nothing. Run with `make bench`.
 
 Measures parse and run of generated CAM-like programs (lines and arcs, G17, tool length
-offset) through the Python API, and LinuxCNC's rs274 on the same program when it is
-installed. Sizes: TOOLCOMP_BENCH_BLOCKS (default 1,000,000).
+offset) through the Python API, LinuxCNC's rs274 on the same program when it is installed,
+and tc.compensate_3d on CAM points. Sizes: TOOLCOMP_BENCH_BLOCKS (default 1,000,000),
+TOOLCOMP_BENCH_POINTS (default 10,000,000).
 """
 import os
 import resource
@@ -69,6 +70,19 @@ def main():
         print(f"speed-up       : {t_rs / (t_parse + t_run):7.1f} x")
     else:
         print("LinuxCNC rs274 : not installed (make oracle installs it)")
+
+    # 3D compensation of CAM points (one core).
+    import numpy as np
+
+    m = int(os.environ.get("TOOLCOMP_BENCH_POINTS", "10000000"))
+    rng = np.random.default_rng(1)
+    pts = rng.normal(size=(m, 3))
+    nrm = rng.normal(size=(m, 3))
+    out = np.empty_like(pts)
+    t_ball, _ = best_of(lambda: tc.compensate_3d(pts, nrm, R=3, R2=3, DR=-0.1, DR2=-0.1, out=out))
+    t_torus, _ = best_of(lambda: tc.compensate_3d(pts, nrm, R=3, R2=1, DR=-0.1, DR2=-0.05, out=out))
+    print(f"compensate_3d  : {m:,} points: ball {t_ball:.3f} s ({m / t_ball / 1e6:.0f} M/s), "
+          f"toroid {t_torus:.3f} s ({m / t_torus / 1e6:.0f} M/s)")
     return 0
 
 

@@ -76,3 +76,14 @@ def test_compensate_3d_zero_copy_and_same_code_as_ln():
         tc.compensate_3d(pts, nrm, R=3, R2=1, out=np.zeros((1000, 3), dtype=np.float32))
     with pytest.raises(ValueError):
         tc.compensate_3d(pts, nrm[:5], R=3, R2=1)
+
+
+def test_peripheral_milling_with_m128_uses_the_deltas_only():
+    # CAM wrote the tool-centre path for the nominal tool; with RL and M128 the TNC displaces
+    # it by sum DR only: an undersize of 0.2 moves the tool 0.2 towards the contour (right of +X).
+    text = "\n".join(f"{i} {b}" for i, b in enumerate([
+        "BEGIN PGM P MM", "TOOL DEF 1 L+0 R+5", "TOOL CALL 1 Z DR-0.2", "L X-10 Y+0 Z+0 R0 F500 M128",
+        "L X+0 Y+0 RL", "L X+50 Y+0", "L X+60 Y+10 R0", "END PGM P MM"]))
+    p = tc.run(tc.Program.parse(text, dialect="heidenhain")).path
+    along = np.flatnonzero(p.line == 6)[-1]
+    np.testing.assert_allclose(p.end[along, :2], [50, -0.2])

@@ -111,8 +111,13 @@ Motion Interp::motion_to(MotionKind kind, const Vec3& end) const {
     m.unit = unit_;
     m.feed = kind == MotionKind::rapid ? std::nan("") : feed_;
     m.radius.side = static_cast<std::int8_t>(side_);
-    // Peripheral milling with M128 and RL/RR: the tool is displaced by the deltas ΣDR only.
+    // Peripheral milling with M128 and RL/RR: the tool is displaced by the deltas ΣDR only
+    // (an undersize tool, ΣDR < 0, moves towards the contour: the other side).
     m.radius.radius = m128_ ? sum_dr_ : radius_;
+    if (m.radius.radius < 0) {
+        m.radius.radius = -m.radius.radius;
+        m.radius.side = static_cast<std::int8_t>(-m.radius.side);
+    }
     m.tool_axis = Vec3::Zero();
     m.tool_axis[axes(plane_).c] = 1;
     m.radius.corner = corner_;
