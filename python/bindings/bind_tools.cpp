@@ -83,6 +83,16 @@ void bind_tools(py::module_& m) {
         .def_readwrite("front_angle", &CuttingEdge::front_angle)
         .def_readwrite("back_angle", &CuttingEdge::back_angle)
         .def_property_readonly("effective_length", &CuttingEdge::effective_length, "length + length_wear")
+        .def_property_readonly(
+            "shape",
+            [](const CuttingEdge& e) {
+                switch (tool_shape(e)) {
+                    case ToolShape::ball: return "ball";
+                    case ToolShape::toroid: return "toroid";
+                    default: return "end_mill";
+                }
+            },
+            "end_mill (R2 = 0), ball (R2 = R) or toroid, from the effective radii")
         .def_property_readonly("effective_radius", &CuttingEdge::effective_radius, "radius + radius_wear")
         .def_property_readonly("effective_corner_radius", &CuttingEdge::effective_corner_radius)
         .def(py::self == py::self)

@@ -53,6 +53,8 @@ class CuttingEdge:
     def effective_radius(self) -> float: ...
     @property
     def effective_corner_radius(self) -> float: ...
+    @property
+    def shape(self) -> str: ...  # "end_mill" | "toroid" | "ball"
 
 class Tool:
     def __init__(self, number: int, *, pocket: int = 0, name: str = "", comment: str = "",

@@ -87,3 +87,8 @@ def test_peripheral_milling_with_m128_uses_the_deltas_only():
     p = tc.run(tc.Program.parse(text, dialect="heidenhain")).path
     along = np.flatnonzero(p.line == 6)[-1]
     np.testing.assert_allclose(p.end[along, :2], [50, -0.2])
+
+
+def test_tool_shape_from_the_radii():
+    t = tc.ToolTable.parse("tool,radius,corner_radius,corner_radius_wear\n1,5,5,0\n2,5,1,0\n3,5,0,0\n4,5,4.9,0.1\n", "csv")
+    assert [x.edge().shape for x in t] == ["ball", "toroid", "end_mill", "ball"]

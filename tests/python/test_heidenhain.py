@@ -258,3 +258,12 @@ def test_ct_radius_reading_is_a_profile_option():
     p = tc.run(tc.Program.parse(text, dialect="heidenhain"), profile=prof).path
     arc = np.flatnonzero((p.line == 5) & (p.kind >= tc.ARC_CW))[0]
     assert math.dist(p.start[arc, :2], p.center[arc, :2]) == pytest.approx(10)
+
+
+def test_paraxial_r_plus_and_minus():
+    body = "TOOL DEF 1 L+0 R+5\nTOOL CALL 1 Z\nL X+0 Y+0 Z+0 R0 F100\nL X+50 R+\nL Y+30 R-"
+    p = pgm(body).path
+    np.testing.assert_allclose(p.end[-2, :2], [55, 0])   # lengthened by the radius
+    np.testing.assert_allclose(p.end[-1, :2], [55, 25])  # shortened by the radius
+    with pytest.raises(tc.ProgramError, match="single axis"):
+        pgm(body + "\nL X+10 Y+10 R+")

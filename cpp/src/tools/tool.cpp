@@ -1,5 +1,7 @@
 #include "toolcomp/tools/tool.hpp"
 
+#include <cmath>
+
 #include "toolcomp/program/diagnostic.hpp"
 
 #include <algorithm>
@@ -62,6 +64,13 @@ void validate_tool(const Tool& t) {
                 throw ToolTableError("tool_duplicate_edge",
                                      who + ": cutting edge D" + std::to_string(e.number) + " appears twice");
     }
+}
+
+ToolShape tool_shape(const CuttingEdge& e) {
+    const double r = e.effective_radius(), r2 = e.effective_corner_radius();
+    if (r2 <= 1e-12) return ToolShape::end_mill;
+    if (std::fabs(r2 - r) <= 1e-12) return ToolShape::ball;
+    return ToolShape::toroid;
 }
 
 }  // namespace toolcomp

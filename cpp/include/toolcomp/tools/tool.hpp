@@ -34,6 +34,11 @@ struct CuttingEdge {
     friend bool operator!=(const CuttingEdge& a, const CuttingEdge& b) { return !(a == b); }
 };
 
+// The cutter shape from the radii (3D compensation): R2 = 0 end mill, R2 = R ball, between
+// the two a toroid (bull nose).
+enum class ToolShape { end_mill, toroid, ball };
+ToolShape tool_shape(const CuttingEdge& e);
+
 struct Tool {
     int number = 0;
     int pocket = 0;

@@ -66,7 +66,9 @@ void Interp::modal_words(Tokens t, std::size_t from) {
             }
             side_ = side;
         } else if (k.key == "R" && k.sign_only) {
-            fail("unsupported_paraxial", "Paraxial compensation R+/R- is not supported by toolcomp", k.column);
+            if (t[0].key != "L") fail("paraxial_not_line", "R+/R- only in L blocks", k.column);
+            if (side_ != 0) fail("paraxial_with_comp", "R+/R- cannot be combined with RL/RR", k.column);
+            paraxial_ = static_cast<int>(k.value);  // applied by line()
         } else if (k.key == "F" && k.has_value) {
             feed_ = k.value * (prog_.inch ? 2.54 : 1.0);  // mm/min, or 1/10 inch/min in INCH programs
         } else if (k.key == "FMAX") {
@@ -188,8 +190,17 @@ void Interp::tool_call(Tokens t) {
 }
 
 void Interp::line(Tokens t) {
+    paraxial_ = 0;
     modal_words(t, 1);
-    const Vec3 end = end_point(t, 1);
+    Vec3 end = end_point(t, 1);
+    if (paraxial_ != 0) {
+        // R+ / R-: a move along one axis is lengthened / shortened by the tool radius.
+        const Vec3 d = end - pos_;
+        int moving = 0;
+        for (int i = 0; i < 3; ++i) moving += std::fabs(d[i]) > 0;
+        if (moving != 1) fail("paraxial_not_single_axis", "R+/R- needs a move along a single axis", t[0].column);
+        end += paraxial_ * radius_ * d.normalized();
+    }
     for (std::size_t i = 1; i < t.size(); ++i) {
         if (t[i].key == "A" && t[i].has_value) abc_[0] = t[i].value;
         if (t[i].key == "B" && t[i].has_value) abc_[1] = t[i].value;

@@ -88,6 +88,7 @@ private:
     bool m107_ = false;        // M107: positive deltas allowed with 3D compensation
     double sum_dr_ = 0, sum_dr2_ = 0;  // ΣDR, ΣDR2 of the called tool (TOOL CALL + table)
     bool warned_normal_ = false;
+    int paraxial_ = 0;  // R+ (+1) / R- (-1) in the current L block
     std::optional<Motion> pending_;
     double pending_round_ = 0, pending_chamfer_ = 0;  // RND / CHF between pending_ and the next
     int pending_corner_line_ = 0;
