@@ -82,6 +82,7 @@ void bind_run(py::module_& m) {
         .def_readwrite("wear_sign", &ControlProfile::wear_sign)
         .def_readwrite("name", &ControlProfile::name)
         .def_readwrite("startup_inch", &ControlProfile::startup_inch)
+        .def_readwrite("block_limit", &ControlProfile::block_limit, "blocks a program may execute (loops count)")
         .def_readwrite("length_axes", &ControlProfile::length_axes)
         .def_readwrite("length_subtract_word", &ControlProfile::length_subtract_word)
         .def_readwrite("radius", &ControlProfile::radius)

@@ -212,6 +212,7 @@ class ControlProfile:
     wear_sign: float
     name: str
     startup_inch: bool
+    block_limit: int
     length_axes: LengthAxes
     length_subtract_word: bool
     radius: RadiusRules

@@ -267,3 +267,48 @@ def test_paraxial_r_plus_and_minus():
     np.testing.assert_allclose(p.end[-1, :2], [55, 25])  # shortened by the radius
     with pytest.raises(tc.ProgramError, match="single axis"):
         pgm(body + "\nL X+10 Y+10 R+")
+
+
+def test_q_parameters_labels_subprograms_and_repeats():
+    res = pgm("""
+FN 0: Q1 = +10
+FN 1: Q2 = +Q1 + +5
+Q3 = Q2 * 2 - SQRT(16) + SIN(90)
+TOOL DEF 1 L+0 R+0
+TOOL CALL 1 Z
+L X+0 Y+0 Z+0 R0 F100
+L X+Q1 Y+Q3
+FN 0: Q10 = +0
+LBL 1
+FN 1: Q10 = +Q10 + +1
+L IY+1
+FN 12: IF +Q10 LT +3 GOTO LBL 1
+CALL LBL 5
+LBL 2
+L IX+2
+CALL LBL 2 REP 2/2
+M30
+LBL 5
+L X-Q2
+LBL 0
+""")
+    p = res.path
+    np.testing.assert_allclose(p.end[0, :2], [10, 27])  # Q3 = 15 * 2 - 4 + 1
+    np.testing.assert_allclose(p.end[1:4, 1], [28, 29, 30])  # the loop ran three times
+    np.testing.assert_allclose(p.end[4, :2], [-15, 30])  # the subprogram
+    np.testing.assert_allclose(p.end[5:, 0], [-13, -11, -9])  # the section ran once and twice more
+    assert len(p) == 8
+
+
+def test_q_errors_and_the_block_limit():
+    with pytest.raises(tc.ProgramError, match="FN 14: ERROR 7") as e:
+        pgm("FN 14: ERROR = 7")
+    assert e.value.line == 2
+    with pytest.raises(tc.ProgramError, match="division by zero") as e:
+        pgm("FN 0: Q1 = +0\nFN 4: Q2 = +5 DIV +Q1")
+    assert e.value.line == 3
+    prof = tc.ControlProfile("heidenhain")
+    prof.block_limit = 1000
+    text = "0 BEGIN PGM L MM\n1 LBL 1\n2 FN 9: IF +0 EQU +0 GOTO LBL 1\n3 END PGM L MM\n"
+    with pytest.raises(tc.ProgramError, match="block_limit|endless loop"):
+        tc.run(tc.Program.parse(text, dialect="heidenhain"), profile=prof)

@@ -3,6 +3,7 @@
 //
 // Geometry and stages never ask "which control is this?"; they read a profile value.
 // Profiles for the built-in dialects come from profile_for(); users may adjust fields.
+#include <cstddef>
 #include <string>
 
 #include "toolcomp/compensation/nose.hpp"
@@ -139,6 +140,9 @@ struct ControlProfile {
 
     // ---- interpreter ------------------------------------------------------------------
     bool startup_inch = false;  // G20 active at program start
+    // Blocks a program may execute (loops and repeats count every pass): beyond it the run
+    // stops with an error instead of hanging.
+    std::size_t block_limit = 50'000'000;
     // Arc tolerances, in program units ([0] for mm programs, [1] for inch programs), as
     // LinuxCNC 2.9 applies them: an arc given by its centre is refused when its start and
     // end radius differ by more than `arc_spiral_hard_factor`·`arc_spiral_abs`, or by more

@@ -30,7 +30,8 @@ struct Token {
     double value = 0;        // the number, or ±1 for a bare sign ("DR+")
     bool has_value = false;  // a number was written
     bool sign_only = false;  // "DR+" / "DR-"
-    std::string text;        // a quoted name, without the quotes
+    std::string text;        // a quoted name, without the quotes; the text of a Q statement
+    int param = 0;           // a Q parameter in place of the number (X+Q5): its number
     int column = 0;
 };
 

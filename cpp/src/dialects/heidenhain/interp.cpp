@@ -1,8 +1,10 @@
 // Klartext block execution: program frame, tools, straight lines, feeds, M functions and
 // radius compensation requests. Arcs, polar moves, RND and CHF are in contour.cpp.
 #include <cmath>
+#include <stdexcept>
 
 #include "interp.hpp"
+#include "qparams.hpp"
 #include "toolcomp/tools/tool_table.hpp"
 
 namespace toolcomp::heidenhain {
@@ -90,8 +92,9 @@ void Interp::modal_words(Tokens t, std::size_t from) {
                 case 108: m107_ = false; break;
                 case 128: m128_ = true; break;
                 case 129: m128_ = false; break;
-                case 0: case 1: case 2: case 3: case 4: case 5: case 6: case 8: case 9: case 13: case 14:
-                case 30: case 89: case 90: case 99:
+                case 2: case 30: ended_ = true; break;  // end of the program (after this block's move)
+                case 0: case 1: case 3: case 4: case 5: case 6: case 8: case 9: case 13: case 14:
+                case 89: case 90: case 99:
                     break;  // machine functions without a geometric effect on the path
                 default:
                     fail("unsupported_m_code", "M" + std::to_string(m) + " is not supported by toolcomp", k.column);
@@ -233,6 +236,8 @@ bool Interp::execute(Tokens t) {
     else if (k0 == "CP") polar_arc(t);
     else if (k0 == "RND") rounding(t);
     else if (k0 == "CHF") chamfer(t);
+    else if (k0 == "M" || k0 == "F" || k0 == "S")  // a block of machine functions only
+        modal_words(t, 0);
     else if (k0 == "STOP") {
         modal_words(t, 1);
         settle_pending();
@@ -243,20 +248,108 @@ bool Interp::execute(Tokens t) {
         departure(t);
     } else if (k0 == "LN") {
         surface_line(t);
-    } else if (k0 == "CTP" || k0 == "CYCL" || k0 == "LBL" || k0 == "CALL" ||
-               k0 == "FN" || (k0.size() > 1 && k0[0] == 'Q'))
+    } else if (k0 == "CTP" || k0 == "CYCL")
         fail("unsupported_block", k0 + (k1.empty() ? "" : " " + k1) + " is not supported by toolcomp yet", t[0].column);
     else
         fail("unknown_block", "Unknown block '" + k0 + "'", t[0].column);
     return true;
 }
 
+std::vector<Token> Interp::resolve(Tokens t) const {
+    std::vector<Token> out(t.begin(), t.end());
+    for (Token& k : out)
+        if (k.param > 0) {
+            auto it = q_.find(k.param);
+            k.value = k.value * (it == q_.end() ? 0.0 : it->second);
+            k.param = 0;
+        }
+    return out;
+}
+
+// Runs the blocks with the program's own flow: labels (LBL n), subprogram calls (CALL LBL
+// n, back at LBL 0), section repeats (CALL LBL n REP m), FN 9..12 jumps; bounded by the
+// profile's block limit.
 void Interp::run() {
-    for (const Block& b : prog_.blocks()) {
-        auto t = prog_.tokens(b);
-        if (t.empty()) continue;
-        line_ = b.line;
-        if (!execute(t)) break;
+    const auto& blocks = prog_.blocks();
+    std::map<int, std::size_t> labels;
+    for (std::size_t i = 0; i < blocks.size(); ++i) {
+        auto t = prog_.tokens(blocks[i]);
+        if (t.size() >= 2 && t[0].key == "LBL" && t[1].has_value && t[1].value != 0)
+            labels[static_cast<int>(t[1].value)] = i;
+    }
+    auto label = [&](int n, const Token& at) {
+        auto it = labels.find(n);
+        if (it == labels.end()) fail("label_not_found", "LBL " + std::to_string(n) + " not found", at.column);
+        return it->second;
+    };
+    auto q = [this](int n) {
+        auto it = q_.find(n);
+        return it == q_.end() ? 0.0 : it->second;
+    };
+    std::vector<std::size_t> returns;
+    std::map<std::size_t, int> repeats;  // CALL LBL .. REP m blocks: passes left
+    std::size_t executed = 0;
+    for (std::size_t pc = 0; pc < blocks.size();) {
+        auto raw = prog_.tokens(blocks[pc]);
+        line_ = blocks[pc].line;
+        if (++executed > profile_.block_limit)
+            fail("block_limit", "More than " + std::to_string(profile_.block_limit) +
+                                    " blocks executed: an endless loop? (ControlProfile.block_limit)");
+        if (raw.empty()) {
+            ++pc;
+            continue;
+        }
+        const std::vector<Token> tok = resolve(raw);
+        Tokens t(tok);
+        const std::string& k0 = t[0].key;
+        if (k0 == "LBL") {
+            if (t.size() >= 2 && t[1].has_value && t[1].value == 0 && !returns.empty()) {
+                pc = returns.back();  // end of a subprogram
+                returns.pop_back();
+            } else {
+                ++pc;
+            }
+            continue;
+        }
+        if (k0 == "CALL" && t.size() >= 3 && t[1].key == "LBL" && t[2].has_value) {
+            const std::size_t target = label(static_cast<int>(t[2].value), t[2]) + 1;
+            if (const Token* rep = find(t, "REP")) {
+                // REP m, or REP followed by the count as a separate number (REP 2/2)
+                double m = rep->has_value ? rep->value : 0;
+                if (!rep->has_value && rep + 1 < t.data() + t.size() && rep[1].key.empty() && rep[1].has_value)
+                    m = rep[1].value;
+                auto [it, fresh] = repeats.try_emplace(pc, static_cast<int>(m));
+                if (it->second > 0) {
+                    --it->second;
+                    pc = target;  // run the section between LBL n and this block again
+                } else {
+                    repeats.erase(it);
+                    ++pc;
+                }
+            } else {
+                if (returns.size() > 64) fail("call_depth", "Subprogram calls nested too deeply", t[0].column);
+                returns.push_back(pc + 1);
+                pc = target;
+            }
+            continue;
+        }
+        if (k0 == "FN" || k0 == "Q=") {
+            QResult r;
+            try {
+                r = run_statement(t[0].text, q);
+            } catch (const std::domain_error& e) {
+                fail("q_math", std::string("Q parameter arithmetic: ") + e.what(), t[0].column);
+            } catch (const std::invalid_argument& e) {
+                fail("q_syntax", std::string("Q parameter statement: ") + e.what(), t[0].column);
+            }
+            if (r.error) fail("fn14_error", "FN 14: ERROR " + std::to_string(*r.error), t[0].column);
+            if (r.assign) q_[*r.assign] = r.value;
+            pc = r.jump ? label(*r.jump, t[0]) : pc + 1;
+            continue;
+        }
+        if (k0 == "CALL") fail("unsupported_block", "CALL PGM is not supported by toolcomp yet", t[0].column);
+        if (!execute(t) || ended_) break;
+        ++pc;
     }
     settle_pending();
     if (approach_) throw ProgramError("approach_without_contour", "APPR needs a contour element after it", {approach_->line, 0});

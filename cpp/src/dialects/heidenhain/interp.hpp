@@ -22,6 +22,7 @@ public:
 
 private:
     using Tokens = std::span<const Token>;
+    std::vector<Token> resolve(Tokens t) const;  // Q parameters in words replaced by values
     bool execute(Tokens t);  // false at END PGM
     [[noreturn]] void fail(const char* code, const std::string& msg, int column = 0) const;
 
@@ -88,6 +89,8 @@ private:
     bool m107_ = false;        // M107: positive deltas allowed with 3D compensation
     double sum_dr_ = 0, sum_dr2_ = 0;  // ΣDR, ΣDR2 of the called tool (TOOL CALL + table)
     bool warned_normal_ = false;
+    bool ended_ = false;               // M2 / M30
+    std::map<int, double> q_;          // Q parameters (unset read as 0)
     int paraxial_ = 0;  // R+ (+1) / R- (-1) in the current L block
     std::optional<Motion> pending_;
     double pending_round_ = 0, pending_chamfer_ = 0;  // RND / CHF between pending_ and the next

@@ -23,6 +23,30 @@ public:
             prog_.add_comment({std::string(s_.substr(i_ + 1)), col()});
             return;
         }
+        // Q parameter statements (FN n: ..., Qn = formula) are kept as text for the evaluator.
+        {
+            std::size_t j = i_;
+            bool q_formula = false;
+            if (j < s_.size() && (s_[j] == 'Q' || s_[j] == 'q')) {
+                std::size_t k = j + 1;
+                while (k < s_.size() && std::isdigit(static_cast<unsigned char>(s_[k]))) ++k;
+                while (k < s_.size() && blank(s_[k])) ++k;
+                q_formula = k > j + 1 && k < s_.size() && s_[k] == '=';
+            }
+            const bool fn = s_.size() >= j + 2 && std::toupper(static_cast<unsigned char>(s_[j])) == 'F' &&
+                            std::toupper(static_cast<unsigned char>(s_[j + 1])) == 'N' &&
+                            (j + 2 >= s_.size() || !std::isalpha(static_cast<unsigned char>(s_[j + 2])));
+            if (q_formula || fn) {
+                std::size_t end = s_.find(';', j);
+                Token t;
+                t.key = fn ? "FN" : "Q=";
+                t.text = std::string(s_.substr(j, end == std::string_view::npos ? std::string_view::npos : end - j));
+                t.column = col();
+                prog_.add_token(std::move(t));
+                if (end != std::string_view::npos) prog_.add_comment({std::string(s_.substr(end + 1)), static_cast<int>(end) + 1});
+                return;
+            }
+        }
         while (true) {
             skip();
             if (i_ >= s_.size()) break;
@@ -82,10 +106,26 @@ private:
             have_sign = true;
             ++i_;
         }
+        if (i_ + 1 < s_.size() && (s_[i_] == 'Q' || s_[i_] == 'q') && std::isdigit(static_cast<unsigned char>(s_[i_ + 1])) &&
+            !t.key.empty()) {
+            // A Q parameter in place of the number: X+Q5
+            ++i_;
+            std::string digits;
+            while (i_ < s_.size() && std::isdigit(static_cast<unsigned char>(s_[i_]))) digits.push_back(s_[i_++]);
+            t.param = std::stoi(digits);
+            t.value = sign;
+            t.has_value = true;
+            if (i_ < s_.size() && !blank(s_[i_]) && s_[i_] != ';')
+                fail("bad_word", "Unexpected character '" + std::string(1, s_[i_]) + "'", col());
+            prog_.add_token(std::move(t));
+            return;
+        }
         while (i_ < s_.size() && (std::isdigit(static_cast<unsigned char>(s_[i_])) || s_[i_] == '.' || s_[i_] == ',')) {
             num.push_back(s_[i_] == ',' ? '.' : s_[i_]);
             ++i_;
         }
+        if ((t.key == "REP" || t.key.empty()) && i_ < s_.size() && s_[i_] == '/')  // REP 2/2: the count of passes left
+            while (i_ < s_.size() && !blank(s_[i_])) ++i_;
         if (i_ < s_.size() && !blank(s_[i_]) && s_[i_] != ';')
             fail("bad_word", "Unexpected character '" + std::string(1, s_[i_]) + "'", col());
         if (!num.empty()) {
