@@ -117,6 +117,9 @@ CP IPA+720 IZ-5 DR+
     ("TOOL DEF 1 L+0 R+0\nTOOL CALL 1 Z\nL X+0 Y+0 R0 F100\nCC X+5 Y+0\nC X+10.1 Y+0 DR+", "ARC END POS. INCORRECT", 6),
     ("TOOL DEF 1 L+0 R+0\nTOOL CALL 1 Z\nL X+0 Y+0 R0 F100\nL X+10\nRND R50\nL Y+10", "ROUNDING-OFF RADIUS TOO LARGE", 6),
     ("TOOL DEF 1 L+0 R+0\nTOOL CALL 1 Z\nCHF 2\nL X+10 F100", "CHAMFER NOT PERMITTED", 4),
+    ("TOOL DEF 1 L+0 R+0\nTOOL CALL 1 Z\nL X+0 Y+0 Z+0 R0 F100\nL X+10\nRND R2\nLN X+10 Y+10 Z+0 NX+0 NY+0 NZ+1",
+     "RND is not allowed next to an LN block", 6),
+    ("TOOL DEF 1 L+0 R+0\nTOOL CALL 1 Z\nL X+0 Y+0 Z+0 R0 F100\nL Z-5\nCHF 1\nL X+10", "CHF needs moves in the working plane on both sides", 6),
     ("TOOL DEF 1 L+0 R+5\nTOOL CALL 1 Z\nL X+0 Y-10 R0 F100\nL X+0 Y+0 RL\nL X+20\nCR X+24 Y+0 R+2 DR+\nL X+40", "TOOL RADIUS TOO LARGE", 7),
     ("TOOL DEF 1 L+0 R+5\nTOOL CALL 1 Z\nL X+0 Y-10 R0 F100\nL X+0 Y+0 RL\nL X+30\nL Y+4\nL X+0", "TOOL RADIUS TOO LARGE", 8),
 ])

@@ -40,3 +40,30 @@ def test_random_programs_fail_cleanly_or_give_finite_paths(text, dialect):
             assert strict and e.line >= 0 and e.code
             continue
         check(res)
+
+
+kl_words = st.sampled_from(["X+10", "Y-5", "Z+2", "IX+3", "IY-1", "R0", "RL", "RR", "F100", "FMAX", "M3", "M97",
+                            "M98", "M120 LA2", "DR+", "DR-", "R+5", "R-3", "PA+30", "PR+10", "IPA+90", "CCA90",
+                            "LEN5", "Q1", "X+Q1", "R+", "M2"])
+kl_heads = st.sampled_from(["L", "C", "CC", "CR", "CT", "LP", "CP", "RND R2", "CHF 1", "APPR LT", "APPR LN",
+                            "APPR CT", "APPR LCT", "DEP LT", "DEP LN", "DEP CT", "DEP LCT", "FN 0: Q1 = +3",
+                            "FN 9: IF +Q1 EQU +3 GOTO LBL 1", "LBL 1", "Q2 = Q1 * 2", "TOOL CALL 1 Z DR-0.1",
+                            "LN X+1 Y+1 Z+1 NX+0 NY+0 NZ+1"])
+kl_block = st.tuples(kl_heads, st.lists(kl_words, max_size=4)).map(lambda t: " ".join([t[0], *t[1]]))
+kl_program = st.lists(kl_block, min_size=1, max_size=20).map(
+    lambda bs: "\n".join(f"{i} {b}" for i, b in enumerate(
+        ["BEGIN PGM R MM", "TOOL DEF 1 L+0 R+2 R2+1", "TOOL CALL 1 Z", "L X+0 Y+0 Z+0 R0 F100"] + bs + ["END PGM R MM"])))
+
+
+@settings(max_examples=400, deadline=None, derandomize=True, suppress_health_check=[HealthCheck.too_slow])
+@given(kl_program)
+def test_random_klartext_fails_cleanly_or_gives_finite_paths(text):
+    prof = tc.ControlProfile("heidenhain")
+    prof.block_limit = 10000
+    try:
+        prog = tc.Program.parse(text, dialect="heidenhain")
+        res = tc.run(prog, profile=prof)
+    except tc.Error as e:
+        assert e.code
+        return
+    check(res)

@@ -47,9 +47,16 @@ void Interp::put(Motion m) {
             throw ProgramError("corner_between_arcs",
                                std::string(round ? "RND" : "CHF") + " is supported between two straight feed moves only",
                                {at, 0});
+        if (prev.surface.active() || m.surface.active())
+            throw ProgramError("corner_between_ln",
+                               std::string(round ? "RND" : "CHF") + " is not allowed next to an LN block", {at, 0});
         const Vec2 p = plane2(prev.end);
         const Vec2 a = plane2(prev.start), b = plane2(m.end);
         const double l1 = (p - a).norm(), l2 = (b - p).norm();
+        if (l1 < 1e-9 || l2 < 1e-9)
+            throw ProgramError("corner_without_element",
+                               std::string(round ? "RND" : "CHF") + " needs moves in the working plane on both sides",
+                               {at, 0});
         const Vec2 t1 = (p - a) / l1, t2 = (b - p) / l2;
         const double theta = turn_angle(t1, t2);
         const double d = round ? pending_round_ * std::tan(std::fabs(theta) / 2) : pending_chamfer_;
