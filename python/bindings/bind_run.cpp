@@ -18,7 +18,8 @@ void bind_run(py::module_& m) {
 
     py::enum_<EntryStyle>(m, "EntryStyle")
         .value("perpendicular_to_entry", EntryStyle::perpendicular_to_entry)
-        .value("perpendicular_to_next", EntryStyle::perpendicular_to_next);
+        .value("perpendicular_to_next", EntryStyle::perpendicular_to_next)
+        .value("around_start_when_behind", EntryStyle::around_start_when_behind);
     py::enum_<ExitStyle>(m, "ExitStyle")
         .value("perpendicular_to_last", ExitStyle::perpendicular_to_last)
         .value("corner_with_exit", ExitStyle::corner_with_exit);

@@ -152,6 +152,7 @@ class LengthAxes(enum.Enum):
 class EntryStyle(enum.Enum):
     perpendicular_to_entry = 0
     perpendicular_to_next = 1
+    around_start_when_behind = 2
 
 class ExitStyle(enum.Enum):
     perpendicular_to_last = 0

@@ -97,6 +97,39 @@ ControlProfile profile_for(Dialect d, Machine machine) {
             r.messages.g10 = "G10 is not allowed while TTRC is active";
             break;
         }
+        case Dialect::sinumerik: {
+            // 840D TRC with the power-on G groups: CUT2D, NORM (straight to the perpendicular
+            // point at the contour start, perpendicular off the last contour point on G40),
+            // G450 transition circles (G451 intersections are the `intersection` corner style
+            // with `corner_limit`, beyond which the 840D inserts a circle), direct G41 <-> G42
+            // change, any plane, selection and deselection only in straight blocks, bottleneck
+            // detection (CDON) over CUTCOM_MAXNUM_CHECK_BLOCKS = 3 skipping what the tool
+            // cannot reach, CUTCOM_MAXNUM_DUMMY_BLOCKS = 3 blocks without plane motion, and
+            // L1 on the axis normal to the plane for milling tools (SD42940 = 0). Messages
+            // carry the alarm numbers of spec 3.8; where the texts are not published they
+            // name the condition.
+            p.length_axes = LengthAxes::plane_normal;
+            RadiusRules& r = p.radius;
+            r.yz_plane = true;
+            r.side_change = true;
+            r.entry = EntryStyle::perpendicular_to_next;
+            r.entry_arc = false;
+            r.entry_length_check = false;
+            r.exit = ExitStyle::perpendicular_to_last;
+            r.outside_corner = OutsideCorner::arc;
+            r.corner_limit = 100 * kPi / 180;
+            r.gouge = GougeReaction::skip;
+            r.lookahead = 3;
+            r.max_non_plane_moves = 3;
+            r.non_plane_reaction = NonPlaneReaction::error;
+            r.messages.entry_arc = "10753 TRC selection only possible in a linear block";
+            r.messages.exit_arc = "10754 TRC deselection only possible in a linear block";
+            r.messages.gouge_feed = r.messages.gouge_traverse = r.messages.gouge_arc = r.messages.arc_to_line =
+                r.messages.arc_to_arc = r.messages.arc_too_small =
+                    "10751 Danger of collision: no intersection within the look-ahead of the bottleneck detection";
+            r.messages.too_many_non_plane = "10762 Too many empty blocks between two traversing blocks with active TRC";
+            break;
+        }
         default:
             break;
     }

@@ -144,7 +144,7 @@ void RadiusCompensation::push(const Motion& m) {
             entry_arc(m);
         else
             entry_line(m);
-        entry_open_ = profile_.radius.entry == EntryStyle::perpendicular_to_next && !m.is_arc();
+        entry_open_ = profile_.radius.entry != EntryStyle::perpendicular_to_entry && !m.is_arc();
         active_ = true;
         exit_pending_ = false;
         return;

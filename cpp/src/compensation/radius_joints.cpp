@@ -126,6 +126,12 @@ bool RadiusCompensation::open_corner(const Motion& m, const Vec2& mid) {
 bool RadiusCompensation::close_open_entry(const Vec2& mid) {
     if (!entry_open_) return false;
     entry_open_ = false;
+    if (profile_.radius.entry == EntryStyle::around_start_when_behind && !queue_.empty()) {
+        // Behind: the start point and the new element's equidistant lie on opposite sides of
+        // the element's line through the contour start.
+        const Vec2 S = plane2(program_);
+        if ((plane2(queue_.front().m.start) - S).dot(mid - S) < 0) return false;
+    }
     for (auto& h : queue_) h.m.end = with_plane(h.m.end, mid);
     flush();
     endpoint_ = mid;

@@ -167,7 +167,10 @@ bool RadiusCompensation::skip_unreachable(const Element2& next, int line) {
             bool ok = w.m.is_arc() ? std::fabs(find_turn(s, plane2(w.m.center), turn_of(w.m), cand)) <=
                                          std::fabs(w.sweep == 0 ? elem.sweep() : w.sweep) +
                                              profile_.radius.arc_sweep_tolerance[w.m.inch() ? 1 : 0]
-                                   : w.dir.dot(cand - s) > 0;
+                                   : w.dir.dot(cand - s) > 0 && (e - cand).dot(e - s) >= -tol::length;
+            // A joined line is cut back, never extended past its end into what was left out,
+            // and the next element must still run forwards from the join (lines).
+            if (!next.is_arc && (next.p1 - cand).dot(next.p1 - next.p0) <= 0) ok = false;
             if (ok && (!found || (cand - e).norm() < (x - e).norm())) {
                 x = cand;
                 found = true;

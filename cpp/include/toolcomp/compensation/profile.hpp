@@ -27,6 +27,11 @@ enum class EntryStyle {
     // The activation block ends where the next element's equidistant starts, perpendicular
     // to the next element (Fanuc start-up type A; Sinumerik NORM; Heidenhain RL/RR).
     perpendicular_to_next = 1,
+    // Sinumerik KONT: as perpendicular_to_next, unless the start point lies behind the contour
+    // (on the far side of the first element from the tool); then as perpendicular_to_entry, so
+    // the tool goes round the contour start by the outside-corner rule (G450 circle, G451
+    // intersection) instead of crossing the contour.
+    around_start_when_behind = 2,
 };
 
 // How the compensated path leaves the contour when compensation is cancelled (spec §1.6).
