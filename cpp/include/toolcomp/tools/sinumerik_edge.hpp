@@ -1,0 +1,82 @@
+#pragma once
+// Sinumerik 840D cutting-edge data ($TC_DPn[t,d]) and tool lengths (spec §3.1, §3.2).
+//
+// Conventions and choices:
+// * `dp[n-1]` holds $TC_DPn (n = 1..25). `ecp` / `scp` hold the setup and sum offsets of
+//   the one active DL set ($TC_ECPn / $TC_SCPn). Choice [U]: they use the numbering of the
+//   wear block of $TC_DP (12-14 lengths, 15 radius, 16-20 the additional values); the other
+//   indices are stored and written back but take no part in any computation.
+// * Totals: L_i = DP(2+i) + s*(DP(11+i) + SCP(11+i) + ECP(11+i)) + DP(20+i),
+//   R = DP6 + s*(DP15 + SCP15 + ECP15) + OFFN, with s = wear sign (+1, or -1 when SD42930
+//   WEAR_SIGN is set). Choice [U]: the wear sign also applies to the sum and setup offsets.
+// * Vectors are in geometry-axis order (1st, 2nd, 3rd geometry axis = X, Y, Z); the axis
+//   order, not the letter, is decisive (spec §3.2).
+// * Errors are ToolTableError; settings outside their ranges give "sinumerik_bad_setting".
+#include <array>
+#include <map>
+#include <string>
+#include <string_view>
+#include <utility>
+
+#include "toolcomp/geometry/vec.hpp"
+
+namespace toolcomp::sinumerik {
+
+struct SinumerikEdge {
+    std::array<double, 25> dp{};   // $TC_DP1..25
+    std::array<double, 25> ecp{};  // $TC_ECP1..25 (setup offsets, active DL)
+    std::array<double, 25> scp{};  // $TC_SCP1..25 (sum offsets, active DL)
+    int dl = 1;                    // number of the stored DL set (for GETTCOR's _DL check)
+
+    // $TC_DPn, n = 1..25; throws ToolTableError("sinumerik_bad_dp") otherwise.
+    double DP(int n) const;
+    double& DP(int n);
+    double ECP(int n) const;
+    double SCP(int n) const;
+
+    int type() const;  // DP1 rounded to an integer
+    // Total length L_i, i = 1..3 (adapter DP21..23 included); throws for other i.
+    double length(int i, double wear_sign = 1.0) const;
+    // Total radius, with an optional OFFN allowance.
+    double radius(double wear_sign = 1.0, double offn = 0.0) const;
+
+    bool operator==(const SinumerikEdge&) const = default;
+};
+
+// True for turning and grinding tools (types 400..599); everything else maps like milling.
+bool is_turning_type(int tool_type);
+
+struct SinumerikLengthSettings {
+    int tool_length_const = 0;  // SD42940: 0, 17, 18, 19, -17, -18, -19
+    int tool_length_type = 0;   // SD42950: 0 by tool type, 1 always milling, 2 always turning
+    bool wear_sign_inverted = false;  // SD42930 WEAR_SIGN != 0
+    double wear_sign() const { return wear_sign_inverted ? -1.0 : 1.0; }
+};
+
+// Geometry-axis index (0 = X, 1 = Y, 2 = Z) on which L1, L2, L3 act (§3.2 tables).
+// The plane is toolcomp::Plane: xy = G17, zx = G18, yz = G19.
+std::array<int, 3> length_axes(int tool_type, Plane plane, const SinumerikLengthSettings& s = {});
+
+// Places (L1, L2, L3) on the axes; the building block of tool_length_vector and GETTCOR.
+Vec3 place_lengths(const Vec3& l123, int tool_type, Plane plane, const SinumerikLengthSettings& s = {});
+
+// The tool length vector (x, y, z) of the edge's total lengths L1..L3.
+Vec3 tool_length_vector(const SinumerikEdge& e, Plane plane, const SinumerikLengthSettings& s = {});
+
+// ---- initialisation-file form: "$TC_DPn[t,d]=value" ---------------------------------------
+// One assignment per line; $TC_ECPn and $TC_SCPn are read the same way. Tolerated: blank
+// lines, ';' comments, a leading block number "N<digits>", names in any case, blanks around
+// the tokens, and lines consisting of M17/M30/M02 only. Errors (ToolTableError, 1-based line,
+// column of the offending token): "sinumerik_bad_line", "sinumerik_bad_dp" (n outside
+// 1..25), "sinumerik_bad_tool" (t outside 1..max_t), "sinumerik_bad_edge" (d outside
+// 1..max_d). Choice [U]: limits default to 32000 (flat D numbers range).
+using EdgeKey = std::pair<int, int>;  // (t, d)
+using SinumerikEdgeMap = std::map<EdgeKey, SinumerikEdge>;
+
+SinumerikEdgeMap parse_tc_dp(std::string_view text, int max_t = 32000, int max_d = 32000);
+
+// The same form back, ordered by (t, d): DP1 always, other DP/ECP/SCP values when non-zero,
+// shortest round-trip numbers. parse_tc_dp(write_tc_dp(m)) == m (the `dl` field excepted).
+std::string write_tc_dp(const SinumerikEdgeMap& edges);
+
+}  // namespace toolcomp::sinumerik
