@@ -380,6 +380,27 @@ def cmd_check(args) -> int:
     return EXIT_ERRORS if any(o.has_errors for o in outcomes) else EXIT_OK
 
 
+def cmd_export(args) -> int:
+    out = execute(args.program, args.tools, args.dialect, args.units_table)
+    if out.has_errors or out.result is None:
+        # A program the control refuses has no compensated path to export.
+        for r in out.records:
+            print(r.format(), file=sys.stderr)
+        return EXIT_ERRORS
+    from toolcomp.export import to_gcode
+    try:
+        text = to_gcode(out.result.path, args.to, comments=not args.no_comments,
+                        tool_length=not args.no_tool_length)
+    except ValueError as exc:
+        raise UsageError(str(exc))
+    if args.output in (None, "-"):
+        sys.stdout.write(text)
+    else:
+        with open(args.output, "w", encoding="ascii", newline="\n") as f:
+            f.write(text)
+    return EXIT_OK
+
+
 def _version():
     try:
         from importlib.metadata import version
@@ -422,6 +443,20 @@ def build_parser() -> argparse.ArgumentParser:
     common(c)
     c.add_argument("--format", choices=("text", "json"), default="text")
     c.set_defaults(func=cmd_check)
+
+    e = sub.add_parser("export", help="write the compensated path as G-code without compensation",
+                       description="Write the compensated path as a plain program (G40 "
+                                   "throughout, arcs as arcs, tool length offsets applied) for "
+                                   "controls without cutter compensation.")
+    e.add_argument("program", metavar="PROGRAM")
+    common(e)
+    e.add_argument("--to", choices=("linuxcnc", "fanuc", "grbl"), default="linuxcnc",
+                   help="dialect of the written program (default: linuxcnc)")
+    e.add_argument("-o", "--output", metavar="FILE", help="output file (default: stdout)")
+    e.add_argument("--no-comments", action="store_true", help="leave out the (line N) comments")
+    e.add_argument("--no-tool-length", action="store_true",
+                   help="do not add the tool length offsets to the coordinates")
+    e.set_defaults(func=cmd_export)
     return p
 
 

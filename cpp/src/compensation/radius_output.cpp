@@ -19,10 +19,12 @@ void RadiusCompensation::hold(Motion m, const Vec2& dir, double sweep) { queue_.
 
 void RadiusCompensation::emit(const Held& h) {
     Emitted e{h.m, h.dir, h.sweep, false};
-    if (have_last_) e.m.start = last_;
+    // In program coordinates a new tool length offset moves the point the move starts from.
+    if (have_last_) e.m.start = last_ + last_off_ - e.m.tool_offset;
     if (e.m.is_arc()) e.m.center[axes(e.m.plane).c] = e.m.start[axes(e.m.plane).c];
     e.in_plane = !e.m.generated && (plane2(e.m.end) - plane2(e.m.start)).norm() > tol::length;
     last_ = e.m.end;
+    last_off_ = e.m.tool_offset;
     have_last_ = true;
     window_.push_back(std::move(e));
     const auto& rules = profile_.radius;
@@ -48,7 +50,7 @@ void RadiusCompensation::release(std::size_t keep) {
             m.end += shift;
             if (m.is_arc()) m.center += shift;
         }
-        if (have_out_) m.start = last_out_;
+        if (have_out_) m.start = last_out_ + last_out_off_ - m.tool_offset;
         // A generated link of zero length (an activation that already stands at the contour's
         // equidistant, as after APPR) is not a move.
         if (m.generated && m.kind == MotionKind::line && !m.is_arc() && have_out_ && (m.end - m.start).norm() < 1e-12 &&
@@ -56,6 +58,7 @@ void RadiusCompensation::release(std::size_t keep) {
             continue;
         if (m.is_arc()) m.center[axes(m.plane).c] = m.start[axes(m.plane).c];
         last_out_ = m.end;
+        last_out_off_ = m.tool_offset;
         have_out_ = true;
         out_.push(m);
     }
@@ -66,11 +69,11 @@ void RadiusCompensation::passthrough(const Motion& m) {
     release(0);
     Motion o = m;
     // The exit move runs from the last compensated point to the programmed target.
-    if (exit_pending_ && have_out_) o.start = last_out_;
+    if (exit_pending_ && have_out_) o.start = last_out_ + last_out_off_ - o.tool_offset;
     exit_pending_ = false;
-    last_out_ = o.end;
+    last_out_ = last_ = o.end;
+    last_out_off_ = last_off_ = o.tool_offset;
     have_out_ = true;
-    last_ = o.end;
     have_last_ = true;
     out_.push(o);
 }
@@ -184,6 +187,7 @@ bool RadiusCompensation::skip_unreachable(const Element2& next, int line) {
         window_[k].m.end = with_plane(window_[k].m.end, x);
         window_.erase(window_.begin() + static_cast<std::ptrdiff_t>(k) + 1, window_.end());
         last_ = window_[k].m.end;
+        last_off_ = window_[k].m.tool_offset;
         std::vector<Held> keep;
         for (std::size_t i = 1; i < queue_.size(); ++i) {
             Held h = queue_[i];

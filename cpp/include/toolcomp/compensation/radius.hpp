@@ -114,8 +114,10 @@ private:
     std::vector<Emitted> window_;   // emitted, not yet released (look-ahead for bottlenecks)
     bool have_last_ = false;
     Vec3 last_ = Vec3::Zero();      // end of the last emitted move (nose centre)
+    Vec3 last_off_ = Vec3::Zero();  // and its tool length offset (a new offset moves the start)
     bool have_out_ = false;
     Vec3 last_out_ = Vec3::Zero();  // end of the last released move (controlled point)
+    Vec3 last_out_off_ = Vec3::Zero();
 };
 
 }  // namespace toolcomp
