@@ -4,6 +4,8 @@
 
 #include "toolcomp/motion/motion.hpp"
 
+void bind_sinumerik(py::module_& m);  // bind_sinumerik.cpp: the submodule _core.sinumerik
+
 PYBIND11_MODULE(_core, m) {
     m.doc() = "toolcomp core: CNC program interpreter and tool compensation engine";
     m.attr("__version__") = TOOLCOMP_VERSION;
@@ -16,4 +18,5 @@ PYBIND11_MODULE(_core, m) {
     bind_program(m);
     bind_path(m);
     bind_run(m);
+    bind_sinumerik(m);
 }

@@ -8,6 +8,7 @@ and get the programmed and compensated paths as numpy arrays.
 from __future__ import annotations
 
 import os as _os
+import sys as _sys
 
 from . import _core
 from ._core import (
@@ -34,6 +35,7 @@ from ._core import (
     ToolTable,
     __version__,
     compensate_3d,
+    sinumerik,
 )
 from ._errors import CompensationError, Error, ParseError, ProgramError, ToolTableError
 
@@ -42,8 +44,10 @@ __all__ = [
     "CompensationError", "ControlProfile", "CuttingEdge", "Diagnostic", "EntryStyle", "Error", "ExitStyle",
     "GougeReaction", "LengthAxes", "Machine", "NonPlaneReaction", "OutsideCorner", "ParseError", "Path",
     "Program", "ProgramError", "RadiusRules", "Result", "TipConvention", "Tool", "ToolTable",
-    "ToolTableError", "compensate_3d", "run", "__version__",
+    "ToolTableError", "compensate_3d", "run", "sinumerik", "__version__",
 ]
+
+_sys.modules[__name__ + ".sinumerik"] = sinumerik  # type: ignore[assignment]  # `import toolcomp.sinumerik`
 
 
 def run(program, tools=None, *, dialect=None, strict=True, block_delete=False, profile=None,

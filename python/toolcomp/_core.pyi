@@ -3,7 +3,7 @@ from __future__ import annotations
 
 import enum
 import os
-from typing import Iterator, Optional, Sequence, Tuple, Union
+from typing import Iterator, Mapping, Optional, Sequence, Tuple, Union, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -239,3 +239,136 @@ def compensate_3d(points: npt.ArrayLike, normals: npt.ArrayLike, tool_axes: Opti
 
 def run(program: Program, tools: Optional[ToolTable] = None, strict: bool = True,
         block_delete: bool = False, profile: Optional[ControlProfile] = None) -> Result: ...
+
+_Plane = Union[int, str]  # 17, 18, 19 or "G17", "G18", "G19"
+_EdgeMap = dict[Tuple[int, int], "sinumerik.Edge"]
+
+class sinumerik:
+    """Submodule toolcomp._core.sinumerik (re-exported as toolcomp.sinumerik); a namespace here."""
+
+    GETTCOR_OK: int
+    GETTCOR_NO_ENV_MEMORY: int
+    GETTCOR_ENV_MISSING: int
+    GETTCOR_BAD_COMP: int
+    GETTCOR_BAD_T: int
+    GETTCOR_BAD_D: int
+    GETTCOR_BAD_DL: int
+    GETTCOR_NO_MEMORY_MODULE: int
+    GETTCOR_MISSING_OPTION: int
+    GETTCOR_BAD_COORD: int
+
+    class Edge:
+        def __init__(self, dp: Optional[Mapping[int, float]] = None, *, dl: int = 1) -> None: ...
+        dp: npt.NDArray[np.float64]   # (25,) writable view, dp[i] = $TC_DP(i+1)
+        ecp: npt.NDArray[np.float64]
+        scp: npt.NDArray[np.float64]
+        dl: int
+        def get_dp(self, n: int) -> float: ...
+        def set_dp(self, n: int, value: float) -> None: ...
+        def get_ecp(self, n: int) -> float: ...
+        def get_scp(self, n: int) -> float: ...
+        @property
+        def tool_type(self) -> int: ...
+        @property
+        def cutting_edge_position(self) -> float: ...
+        def length(self, i: int, wear_sign: float = 1.0) -> float: ...
+        def radius(self, offn: float = 0.0, *, wear_sign: float = 1.0) -> float: ...
+
+    class LengthSettings:
+        def __init__(self, *, tool_length_const: int = 0, tool_length_type: int = 0,
+                     wear_sign_inverted: bool = False) -> None: ...
+        tool_length_const: int
+        tool_length_type: int
+        wear_sign_inverted: bool
+        @property
+        def wear_sign(self) -> float: ...
+
+    class GettcorSettings:
+        def __init__(self, *, plane: _Plane = 17, lengths: Optional[sinumerik.LengthSettings] = None,
+                     parameter_def_mask: int = 0, transverse_axis: int = 0, tool_env_memory: int = 0) -> None: ...
+        @property
+        def plane(self) -> int: ...
+        @plane.setter
+        def plane(self, value: _Plane) -> None: ...
+        lengths: sinumerik.LengthSettings
+        geometry_diameter: bool
+        wear_diameter: bool
+        transverse_axis: int
+        tool_env_memory: int
+        def set_parameter_def_mask(self, mask: int) -> None: ...
+
+    class Toolholder:
+        def __init__(self, kinematic_type: str = "T", *, l1: _Vec3 = ..., l2: _Vec3 = ..., l3: _Vec3 = ...,
+                     l4: _Vec3 = ..., v1: _Vec3 = ..., v2: _Vec3 = ..., alpha1: float = 0.0, alpha2: float = 0.0,
+                     offset1: float = 0.0, offset2: float = 0.0, name: str = "") -> None: ...
+        l1: npt.NDArray[np.float64]
+        l2: npt.NDArray[np.float64]
+        l3: npt.NDArray[np.float64]
+        l4: npt.NDArray[np.float64]
+        v1: npt.NDArray[np.float64]
+        v2: npt.NDArray[np.float64]
+        alpha1: float
+        alpha2: float
+        axis1: str
+        axis2: str
+        kinematic_type: str  # "T" | "P" | "M"
+        offset1: float
+        offset2: float
+        hirth: list[float]
+        limits: list[float]
+        name: str
+        user: list[float]
+        @property
+        def angle1(self) -> float: ...
+        @property
+        def angle2(self) -> float: ...
+        @overload
+        def set_carr(self, n: int, value: str) -> None: ...
+        @overload
+        def set_carr(self, n: int, value: float) -> None: ...
+        def resulting_tool_length(self, tool_length: _Vec3) -> npt.NDArray[np.float64]: ...
+        def table_zero_offset(self) -> npt.NDArray[np.float64]: ...
+
+    class Trafo5:
+        def __init__(self, type: int = 24, *, base_tool: _Vec3 = ..., joint_offset: _Vec3 = ...,
+                     joint_offset_part: _Vec3 = ..., part_offset: _Vec3 = ..., axis1: _Vec3 = ...,
+                     axis2: _Vec3 = ...) -> None: ...
+        type: int
+        base_tool: npt.NDArray[np.float64]
+        joint_offset: npt.NDArray[np.float64]
+        joint_offset_part: npt.NDArray[np.float64]
+        part_offset: npt.NDArray[np.float64]
+        axis1: npt.NDArray[np.float64]
+        axis2: npt.NDArray[np.float64]
+        def to_toolholder(self, a1: float = 0.0, a2: float = 0.0) -> sinumerik.Toolholder: ...
+        def tool_length(self, a1: float, a2: float, tool_length: _Vec3) -> npt.NDArray[np.float64]: ...
+
+    @staticmethod
+    def is_turning_type(tool_type: int) -> bool: ...
+    @staticmethod
+    def length_axes(tool_type: int, plane: _Plane,
+                    settings: Optional[sinumerik.LengthSettings] = None) -> Tuple[int, int, int]: ...
+    @staticmethod
+    def place_lengths(lengths: _Vec3, tool_type: int, plane: _Plane,
+                      settings: Optional[sinumerik.LengthSettings] = None) -> npt.NDArray[np.float64]: ...
+    @staticmethod
+    def tool_length(edge: sinumerik.Edge, plane: _Plane = 17,
+                    settings: Optional[sinumerik.LengthSettings] = None) -> npt.NDArray[np.float64]: ...
+    @staticmethod
+    def parse_tool_data(text: str, *, max_t: int = 32000, max_d: int = 32000) -> _EdgeMap: ...
+    @staticmethod
+    def read_tool_data(path: _PathLike, *, max_t: int = 32000, max_d: int = 32000) -> _EdgeMap: ...
+    @staticmethod
+    def format_tool_data(edges: Mapping[Tuple[int, int], sinumerik.Edge]) -> str: ...
+    @overload
+    @staticmethod
+    def gettcor(edge: sinumerik.Edge, comp: str = "GW", settings: Optional[sinumerik.GettcorSettings] = None, *,
+                plane: Optional[_Plane] = None, stat: str = "", dl: int = -1
+                ) -> Tuple[int, npt.NDArray[np.float64]]: ...
+    @overload
+    @staticmethod
+    def gettcor(edges: Mapping[Tuple[int, int], sinumerik.Edge], t: int, d: int, comp: str = "GW",
+                settings: Optional[sinumerik.GettcorSettings] = None, *, plane: Optional[_Plane] = None,
+                stat: str = "", dl: int = -1) -> Tuple[int, npt.NDArray[np.float64]]: ...
+    @staticmethod
+    def rotate_about_axis(v: _Vec3, axis: _Vec3, angle_deg: float) -> npt.NDArray[np.float64]: ...
