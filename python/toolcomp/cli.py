@@ -457,6 +457,9 @@ def build_parser() -> argparse.ArgumentParser:
     e.add_argument("--no-tool-length", action="store_true",
                    help="do not add the tool length offsets to the coordinates")
     e.set_defaults(func=cmd_export)
+
+    from toolcomp import cli_tools
+    cli_tools.add_parser(sub)
     return p
 
 
