@@ -78,3 +78,29 @@ def _result_plot(self, ax=None, **kwargs):
 
 
 Result.plot = _result_plot
+
+
+def _table_to_pandas(self):
+    """One row per cutting edge (pandas DataFrame); see :mod:`toolcomp.table_frames`."""
+    from .table_frames import to_pandas
+
+    return to_pandas(self)
+
+
+def _table_from_pandas(df, base=None, units="mm"):
+    """A ToolTable from a DataFrame (edits written over a copy of ``base`` if given)."""
+    from .table_frames import from_pandas
+
+    return from_pandas(df, base=base, units=units)
+
+
+def _table_diff(self, other, tol=0.0):
+    """What changes from this table to ``other``: a list of (tool, edge, field, old, new)."""
+    from .table_frames import diff
+
+    return diff(self, other, tol=tol)
+
+
+ToolTable.to_pandas = _table_to_pandas
+ToolTable.from_pandas = staticmethod(_table_from_pandas)
+ToolTable.diff = _table_diff

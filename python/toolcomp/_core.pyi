@@ -3,7 +3,7 @@ from __future__ import annotations
 
 import enum
 import os
-from typing import Iterator, Mapping, Optional, Sequence, Tuple, Union, overload
+from typing import Any, Iterator, List, Mapping, Optional, Sequence, Tuple, Union, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -91,6 +91,11 @@ class ToolTable:
     def __contains__(self, number: int) -> bool: ...
     def __len__(self) -> int: ...
     def __iter__(self) -> Iterator[Tool]: ...
+    # added by toolcomp/__init__.py (toolcomp.table_frames; pandas imported on use)
+    def to_pandas(self) -> Any: ...
+    @staticmethod
+    def from_pandas(df: Any, base: Optional[ToolTable] = None, units: str = "mm") -> ToolTable: ...
+    def diff(self, other: ToolTable, tol: float = 0.0) -> List[Any]: ...
 
 class Program:
     @staticmethod

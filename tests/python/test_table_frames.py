@@ -1,0 +1,56 @@
+"""ToolTable.to_pandas / from_pandas / diff: bulk edits keep comments and unknown columns, and
+a save changes only the edited lines."""
+import pathlib
+
+import pytest
+
+import toolcomp as tc
+
+pd = pytest.importorskip("pandas")
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+TBL = "T1 P1 D10 Z50 ;end mill 10\nT2 P2 D6.8 Z75 ;drill 6.8\nT3 P3 D12 Z62.5 ;spot drill\n"
+
+
+def test_to_pandas_has_one_row_per_edge_with_the_table_values():
+    df = tc.ToolTable.parse(TBL, "linuxcnc").to_pandas()
+    assert list(df.tool) == [1, 2, 3]
+    assert list(df.z) == [50.0, 75.0, 62.5]
+    assert list(df.radius) == [5.0, 3.4, 6.0]  # D is the diameter in .tbl
+    assert list(df.comment) == ["end mill 10", "drill 6.8", "spot drill"]
+
+
+def test_bulk_edit_through_pandas_changes_only_the_edited_lines(tmp_path):
+    path = tmp_path / "tool.tbl"
+    path.write_text(TBL)
+    table = tc.ToolTable.read(path)
+    df = table.to_pandas()
+    df.loc[df.tool == 2, "z"] += 0.25      # measured 0.25 longer
+    df.loc[df.tool == 3, "radius"] = 5.99  # reground
+    edited = tc.ToolTable.from_pandas(df[df.tool != 1], base=table)
+    changes = table.diff(edited)
+    assert [(c.tool, c.field, c.old, c.new) for c in changes] == [(2, "z", 75.0, 75.25), (3, "radius", 6.0, 5.99)]
+    edited.write(path)
+    lines = path.read_text().splitlines()
+    assert lines[0] == "T1 P1 D10 Z50 ;end mill 10"  # untouched tool: byte-identical line
+    assert "Z+75.25" in lines[1] and lines[1].endswith(";drill 6.8")
+    assert "D+11.98" in lines[2]
+    assert table.diff(table) == []
+    # .tbl has no wear columns: such an edit is refused at the save, the file is untouched.
+    df.loc[df.tool == 3, "radius_wear"] = -0.01
+    before = path.read_bytes()
+    with pytest.raises(tc.ToolTableError):
+        tc.ToolTable.from_pandas(df, base=table).write(path)
+    assert path.read_bytes() == before
+
+
+def test_from_pandas_without_base_builds_a_table_and_diff_sees_added_and_removed():
+    df = pd.DataFrame({"tool": [7, 8], "pocket": [7, 8], "z": [40.0, 30.0], "radius": [2.0, 0.4],
+                       "orientation": [0, 3], "comment": ["drill", "insert"]})
+    t = tc.ToolTable.from_pandas(df)
+    assert t[8].edge().orientation == 3 and t[7].edge().length[2] == 40.0 and t[8].comment == "insert"
+    base = tc.ToolTable.parse(TBL, "linuxcnc")
+    changes = base.diff(t)
+    assert [(c.tool, c.field) for c in changes] == [(1, "removed"), (2, "removed"), (3, "removed"),
+                                                    (7, "added"), (8, "added")]
+    with pytest.raises(ValueError, match="'tool' column"):
+        tc.ToolTable.from_pandas(pd.DataFrame({"z": [1.0]}))
