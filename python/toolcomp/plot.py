@@ -29,6 +29,7 @@ PLANES = {
     "xy": (0, 1), "g17": (0, 1),
     "xz": (0, 2), "zx": (2, 0), "g18": (2, 0),
     "yz": (1, 2), "g19": (1, 2),
+    "lathe": (2, 0),  # half section: Z horizontal, X (radius) vertical, spindle axis drawn
 }
 _AXIS_NAMES = "XYZ"
 
@@ -288,14 +289,21 @@ def _drawing_tolerance(path):
 
 
 def plot_result(result, ax=None, plane="xy", show_nominal=True, tolerance=None,
-                title=None, legend=True):
+                title=None, legend=True, color_by="tool"):
     """Draw a run result: programmed path thin grey, compensated path coloured by tool,
     rapids dashed, segments inserted by compensation highlighted, diagnostics marked with
     their line number. Arcs are drawn as arcs, chorded within ``tolerance`` mm (default:
     1/20000 of the path's extent).
 
-    ``plane`` is "xy" (default), "xz", "zx", "yz" or "g17"/"g18"/"g19". Returns the Axes.
+    ``plane`` is "xy" (default), "xz", "zx", "yz", "g17"/"g18"/"g19", "lathe" (a half
+    section: Z horizontal, X vertical, the spindle axis drawn) or "3d". ``color_by`` is
+    "tool" or "side" (G41/RL blue, G42/RR green, uncompensated black). Returns the Axes.
     """
+    if str(plane).lower() == "3d":
+        from .plot3d import plot_result_3d
+
+        return plot_result_3d(result, ax=ax, show_nominal=show_nominal, tolerance=tolerance,
+                              title=title, legend=legend)
     h, v = _plane_axes(plane)
     if ax is None:
         plt = _pyplot()
@@ -328,7 +336,18 @@ def plot_result(result, ax=None, plane="xy", show_nominal=True, tolerance=None,
                     alpha=0.7, zorder=2, label="rapid")
         tools = [int(t) for t in np.unique(tool[kind != RAPID])]
         colour = {t: _TOOL_COLOURS[k % len(_TOOL_COLOURS)] for k, t in enumerate(tools)}
-        for t in tools:
+        if color_by == "side":
+            side = np.asarray(path.side).reshape(-1)
+            for sd, name, col in ((1, "left (G41 / RL)", "tab:blue"), (-1, "right (G42 / RR)", "tab:green"),
+                                  (0, "uncompensated", "black")):
+                sel = (kind != RAPID) & (side == sd)
+                if sel.any():
+                    xy = _runs(pts, owner, sel)
+                    ax.plot(xy[:, h], xy[:, v], color=col, lw=1.6, zorder=3, label=name,
+                            solid_capstyle="round")
+        elif color_by != "tool":
+            raise ValueError(f"color_by must be 'tool' or 'side', not {color_by!r}")
+        for t in tools if color_by == "tool" else ():
             xy = _runs(pts, owner, (kind != RAPID) & (tool == t))
             label = f"T{t} compensated" if len(tools) > 1 else "compensated"
             ax.plot(xy[:, h], xy[:, v], color=colour[t], lw=1.6, zorder=3, label=label,
@@ -371,6 +390,8 @@ def plot_result(result, ax=None, plane="xy", show_nominal=True, tolerance=None,
         ax.annotate(f"L{d.line} {code}".strip(), (pos[h], pos[v]), xytext=(5, 5),
                     textcoords="offset points", fontsize=8, color=style["color"], zorder=7)
 
+    if str(plane).lower() == "lathe":
+        ax.axhline(0.0, color="0.3", lw=0.8, ls=(0, (8, 3, 2, 3)), zorder=0, label="spindle axis")
     ax.set_aspect("equal", adjustable="datalim")
     ax.set_xlabel(f"{_AXIS_NAMES[h]} [mm]")
     ax.set_ylabel(f"{_AXIS_NAMES[v]} [mm]")
@@ -393,7 +414,7 @@ def save_plot(result, filename, plane="xy", dpi=150, title=None, **kwargs):
 
     fig = Figure(figsize=(8.5, 6), layout="constrained")
     FigureCanvasAgg(fig)
-    ax = fig.add_subplot()
+    ax = fig.add_subplot(projection="3d") if str(plane).lower() == "3d" else fig.add_subplot()
     plot_result(result, ax=ax, plane=plane, title=title, **kwargs)
     fig.savefig(os.fspath(filename), dpi=dpi)
     return filename

@@ -221,3 +221,47 @@ def test_segment_lengths_agree_with_the_engine(program, tmp_path):
     kind = np.asarray(path.kind)
     assert lengths.sum() == pytest.approx(path.length(True), rel=1e-9)
     assert lengths[kind != 0].sum() == pytest.approx(path.length(False), rel=1e-9)
+
+
+L_SHAPE = "G21 G0 X0 Y-10\nG41.1 D10\nG1 X0 Y0 F100\nX50\nY30\nG42.1 D10\nX80\nG40 G0 X90 Y40\nM2\n"
+
+
+def _line(ax, label):
+    found = [ln for ln in ax.get_lines() if ln.get_label() == label]
+    assert found, [ln.get_label() for ln in ax.get_lines()]
+    return np.column_stack(found[0].get_data())
+
+
+def test_colour_by_side(mpl):
+    import toolcomp as tc
+    prof = tc.ControlProfile("fanuc")  # G41 <-> G42 without G40 between
+    res = tc.run(tc.Program.parse(L_SHAPE), profile=prof)
+    from toolcomp.plot import plot_result
+    ax = plot_result(res, color_by="side")
+    left, right = _line(ax, "left (G41 / RL)"), _line(ax, "right (G42 / RR)")
+    # G41 r = 5 along y = 0 runs at y = 5; G42 along y = 30 (X50 -> X80) runs at y = 25.
+    assert np.isclose(left[:, 1], 5).any() and not np.isclose(left[:, 1], 25).any()
+    # The side change links the old perpendicular (45, 30) to the new one (50, 25).
+    assert np.allclose(right[0], [45, 30]) and np.allclose(right[1:, 1], 25)
+    with pytest.raises(ValueError, match="color_by"):
+        plot_result(res, color_by="feed")
+
+
+def test_lathe_half_section_and_3d_view(mpl, tmp_path):
+    import toolcomp as tc
+    from toolcomp.plot import plot_result, save_plot
+    res = tc.run(tc.Program.parse("G21 G18 G8 G0 X20 Z2\nG1 Z-30 F100\nX30 Z-40\nG0 X40\nZ2\nM2\n"))
+    ax = plot_result(res, plane="lathe")
+    assert ax.get_xlabel() == "Z [mm]" and ax.get_ylabel() == "X [mm]"
+    axis = _line(ax, "spindle axis")
+    assert np.allclose(axis[:, 1], 0)
+    xy = _line(ax, "compensated")
+    assert np.isclose(xy[:, 0], -40).any() and np.isclose(xy[:, 1], 30).any()  # (Z-40, X30)
+    helix = tc.run(tc.Program.parse("G21 G0 X10 Y0 Z0\nG3 X10 Y0 Z-6 I-10 J0 P3 F100\nM2\n"))
+    ax3 = plot_result(helix, plane="3d")
+    assert ax3.name == "3d"
+    comp = [ln for ln in ax3.get_lines() if ln.get_label() == "compensated"][0]
+    x, y, z = comp.get_data_3d()
+    assert np.isclose(z.min(), -6) and np.isclose(x.min(), -10, atol=1e-3) and np.isclose(y.max(), 10, atol=1e-3)
+    out = save_plot(helix, tmp_path / "helix.png", plane="3d")
+    assert (tmp_path / "helix.png").stat().st_size > 1000 and out
