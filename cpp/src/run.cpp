@@ -83,6 +83,8 @@ Result run(const Program& program, const ToolTable* tools, const RunOptions& opt
     Tee tee(res.nominal, chain);
     iso::InterpretOptions iopts;
     iopts.block_delete = options.block_delete;
+    iopts.progress = options.progress;
+    iopts.progress_every = options.progress_every ? options.progress_every : 1;
     try {
         if (program.dialect == Dialect::heidenhain)
             heidenhain::interpret(program, tools, profile, tee, res.diagnostics);

@@ -146,14 +146,20 @@ void bind_run(py::module_& m) {
     m.def(
         "run",
         [](const Program& program, const ToolTable* tools, bool strict, bool block_delete,
-           std::optional<ControlProfile> profile) {
+           std::optional<ControlProfile> profile, py::object progress, std::size_t progress_every) {
             RunOptions o;
             o.strict = strict;
             o.block_delete = block_delete;
             o.profile = std::move(profile);
+            o.progress_every = progress_every;
+            if (!progress.is_none())
+                o.progress = [&progress](std::size_t n) {
+                    py::gil_scoped_acquire gil;
+                    progress(n);  // a Python exception (Ctrl-C) stops the run
+                };
             py::gil_scoped_release nogil;
             return std::make_shared<Result>(run(program, tools, o));
         },
         py::arg("program"), py::arg("tools") = nullptr, py::arg("strict") = true, py::arg("block_delete") = false,
-        py::arg("profile") = py::none());
+        py::arg("profile") = py::none(), py::arg("progress") = py::none(), py::arg("progress_every") = 1 << 16);
 }

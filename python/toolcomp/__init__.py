@@ -51,7 +51,7 @@ _sys.modules[__name__ + ".sinumerik"] = sinumerik  # type: ignore[assignment]  #
 
 
 def run(program, tools=None, *, dialect=None, strict=True, block_delete=False, profile=None,
-        units="mm"):
+        units="mm", progress=None, progress_every=65536):
     """Interpret ``program`` and apply tool compensation.
 
     ``program`` is a :class:`Program` or a path to a program file (dialect from the suffix
@@ -59,7 +59,9 @@ def run(program, tools=None, *, dialect=None, strict=True, block_delete=False, p
     (read with ``units``), or None. With ``strict=True`` the first error is raised; with
     ``strict=False`` the path up to the error is returned and the error is in
     ``result.diagnostics``. ``profile`` (a :class:`ControlProfile`) overrides the
-    dialect's control behaviour. The GIL is released while the program runs.
+    dialect's control behaviour. ``progress(blocks_read)`` is called every ``progress_every``
+    blocks (LinuxCNC and Fanuc dialects); an exception it raises stops the run. The GIL is
+    released while the program runs.
     """
     if isinstance(program, (str, _os.PathLike)):
         # Read leniently: a syntax error is raised (or reported) when the run reaches its
@@ -67,7 +69,8 @@ def run(program, tools=None, *, dialect=None, strict=True, block_delete=False, p
         program = Program.read(_os.fspath(program), dialect, strict=False)
     if isinstance(tools, (str, _os.PathLike)):
         tools = ToolTable.read(_os.fspath(tools), units=units)
-    return _core.run(program, tools, strict=strict, block_delete=block_delete, profile=profile)
+    return _core.run(program, tools, strict=strict, block_delete=block_delete, profile=profile,
+                     progress=progress, progress_every=progress_every)
 
 
 def _result_plot(self, ax=None, **kwargs):

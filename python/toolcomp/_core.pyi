@@ -3,7 +3,7 @@ from __future__ import annotations
 
 import enum
 import os
-from typing import Any, Iterator, List, Mapping, Optional, Sequence, Tuple, Union, overload
+from typing import Any, Callable, Iterator, List, Mapping, Optional, Sequence, Tuple, Union, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -243,7 +243,8 @@ def compensate_3d(points: npt.ArrayLike, normals: npt.ArrayLike, tool_axes: Opti
                   out: Optional[npt.NDArray[np.float64]] = None) -> npt.NDArray[np.float64]: ...
 
 def run(program: Program, tools: Optional[ToolTable] = None, strict: bool = True,
-        block_delete: bool = False, profile: Optional[ControlProfile] = None) -> Result: ...
+        block_delete: bool = False, profile: Optional[ControlProfile] = None,
+        progress: Optional[Callable[[int], None]] = None, progress_every: int = 65536) -> Result: ...
 
 _Plane = Union[int, str]  # 17, 18, 19 or "G17", "G18", "G19"
 _EdgeMap = dict[Tuple[int, int], "sinumerik.Edge"]

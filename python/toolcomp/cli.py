@@ -161,6 +161,22 @@ def _read_tools(tc, path, units):
         os.unlink(tmp)
 
 
+PROGRESS_MIN_BLOCKS = 1_000_000
+
+
+def _progress_bar(program, stream=None):
+    """A tqdm bar on stderr for programs of a million blocks or more, when stderr is a
+    terminal and tqdm is installed; None otherwise."""
+    stream = stream or sys.stderr
+    if program is None or len(program) < PROGRESS_MIN_BLOCKS or not stream.isatty():
+        return None
+    try:
+        from tqdm import tqdm
+    except ImportError:
+        return None
+    return tqdm(total=len(program), unit="block", unit_scale=True, file=stream, leave=False)
+
+
 def execute(program_file, tools_file=None, dialect=None, units_table=None) -> Outcome:
     """Read the program and tool table and run it with ``strict=False``; every problem
     becomes a diagnostic record. Raises UsageError for unreadable inputs."""
@@ -196,6 +212,9 @@ def execute(program_file, tools_file=None, dialect=None, units_table=None) -> Ou
     run_kwargs = {} if tools is None else {"tools": tools}
     if source is program_file:
         run_kwargs.update(kwargs)
+    bar = _progress_bar(out.program)
+    if bar is not None:
+        run_kwargs["progress"] = lambda n: bar.update(n - bar.n)
     try:
         out.result = tc.run(source, strict=False, **run_kwargs)
     except tc.Error as exc:
@@ -207,6 +226,9 @@ def execute(program_file, tools_file=None, dialect=None, units_table=None) -> Ou
         out.records.append(Record.of(parse_error, program_file, "error"))
         return out
 
+    if bar is not None:
+        bar.update(bar.total - bar.n)
+        bar.close()
     out.records.extend(Record.of(d, program_file) for d in out.result.diagnostics)
     if parse_error is not None and not any(r.is_error for r in out.records):
         out.records.append(Record.of(parse_error, program_file, "error"))

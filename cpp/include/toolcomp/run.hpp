@@ -1,6 +1,7 @@
 #pragma once
 // The whole pipeline: program text -> Program -> interpreter -> Motion stream ->
 // compensation stages -> Path.
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -25,6 +26,10 @@ struct RunOptions {
     bool strict = true;         // raise at the first error; else return the path up to it
     bool block_delete = false;  // skip '/' blocks
     std::optional<ControlProfile> profile;  // default: profile_for(program.dialect)
+    // Called with the number of blocks read so far, every `progress_every` blocks (ISO
+    // dialects); may throw to stop the run.
+    std::function<void(std::size_t)> progress;
+    std::size_t progress_every = 1 << 16;
 };
 
 struct Result {

@@ -65,7 +65,9 @@ void Interp::info(const char* code, const std::string& msg, int column) {
 }
 
 void Interp::run() {
+    std::size_t read = 0;
     for (const Block& block : prog_.blocks()) {
+        if (opts_.progress && ++read % opts_.progress_every == 0) opts_.progress(read);
         if (block.block_delete && opts_.block_delete) continue;
         line_ = block.line;
         BlockWords bw = collect_words(prog_, block);

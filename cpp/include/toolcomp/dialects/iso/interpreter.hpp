@@ -1,4 +1,5 @@
 #pragma once
+#include <functional>
 // The ISO interpreter: runs a Program block by block with LinuxCNC's modal semantics (or
 // Fanuc's where the profile says so) and emits the Motion stream.
 #include <vector>
@@ -16,6 +17,8 @@ namespace toolcomp::iso {
 
 struct InterpretOptions {
     bool block_delete = false;  // skip blocks that start with '/'
+    std::function<void(std::size_t)> progress;  // blocks read so far, every progress_every
+    std::size_t progress_every = 1 << 16;
 };
 
 // Emits every move into `sink`; non-fatal messages go to `diagnostics`.

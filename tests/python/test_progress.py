@@ -1,0 +1,47 @@
+"""Progress reports of long runs: the callback of tc.run and the command line's bar."""
+import io
+
+import pytest
+
+import toolcomp as tc
+from toolcomp import cli
+
+PROG = "G21\n" + "G1 X1 F100\nX0\n" * 100000 + "M2\n"  # 200 002 blocks
+
+
+def test_progress_is_called_every_n_blocks_and_can_stop_the_run():
+    prog = tc.Program.parse(PROG)
+    seen = []
+    res = tc.run(prog, progress=seen.append, progress_every=50000)
+    assert seen == [50000, 100000, 150000, 200000] and len(res.path) == 200000
+
+    class Stop(Exception):
+        pass
+
+    def stop(n):
+        raise Stop(n)
+
+    with pytest.raises(Stop, match="3000"):
+        tc.run(prog, progress=stop, progress_every=3000)
+
+
+class Tty(io.StringIO):
+    def isatty(self):
+        return True
+
+
+class Big:
+    def __len__(self):
+        return 2_000_000
+
+
+def test_the_command_line_bar_only_for_a_million_blocks_on_a_terminal():
+    pytest.importorskip("tqdm")
+    assert cli._progress_bar(Big(), io.StringIO()) is None      # not a terminal: silent
+    assert cli._progress_bar(tc.Program.parse(PROG), Tty()) is None  # 200k blocks: no bar
+    stream = Tty()
+    bar = cli._progress_bar(Big(), stream)
+    assert bar is not None and bar.total == 2_000_000
+    bar.update(1_000_000)
+    bar.close()
+    assert "block" in stream.getvalue()
