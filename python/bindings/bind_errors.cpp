@@ -30,16 +30,22 @@ const char* class_name(ErrorKind k) {
 }  // namespace
 
 void bind_errors(py::module_& m) {
-    py::class_<Diagnostic>(m, "Diagnostic")
+    py::class_<Diagnostic>(m, "Diagnostic",
+                            "A message from the engine: stable code, severity, text and source position.")
         .def(py::init([](std::string code, const std::string& severity, std::string message, int line, int column) {
                  return Diagnostic{std::move(code), severity_from(severity), std::move(message), {line, column}};
              }),
              py::arg("code"), py::arg("severity"), py::arg("message"), py::arg("line") = 0, py::arg("column") = 0)
-        .def_readonly("code", &Diagnostic::code)
-        .def_property_readonly("severity", [](const Diagnostic& d) { return severity_name(d.severity); })
-        .def_readonly("message", &Diagnostic::message)
-        .def_property_readonly("line", [](const Diagnostic& d) { return d.pos.line; })
-        .def_property_readonly("column", [](const Diagnostic& d) { return d.pos.column; })
+        .def_readonly("code", &Diagnostic::code,
+                      "stable machine-readable code, snake_case (e.g. 'arc_end_off_circle')")
+        .def_property_readonly("severity", [](const Diagnostic& d) { return severity_name(d.severity); },
+                               "'info', 'warning' or 'error'")
+        .def_readonly("message", &Diagnostic::message,
+                      "human-readable message (the control's own text where it has one)")
+        .def_property_readonly("line", [](const Diagnostic& d) { return d.pos.line; },
+                               "source line, 1-based; 0 when not tied to a line")
+        .def_property_readonly("column", [](const Diagnostic& d) { return d.pos.column; },
+                               "source column, 1-based; 0 for the whole line")
         .def("__repr__", [](const Diagnostic& d) {
             return "Diagnostic(code='" + d.code + "', severity='" + severity_name(d.severity) + "', message=" +
                    py::repr(py::str(d.message)).cast<std::string>() + ", line=" + std::to_string(d.pos.line) +

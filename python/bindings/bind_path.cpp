@@ -33,23 +33,37 @@ auto column(std::vector<T> Path::*member, std::size_t width) {
 }  // namespace
 
 void bind_path(py::module_& m) {
-    py::class_<Path, std::shared_ptr<Path>>(m, "Path")
-        .def("__len__", &Path::size)
-        .def_property_readonly("kind", column(&Path::kind, 1))
-        .def_property_readonly("start", column(&Path::start, 3))
-        .def_property_readonly("end", column(&Path::end, 3))
-        .def_property_readonly("center", column(&Path::center, 3))
-        .def_property_readonly("abc", column(&Path::abc, 3))
-        .def_property_readonly("line", column(&Path::line, 1))
-        .def_property_readonly("tool", column(&Path::tool, 1))
-        .def_property_readonly("feed", column(&Path::feed, 1))
-        .def_property_readonly("side", column(&Path::side, 1))
+    py::class_<Path, std::shared_ptr<Path>>(
+        m, "Path",
+        "N path segments as read-only numpy column views (no copies): lengths in mm, angles in degrees, "
+        "positions in program coordinates (work offsets not added, tool length offset in `tool_offset`).")
+        .def("__len__", &Path::size, "number of segments")
+        .def_property_readonly("kind", column(&Path::kind, 1),
+                               "motion type of each segment, uint8 (N,): RAPID 0, LINE 1, ARC_CW 2, ARC_CCW 3")
+        .def_property_readonly("start", column(&Path::start, 3),
+                               "start point of each segment, float64 (N, 3), mm, program coordinates")
+        .def_property_readonly("end", column(&Path::end, 3),
+                               "end point of each segment, float64 (N, 3), mm, program coordinates")
+        .def_property_readonly("center", column(&Path::center, 3),
+                               "arc centre, float64 (N, 3), mm, program coordinates; NaN for rapids and lines")
+        .def_property_readonly("abc", column(&Path::abc, 3),
+                               "rotary axes A B C at the segment end, float64 (N, 3), degrees")
+        .def_property_readonly("line", column(&Path::line, 1),
+                               "source line of the block, int32 (N,), 1-based; an inserted corner piece carries "
+                               "the line of the block after the corner")
+        .def_property_readonly("tool", column(&Path::tool, 1), "number of the tool in the spindle, int32 (N,)")
+        .def_property_readonly("feed", column(&Path::feed, 1), "feed rate, float64 (N,), mm/min; NaN for rapids")
+        .def_property_readonly("side", column(&Path::side, 1),
+                               "cutter radius compensation, int8 (N,): +1 left (G41/RL), -1 right (G42/RR), 0 off")
         .def_property_readonly("generated",
                                [](py::object self) {
                                    const Path& p = self.cast<const Path&>();
                                    return view(self, p.generated, p.size(), 1, py::dtype("bool"));
-                               })
-        .def_property_readonly("tool_offset", column(&Path::tool_offset, 3))
+                               },
+                               "bool (N,): True where a compensation stage inserted the segment (corner arcs, "
+                               "extension blocks)")
+        .def_property_readonly("tool_offset", column(&Path::tool_offset, 3),
+                               "active tool length offset, float64 (N, 3), mm (X Y Z)")
         .def_property_readonly("plane", column(&Path::plane, 1),
                                "working plane of each segment: 0 XY (G17), 1 ZX (G18), 2 YZ (G19)")
         .def_property_readonly("turns", column(&Path::turns, 1), "arcs: extra full turns (LinuxCNC P word - 1)")

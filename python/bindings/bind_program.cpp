@@ -7,7 +7,9 @@
 using namespace toolcomp;
 
 void bind_program(py::module_& m) {
-    py::class_<Program, std::shared_ptr<Program>>(m, "Program")
+    py::class_<Program, std::shared_ptr<Program>>(
+        m, "Program",
+        "A parsed part program (blocks of words) in one dialect; create it with Program.read or Program.parse.")
         .def_static(
             "read",
             [](const py::object& path_like, std::optional<std::string> dialect, bool strict) {
@@ -29,11 +31,14 @@ void bind_program(py::module_& m) {
             },
             py::arg("text"), py::arg("dialect") = "linuxcnc", py::arg("name") = "<string>", py::arg("strict") = true,
             "Parse program text in the given dialect.")
-        .def_readonly("name", &Program::name)
-        .def_property_readonly("dialect", [](const Program& p) { return std::string(dialect_name(p.dialect)); })
-        .def_property_readonly("word_count", &Program::word_count)
-        .def_property_readonly("syntax_error", [](const Program& p) { return p.syntax_error; })
-        .def("__len__", &Program::size)
+        .def_readonly("name", &Program::name, "file name, or \"<string>\" (or the name given to parse)")
+        .def_property_readonly("dialect", [](const Program& p) { return std::string(dialect_name(p.dialect)); },
+                               "dialect name: 'linuxcnc', 'fanuc', 'sinumerik', 'heidenhain' or 'rockwell'")
+        .def_property_readonly("word_count", &Program::word_count, "number of words in all blocks")
+        .def_property_readonly("syntax_error", [](const Program& p) { return p.syntax_error; },
+                               "the first syntax error of a leniently parsed program (a Diagnostic; raised when a "
+                               "run reaches its line), or None")
+        .def("__len__", &Program::size, "number of blocks")
         .def("__repr__", [](const Program& p) {
             return "Program(name='" + p.name + "', dialect='" + std::string(dialect_name(p.dialect)) +
                    "', blocks=" + std::to_string(p.size()) + ")";

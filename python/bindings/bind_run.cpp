@@ -11,46 +11,88 @@
 using namespace toolcomp;
 
 void bind_run(py::module_& m) {
-    py::enum_<LengthAxes>(m, "LengthAxes")
-        .value("all", LengthAxes::all)
-        .value("z_only", LengthAxes::z_only)
-        .value("plane_normal", LengthAxes::plane_normal);
+    py::enum_<LengthAxes>(m, "LengthAxes", "Which axes a tool length offset (G43 H) acts on.")
+        .value("all", LengthAxes::all, "the tool's whole offset vector (LinuxCNC: X..W from the tool table)")
+        .value("z_only", LengthAxes::z_only, "type A: the tool's length on Z whatever the plane (Fanuc default)")
+        .value("plane_normal", LengthAxes::plane_normal, "type B: the length on the axis normal to the active plane");
 
-    py::enum_<EntryStyle>(m, "EntryStyle")
-        .value("perpendicular_to_entry", EntryStyle::perpendicular_to_entry)
-        .value("perpendicular_to_next", EntryStyle::perpendicular_to_next)
-        .value("around_start_when_behind", EntryStyle::around_start_when_behind);
-    py::enum_<ExitStyle>(m, "ExitStyle")
-        .value("perpendicular_to_last", ExitStyle::perpendicular_to_last)
-        .value("corner_with_exit", ExitStyle::corner_with_exit);
-    py::enum_<OutsideCorner>(m, "OutsideCorner")
-        .value("arc", OutsideCorner::arc)
-        .value("intersection", OutsideCorner::intersection)
-        .value("extension", OutsideCorner::extension);
-    py::enum_<GougeReaction>(m, "GougeReaction")
-        .value("error", GougeReaction::error)
-        .value("skip", GougeReaction::skip)
-        .value("report", GougeReaction::report);
-    py::enum_<NonPlaneReaction>(m, "NonPlaneReaction")
-        .value("error", NonPlaneReaction::error)
-        .value("overcut", NonPlaneReaction::overcut);
+    py::enum_<EntryStyle>(m, "EntryStyle", "How a control finishes the activation block of radius compensation.")
+        .value("perpendicular_to_entry", EntryStyle::perpendicular_to_entry,
+               "the activation block ends perpendicular to itself at its programmed end, then the corner rule "
+               "joins it to the next element (LinuxCNC; Fanuc start-up type B; Sinumerik KONT)")
+        .value("perpendicular_to_next", EntryStyle::perpendicular_to_next,
+               "the activation block ends where the next element's equidistant starts, perpendicular to the next "
+               "element (Fanuc start-up type A; Sinumerik NORM; Heidenhain RL/RR)")
+        .value("around_start_when_behind", EntryStyle::around_start_when_behind,
+               "Sinumerik KONT: as perpendicular_to_next, unless the start point lies behind the contour; then as "
+               "perpendicular_to_entry, so the tool goes round the contour start by the outside-corner rule");
+    py::enum_<ExitStyle>(m, "ExitStyle", "How the compensated path leaves the contour when compensation is cancelled.")
+        .value("perpendicular_to_last", ExitStyle::perpendicular_to_last,
+               "the last compensated move ends perpendicular to itself at its programmed end; the cancel move runs "
+               "from there to its programmed end point (LinuxCNC; Fanuc type A)")
+        .value("corner_with_exit", ExitStyle::corner_with_exit,
+               "the cancel move starts perpendicular to itself at its start, joined to the last move by the corner "
+               "rule, and ends uncompensated (Fanuc type B; Sinumerik KONT)");
+    py::enum_<OutsideCorner>(m, "OutsideCorner", "What fills the gap at an outside corner of the compensated path.")
+        .value("arc", OutsideCorner::arc, "transition arc of the tool radius about the programmed corner")
+        .value("intersection", OutsideCorner::intersection,
+               "meet at the intersection of the equidistants; turns sharper than corner_limit get the transition arc")
+        .value("extension", OutsideCorner::extension,
+               "intersection for turns up to corner_limit; sharper ones extend both elements by the radius and join "
+               "the extensions with a line");
+    py::enum_<GougeReaction>(m, "GougeReaction",
+                             "What the control does when the compensated tool cannot reach part of the contour.")
+        .value("error", GougeReaction::error, "stop with the control's alarm (LinuxCNC, Fanuc, Heidenhain default)")
+        .value("skip", GougeReaction::skip,
+               "leave out the unreachable elements and join the neighbours where their equidistants cross, within "
+               "the look-ahead (Sinumerik CDON, Heidenhain M120)")
+        .value("report", GougeReaction::report, "keep the path as computed (it gouges) and report a warning");
+    py::enum_<NonPlaneReaction>(
+        m, "NonPlaneReaction",
+        "What happens when more than max_non_plane_moves blocks without motion in the plane follow each other "
+        "while compensating.")
+        .value("error", NonPlaneReaction::error, "refuse the program (Sinumerik alarm 10762)")
+        .value("overcut", NonPlaneReaction::overcut,
+               "end the held move perpendicular to its programmed end and warn (9/Series)");
 
     py::class_<RadiusRules>(m, "RadiusRules", "How a control applies cutter radius compensation.")
-        .def_readwrite("yz_plane", &RadiusRules::yz_plane)
-        .def_readwrite("entry", &RadiusRules::entry)
-        .def_readwrite("entry_arc", &RadiusRules::entry_arc)
-        .def_readwrite("exit", &RadiusRules::exit)
-        .def_readwrite("tip_convention", &RadiusRules::tip_convention)
-        .def_readwrite("extension_min_length", &RadiusRules::extension_min_length, "mm")
-        .def_readwrite("ct_radius_on_contour", &RadiusRules::ct_radius_on_contour)
-        .def_readwrite("lct_tangency_tool_space", &RadiusRules::lct_tangency_tool_space)
-        .def_readwrite("exit_must_be_straight", &RadiusRules::exit_must_be_straight)
-        .def_readwrite("entry_length_check", &RadiusRules::entry_length_check)
-        .def_readwrite("outside_corner", &RadiusRules::outside_corner)
-        .def_readwrite("corner_limit", &RadiusRules::corner_limit, "radians")
-        .def_readwrite("disc", &RadiusRules::disc, "Sinumerik DISC, 0..100")
-        .def_readwrite("side_change", &RadiusRules::side_change)
-        .def_readwrite("corner_tolerance", &RadiusRules::corner_tolerance, "radians")
+        .def_readwrite("yz_plane", &RadiusRules::yz_plane,
+                       "compensation allowed in G19 (LinuxCNC refuses it)")
+        .def_readwrite("entry", &RadiusRules::entry,
+                       "EntryStyle: how the activation block of compensation ends")
+        .def_readwrite("entry_arc", &RadiusRules::entry_arc,
+                       "an arc may be the activation block (LinuxCNC: yes)")
+        .def_readwrite("exit", &RadiusRules::exit,
+                       "ExitStyle: how the path leaves the contour when compensation is cancelled")
+        .def_readwrite("tip_convention", &RadiusRules::tip_convention,
+                       "TipConvention: how lathe tip numbers (CuttingEdge.orientation) are read")
+        .def_readwrite("extension_min_length", &RadiusRules::extension_min_length,
+                       "extension blocks: a middle block shorter than this in both plane axes is dropped, mm "
+                       "(9/Series AMP minimum)")
+        .def_readwrite("ct_radius_on_contour", &RadiusRules::ct_radius_on_contour,
+                       "Heidenhain APPR/DEP CT and LCT: R is the contour radius (tool arc R - r) when True, "
+                       "the tool-centre radius when False")
+        .def_readwrite("lct_tangency_tool_space", &RadiusRules::lct_tangency_tool_space,
+                       "Heidenhain APPR/DEP LCT: tangency in tool-centre space when True, on the contour "
+                       "circle when False")
+        .def_readwrite("exit_must_be_straight", &RadiusRules::exit_must_be_straight,
+                       "the move after the cancel (G40) may not be an arc")
+        .def_readwrite("entry_length_check", &RadiusRules::entry_length_check,
+                       "the entry move must be longer than the tool radius (LinuxCNC)")
+        .def_readwrite("outside_corner", &RadiusRules::outside_corner,
+                       "OutsideCorner: what fills the gap at an outside corner")
+        .def_readwrite("corner_limit", &RadiusRules::corner_limit,
+                       "turn angle, radians, beyond which intersection/extension corners change rule (see "
+                       "OutsideCorner)")
+        .def_readwrite("disc", &RadiusRules::disc,
+                       "Sinumerik DISC, 0..100: the corner between two straight moves becomes a fillet of radius "
+                       "r*(1 - DISC/100); 0 is the transition arc, 100 the sharp intersection")
+        .def_readwrite("side_change", &RadiusRules::side_change,
+                       "G41 <-> G42 without G40 between is allowed: the old move ends perpendicular at its "
+                       "end, the new starts perpendicular at its start, joined by a line (Fanuc, Sinumerik, "
+                       "9/Series); False refuses it (LinuxCNC, Heidenhain)")
+        .def_readwrite("corner_tolerance", &RadiusRules::corner_tolerance,
+                       "joints turning at most this much (radians) are tangent: nothing is inserted")
         .def_property(
             "arc_sweep_tolerance",
             [](const RadiusRules& r) { return std::make_pair(r.arc_sweep_tolerance[0], r.arc_sweep_tolerance[1]); },
@@ -58,44 +100,75 @@ void bind_run(py::module_& m) {
                 r.arc_sweep_tolerance[0] = v.first;
                 r.arc_sweep_tolerance[1] = v.second;
             },
-            "radians, (mm programs, inch programs)")
-        .def_readwrite("max_non_plane_moves", &RadiusRules::max_non_plane_moves)
-        .def_readwrite("non_plane_reaction", &RadiusRules::non_plane_reaction)
-        .def_readwrite("lookahead", &RadiusRules::lookahead)
-        .def_readwrite("gouge", &RadiusRules::gouge);
+            "how much more (radians) a pulled-back arc may sweep than programmed before it gouges, as "
+            "(mm programs, inch programs)")
+        .def_readwrite("max_non_plane_moves", &RadiusRules::max_non_plane_moves,
+                       "consecutive blocks without plane motion the control looks past; -1 = no limit")
+        .def_readwrite("non_plane_reaction", &RadiusRules::non_plane_reaction,
+                       "NonPlaneReaction: what happens beyond max_non_plane_moves")
+        .def_readwrite("lookahead", &RadiusRules::lookahead,
+                       "plane moves looked at when an element turns out unreachable (LinuxCNC: 1)")
+        .def_readwrite("gouge", &RadiusRules::gouge,
+                       "GougeReaction: what happens when the tool cannot reach part of the contour");
 
-    py::enum_<TipConvention>(m, "TipConvention")
-        .value("linuxcnc", TipConvention::linuxcnc)
-        .value("fanuc", TipConvention::fanuc);
-    py::enum_<Machine>(m, "Machine").value("mill", Machine::mill).value("lathe", Machine::lathe);
+    py::enum_<TipConvention>(m, "TipConvention", "Numbering of lathe tool tip directions (orientation 0..9).")
+        .value("linuxcnc", TipConvention::linuxcnc,
+               "LinuxCNC: 1 (-X,+Z), 2 (-X,-Z), 3 (+X,-Z), 4 (+X,+Z), 5 +Z, 6 -X, 7 -Z, 8 +X; 0 and 9 centre")
+        .value("fanuc", TipConvention::fanuc,
+               "Fanuc/Haas: as linuxcnc with the sign of X flipped (1<->4, 2<->3, 6<->8)");
+    py::enum_<Machine>(m, "Machine", "Machine type of a ControlProfile.")
+        .value("mill", Machine::mill, "milling machine")
+        .value("lathe", Machine::lathe,
+               "lathe (in the Fanuc profile: X diameters, incremental U/W, T-word offsets, Fanuc tip numbers)");
 
-    py::class_<ControlProfile>(m, "ControlProfile")
+    py::class_<ControlProfile>(
+        m, "ControlProfile",
+        "How a particular control behaves, as plain data: the profile of a dialect ('linuxcnc', 'fanuc', ...) "
+        "and machine ('mill' or 'lathe'), whose fields may be adjusted and passed as run(..., profile=...).")
         .def(py::init([](const std::string& dialect, const std::string& machine) {
                  if (machine != "mill" && machine != "lathe") throw py::value_error("machine must be 'mill' or 'lathe'");
                  return profile_for(dialect_from_name(dialect), machine == "lathe" ? Machine::lathe : Machine::mill);
              }),
              py::arg("dialect") = "linuxcnc", py::arg("machine") = "mill")
-        .def_readonly("machine", &ControlProfile::machine)
-        .def_readwrite("x_diameter", &ControlProfile::x_diameter)
-        .def_readwrite("incremental_uw", &ControlProfile::incremental_uw)
-        .def_readwrite("t_offsets", &ControlProfile::t_offsets)
-        .def_readwrite("t_format", &ControlProfile::t_format)
-        .def_readwrite("wear_sign", &ControlProfile::wear_sign)
-        .def_readwrite("name", &ControlProfile::name)
-        .def_readwrite("startup_inch", &ControlProfile::startup_inch)
+        .def_readonly("machine", &ControlProfile::machine,
+                      "Machine: mill or lathe (fixed at construction)")
+        .def_readwrite("x_diameter", &ControlProfile::x_diameter,
+                       "lathe: X words are diameters")
+        .def_readwrite("incremental_uw", &ControlProfile::incremental_uw,
+                       "lathe: U and W are incremental X and Z")
+        .def_readwrite("t_offsets", &ControlProfile::t_offsets,
+                       "lathe: a T word is tool and offset number (T0313: tool 3, offset 13) and applies the "
+                       "offset at once (geometry + wear X and Z, nose radius and tip; no D word)")
+        .def_readwrite("t_format", &ControlProfile::t_format,
+                       "how a T word splits into tool, geometry and wear offset numbers: 0 T<tool><two offset "
+                       "digits> (Fanuc); 1-3 geometry and wear from the last 1, 2 or 3 digits; 4-6 wear from "
+                       "the last 1, 2 or 3 digits and geometry from the tool number (9/Series)")
+        .def_readwrite("wear_sign", &ControlProfile::wear_sign,
+                       "effective offset = geometry + wear_sign * wear")
+        .def_readwrite("name", &ControlProfile::name,
+                       "profile name (the dialect's name for built-in profiles)")
+        .def_readwrite("startup_inch", &ControlProfile::startup_inch,
+                       "G20 (inch) active at program start")
         .def_readwrite("block_limit", &ControlProfile::block_limit, "blocks a program may execute (loops count)")
-        .def_readwrite("length_axes", &ControlProfile::length_axes)
-        .def_readwrite("length_subtract_word", &ControlProfile::length_subtract_word)
-        .def_readwrite("radius", &ControlProfile::radius)
+        .def_readwrite("length_axes", &ControlProfile::length_axes,
+                       "LengthAxes: which axes a tool length offset (G43 H) acts on")
+        .def_readwrite("length_subtract_word", &ControlProfile::length_subtract_word,
+                       "G44 (subtract the tool length offset) exists")
+        .def_readwrite("radius", &ControlProfile::radius,
+                       "RadiusRules: the cutter radius compensation rules")
         .def("__repr__", [](const ControlProfile& p) { return "ControlProfile('" + p.name + "')"; });
 
-    py::class_<Result, std::shared_ptr<Result>>(m, "Result")
-        .def_property_readonly("ok", &Result::ok)
-        .def_readonly("diagnostics", &Result::diagnostics)
+    py::class_<Result, std::shared_ptr<Result>>(
+        m, "Result", "The outcome of run(): programmed and compensated paths, diagnostics and block count.")
+        .def_property_readonly("ok", &Result::ok, "True when no diagnostic has severity 'error'")
+        .def_readonly("diagnostics", &Result::diagnostics,
+                      "list of Diagnostic (info and warnings; with strict=False also the error that stopped the run)")
         .def_property_readonly("nominal",
-                               [](std::shared_ptr<Result> r) { return std::shared_ptr<Path>(r, &r->nominal); })
-        .def_property_readonly("path", [](std::shared_ptr<Result> r) { return std::shared_ptr<Path>(r, &r->path); })
-        .def_readonly("blocks", &Result::blocks)
+                               [](std::shared_ptr<Result> r) { return std::shared_ptr<Path>(r, &r->nominal); },
+                               "the programmed Path (what the interpreter produced, before compensation)")
+        .def_property_readonly("path", [](std::shared_ptr<Result> r) { return std::shared_ptr<Path>(r, &r->path); },
+                               "the compensated Path (after the compensation stages)")
+        .def_readonly("blocks", &Result::blocks, "number of blocks in the program")
         .def_property_readonly(
             "blank",
             [](const Result& r) -> py::object {
@@ -161,5 +234,9 @@ void bind_run(py::module_& m) {
             return std::make_shared<Result>(run(program, tools, o));
         },
         py::arg("program"), py::arg("tools") = nullptr, py::arg("strict") = true, py::arg("block_delete") = false,
-        py::arg("profile") = py::none(), py::arg("progress") = py::none(), py::arg("progress_every") = 1 << 16);
+        py::arg("profile") = py::none(), py::arg("progress") = py::none(), py::arg("progress_every") = 1 << 16,
+        "Interpret a Program with an optional ToolTable and apply tool compensation; returns a Result. strict=True "
+        "raises the first error, strict=False returns the path up to it; block_delete skips '/' blocks; profile "
+        "overrides the dialect's ControlProfile; progress(blocks_read) is called every progress_every blocks. "
+        "The GIL is released while the program runs.");
 }

@@ -77,11 +77,12 @@ void bind_tools(py::module_& m) {
             [](CuttingEdge& e, const Eigen::Vector3d& v) { e.uvw = to_array3(v); }, "U V W offsets, mm")
         .def_readwrite("radius", &CuttingEdge::radius, "cutter / nose radius, mm")
         .def_readwrite("corner_radius", &CuttingEdge::corner_radius, "corner radius R2, mm")
-        .def_readwrite("radius_wear", &CuttingEdge::radius_wear)
-        .def_readwrite("corner_radius_wear", &CuttingEdge::corner_radius_wear)
+        .def_readwrite("radius_wear", &CuttingEdge::radius_wear, "radius wear, mm, added to radius")
+        .def_readwrite("corner_radius_wear", &CuttingEdge::corner_radius_wear,
+                       "corner radius wear, mm, added to corner_radius")
         .def_readwrite("orientation", &CuttingEdge::orientation, "lathe tip number 0-9 as in the table")
-        .def_readwrite("front_angle", &CuttingEdge::front_angle)
-        .def_readwrite("back_angle", &CuttingEdge::back_angle)
+        .def_readwrite("front_angle", &CuttingEdge::front_angle, "front angle, degrees")
+        .def_readwrite("back_angle", &CuttingEdge::back_angle, "back angle, degrees")
         .def_property_readonly("effective_length", &CuttingEdge::effective_length, "length + length_wear")
         .def_property_readonly(
             "shape",
@@ -94,7 +95,8 @@ void bind_tools(py::module_& m) {
             },
             "end_mill (R2 = 0), ball (R2 = R) or toroid, from the effective radii")
         .def_property_readonly("effective_radius", &CuttingEdge::effective_radius, "radius + radius_wear")
-        .def_property_readonly("effective_corner_radius", &CuttingEdge::effective_corner_radius)
+        .def_property_readonly("effective_corner_radius", &CuttingEdge::effective_corner_radius,
+                               "corner_radius + corner_radius_wear, mm")
         .def(py::self == py::self)
         .def(py::self != py::self)
         .def("__copy__", [](const CuttingEdge& e) { return e; })
@@ -121,17 +123,17 @@ void bind_tools(py::module_& m) {
              }),
              py::arg("number") = 0, py::kw_only(), py::arg("pocket") = 0, py::arg("name") = "",
              py::arg("comment") = "", py::arg("edges") = py::none())
-        .def_readwrite("number", &Tool::number)
-        .def_readwrite("pocket", &Tool::pocket)
-        .def_readwrite("name", &Tool::name)
-        .def_readwrite("comment", &Tool::comment)
+        .def_readwrite("number", &Tool::number, "tool number (T), >= 0")
+        .def_readwrite("pocket", &Tool::pocket, "tool changer pocket number, >= 0")
+        .def_readwrite("name", &Tool::name, "tool name")
+        .def_readwrite("comment", &Tool::comment, "comment text of the table entry")
         .def_property(
             "edges", [](const Tool& t) { return py::tuple(py::cast(t.edges)); },
             [](Tool& t, std::vector<CuttingEdge> edges) { t.edges = std::move(edges); },
             "the cutting edges (a tuple of copies; assign a new sequence to change them)")
         .def("edge", py::overload_cast<int>(&Tool::edge, py::const_), py::arg("d") = 1,
              py::return_value_policy::copy, "a copy of the edge with D number d")
-        .def("has_edge", &Tool::has_edge, py::arg("d"))
+        .def("has_edge", &Tool::has_edge, py::arg("d"), "whether the tool has an edge with D number d")
         .def("set_edge", &Tool::set_edge, py::arg("edge"), "insert or replace the edge with edge.number")
         .def(py::self == py::self)
         .def(py::self != py::self)
@@ -200,13 +202,15 @@ void bind_tools(py::module_& m) {
         .def("__len__", &ToolTable::size)
         .def("__iter__", [](const ToolTable& t) { return py::iter(py::cast(t.tools())); },
              "iterate over copies of the tools, in file order")
-        .def_property_readonly("tools", [](const ToolTable& t) { return py::tuple(py::cast(t.tools())); })
+        .def_property_readonly("tools", [](const ToolTable& t) { return py::tuple(py::cast(t.tools())); },
+                               "a tuple of copies of the tools, in file order")
         .def_property_readonly("numbers",
                                [](const ToolTable& t) {
                                    py::list out;
                                    for (const Tool& tool : t.tools()) out.append(tool.number);
                                    return out;
-                               })
+                               },
+                               "the tool numbers, in file order (a list)")
         .def("set", &ToolTable::set, py::arg("tool"), "insert, or replace the tool with the same number")
         .def("remove", &ToolTable::remove, py::arg("number"), "remove a tool; returns whether it was there")
         .def_property(

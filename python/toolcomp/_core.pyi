@@ -18,6 +18,8 @@ _PathLike = Union[str, os.PathLike]
 _Vec3 = Union[Sequence[float], npt.NDArray[np.float64]]
 
 class Diagnostic:
+    """A message from the engine: stable code, severity ('info', 'warning', 'error'), text and
+    1-based line and column (0 = unknown)."""
     def __init__(self, code: str, severity: str, message: str, line: int = 0, column: int = 0) -> None: ...
     @property
     def code(self) -> str: ...
@@ -31,6 +33,7 @@ class Diagnostic:
     def column(self) -> int: ...
 
 class CuttingEdge:
+    """One cutting edge (D number) of a tool. Lengths in mm, angles in degrees."""
     def __init__(self, *, number: int = 1, length: _Vec3 = ..., radius: float = 0.0,
                  corner_radius: float = 0.0, rotary: _Vec3 = ..., uvw: _Vec3 = ...,
                  length_wear: _Vec3 = ..., radius_wear: float = 0.0, corner_radius_wear: float = 0.0,
@@ -57,6 +60,7 @@ class CuttingEdge:
     def shape(self) -> str: ...  # "end_mill" | "toroid" | "ball"
 
 class Tool:
+    """A tool with one or more cutting edges (values, not references into a table)."""
     def __init__(self, number: int, *, pocket: int = 0, name: str = "", comment: str = "",
                  edges: Optional[Sequence[CuttingEdge]] = None) -> None: ...
     number: int
@@ -70,6 +74,7 @@ class Tool:
     def set_edge(self, edge: CuttingEdge) -> None: ...
 
 class ToolTable:
+    """Tool table (LinuxCNC .tbl, CSV, JSON, Heidenhain TOOL.T); tools stored in mm and degrees."""
     def __init__(self, units: str = "mm") -> None: ...
     @staticmethod
     def read(path: _PathLike, format: Optional[str] = None, units: str = "mm") -> ToolTable: ...
@@ -98,6 +103,7 @@ class ToolTable:
     def diff(self, other: ToolTable, tol: float = 0.0) -> List[Any]: ...
 
 class Program:
+    """A parsed part program (blocks of words) in one dialect; create it with Program.read or Program.parse."""
     @staticmethod
     def read(path: _PathLike, dialect: Optional[str] = None, strict: bool = True) -> Program: ...
     @staticmethod
@@ -150,42 +156,51 @@ class Path:
     def length(self, include_rapids: bool = True) -> float: ...
 
 class LengthAxes(enum.Enum):
+    """Which axes a tool length offset (G43 H) acts on."""
     all = 0
     z_only = 1
     plane_normal = 2
 
 class EntryStyle(enum.Enum):
+    """How a control finishes the activation block of radius compensation."""
     perpendicular_to_entry = 0
     perpendicular_to_next = 1
     around_start_when_behind = 2
 
 class ExitStyle(enum.Enum):
+    """How the compensated path leaves the contour when compensation is cancelled."""
     perpendicular_to_last = 0
     corner_with_exit = 1
 
 class OutsideCorner(enum.Enum):
+    """What fills the gap at an outside corner of the compensated path."""
     arc = 0
     intersection = 1
     extension = 2
 
 class GougeReaction(enum.Enum):
+    """What the control does when the compensated tool cannot reach part of the contour."""
     error = 0
     skip = 1
     report = 2
 
 class NonPlaneReaction(enum.Enum):
+    """What happens when too many blocks without motion in the plane follow each other while compensating."""
     error = 0
     overcut = 1
 
 class TipConvention(enum.Enum):
+    """Numbering of lathe tool tip directions (orientation 0..9)."""
     linuxcnc = 0
     fanuc = 1
 
 class Machine(enum.Enum):
+    """Machine type of a ControlProfile."""
     mill = 0
     lathe = 1
 
 class RadiusRules:
+    """How a control applies cutter radius compensation."""
     yz_plane: bool
     entry: EntryStyle
     entry_arc: bool
@@ -208,6 +223,7 @@ class RadiusRules:
     gouge: GougeReaction
 
 class ControlProfile:
+    """How a particular control behaves, as plain data; adjust fields and pass as run(..., profile=...)."""
     def __init__(self, dialect: str = "linuxcnc", machine: str = "mill") -> None: ...
     @property
     def machine(self) -> Machine: ...
@@ -224,6 +240,7 @@ class ControlProfile:
     radius: RadiusRules
 
 class Result:
+    """The outcome of run(): programmed and compensated paths (mm), diagnostics and block count."""
     @property
     def ok(self) -> bool: ...
     @property
