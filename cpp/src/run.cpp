@@ -87,7 +87,7 @@ Result run(const Program& program, const ToolTable* tools, const RunOptions& opt
     iopts.progress_every = options.progress_every ? options.progress_every : 1;
     try {
         if (program.dialect == Dialect::heidenhain)
-            heidenhain::interpret(program, tools, profile, tee, res.diagnostics);
+            heidenhain::interpret(program, tools, profile, tee, res.diagnostics, iopts.progress, iopts.progress_every);
         else if (is_iso(program.dialect))
             iso::interpret(program, tools, profile, iopts, tee, res.diagnostics);
         else

@@ -60,8 +60,8 @@ def run(program, tools=None, *, dialect=None, strict=True, block_delete=False, p
     ``strict=False`` the path up to the error is returned and the error is in
     ``result.diagnostics``. ``profile`` (a :class:`ControlProfile`) overrides the
     dialect's control behaviour. ``progress(blocks_read)`` is called every ``progress_every``
-    blocks (LinuxCNC and Fanuc dialects); an exception it raises stops the run. The GIL is
-    released while the program runs.
+    blocks (blocks executed, loops counted, in Heidenhain programs); an exception it raises
+    stops the run. The GIL is released while the program runs.
     """
     if isinstance(program, (str, _os.PathLike)):
         # Read leniently: a syntax error is raised (or reported) when the run reaches its

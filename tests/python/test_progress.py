@@ -45,3 +45,14 @@ def test_the_command_line_bar_only_for_a_million_blocks_on_a_terminal():
     bar.update(1_000_000)
     bar.close()
     assert "block" in stream.getvalue()
+
+
+def test_heidenhain_progress_counts_executed_blocks_with_loops():
+    # 2 moves in a section repeated 10 000 times: over 20 000 blocks executed.
+    prog = tc.Program.parse("0 BEGIN PGM P MM\n1 TOOL DEF 1 L+0 R+0\n2 TOOL CALL 1 Z\n3 L X+0 Y+0 F100\n"
+                            "4 LBL 1\n5 L X+1\n6 L X+0\n7 CALL LBL 1 REP 9999\n8 END PGM P MM\n",
+                            dialect="heidenhain")
+    seen = []
+    res = tc.run(prog, progress=seen.append, progress_every=5000)
+    assert len(res.path) >= 20000
+    assert seen[:4] == [5000, 10000, 15000, 20000]

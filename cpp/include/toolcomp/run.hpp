@@ -26,8 +26,8 @@ struct RunOptions {
     bool strict = true;         // raise at the first error; else return the path up to it
     bool block_delete = false;  // skip '/' blocks
     std::optional<ControlProfile> profile;  // default: profile_for(program.dialect)
-    // Called with the number of blocks read so far, every `progress_every` blocks (ISO
-    // dialects); may throw to stop the run.
+    // Called with the number of blocks read (Heidenhain: executed) so far, every
+    // `progress_every` blocks; may throw to stop the run.
     std::function<void(std::size_t)> progress;
     std::size_t progress_every = 1 << 16;
 };

@@ -292,6 +292,7 @@ void Interp::run() {
     for (std::size_t pc = 0; pc < blocks.size();) {
         auto raw = prog_.tokens(blocks[pc]);
         line_ = blocks[pc].line;
+        if (progress_ && (executed + 1) % progress_every_ == 0) progress_(executed + 1);
         if (++executed > profile_.block_limit)
             fail("block_limit", "More than " + std::to_string(profile_.block_limit) +
                                     " blocks executed: an endless loop? (ControlProfile.block_limit)");
@@ -363,8 +364,11 @@ void Interp::run() {
 }
 
 void interpret(const Program& program, const ToolTable* tools, const ControlProfile& profile, MotionSink& sink,
-               std::vector<Diagnostic>& diagnostics) {
-    Interp(program, tools, profile, sink, diagnostics).run();
+               std::vector<Diagnostic>& diagnostics, const std::function<void(std::size_t)>& progress,
+               std::size_t progress_every) {
+    Interp interp(program, tools, profile, sink, diagnostics);
+    if (progress) interp.on_progress(progress, progress_every);
+    interp.run();
 }
 
 }  // namespace toolcomp::heidenhain

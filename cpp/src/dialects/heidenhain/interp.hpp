@@ -1,6 +1,7 @@
 #pragma once
 // Working data of the Klartext interpreter. Positions in program units (BEGIN PGM MM|INCH),
 // in machine axis order X Y Z; the working plane follows the tool axis of TOOL CALL.
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -19,8 +20,15 @@ public:
     Interp(const Program& prog, const ToolTable* tools, const ControlProfile& profile, MotionSink& sink,
            std::vector<Diagnostic>& diags);
     void run();
+    // Called with the number of blocks executed so far, every `every` blocks.
+    void on_progress(std::function<void(std::size_t)> f, std::size_t every) {
+        progress_ = std::move(f);
+        progress_every_ = every ? every : 1;
+    }
 
 private:
+    std::function<void(std::size_t)> progress_;
+    std::size_t progress_every_ = 1 << 16;
     using Tokens = std::span<const Token>;
     std::vector<Token> resolve(Tokens t) const;  // Q parameters in words replaced by values
     bool execute(Tokens t);  // false at END PGM
