@@ -225,3 +225,13 @@ def test_main_in_process(square, capsys):
     assert main(["check", str(square), "--tools", str(TOOLS)]) == 0
     assert main(["run", str(square), "--tools", str(TOOLS)]) == 0
     assert "square.ngc" in capsys.readouterr().out
+
+
+def test_check_a_gouging_program_names_the_block(tmp_path):
+    # A 1 mm slot under a 10 mm cutter: LinuxCNC's gouge error at line 6 (the move after the slot floor).
+    gouge = tmp_path / "gouge.ngc"
+    gouge.write_text("G21 G0 X0 Y-10\nG41.1 D10\nG1 X0 Y0 F100\nX30\nY2\nX31\nY0\nX60\nG40 G0 X70 Y-10\nM2\n")
+    r = toolcomp("check", gouge)
+    assert r.returncode == 1
+    m = DIAG_RE.match(r.stdout.splitlines()[0])
+    assert (m["file"], m["line"], m["severity"], m["code"]) == (str(gouge), "6", "error", "comp_gouge")
