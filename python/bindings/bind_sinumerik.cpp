@@ -23,6 +23,7 @@
 #include "toolcomp/program/diagnostic.hpp"
 #include "toolcomp/tools/sinumerik_edge.hpp"
 #include "toolcomp/tools/sinumerik_gettcor.hpp"
+#include "toolcomp/tools/sinumerik_lentoax.hpp"
 
 using namespace toolcomp;
 using namespace toolcomp::sinumerik;
@@ -192,6 +193,17 @@ void bind_sinumerik(py::module_& parent) {
         },
         py::arg("tool_type"), py::arg("plane"), py::arg("settings") = py::none(),
         "geometry-axis index (0 = X, 1 = Y, 2 = Z) on which L1, L2, L3 act");
+    m.def(
+        "lentoax",
+        [](int tool_type, const py::object& plane, const std::optional<SinumerikLengthSettings>& s,
+           const std::string& coord) {
+            const LentoaxResult r = lentoax(tool_type, plane_arg(plane), s.value_or(SinumerikLengthSettings{}), coord);
+            return py::make_tuple(r.status, py::make_tuple(r.axind[0], r.axind[1], r.axind[2]),
+                                  Eigen::Matrix<double, 3, 3, Eigen::RowMajor>(r.matrix));
+        },
+        py::arg("tool_type"), py::arg("plane"), py::arg("settings") = py::none(), py::arg("coord") = "W",
+        "LENTOAX: (status, _AXIND, _MATRIX): the 1-based geometry axis (1 X, 2 Y, 3 Z) of L1, L2, L3 and "
+        "their unit vectors as rows; status -1 for an unknown coordinate system (frames are not modelled)");
     m.def(
         "place_lengths",
         [](const Vec3& l123, int tool_type, const py::object& plane, const std::optional<SinumerikLengthSettings>& s) {

@@ -372,6 +372,9 @@ class sinumerik:
     def length_axes(tool_type: int, plane: _Plane,
                     settings: Optional[sinumerik.LengthSettings] = None) -> Tuple[int, int, int]: ...
     @staticmethod
+    def lentoax(tool_type: int, plane: _Plane, settings: Optional[sinumerik.LengthSettings] = None,
+                coord: str = "W") -> Tuple[int, Tuple[int, int, int], npt.NDArray[np.float64]]: ...
+    @staticmethod
     def place_lengths(lengths: _Vec3, tool_type: int, plane: _Plane,
                       settings: Optional[sinumerik.LengthSettings] = None) -> npt.NDArray[np.float64]: ...
     @staticmethod

@@ -256,3 +256,17 @@ def test_trafo5_equals_toolholder():
     with pytest.raises(tc.CompensationError) as err:
         t.to_toolholder(0, 0)
     assert err.value.code == "trafo5_bad_type"
+
+
+def test_lentoax_gives_the_axes_of_the_length_components():
+    # spec 3.2: standard milling in G17: _AXIND = (3, 2, 1), L1 -> Z, L2 -> Y, L3 -> X.
+    status, axind, matrix = sn.lentoax(120, 17)
+    assert status == 0 and axind == (3, 2, 1)
+    np.testing.assert_array_equal(matrix, [[0, 0, 1], [0, 1, 0], [1, 0, 0]])
+    # Turning tool in G18: L1 -> X, L2 -> Z, L3 -> Y (the turning table of 3.2).
+    assert sn.lentoax(500, 18, coord="mcs")[1] == (1, 3, 2)
+    # Milling in G19: L1 -> X, L2 -> Z, L3 -> Y.
+    assert sn.lentoax(120, "G19")[1] == (1, 3, 2)
+    # SD42940 = -17 for milling: Z X Y.
+    assert sn.lentoax(120, 18, sn.LengthSettings(tool_length_const=-17))[1] == (3, 1, 2)
+    assert sn.lentoax(120, 17, coord="XYZ")[0] == -1
