@@ -78,6 +78,10 @@ Result run(const Program& program, const ToolTable* tools, const RunOptions& opt
         const double unit = program.inch ? kMmPerInch : 1.0;
         res.blank = Blank{program.blank->min * unit, program.blank->max * unit, program.blank->axis};
     }
+    // One segment per block is the common case (CAM output): reserving it up front avoids the
+    // copies and the doubled capacity of growing columns (peak memory).
+    res.nominal.reserve(program.size());
+    res.path.reserve(program.size());
     ControlProfile profile = options.profile ? *options.profile : profile_for(program.dialect);
     CompensationChain chain(profile, res.path, res.diagnostics);
     Tee tee(res.nominal, chain);
