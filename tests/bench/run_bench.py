@@ -16,9 +16,12 @@ import time
 import toolcomp as tc
 
 
-def generate(n_blocks):
-    """Rows of 6 moves: long line, two corners, a CCW semicircle, a line back, a CW semicircle."""
+def generate(n_blocks, comp):
+    """Rows of 6 moves: long line, two corners, a CCW semicircle, a line back, a CW semicircle;
+    with ``comp``, cutter radius compensation G42 (r = 1 mm) on for all of them."""
     out = ["G21 G17 G90 G94 G40 G49", "T1 M6", "G43 H1", "G0 X0 Y0 Z5", "G1 Z-1 F600"]
+    if comp:
+        out.append("G42.1 D2")
     y = 0.0
     rows = n_blocks // 6
     for _ in range(rows):
@@ -29,6 +32,8 @@ def generate(n_blocks):
         out.append("G1 X5 Y%.3f" % (y + 7))
         out.append("G2 X5 Y%.3f I0 J-3.5" % y)
         y += 0.001
+    if comp:
+        out.append("G40 G1 X-10 Y-10")
     out.append("M2")
     return "\n".join(out) + "\n", rows * 6
 
@@ -42,34 +47,47 @@ def best_of(fn, repeat=3):
     return best, value
 
 
-def main():
-    n = int(os.environ.get("TOOLCOMP_BENCH_BLOCKS", "1000000"))
-    text, blocks = generate(n)
-    tools = tc.ToolTable.parse("T1 P1 Z50 D6\n", "linuxcnc")
-    print(f"program: {blocks:,} motion blocks, {len(text) / 1e6:.1f} MB")
+def rs274_seconds(text):
+    with tempfile.TemporaryDirectory() as d:
+        with open(os.path.join(d, "big.ngc"), "w") as f:
+            f.write(text)
+        with open(os.path.join(d, "t.tbl"), "w") as f:
+            f.write("T1 P1 Z%.6f D%.6f\n" % (50 / 25.4, 6 / 25.4))  # this rs274 reads tables in inch
+        open(os.path.join(d, "v.var"), "w").close()
+        env = dict(os.environ, HOME=d)
+        t = time.perf_counter()
+        subprocess.run(["rs274", "-g", "-t", "t.tbl", "-v", "v.var", "big.ngc", os.devnull], cwd=d, env=env,
+                       stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=False)
+        return time.perf_counter() - t
+
+
+def bench_program(n, comp, tools):
+    text, blocks = generate(n, comp)
+    print(f"program {'with G42' if comp else 'without compensation'}: {blocks:,} motion blocks, "
+          f"{len(text) / 1e6:.1f} MB")
     t_parse, prog = best_of(lambda: tc.Program.parse(text))
     t_run, res = best_of(lambda: tc.run(prog, tools=tools))
+    compensated = int((res.path.side != 0).sum())
     rss = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
-    print(f"toolcomp parse : {t_parse:7.3f} s  {blocks / t_parse / 1e6:6.2f} M blocks/s")
-    print(f"toolcomp run   : {t_run:7.3f} s  {blocks / t_run / 1e6:6.2f} M blocks/s  ({len(res.path):,} segments)")
-    print(f"toolcomp total : {t_parse + t_run:7.3f} s  peak RSS {rss:.0f} MB")
+    print(f"  toolcomp parse : {t_parse:7.3f} s  {blocks / t_parse / 1e6:6.2f} M blocks/s  "
+          f"{t_parse / blocks * 1e9:5.0f} ns/block")
+    print(f"  toolcomp run   : {t_run:7.3f} s  {blocks / t_run / 1e6:6.2f} M blocks/s  "
+          f"{t_run / blocks * 1e9:5.0f} ns/block  ({len(res.path):,} segments, {compensated:,} compensated)")
+    print(f"  toolcomp total : {t_parse + t_run:7.3f} s  peak RSS so far {rss:.0f} MB")
     if shutil.which("rs274"):
-        with tempfile.TemporaryDirectory() as d:
-            prog_path = os.path.join(d, "big.ngc")
-            with open(prog_path, "w") as f:
-                f.write(text)
-            with open(os.path.join(d, "t.tbl"), "w") as f:
-                f.write("T1 P1 Z%.6f D%.6f\n" % (50 / 25.4, 6 / 25.4))  # this rs274 reads tables in inch
-            open(os.path.join(d, "v.var"), "w").close()
-            env = dict(os.environ, HOME=d)
-            t = time.perf_counter()
-            subprocess.run(["rs274", "-g", "-t", "t.tbl", "-v", "v.var", "big.ngc", os.devnull], cwd=d, env=env,
-                           stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=False)
-            t_rs = time.perf_counter() - t
-        print(f"LinuxCNC rs274 : {t_rs:7.3f} s  {blocks / t_rs / 1e6:6.2f} M blocks/s  (output to /dev/null)")
-        print(f"speed-up       : {t_rs / (t_parse + t_run):7.1f} x")
+        t_rs = rs274_seconds(text)
+        print(f"  LinuxCNC rs274 : {t_rs:7.3f} s  {blocks / t_rs / 1e6:6.2f} M blocks/s  (output to /dev/null)")
+        print(f"  speed-up       : {t_rs / (t_parse + t_run):7.1f} x")
     else:
-        print("LinuxCNC rs274 : not installed (make oracle installs it)")
+        print("  LinuxCNC rs274 : not installed (make oracle installs it)")
+    del res, prog
+
+
+def main():
+    n = int(os.environ.get("TOOLCOMP_BENCH_BLOCKS", "1000000"))
+    tools = tc.ToolTable.parse("T1 P1 Z50 D6\n", "linuxcnc")
+    bench_program(n, True, tools)
+    bench_program(n, False, tools)
 
     # 3D compensation of CAM points (one core).
     import numpy as np
