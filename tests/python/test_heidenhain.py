@@ -109,6 +109,24 @@ CP IPA+720 IZ-5 DR+
     np.testing.assert_allclose(p.end[2], [0, 10, -5], atol=1e-12)
 
 
+def test_ctp_tangential_arc_to_a_polar_end_point():
+    # From (10,0) heading +X, tangent arc to PR 10 PA 90 about the pole (0,0) = (0,10):
+    # chord v = (-10,10), rho = |v|^2 / (2 v.n) = 200 / 20 = 10: CCW about (10,10).
+    p = pgm("""
+TOOL DEF 1 L+0 R+0
+TOOL CALL 1 Z
+CC X+0 Y+0
+L X+0 Y+0 Z+0 R0 F100
+L X+10
+CTP PR+10 PA+90
+""").path
+    assert p.kind[-1] == tc.ARC_CCW
+    np.testing.assert_allclose(p.end[-1], [0, 10, 0], atol=1e-12)
+    np.testing.assert_allclose(p.center[-1], [10, 10, 0], atol=1e-12)
+    with pytest.raises(tc.Error, match="CIRCLE CENTER UNDEFINED"):
+        pgm("TOOL DEF 1 L+0 R+0\nTOOL CALL 1 Z\nL X+0 Y+0 R0 F100\nL X+10\nCTP PR+10 PA+90")
+
+
 @pytest.mark.parametrize("body, message, line", [
     ("TOOL DEF 1 L+0 R+5\nTOOL CALL 1 Z\nL X+0 Y+0 R0 F100\nL X+10 RL\nL Y+10 RR", "RL and RR must be separated by an R0 block", 6),
     ("TOOL DEF 1 L+0 R+5\nTOOL CALL 1 Z\nL X+0 Y+0 R0 F100\nCC X+5 Y+0\nC X+10 Y+0 DR+ RL", "Radius compensation cannot start in a circle block", 6),

@@ -158,12 +158,14 @@ void Interp::arc_radius(Tokens t) {
     pos_ = end;
 }
 
-void Interp::arc_tangential(Tokens t) {
+void Interp::arc_tangential(Tokens t, bool polar) {
+    if (polar && !pole_) fail("no_circle_centre", "CIRCLE CENTER UNDEFINED", t[0].column);
     check_arc_comp(t, side_, profile_, line_);
     modal_words(t, 1);
-    if (plane_moves_ < 1 || !pending_) fail("ct_without_element", "CT needs a preceding contour element", t[0].column);
+    if (plane_moves_ < 1 || !pending_)
+        fail("ct_without_element", std::string(polar ? "CTP" : "CT") + " needs a preceding contour element", t[0].column);
     const Vec2 t0 = end_tangent();
-    const Vec3 end = end_point(t, 1);
+    const Vec3 end = polar ? polar_end(t) : end_point(t, 1);
     const Vec2 s = plane2(pos_), v = plane2(end) - s;
     const double den = 2 * v.dot(left_normal(t0));
     if (std::fabs(den) < 1e-12) fail("arc_end_incorrect", "ARC END POS. INCORRECT", t[0].column);
@@ -176,17 +178,20 @@ void Interp::arc_tangential(Tokens t) {
     pos_ = end;
 }
 
-void Interp::polar_line(Tokens t) {
-    if (!pole_) fail("no_circle_centre", "CIRCLE CENTER UNDEFINED", t[0].column);
-    modal_words(t, 1);
+Vec3 Interp::polar_end(Tokens t) const {
     const Vec2 rel = plane2(pos_) - *pole_;
     double pr = rel.norm(), pa = deg(std::atan2(rel.y(), rel.x()));
     if (auto v = number(t, "PR")) pr = *v;
     if (auto v = number(t, "IPR")) pr += *v;
     if (auto v = number(t, "PA")) pa = *v;
     if (auto v = number(t, "IPA")) pa += *v;
-    Vec3 end = end_point(t, 1);
-    end = with_plane(end, *pole_ + pr * Vec2(std::cos(rad(pa)), std::sin(rad(pa))));
+    return with_plane(end_point(t, 1), *pole_ + pr * Vec2(std::cos(rad(pa)), std::sin(rad(pa))));
+}
+
+void Interp::polar_line(Tokens t) {
+    if (!pole_) fail("no_circle_centre", "CIRCLE CENTER UNDEFINED", t[0].column);
+    modal_words(t, 1);
+    const Vec3 end = polar_end(t);
     if (end == pos_) return;
     if (!rapid_ && feed_ <= 0) fail("no_feed", "No feed rate programmed");
     ++plane_moves_;

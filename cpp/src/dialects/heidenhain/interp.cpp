@@ -232,6 +232,7 @@ bool Interp::execute(Tokens t) {
     else if (k0 == "C") arc_about_pole(t);
     else if (k0 == "CR") arc_radius(t);
     else if (k0 == "CT") arc_tangential(t);
+    else if (k0 == "CTP") arc_tangential(t, /*polar=*/true);
     else if (k0 == "LP") polar_line(t);
     else if (k0 == "CP") polar_arc(t);
     else if (k0 == "RND") rounding(t);
@@ -248,7 +249,7 @@ bool Interp::execute(Tokens t) {
         departure(t);
     } else if (k0 == "LN") {
         surface_line(t);
-    } else if (k0 == "CTP" || k0 == "CYCL")
+    } else if (k0 == "CYCL")
         fail("unsupported_block", k0 + (k1.empty() ? "" : " " + k1) + " is not supported by toolcomp yet", t[0].column);
     else
         fail("unknown_block", "Unknown block '" + k0 + "'", t[0].column);

@@ -47,8 +47,9 @@ private:
     void circle_centre(Tokens t);
     void arc_about_pole(Tokens t);
     void arc_radius(Tokens t);
-    void arc_tangential(Tokens t);
+    void arc_tangential(Tokens t, bool polar = false);  // CT, CTP
     void polar_line(Tokens t);
+    Vec3 polar_end(Tokens t) const;  // PR/IPR, PA/IPA about the pole, the tool axis from Z words
     void polar_arc(Tokens t);
     void rounding(Tokens t);
     void chamfer(Tokens t);
