@@ -1,4 +1,4 @@
-// Klartext contour elements: circle centre / pole (CC), arcs (C, CR, CT), polar moves (LP, CP
+// Klartext contour elements: circle centre / pole (CC), arcs (C, CR, CT), polar moves (LP, CTP, CP
 // with helix), and the corner elements RND and CHF, which change the elements on both sides
 // (so the last element is held back until the next one is known).
 #include <cmath>
