@@ -27,15 +27,16 @@ def check(res):
 
 
 @settings(max_examples=400, deadline=None, derandomize=True, suppress_health_check=[HealthCheck.too_slow])
-@given(program, st.sampled_from(["linuxcnc", "fanuc"]))
-def test_random_programs_fail_cleanly_or_give_finite_paths(text, dialect):
+@given(program, st.sampled_from(["linuxcnc", "fanuc"]), st.sampled_from([None, "sinumerik", "heidenhain", "rockwell"]))
+def test_random_programs_fail_cleanly_or_give_finite_paths(text, dialect, profile):
     try:
         prog = tc.Program.parse(text, dialect=dialect)
     except tc.ParseError:
         return
+    prof = tc.ControlProfile(profile) if profile else None
     for strict in (True, False):
         try:
-            res = tc.run(prog, tools=TOOLS, strict=strict)
+            res = tc.run(prog, tools=TOOLS, strict=strict, profile=prof)
         except tc.Error as e:
             assert strict and e.line >= 0 and e.code
             continue
