@@ -113,3 +113,12 @@ def test_three_blocks_without_plane_motion_are_looked_past():
     text = "G21 G0 X0 Y-10\nG41.1 D10\nG1 X0 Y0 F100\nX20\nZ-1\nZ-2\nZ-3\nY20\nG40 G0 X-10 Y30\nM2\n"
     ends = [tuple(np.round(e[:2], 9)) for e in run(text).path.end]
     assert (15.0, 5.0) in ends  # the inside corner at (20,0) is reached across the Z moves
+
+
+def test_d_change_during_trc_ends_and_starts_perpendicular():
+    # r 5 -> 3 at (30,0) on a straight contour along +X: (30,5) then a link to (30,3).
+    text = "G21 G0 X0 Y10\nG41.1 D10\nG1 X0 Y0 F100\nX30\nG41.1 D6\nX60\nG40 G1 X70 Y10\nM2\n"
+    s = segments(run(text).path)
+    assert (1, (0.0, 5.0), (30.0, 5.0), False) in s
+    assert (1, (30.0, 5.0), (30.0, 3.0), True) in s
+    assert (1, (30.0, 3.0), (60.0, 3.0), False) in s
