@@ -8,9 +8,10 @@ import sys
 
 def _read(path, units):
     import toolcomp as tc
-    if not os.path.isfile(path):
-        raise OSError(f"cannot read {path}: no such file")
-    return tc.ToolTable.read(path, units=units or "mm")
+    from toolcomp.cli import _check_readable, _read_tools
+
+    _check_readable(path, "tool table")
+    return _read_tools(tc, path, units)
 
 
 def _table_error(path, exc) -> int:

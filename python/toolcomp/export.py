@@ -20,11 +20,11 @@ from typing import Iterable, List
 import numpy as np
 
 from . import _core
+from .plot import _ARC_PLANES as _PLANE_AXES
 
 DIALECTS = ("linuxcnc", "fanuc", "grbl")
 _PLANE_WORD = ("G17", "G18", "G19")
-# (first, second, applicate) axis index and the centre word of each of them, per plane
-_PLANE_AXES = ((0, 1, 2), (2, 0, 1), (1, 2, 0))
+# centre word of each axis; _PLANE_AXES gives (first, second, applicate) per plane
 _CENTRE_WORD = ("I", "J", "K")
 
 

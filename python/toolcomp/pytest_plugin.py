@@ -25,8 +25,7 @@ from typing import Dict, Optional
 
 import pytest
 
-SUFFIXES = {".ngc": "linuxcnc", ".nc": "fanuc", ".tap": "fanuc", ".h": "heidenhain",
-            ".mpf": "sinumerik", ".spf": "sinumerik"}
+from .cli import SUFFIX_DIALECTS as SUFFIXES
 _HEADER = re.compile(r"toolcomp:\s*(.*?)\s*\)?\s*$", re.IGNORECASE)
 
 

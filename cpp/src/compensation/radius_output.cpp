@@ -15,12 +15,17 @@ void RadiusCompensation::warn(const char* code, const std::string& msg, int line
     diags_.push_back({code, Severity::warning, msg, {line, 0}});
 }
 
+namespace {
+// Where a move starts that follows one ending at `end` with offset `end_offset`: in program
+// coordinates a new tool length offset moves that point.
+Vec3 start_after(const Vec3& end, const Vec3& end_offset, const Motion& m) { return end + end_offset - m.tool_offset; }
+}  // namespace
+
 void RadiusCompensation::hold(Motion m, const Vec2& dir, double sweep) { queue_.push_back({std::move(m), dir, sweep}); }
 
 void RadiusCompensation::emit(const Held& h) {
     Emitted e{h.m, h.dir, h.sweep, false};
-    // In program coordinates a new tool length offset moves the point the move starts from.
-    if (have_last_) e.m.start = last_ + last_off_ - e.m.tool_offset;
+    if (have_last_) e.m.start = start_after(last_, last_off_, e.m);
     if (e.m.is_arc()) e.m.center[axes(e.m.plane).c] = e.m.start[axes(e.m.plane).c];
     e.in_plane = !e.m.generated && (plane2(e.m.end) - plane2(e.m.start)).norm() > tol::length;
     last_ = e.m.end;
@@ -50,7 +55,7 @@ void RadiusCompensation::release(std::size_t keep) {
             m.end += shift;
             if (m.is_arc()) m.center += shift;
         }
-        if (have_out_) m.start = last_out_ + last_out_off_ - m.tool_offset;
+        if (have_out_) m.start = start_after(last_out_, last_out_off_, m);
         // A generated link of zero length (an activation that already stands at the contour's
         // equidistant, as after APPR) is not a move.
         if (m.generated && m.kind == MotionKind::line && !m.is_arc() && have_out_ && (m.end - m.start).norm() < 1e-12 &&
@@ -69,7 +74,7 @@ void RadiusCompensation::passthrough(const Motion& m) {
     release(0);
     Motion o = m;
     // The exit move runs from the last compensated point to the programmed target.
-    if (exit_pending_ && have_out_) o.start = last_out_ + last_out_off_ - o.tool_offset;
+    if (exit_pending_ && have_out_) o.start = start_after(last_out_, last_out_off_, o);
     exit_pending_ = false;
     last_out_ = last_ = o.end;
     last_out_off_ = last_off_ = o.tool_offset;
