@@ -8,6 +8,8 @@
 #include "toolcomp/dialects/heidenhain/lexer.hpp"
 #include "toolcomp/dialects/iso/interpreter.hpp"
 #include "toolcomp/dialects/iso/lexer.hpp"
+#include "toolcomp/dialects/sinumerik/interpreter.hpp"
+#include "toolcomp/dialects/sinumerik/lexer.hpp"
 
 namespace toolcomp {
 
@@ -40,10 +42,20 @@ private:
     MotionSink& a_;
     MotionSink& b_;
 };
+
+sinumerik::InterpretOptions sinumerik_options(const RunOptions& o) {
+    sinumerik::InterpretOptions s;
+    s.block_delete = o.block_delete;
+    s.progress = o.progress;
+    s.progress_every = o.progress_every ? o.progress_every : 1;
+    s.search_path = o.search_path;
+    return s;
+}
 }  // namespace
 
 Program parse_program(std::string_view text, Dialect dialect, std::string name, bool strict) {
     if (dialect == Dialect::heidenhain) return heidenhain::parse(text, std::move(name), strict);
+    if (dialect == Dialect::sinumerik) return sinumerik::parse(text, std::move(name), strict);
     if (!is_iso(dialect)) dialect_not_supported(dialect);
     return iso::parse(text, dialect, std::move(name), strict);
 }
@@ -91,7 +103,10 @@ Result run(const Program& program, const ToolTable* tools, const RunOptions& opt
     iopts.progress_every = options.progress_every ? options.progress_every : 1;
     try {
         if (program.dialect == Dialect::heidenhain)
-            heidenhain::interpret(program, tools, profile, tee, res.diagnostics, iopts.progress, iopts.progress_every);
+            heidenhain::interpret(program, tools, profile, tee, res.diagnostics, iopts.progress, iopts.progress_every,
+                                  options.search_path);
+        else if (program.dialect == Dialect::sinumerik)
+            sinumerik::interpret(program, tools, profile, sinumerik_options(options), tee, res.diagnostics);
         else if (is_iso(program.dialect))
             iso::interpret(program, tools, profile, iopts, tee, res.diagnostics);
         else

@@ -219,12 +219,14 @@ void bind_run(py::module_& m) {
     m.def(
         "run",
         [](const Program& program, const ToolTable* tools, bool strict, bool block_delete,
-           std::optional<ControlProfile> profile, py::object progress, std::size_t progress_every) {
+           std::optional<ControlProfile> profile, py::object progress, std::size_t progress_every,
+           std::vector<std::string> search_path) {
             RunOptions o;
             o.strict = strict;
             o.block_delete = block_delete;
             o.profile = std::move(profile);
             o.progress_every = progress_every;
+            o.search_path = std::move(search_path);
             if (!progress.is_none())
                 o.progress = [&progress](std::size_t n) {
                     py::gil_scoped_acquire gil;
@@ -235,8 +237,10 @@ void bind_run(py::module_& m) {
         },
         py::arg("program"), py::arg("tools") = nullptr, py::arg("strict") = true, py::arg("block_delete") = false,
         py::arg("profile") = py::none(), py::arg("progress") = py::none(), py::arg("progress_every") = 1 << 16,
+        py::arg("search_path") = std::vector<std::string>{},
         "Interpret a Program with an optional ToolTable and apply tool compensation; returns a Result. strict=True "
         "raises the first error, strict=False returns the path up to it; block_delete skips '/' blocks; profile "
-        "overrides the dialect's ControlProfile; progress(blocks_read) is called every progress_every blocks. "
+        "overrides the dialect's ControlProfile; progress(blocks_read) is called every progress_every blocks; "
+        "search_path lists the directories where Heidenhain CALL PGM looks for called programs. "
         "The GIL is released while the program runs.");
 }

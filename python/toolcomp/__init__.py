@@ -51,7 +51,7 @@ _sys.modules[__name__ + ".sinumerik"] = sinumerik  # type: ignore[assignment]  #
 
 
 def run(program, tools=None, *, dialect=None, strict=True, block_delete=False, profile=None,
-        units="mm", progress=None, progress_every=65536):
+        units="mm", progress=None, progress_every=65536, search_path=()):
     """Interpret ``program`` and apply tool compensation.
 
     ``program`` is a :class:`Program` or a path to a program file (dialect from the suffix
@@ -61,7 +61,12 @@ def run(program, tools=None, *, dialect=None, strict=True, block_delete=False, p
     ``result.diagnostics``. ``profile`` (a :class:`ControlProfile`) overrides the
     dialect's control behaviour. ``progress(blocks_read)`` is called every ``progress_every``
     blocks (blocks executed, loops counted, in Heidenhain programs); an exception it raises
-    stops the run. The GIL is released while the program runs.
+    stops the run. ``search_path`` (a directory or a sequence of directories) is where
+    called programs are looked for, in order, and nowhere else: Heidenhain ``CALL PGM name``
+    (``name`` or ``name.h``), Sinumerik ``L10`` / ``NAME`` (``L10.spf``, ``NAME.spf``,
+    ``.mpf``, any case); segments of a called program carry line numbers of that program's
+    file. The GIL
+    is released while the program runs.
     """
     if isinstance(program, (str, _os.PathLike)):
         # Read leniently: a syntax error is raised (or reported) when the run reaches its
@@ -69,8 +74,11 @@ def run(program, tools=None, *, dialect=None, strict=True, block_delete=False, p
         program = Program.read(_os.fspath(program), dialect, strict=False)
     if isinstance(tools, (str, _os.PathLike)):
         tools = ToolTable.read(_os.fspath(tools), units=units)
+    if isinstance(search_path, (str, bytes, _os.PathLike)):
+        search_path = [search_path]
+    search_path = [_os.fsdecode(d) for d in search_path]
     return _core.run(program, tools, strict=strict, block_delete=block_delete, profile=profile,
-                     progress=progress, progress_every=progress_every)
+                     progress=progress, progress_every=progress_every, search_path=search_path)
 
 
 def _result_plot(self, ax=None, **kwargs):

@@ -261,7 +261,8 @@ def compensate_3d(points: npt.ArrayLike, normals: npt.ArrayLike, tool_axes: Opti
 
 def run(program: Program, tools: Optional[ToolTable] = None, strict: bool = True,
         block_delete: bool = False, profile: Optional[ControlProfile] = None,
-        progress: Optional[Callable[[int], None]] = None, progress_every: int = 65536) -> Result: ...
+        progress: Optional[Callable[[int], None]] = None, progress_every: int = 65536,
+        search_path: Sequence[str] = ()) -> Result: ...
 
 _Plane = Union[int, str]  # 17, 18, 19 or "G17", "G18", "G19"
 _EdgeMap = dict[Tuple[int, int], "sinumerik.Edge"]

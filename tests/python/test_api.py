@@ -177,8 +177,9 @@ def test_dialect_and_suffix(tmp_path):
     assert tc.Program.read(f, dialect="linuxcnc").dialect == "linuxcnc"
     with pytest.raises(tc.ParseError):
         tc.Program.read(tmp_path / "p.xyz")
-    with pytest.raises(tc.ParseError, match="not supported"):
-        tc.Program.parse("G1 X1", dialect="sinumerik")
+    with pytest.raises(tc.ParseError) as e:
+        tc.Program.parse("G1 X1", dialect="mazatrol")
+    assert e.value.code == "unknown_dialect"
 
 
 def test_run_accepts_paths(tmp_path):

@@ -30,6 +30,9 @@ struct RunOptions {
     // `progress_every` blocks; may throw to stop the run.
     std::function<void(std::size_t)> progress;
     std::size_t progress_every = 1 << 16;
+    // Directories where programs called by name (Heidenhain CALL PGM) are looked up, in
+    // order, and nowhere else. Moves of a called program carry line numbers of its own file.
+    std::vector<std::string> search_path;
 };
 
 struct Result {

@@ -110,6 +110,11 @@ void RadiusCompensation::push(const Motion& m) {
     rescale(m.unit);
     checks_ = m.radius.checks;
     lookahead_ = m.radius.lookahead;
+    const RadiusRules& rules = profile_.radius;
+    entry_ = m.radius.entry >= 0 ? static_cast<EntryStyle>(m.radius.entry) : rules.entry;
+    outside_ = m.radius.outside >= 0 ? static_cast<OutsideCorner>(m.radius.outside) : rules.outside_corner;
+    gouge_ = m.radius.gouge >= 0 ? static_cast<GougeReaction>(m.radius.gouge) : rules.gouge;
+    disc_ = m.radius.disc >= 0 ? m.radius.disc : rules.disc;
     if (active_ && m.radius.side != 0 && m.radius.radius <= 0) turn_off(m.line, /*cancel=*/false);  // radius 0 (T00)
     if (m.is_arc() && (arc_not_allowed_ || exit_open_))
         fail("comp_exit_arc", profile_.radius.messages.exit_arc, m.line);
@@ -144,7 +149,7 @@ void RadiusCompensation::push(const Motion& m) {
             entry_arc(m);
         else
             entry_line(m);
-        entry_open_ = profile_.radius.entry != EntryStyle::perpendicular_to_entry && !m.is_arc();
+        entry_open_ = entry_ != EntryStyle::perpendicular_to_entry && !m.is_arc();
         active_ = true;
         exit_pending_ = false;
         return;

@@ -33,7 +33,7 @@ void RadiusCompensation::outside_corner(const Motion& m, const Vec2& P, const El
     const auto held = held_element();
     // Heidenhain M97 in the block before the corner: meet at the intersection, whatever the angle.
     const bool m97 = !queue_.empty() && queue_.front().m.radius.corner == static_cast<int>(OutsideCorner::intersection);
-    if ((m97 || (rules.outside_corner != OutsideCorner::arc && turn <= rules.corner_limit)) && held) {
+    if ((m97 || (outside_ != OutsideCorner::arc && turn <= rules.corner_limit)) && held) {
         // Meet where the two equidistants (extended) cross, nearest to the programmed corner.
         auto xs = intersect(*held, next);
         if (!xs.empty()) {
@@ -44,12 +44,12 @@ void RadiusCompensation::outside_corner(const Motion& m, const Vec2& P, const El
             return;
         }
     }
-    if (rules.outside_corner == OutsideCorner::arc && rules.disc > 0 && held && !held->is_arc && !next.is_arc &&
+    if (outside_ == OutsideCorner::arc && disc_ > 0 && held && !held->is_arc && !next.is_arc &&
         m.kind != MotionKind::rapid) {
         // DISC: a fillet of radius r(1 - k) between the extended equidistants, k = DISC/100.
         auto xs = intersect(*held, next);
         if (!xs.empty()) {
-            const double k = std::min(rules.disc, 100.0) / 100;
+            const double k = std::min(disc_, 100.0) / 100;
             const Vec2 v = xs[0];
             const Vec2 t1 = C + k * (v - C), t2 = mid + k * (v - mid);
             move_end_and_flush(t1, m.line, /*check=*/false);
@@ -76,7 +76,7 @@ void RadiusCompensation::outside_corner(const Motion& m, const Vec2& P, const El
     fill.generated = true;
     fill.turns = 0;
     fill.center = Vec3::Constant(std::nan(""));
-    if (rules.outside_corner == OutsideCorner::extension && held && turn > rules.corner_limit) {
+    if (outside_ == OutsideCorner::extension && held && turn > rules.corner_limit) {
         // Extend both elements by r along their tangents and join the extensions.
         const Vec2 e1 = C + r_ * held->end_tangent(), e2 = mid - r_ * next.start_tangent();
         if (m.kind != MotionKind::rapid) fill.kind = MotionKind::line;
@@ -126,7 +126,7 @@ bool RadiusCompensation::open_corner(const Motion& m, const Vec2& mid) {
 bool RadiusCompensation::close_open_entry(const Vec2& mid) {
     if (!entry_open_) return false;
     entry_open_ = false;
-    if (profile_.radius.entry == EntryStyle::around_start_when_behind && !queue_.empty()) {
+    if (entry_ == EntryStyle::around_start_when_behind && !queue_.empty()) {
         // Behind: the start point and the new element's equidistant lie on opposite sides of
         // the element's line through the contour start.
         const Vec2 S = plane2(program_);
@@ -285,7 +285,7 @@ void RadiusCompensation::next_arc(const Motion& m) {
     if (inside) {
         gamma = ang(centre - p);
         if (rho0 <= r_) {
-            if (rules.gouge != GougeReaction::skip) fail("comp_arc_too_small", rules.messages.arc_too_small, m.line);
+            if (gouge_ != GougeReaction::skip) fail("comp_arc_too_small", rules.messages.arc_too_small, m.line);
             // The tool does not fit into the arc: leave it out, the next element decides.
             bridge_lines_ += (bridge_lines_.empty() ? "" : ", ") + std::to_string(m.line);
             program_ = m.end;

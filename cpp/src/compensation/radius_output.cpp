@@ -32,8 +32,7 @@ void RadiusCompensation::emit(const Held& h) {
     last_off_ = e.m.tool_offset;
     have_last_ = true;
     window_.push_back(std::move(e));
-    const auto& rules = profile_.radius;
-    release(rules.gouge == GougeReaction::skip || lookahead_ > 0 ? static_cast<std::size_t>(std::max(0, lookahead() - 1))
+    release(gouge_ == GougeReaction::skip || lookahead_ > 0 ? static_cast<std::size_t>(std::max(0, lookahead() - 1))
                                                                    : 0);
 }
 

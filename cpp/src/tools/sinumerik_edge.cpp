@@ -95,4 +95,21 @@ Vec3 tool_length_vector(const SinumerikEdge& e, Plane plane, const SinumerikLeng
     return place_lengths(Vec3(e.length(1, w), e.length(2, w), e.length(3, w)), e.type(), plane, s);
 }
 
+SinumerikEdge edge_from_common(const CuttingEdge& c) {
+    SinumerikEdge e;
+    const bool turning = c.orientation != 0;
+    e.DP(1) = turning ? 500 : 120;
+    e.DP(2) = c.orientation;
+    const std::array<int, 3> axis = turning ? std::array<int, 3>{0, 2, 1} : std::array<int, 3>{2, 1, 0};
+    for (int i = 0; i < 3; ++i) {
+        e.DP(3 + i) = c.length[axis[static_cast<std::size_t>(i)]];
+        e.DP(12 + i) = c.length_wear[axis[static_cast<std::size_t>(i)]];
+    }
+    e.DP(6) = c.radius;
+    e.DP(7) = c.corner_radius;
+    e.DP(15) = c.radius_wear;
+    e.DP(16) = c.corner_radius_wear;
+    return e;
+}
+
 }  // namespace toolcomp::sinumerik

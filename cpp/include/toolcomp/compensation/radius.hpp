@@ -90,9 +90,14 @@ private:
     double unit_ = 1.0;            // program unit (mm per unit) of everything held below
     bool checks_ = true;           // gouge checks of the current move (switchable on the 9/Series)
     int lookahead_ = 0;            // block-local look-ahead with skipping (Heidenhain M120 LA)
+    // The profile's rules as the current move overrides them (RadiusRequest entry ... disc).
+    EntryStyle entry_ = EntryStyle::perpendicular_to_entry;
+    OutsideCorner outside_ = OutsideCorner::arc;
+    GougeReaction gouge_ = GougeReaction::error;
+    double disc_ = 0;
     GougeReaction reaction() const {
         if (lookahead_ > 0) return GougeReaction::skip;
-        return checks_ ? profile_.radius.gouge : GougeReaction::report;
+        return checks_ ? gouge_ : GougeReaction::report;
     }
     int lookahead() const { return lookahead_ > 0 ? lookahead_ : profile_.radius.lookahead; }
     bool active_ = false;          // compensating, the entry move made

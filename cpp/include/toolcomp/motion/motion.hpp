@@ -30,6 +30,13 @@ struct RadiusRequest {
     std::int8_t corner = -1;
     bool open_corner = false;
     std::int8_t lookahead = 0;
+    // Modal choices a program switches (Sinumerik NORM/KONT, G450/G451, DISC, CDON/CDOF);
+    // negative: the profile's. `entry` is read on the activation move, the others at the
+    // corner before this move.
+    std::int8_t entry = -1;    // EntryStyle
+    std::int8_t outside = -1;  // OutsideCorner
+    std::int8_t gouge = -1;    // GougeReaction
+    float disc = -1;           // DISC 0..100
 };
 
 // 3D compensation requested for a move (Heidenhain LN): the surface normal at its end and

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "toolcomp/program/dialect.hpp"
+#include "toolcomp/program/expr.hpp"
 #include "toolcomp/geometry/vec.hpp"
 #include "toolcomp/program/diagnostic.hpp"
 
@@ -33,6 +34,7 @@ struct Token {
     std::string text;        // a quoted name, without the quotes; the text of a Q statement
     int param = 0;           // a Q parameter in place of the number (X+Q5): its number
     int column = 0;
+    std::int32_t expr = -1;  // a computed value: index of its expression (Program::expression)
 };
 
 struct Comment {
@@ -79,6 +81,7 @@ public:
     }
     std::span<const Token> tokens(const Block& b) const { return {tokens_.data() + b.first_token, b.token_count}; }
     std::size_t word_count() const { return words_.size(); }
+    const expr::Expr& expression(std::int32_t i) const { return exprs_[static_cast<std::size_t>(i)]; }
 
     // Building (front ends): open a block, add its words and comments, close it.
     void begin_block(int line, bool block_delete);
@@ -90,6 +93,10 @@ public:
     void add_comment(Comment c) {
         comments_.push_back(std::move(c));
         ++blocks_.back().comment_count;
+    }
+    std::int32_t add_expression(expr::Expr e) {
+        exprs_.push_back(std::move(e));
+        return static_cast<std::int32_t>(exprs_.size() - 1);
     }
     // Removes the last block (a front end that failed half-way through it).
     void drop_last_block();
@@ -103,6 +110,7 @@ private:
     std::vector<Word> words_;
     std::vector<Comment> comments_;
     std::vector<Token> tokens_;
+    std::vector<expr::Expr> exprs_;
 };
 
 }  // namespace toolcomp

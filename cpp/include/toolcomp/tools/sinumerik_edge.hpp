@@ -19,6 +19,7 @@
 #include <utility>
 
 #include "toolcomp/geometry/vec.hpp"
+#include "toolcomp/tools/tool.hpp"
 
 namespace toolcomp::sinumerik {
 
@@ -62,6 +63,14 @@ Vec3 place_lengths(const Vec3& l123, int tool_type, Plane plane, const Sinumerik
 
 // The tool length vector (x, y, z) of the edge's total lengths L1..L3.
 Vec3 tool_length_vector(const SinumerikEdge& e, Plane plane, const SinumerikLengthSettings& s = {});
+
+// ---- the common tool model ---------------------------------------------------------------
+// A cutting edge of the common model (tool-length vector X Y Z, radius, wear) as $TC_DP data,
+// the way a Sinumerik stores the same tool: a milling tool (tip orientation 0) becomes type
+// 120 with L1 = Z, L2 = Y, L3 = X (so that G17 gives the vector back); a lathe tool (tip
+// 1..9) becomes type 500 with DP2 = tip and L1 = X, L2 = Z, L3 = Y (G18 gives it back).
+// Radius DP6, corner radius DP7, wear DP12..DP16 likewise.
+SinumerikEdge edge_from_common(const CuttingEdge& e);
 
 // ---- initialisation-file form: "$TC_DPn[t,d]=value" ---------------------------------------
 // One assignment per line; $TC_ECPn and $TC_SCPn are read the same way. Tolerated: blank

@@ -32,13 +32,25 @@ void Interp::approach(Tokens t) {
     } catch (const std::invalid_argument&) {
         fail("approach_kind", "Unknown APPR function " + t[1].key, t[1].column);
     }
-    if (side_ != 0)
-        fail("unsupported_appr", "APPR while compensation is active (a connecting element) is not supported by toolcomp",
-             t[0].column);
     const double feed_before = feed_;
     const bool rapid_before = last_rapid_;
     int side = 0;
-    for (const Token& k : t) side = k.key == "RL" ? 1 : k.key == "RR" ? -1 : side;
+    const Token* r0 = nullptr;
+    for (const Token& k : t) {
+        side = k.key == "RL" ? 1 : k.key == "RR" ? -1 : side;
+        if (k.key == "R" && k.has_value && k.value == 0) r0 = &k;
+    }
+    // Compensation already active (spec §2.5.1): the APPR block does not change it and is a
+    // connecting element: its path is computed on the contour and compensated like any
+    // other contour element (APPR LT tangential, LN perpendicular, CT/LCT a tangential arc).
+    const bool connecting = side_ != 0;
+    if (connecting) {
+        if (r0)
+            fail("appr_cancels_comp",
+                 "APPR with R0 while radius compensation is active: cancel it with R0 in an L block first", r0->column);
+        if (side != 0 && side != side_) fail("comp_side_change", profile_.radius.messages.side_change, t[0].column);
+        side = side_;
+    }
     // Feed, M functions; RL/RR are taken here, not as a start of compensation by modal_words.
     for (std::size_t i = 2; i < t.size(); ++i)
         if (t[i].key == "F" && t[i].has_value) feed_ = t[i].value * (prog_.inch ? 2.54 : 1.0);
@@ -60,8 +72,10 @@ void Interp::approach(Tokens t) {
     p.a.ps = plane2(pos_);
     p.a.pa = plane2(pa);
     // APPR with R0: the path is computed for radius 0 and RR (the direction of approach).
+    // A connecting element: radius 0 on the active side (the compensation stage offsets it).
     p.a.side = side == 0 ? -1 : side;
-    p.a.r = side == 0 ? 0 : radius_;
+    p.a.r = side == 0 || connecting ? 0 : radius_;
+    p.connecting = connecting;
     p.a.len = number(t, "LEN").value_or(0);
     p.a.cca = number(t, "CCA").value_or(0);
     p.a.radius = number(t, "R").value_or(0);
@@ -109,25 +123,38 @@ void Interp::emit_pieces(const std::vector<PathPiece>& pieces, double h, double 
     pos_ = at;
 }
 
+namespace {
+// Unit tangent at the start of a move in the plane (zero for a move without plane motion).
+Vec2 start_tangent(const Motion& m, Plane plane) {
+    const Vec2 s = in_plane(m.start, plane);
+    Vec2 t;
+    if (m.is_arc()) {
+        const Vec2 u = (s - in_plane(m.center, plane)).normalized();
+        t = (m.kind == MotionKind::arc_ccw ? 1.0 : -1.0) * left_normal(u);
+    } else {
+        t = in_plane(m.end, plane) - s;
+    }
+    return t.norm() < 1e-12 ? Vec2(Vec2::Zero()) : Vec2(t.normalized());
+}
+
+// The approach path of a pending APPR, now that the first contour element is known.
+std::vector<PathPiece> pending_path(Approach& a, const Motion& first, Plane plane, int line,
+                                    const ApproachOptions& o) {
+    a.t_a = start_tangent(first, plane);
+    if (a.t_a.norm() < 1e-12)
+        throw ProgramError("approach_tangent", "The first contour element after APPR has no direction", {line, 0});
+    try {
+        return approach_path(a, o);
+    } catch (const Error& e) {
+        throw CompensationError(e.code(), e.what(), {line, 0});
+    }
+}
+}  // namespace
+
 void Interp::emit_approach(const Motion& first) {
     PendingApproach p = *approach_;
     approach_.reset();
-    const Vec2 s = plane2(first.start);
-    Vec2 ta;
-    if (first.is_arc()) {
-        const Vec2 u = (s - plane2(first.center)).normalized();
-        ta = (first.kind == MotionKind::arc_ccw ? 1.0 : -1.0) * left_normal(u);
-    } else {
-        ta = plane2(first.end) - s;
-    }
-    if (ta.norm() < 1e-12) throw ProgramError("approach_tangent", "The first contour element after APPR has no direction", {p.line, 0});
-    p.a.t_a = ta.normalized();
-    std::vector<PathPiece> pieces;
-    try {
-        pieces = approach_path(p.a, approach_options());
-    } catch (const Error& e) {
-        throw CompensationError(e.code(), e.what(), {p.line, 0});
-    }
+    const std::vector<PathPiece> pieces = pending_path(p.a, first, plane_, p.line, approach_options());
     const Vec3 pa_programmed = pos_;
     const int line = line_;
     line_ = p.line;
@@ -145,7 +172,61 @@ void Interp::emit_approach(const Motion& first) {
     line_ = line;
 }
 
-// DEP LT LEN | LN LEN | CT CCA R | LCT X Y R (and PLCT): ends compensation.
+// Puts APPR/DEP pieces computed on the contour (tool radius 0) as contour elements of the
+// current block, compensated as the active RL/RR requests; the tool axis goes to `h` after
+// piece `depth_after`.
+void Interp::put_contour_pieces(const std::vector<PathPiece>& pieces, const Vec3& from, double h,
+                                double feed_first, double feed_rest, std::size_t depth_after) {
+    const int c = axes(plane_).c;
+    Vec3 at = from;
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+        const PathPiece& pc = pieces[i];
+        if (pc.length() > 1e-12 || (pc.arc && pc.sweep > 0)) {
+            const double f = i == 0 ? feed_first : feed_rest;
+            Motion m = motion_to(pc.arc ? (pc.dir > 0 ? MotionKind::arc_ccw : MotionKind::arc_cw)
+                                        : (std::isnan(f) ? MotionKind::rapid : MotionKind::line),
+                                 at);
+            m.start = with_plane(at, pc.start);
+            m.end = with_plane(at, pc.end);
+            if (pc.arc) m.center = with_plane(at, pc.centre);
+            m.feed = m.kind == MotionKind::rapid ? std::nan("") : f;
+            ++plane_moves_;
+            put(m);
+            at = m.end;
+        }
+        if (i == std::min(depth_after, pieces.size() - 1) && at[c] != h) {  // then to depth in the tool axis
+            Motion z = motion_to(MotionKind::line, at);
+            z.start = at;
+            z.end = at;
+            z.end[c] = h;
+            z.feed = feed_rest;
+            put(z);
+            at = z.end;
+        }
+    }
+    pos_ = at;
+}
+
+// APPR while compensation is active: PS is the contour point where the previous element
+// ended; the approach path is computed on the contour (radius 0, the active side for the
+// direction of CT/LCT arcs and of LN) and put before the first contour element as
+// compensated elements of the APPR block, so the compensation stage joins and offsets them
+// like any other contour (PS -> PH with the feed rules of APPR, then PH -> PA).
+void Interp::emit_connecting_approach(const Motion& first) {
+    PendingApproach p = *approach_;
+    approach_.reset();
+    const std::vector<PathPiece> pieces = pending_path(p.a, first, plane_, p.line, approach_options());
+    const Vec3 pa_programmed = pos_;
+    const int line = line_;
+    line_ = p.line;
+    put_contour_pieces(pieces, p.ps, p.depth, p.feed_lead, p.feed_arc, 0);
+    pos_ = pa_programmed;
+    line_ = line;
+}
+
+// DEP LT LEN | LN LEN | CT CCA R | LCT X Y R (and PLCT): ends compensation. With the active
+// RL/RR programmed again in the DEP block, compensation stays on (spec §2.5.1): the
+// departure is a connecting element computed on the contour and compensated.
 void Interp::departure(Tokens t) {
     if (t.size() < 2) fail("departure_kind", "DEP needs LT, LN, CT or LCT", t[0].column);
     bool polar = false;
@@ -156,6 +237,14 @@ void Interp::departure(Tokens t) {
         fail("departure_kind", "Unknown DEP function " + t[1].key, t[1].column);
     }
     if (!pending_) fail("departure_without_contour", "DEP needs a contour element before it", t[0].column);
+    int side = 0;
+    for (const Token& k : t)
+        if (k.key == "RL" || k.key == "RR") {
+            side = k.key == "RL" ? 1 : -1;
+            if (side_ == 0) fail("dep_starts_comp", "DEP cannot switch radius compensation on", k.column);
+            if (side != side_) fail("comp_side_change", profile_.radius.messages.side_change, k.column);
+        }
+    const bool keep = side != 0;  // RL/RR programmed again: compensation stays on
     for (std::size_t i = 2; i < t.size(); ++i)
         if (t[i].key == "F" && t[i].has_value) feed_ = t[i].value * (prog_.inch ? 2.54 : 1.0);
     Departure d;
@@ -163,7 +252,7 @@ void Interp::departure(Tokens t) {
     d.pe = plane2(pos_);
     d.t_e = end_tangent();
     d.side = side_ == 0 ? -1 : side_;
-    d.r = side_ == 0 ? 0 : radius_;
+    d.r = side_ == 0 || keep ? 0 : radius_;
     d.len = number(t, "LEN").value_or(0);
     d.cca = number(t, "CCA").value_or(0);
     d.radius = number(t, "R").value_or(0);
@@ -179,6 +268,10 @@ void Interp::departure(Tokens t) {
         pieces = departure_path(d, approach_options());
     } catch (const Error& e) {
         fail(e.code().c_str(), e.what(), t[0].column);
+    }
+    if (keep) {
+        put_contour_pieces(pieces, pos_, pn[axes(plane_).c], feed_, feed_, pieces.size());
+        return;
     }
     sink_.push(*pending_);
     pending_.reset();

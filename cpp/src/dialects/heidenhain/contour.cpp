@@ -1,7 +1,9 @@
 // Klartext contour elements: circle centre / pole (CC), arcs (C, CR, CT), polar moves (LP, CTP, CP
 // with helix), and the corner elements RND and CHF, which change the elements on both sides
 // (so the last element is held back until the next one is known).
+#include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "interp.hpp"
 #include "toolcomp/geometry/arc.hpp"
@@ -14,6 +16,79 @@ constexpr double kArcTolerance = 0.016;  // mm: start and end radius of C blocks
 double deg(double rad) { return rad * 180 / kPi; }
 double rad(double deg) { return deg * kPi / 180; }
 }  // namespace
+
+namespace {
+// The rounding arc of radius rho between e1 (ending at the corner) and e2 (starting there):
+// its centre lies at distance rho on the inner side s of the corner from both elements (the
+// intersection of their equidistants: offset lines, or concentric circles of radius
+// R - s·d·rho), the tangent points are the feet of that centre on the elements, and the
+// elements are cut back to them. Of the candidate centres the one that cuts the least off
+// the two elements is used; none within both elements: nullopt (radius too large).
+struct Fillet {
+    Vec2 t1, t2, centre;
+    int dir;
+};
+
+// The point of the element's line / circle nearest to f (the tangent point of a circle about
+// f that touches the element).
+std::optional<Vec2> foot(const Element2& e, const Vec2& f) {
+    if (e.is_arc) {
+        const Vec2 u = f - e.c;
+        if (u.norm() < 1e-12) return std::nullopt;
+        return Vec2(e.c + e.radius() * u.normalized());
+    }
+    const Vec2 t = e.start_tangent();
+    return Vec2(e.p0 + (f - e.p0).dot(t) * t);
+}
+
+// How much of e lies between q (on e's line / circle) and its end (from_end) or its start:
+// the length cut off when e is shortened to q; < 0 when q is not on the element.
+double cut_length(const Element2& e, const Vec2& q, bool from_end) {
+    constexpr double eps = 1e-9;
+    const double len = e.length();
+    double cut;
+    if (!e.is_arc) {
+        const Vec2 t = e.start_tangent();
+        cut = from_end ? (e.p1 - q).dot(t) : (q - e.p0).dot(t);
+    } else {
+        const double R = e.radius();
+        const Vec2 a = (from_end ? q : e.p0) - e.c, b = (from_end ? e.p1 : q) - e.c;
+        double ang = e.dir * std::atan2(cross2(a, b), a.dot(b));
+        if (ang < 0) ang += 2 * kPi;
+        if ((2 * kPi - ang) * R < eps) ang = 0;  // q at the end point, numerically just beyond it
+        cut = ang * R;
+    }
+    if (cut < -eps || cut > len + eps) return -1;
+    return std::clamp(cut, 0.0, len);
+}
+
+std::optional<Fillet> fillet(const Element2& e1, const Element2& e2, double rho) {
+    const double theta = turn_angle(e1.end_tangent(), e2.start_tangent());
+    if (std::fabs(theta) < 1e-9) return std::nullopt;  // a tangent joint: no corner to round
+    const int s = theta > 0 ? 1 : -1;                  // left turn: the rounding lies on the left
+    const auto o1 = offset(e1, s, rho), o2 = offset(e2, s, rho);
+    if (!o1 || !o2) return std::nullopt;  // an arc of radius <= rho on the inner side
+    std::optional<Fillet> best;
+    double best_cut = 0;
+    for (const Vec2& f : intersect(*o1, *o2)) {
+        const auto q1 = foot(e1, f), q2 = foot(e2, f);
+        if (!q1 || !q2) continue;
+        const double c1 = cut_length(e1, *q1, /*from_end=*/true), c2 = cut_length(e2, *q2, /*from_end=*/false);
+        if (c1 < 0 || c2 < 0) continue;
+        if (!best || c1 + c2 < best_cut) {
+            best = Fillet{*q1, *q2, f, s};
+            best_cut = c1 + c2;
+        }
+    }
+    return best;
+}
+}  // namespace
+
+Element2 Interp::plane_element(const Motion& m) const {
+    if (!m.is_arc()) return Element2::line(plane2(m.start), plane2(m.end));
+    return Element2::arc(plane2(m.start), plane2(m.end), plane2(m.center), m.kind == MotionKind::arc_ccw ? 1 : -1,
+                         m.turns);
+}
 
 Vec2 Interp::end_tangent() const {
     if (!pending_) fail("no_previous_element", "No preceding contour element to be tangent to");
@@ -32,7 +107,9 @@ void Interp::settle_pending() {
 
 // Emits the held element (after a RND or CHF between it and m has cut it back) and holds m.
 void Interp::put(Motion m) {
-    if (approach_) {
+    if (approach_ && approach_->connecting) {
+        emit_connecting_approach(m);  // puts the approach pieces first (approach_ is reset)
+    } else if (approach_) {
         if (pending_) {
             sink_.push(*pending_);
             pending_.reset();
@@ -43,34 +120,43 @@ void Interp::put(Motion m) {
         Motion& prev = *pending_;
         const bool round = pending_round_ > 0;
         const int at = pending_corner_line_;
-        if (prev.is_arc() || m.is_arc() || prev.kind == MotionKind::rapid || m.kind == MotionKind::rapid)
-            throw ProgramError("corner_between_arcs",
-                               std::string(round ? "RND" : "CHF") + " is supported between two straight feed moves only",
+        const char* what = round ? "RND" : "CHF";
+        if (prev.kind == MotionKind::rapid || m.kind == MotionKind::rapid)
+            throw ProgramError("corner_next_to_rapid", std::string(what) + " needs feed moves on both sides (not FMAX)",
                                {at, 0});
         if (prev.surface.active() || m.surface.active())
-            throw ProgramError("corner_between_ln",
-                               std::string(round ? "RND" : "CHF") + " is not allowed next to an LN block", {at, 0});
-        const Vec2 p = plane2(prev.end);
-        const Vec2 a = plane2(prev.start), b = plane2(m.end);
-        const double l1 = (p - a).norm(), l2 = (b - p).norm();
-        if (l1 < 1e-9 || l2 < 1e-9)
-            throw ProgramError("corner_without_element",
-                               std::string(round ? "RND" : "CHF") + " needs moves in the working plane on both sides",
+            throw ProgramError("corner_between_ln", std::string(what) + " is not allowed next to an LN block", {at, 0});
+        // A chamfer joins two straight lines only (TNC: "chamfer between two straight lines").
+        if (!round && (prev.is_arc() || m.is_arc()))
+            throw ProgramError("chamfer_next_to_arc", "CHAMFER NOT PERMITTED", {at, 0});
+        const int c = axes(plane_).c;
+        for (const Motion* e : {&prev, &m})
+            if (e->is_arc() && (e->turns != 0 || e->start[c] != e->end[c]))
+                throw ProgramError("rounding_next_to_helix", "RND is not allowed next to a helix", {at, 0});
+        const Element2 e1 = plane_element(prev), e2 = plane_element(m);
+        if (e1.length() < 1e-9 || e2.length() < 1e-9)
+            throw ProgramError("corner_without_element", std::string(what) + " needs moves in the working plane on both sides",
                                {at, 0});
-        const Vec2 t1 = (p - a) / l1, t2 = (b - p) / l2;
-        const double theta = turn_angle(t1, t2);
-        const double d = round ? pending_round_ * std::tan(std::fabs(theta) / 2) : pending_chamfer_;
-        if (d > l1 || d > l2 || std::fabs(theta) < 1e-12)
-            throw ProgramError(round ? "rounding_too_large" : "chamfer_not_permitted",
-                               round ? "ROUNDING-OFF RADIUS TOO LARGE" : "CHAMFER NOT PERMITTED", {at, 0});
-        const Vec2 c1 = p - d * t1, c2 = p + d * t2;
         Motion corner = prev;
         corner.line = at;
-        corner.start = with_plane(prev.end, c1);
-        corner.end = with_plane(prev.end, c2);
         if (round) {
-            corner.kind = theta > 0 ? MotionKind::arc_ccw : MotionKind::arc_cw;
-            corner.center = with_plane(prev.end, c1 + (theta > 0 ? 1.0 : -1.0) * pending_round_ * left_normal(t1));
+            const auto f = fillet(e1, e2, pending_round_);
+            if (!f) throw ProgramError("rounding_too_large", "ROUNDING-OFF RADIUS TOO LARGE", {at, 0});
+            corner.kind = f->dir > 0 ? MotionKind::arc_ccw : MotionKind::arc_cw;
+            corner.turns = 0;
+            corner.start = with_plane(prev.end, f->t1);
+            corner.end = with_plane(prev.end, f->t2);
+            corner.center = with_plane(prev.end, f->centre);
+        } else {
+            const Vec2 p = plane2(prev.end);
+            const Vec2 t1 = e1.end_tangent(), t2 = e2.start_tangent();
+            const double d = pending_chamfer_;
+            if (d > e1.length() || d > e2.length() || std::fabs(turn_angle(t1, t2)) < 1e-12)
+                throw ProgramError("chamfer_not_permitted", "CHAMFER NOT PERMITTED", {at, 0});
+            corner.kind = MotionKind::line;
+            corner.center = Vec3::Constant(std::nan(""));
+            corner.start = with_plane(prev.end, p - d * t1);
+            corner.end = with_plane(prev.end, p + d * t2);
         }
         prev.end = corner.start;
         m.start = corner.end;

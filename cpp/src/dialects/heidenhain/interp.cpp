@@ -1,17 +1,22 @@
 // Klartext block execution: program frame, tools, straight lines, feeds, M functions and
 // radius compensation requests. Arcs, polar moves, RND and CHF are in contour.cpp.
+#include <cctype>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <stdexcept>
 
 #include "interp.hpp"
 #include "qparams.hpp"
+#include "toolcomp/dialects/heidenhain/lexer.hpp"
 #include "toolcomp/tools/tool_table.hpp"
 
 namespace toolcomp::heidenhain {
 
 Interp::Interp(const Program& prog, const ToolTable* tools, const ControlProfile& profile, MotionSink& sink,
-               std::vector<Diagnostic>& diags)
-    : prog_(prog), tools_(tools), profile_(profile), sink_(sink), diags_(diags), unit_(prog.inch ? kMmPerInch : 1.0) {}
+               std::vector<Diagnostic>& diags, std::vector<std::string> search_path)
+    : prog_(prog), search_path_(std::move(search_path)), tools_(tools), profile_(profile), sink_(sink), diags_(diags), unit_(prog.inch ? kMmPerInch : 1.0) {}
 
 void Interp::fail(const char* code, const std::string& msg, int column) const {
     throw ProgramError(code, msg, {line_, column});
@@ -268,13 +273,26 @@ std::vector<Token> Interp::resolve(Tokens t) const {
 }
 
 // Runs the blocks with the program's own flow: labels (LBL n), subprogram calls (CALL LBL
-// n, back at LBL 0), section repeats (CALL LBL n REP m), FN 9..12 jumps; bounded by the
-// profile's block limit.
+// n, back at LBL 0), section repeats (CALL LBL n REP m), FN 9..12 jumps, program calls (CALL
+// PGM); bounded by the profile's block limit.
 void Interp::run() {
-    const auto& blocks = prog_.blocks();
+    run_blocks(prog_, 0);
+    settle_pending();
+    if (approach_) throw ProgramError("approach_without_contour", "APPR needs a contour element after it", {approach_->line, 0});
+    if (pending_) {
+        sink_.push(*pending_);
+        pending_.reset();
+    }
+    if (const auto& e = prog_.syntax_error) throw ParseError(e->code, e->message, e->pos);
+    sink_.control({ControlKind::program_end, line_});
+    sink_.finish();
+}
+
+bool Interp::run_blocks(const Program& prog, int depth) {
+    const auto& blocks = prog.blocks();
     std::map<int, std::size_t> labels;
     for (std::size_t i = 0; i < blocks.size(); ++i) {
-        auto t = prog_.tokens(blocks[i]);
+        auto t = prog.tokens(blocks[i]);
         if (t.size() >= 2 && t[0].key == "LBL" && t[1].has_value && t[1].value != 0)
             labels[static_cast<int>(t[1].value)] = i;
     }
@@ -289,12 +307,11 @@ void Interp::run() {
     };
     std::vector<std::size_t> returns;
     std::map<std::size_t, int> repeats;  // CALL LBL .. REP m blocks: passes left
-    std::size_t executed = 0;
     for (std::size_t pc = 0; pc < blocks.size();) {
-        auto raw = prog_.tokens(blocks[pc]);
+        auto raw = prog.tokens(blocks[pc]);
         line_ = blocks[pc].line;
-        if (progress_ && (executed + 1) % progress_every_ == 0) progress_(executed + 1);
-        if (++executed > profile_.block_limit)
+        if (progress_ && (executed_ + 1) % progress_every_ == 0) progress_(executed_ + 1);
+        if (++executed_ > profile_.block_limit)
             fail("block_limit", "More than " + std::to_string(profile_.block_limit) +
                                     " blocks executed: an endless loop? (ControlProfile.block_limit)");
         if (raw.empty()) {
@@ -349,25 +366,149 @@ void Interp::run() {
             pc = r.jump ? label(*r.jump, t[0]) : pc + 1;
             continue;
         }
-        if (k0 == "CALL") fail("unsupported_block", "CALL PGM is not supported by toolcomp yet", t[0].column);
-        if (!execute(t) || ended_) break;
+        if (k0 == "CALL" && t.size() >= 2 && t[1].key == "PGM") {
+            call_program(t, depth);
+            if (ended_) return false;  // M2/M30 in the called program
+            ++pc;
+            continue;
+        }
+        if (k0 == "CALL") fail("unsupported_block", "CALL without LBL or PGM is not supported by toolcomp", t[0].column);
+        if (!execute(t)) return true;  // END PGM
+        if (ended_) {
+            if (depth > 0)
+                diags_.push_back({"call_pgm_end", Severity::warning,
+                                  "M2/M30 in the called program " + prog.name +
+                                      " ends the run (a called program must not contain M2 or M30)",
+                                  {line_, 0}});
+            return false;
+        }
         ++pc;
     }
-    settle_pending();
-    if (approach_) throw ProgramError("approach_without_contour", "APPR needs a contour element after it", {approach_->line, 0});
-    if (pending_) {
-        sink_.push(*pending_);
-        pending_.reset();
+    // A called program parsed leniently stops before its first syntax error: reached here.
+    if (depth > 0 && prog.syntax_error) {
+        const Diagnostic& e = *prog.syntax_error;
+        throw ParseError(e.code, e.message + " (in the called program " + prog.name + ")", e.pos);
     }
-    if (const auto& e = prog_.syntax_error) throw ParseError(e->code, e->message, e->pos);
-    sink_.control({ControlKind::program_end, line_});
-    sink_.finish();
+    return true;
+}
+
+namespace {
+constexpr int kMaxProgramCallDepth = 100;  // CALL PGM nesting (endless recursion guard)
+
+std::string upper(std::string s) {
+    for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return s;
+}
+
+// The entry `name` of `dir` (a regular file, or a directory with `directory`), the name
+// compared without regard to case when there is no exact match (TNC file names are
+// case-insensitive). Only `dir` itself is listed.
+std::optional<std::filesystem::path> entry_in(const std::filesystem::path& dir, const std::string& name,
+                                              bool directory) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    auto kind_ok = [&](const fs::path& p) { return directory ? fs::is_directory(p, ec) : fs::is_regular_file(p, ec); };
+    if (const fs::path exact = dir / name; kind_ok(exact)) return exact;
+    if (!fs::is_directory(dir, ec)) return std::nullopt;
+    const std::string want = upper(name);
+    std::optional<fs::path> found;
+    for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+        const std::string n = it->path().filename().string();
+        if (upper(n) == want && kind_ok(it->path()) && (!found || n < found->filename().string()))
+            found = it->path();  // several spellings: the first in byte order, for a stable choice
+    }
+    return found;
+}
+}  // namespace
+
+// The file of `CALL PGM name`: a TNC path (TNC:\DIR\PGM.H) loses its drive and is read
+// relative to each search directory in turn; a name without a suffix is tried as given and
+// with ".h". Names that would leave the search directories ("..", absolute paths after the
+// drive is removed are taken as relative) are refused.
+std::string Interp::find_program(const std::string& name, int column) const {
+    namespace fs = std::filesystem;
+    std::string rel = name;
+    for (char& c : rel)
+        if (c == '\\') c = '/';
+    if (auto colon = rel.find(':'); colon != std::string::npos && rel.find('/') > colon) rel = rel.substr(colon + 1);
+    std::vector<std::string> parts;
+    for (std::size_t i = 0; i <= rel.size();) {
+        std::size_t j = rel.find('/', i);
+        if (j == std::string::npos) j = rel.size();
+        const std::string part = rel.substr(i, j - i);
+        if (part == "..")
+            fail("call_pgm_bad_name", "CALL PGM " + name + ": '..' is not allowed in a program name", column);
+        if (!part.empty() && part != ".") parts.push_back(part);
+        i = j + 1;
+    }
+    if (parts.empty()) fail("call_pgm_bad_name", "CALL PGM needs a program name", column);
+    std::vector<std::string> names{parts.back()};
+    if (parts.back().find('.') == std::string::npos) names.push_back(parts.back() + ".h");
+    for (const std::string& d : search_path_) {
+        std::optional<fs::path> dir = fs::path(d);
+        for (std::size_t k = 0; k + 1 < parts.size() && dir; ++k) dir = entry_in(*dir, parts[k], /*directory=*/true);
+        if (!dir) continue;
+        for (const std::string& n : names)
+            if (auto f = entry_in(*dir, n, /*directory=*/false)) return f->string();
+    }
+    std::string where;
+    for (const std::string& d : search_path_) where += (where.empty() ? "" : ", ") + d;
+    fail("call_pgm_not_found",
+         "CALL PGM " + name + ": program not found" +
+             (search_path_.empty() ? std::string(" (no search path given: RunOptions::search_path, search_path=)")
+                                   : " in the search path (" + where + ")"),
+         column);
+}
+
+// CALL PGM name: the TNC cancels radius compensation (and M120) at a program call, then runs
+// the called program from its beginning to END PGM as a subprogram: Q parameters, the tool,
+// feed, plane, pole and position carry over both ways. Its moves keep the line numbers of the
+// called file (the Path has no file column).
+void Interp::call_program(Tokens t, int depth) {
+    const Token* name = t.size() > 2 ? &t[2] : nullptr;
+    std::string text = name ? (!name->text.empty() ? name->text : name->key) : std::string();
+    if (name && text.empty() && name->has_value) text = std::to_string(static_cast<long long>(name->value));
+    if (text.empty()) fail("call_pgm_bad_name", "CALL PGM needs a program name", t[0].column);
+    if (depth + 1 > kMaxProgramCallDepth)
+        fail("call_pgm_depth",
+             "CALL PGM " + text + ": programs nested more than " + std::to_string(kMaxProgramCallDepth) +
+                 " deep (does a program call itself?)",
+             t[0].column);
+    const std::string file = find_program(text, t[0].column);
+    if (approach_) throw ProgramError("approach_without_contour", "APPR needs a contour element after it", {approach_->line, 0});
+    if (side_ != 0) {  // PGM CALL cancels radius compensation
+        settle_pending();
+        if (pending_) {
+            sink_.push(*pending_);
+            pending_.reset();
+        }
+        sink_.control({ControlKind::radius_off, line_});
+        side_ = 0;
+    }
+    lookahead_ = 0;
+    auto& sub = called_[file];
+    if (!sub) {
+        std::ifstream f(file, std::ios::binary);
+        if (!f) fail("call_pgm_not_found", "CALL PGM " + text + ": cannot read " + file, t[0].column);
+        std::ostringstream ss;
+        ss << f.rdbuf();
+        sub = std::make_shared<const Program>(parse(ss.str(), file, /*strict=*/false));
+    }
+    if (sub->inch != prog_.inch)
+        fail("call_pgm_units", "CALL PGM " + text + ": the called program is in " + (sub->inch ? "INCH" : "MM") +
+                                   ", the calling program in " + (prog_.inch ? "INCH" : "MM") +
+                                   " (not supported by toolcomp)",
+             t[0].column);
+    const int at = line_;
+    const std::shared_ptr<const Program> keep = sub;  // held while it runs (it may call itself)
+    run_blocks(*keep, depth + 1);
+    if (!ended_) line_ = at;
 }
 
 void interpret(const Program& program, const ToolTable* tools, const ControlProfile& profile, MotionSink& sink,
                std::vector<Diagnostic>& diagnostics, const std::function<void(std::size_t)>& progress,
-               std::size_t progress_every) {
-    Interp interp(program, tools, profile, sink, diagnostics);
+               std::size_t progress_every, const std::vector<std::string>& search_path) {
+    Interp interp(program, tools, profile, sink, diagnostics, search_path);
     if (progress) interp.on_progress(progress, progress_every);
     interp.run();
 }

@@ -3,10 +3,13 @@
 // in machine axis order X Y Z; the working plane follows the tool axis of TOOL CALL.
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "toolcomp/compensation/approach.hpp"
+#include "toolcomp/geometry/element.hpp"
 #include "toolcomp/dialects/heidenhain/interpreter.hpp"
 
 namespace toolcomp::heidenhain {
@@ -18,7 +21,7 @@ struct ToolDef {
 class Interp {
 public:
     Interp(const Program& prog, const ToolTable* tools, const ControlProfile& profile, MotionSink& sink,
-           std::vector<Diagnostic>& diags);
+           std::vector<Diagnostic>& diags, std::vector<std::string> search_path = {});
     void run();
     // Called with the number of blocks executed so far, every `every` blocks.
     void on_progress(std::function<void(std::size_t)> f, std::size_t every) {
@@ -32,6 +35,12 @@ private:
     using Tokens = std::span<const Token>;
     std::vector<Token> resolve(Tokens t) const;  // Q parameters in words replaced by values
     bool execute(Tokens t);  // false at END PGM
+    // Runs the blocks of one program (the main program, or one called with CALL PGM at
+    // nesting depth `depth`) with its own labels; false when the run ends (M2/M30 seen).
+    bool run_blocks(const Program& p, int depth);
+    // CALL PGM name: the program is looked up in the search path only and run inline.
+    void call_program(Tokens t, int depth);
+    std::string find_program(const std::string& name, int column) const;
     [[noreturn]] void fail(const char* code, const std::string& msg, int column = 0) const;
 
     // words
@@ -57,8 +66,13 @@ private:
     void approach(Tokens t);
     void departure(Tokens t);
     void emit_approach(const Motion& first);  // once the first contour element is known
+    // APPR while RL/RR is active: the approach path computed on the contour (radius 0) and
+    // put as compensated contour elements, before `first`.
+    void emit_connecting_approach(const Motion& first);
     void emit_pieces(const std::vector<PathPiece>& pieces, double h, double feed_first, double feed_rest,
                      std::size_t depth_after);
+    void put_contour_pieces(const std::vector<PathPiece>& pieces, const Vec3& from, double h, double feed_first,
+                            double feed_rest, std::size_t depth_after);
     ApproachOptions approach_options() const {
         return {profile_.radius.ct_radius_on_contour, profile_.radius.lct_tangency_tool_space};
     }
@@ -70,8 +84,12 @@ private:
     Vec2 plane2(const Vec3& v) const { return in_plane(v, plane_); }
     Vec3 with_plane(Vec3 v, const Vec2& ab) const;
     Vec2 end_tangent() const;  // direction at the end of the last element
+    Element2 plane_element(const Motion& m) const;  // the move in the working plane
 
     const Program& prog_;
+    const std::vector<std::string> search_path_;  // directories for CALL PGM
+    std::map<std::string, std::shared_ptr<const Program>> called_;  // parsed called programs, by file
+    std::size_t executed_ = 0;  // blocks executed, called programs included (block limit)
     const ToolTable* tools_;
     const ControlProfile& profile_;
     MotionSink& sink_;
@@ -112,6 +130,7 @@ private:
         double depth = 0;        // tool-axis coordinate of the APPR block
         double feed_lead = 0, feed_arc = 0;
         int line = 0;
+        bool connecting = false;  // compensation was already active: a connecting element
     };
     std::optional<PendingApproach> approach_;
 };

@@ -58,12 +58,29 @@ public:
                 quoted();
                 continue;
             }
+            if (program_name_next()) {
+                program_name();
+                continue;
+            }
             token();
         }
     }
 
 private:
     int col() const { return static_cast<int>(i_) + 1; }
+    // After CALL PGM comes a file name (SUB1, PART.H, TNC:\DIR\SUB.H), not words.
+    bool program_name_next() const {
+        auto t = prog_.tokens(prog_.blocks().back());
+        return t.size() == 2 && t[0].key == "CALL" && t[1].key == "PGM" && !t[1].has_value;
+    }
+    void program_name() {
+        Token t;
+        t.column = col();
+        const std::size_t start = i_;
+        while (i_ < s_.size() && !blank(s_[i_]) && s_[i_] != ';') ++i_;
+        t.text = std::string(s_.substr(start, i_ - start));
+        prog_.add_token(std::move(t));
+    }
     void skip() {
         while (i_ < s_.size() && blank(s_[i_])) ++i_;
     }

@@ -2,6 +2,7 @@
 // The Heidenhain conversational interpreter: runs Klartext blocks and emits the Motion
 // stream (tool-centre requests for RL/RR, length offsets from TOOL CALL).
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "toolcomp/compensation/profile.hpp"
@@ -16,8 +17,14 @@ class ToolTable;
 namespace toolcomp::heidenhain {
 
 // `progress` (optional) is called with the blocks executed so far every `progress_every`.
+// `search_path`: the directories where CALL PGM looks for the called program (`name`, or
+// `name.h` when the name has no suffix), in order; no other place is searched, and with an
+// empty search path every CALL PGM fails with "not found". The called program runs inline:
+// Q parameters and modal state are shared, radius compensation is cancelled by the call
+// (TNC), and its moves carry the line numbers of the called file (the Path has no file
+// column: a line from a called program refers to that file).
 void interpret(const Program& program, const ToolTable* tools, const ControlProfile& profile, MotionSink& sink,
                std::vector<Diagnostic>& diagnostics, const std::function<void(std::size_t)>& progress = {},
-               std::size_t progress_every = 1 << 16);
+               std::size_t progress_every = 1 << 16, const std::vector<std::string>& search_path = {});
 
 }  // namespace toolcomp::heidenhain

@@ -1,0 +1,47 @@
+#pragma once
+// The Sinumerik 840D interpreter: runs .mpf/.spf blocks (R parameters, DEF variables,
+// control structures, subprograms, frames, tool data) and emits the Motion stream.
+//
+// Output coordinates: millimetres in the coordinate system of the settable frame (G54 ...):
+// the programmable frame (TRANS, ROT, SCALE, MIRROR and their additive forms) is applied,
+// settable frames are taken as zero (their values are machine data toolcomp does not have),
+// the way the ISO interpreters report program coordinates before work offsets. The table
+// zero-point shift of a type P toolholder (TCARR + TCOABS) is part of the output.
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "toolcomp/compensation/profile.hpp"
+#include "toolcomp/compensation/toolholder.hpp"
+#include "toolcomp/motion/motion.hpp"
+#include "toolcomp/program/diagnostic.hpp"
+#include "toolcomp/program/program.hpp"
+#include "toolcomp/tools/sinumerik_edge.hpp"
+
+namespace toolcomp {
+class ToolTable;
+}
+
+namespace toolcomp::sinumerik {
+
+struct InterpretOptions {
+    bool block_delete = false;
+    std::function<void(std::size_t)> progress;  // blocks executed so far, every progress_every
+    std::size_t progress_every = 1 << 16;
+    // Directories searched, in order, for subprograms called by name or L number ("L10" looks
+    // for L10.spf / L10.SPF / L10.mpf / L10 there); nothing else is ever opened.
+    std::vector<std::string> search_path;
+    // $TC_DP edges known before the program starts (the program's own $TC_DP assignments add
+    // to them). An edge here takes precedence over the ToolTable's tool of the same number.
+    SinumerikEdgeMap tool_data;
+    SinumerikLengthSettings lengths;            // SD42940 / SD42950 / SD42930
+    unsigned tool_parameter_def_mask = 0;       // MD20360 (GETTCOR, diameter values)
+    std::map<int, Toolholder> toolholders;      // $TC_CARR data known before the program starts
+    int max_call_depth = 16;                    // program levels (main program included)
+};
+
+void interpret(const Program& program, const ToolTable* tools, const ControlProfile& profile,
+               const InterpretOptions& options, MotionSink& sink, std::vector<Diagnostic>& diagnostics);
+
+}  // namespace toolcomp::sinumerik

@@ -1,0 +1,42 @@
+#pragma once
+// Front end for Siemens Sinumerik 840D part programs (.mpf main programs, .spf subprograms).
+//
+// One block per line: an optional '/' (block delete), an optional block number "N10" or main
+// block number ":10", an optional jump label "NAME:", then statements up to an optional ';'
+// comment. A '%' line (the file header "%_N_NAME_MPF") is skipped. Names are case-insensitive.
+//
+// Each statement becomes one Token of the block:
+// * Address with a number, "X10", "G1", "X=-5", "M6": key = address ("X", "G", "M"), value;
+//   text = the word as written when it was one identifier ("CDOF2" stays a keyword; "L10"
+//   gives key "L", value 10, text "L10", so a subprogram named MYSUB2 keeps its name).
+// * Address with a computed value, "X=R1+5", "CR=2*R3", "X=AC(10)", "I=IC(R2)": key = address,
+//   expr = the compiled expression (Program::expression), param = 1 for AC(), 2 for IC().
+// * Address with a string, T="DRILL": key = address, text = "\"DRILL\"" (quotes kept).
+// * Keyword, "NORM", "CDON", "G41" style names without value: key, no value.
+// * Assignment "R1=...", "$TC_DP1[1,2]=...", "LOCAL[R2]=...": key "=", expr = the value,
+//   param = the index of an expression whose last instruction is the target variable (its
+//   indices computed by the instructions before).
+// * Calls with an argument list, "GETTCOR(_LEN,\"GW\")", "MSG(\"x\")", "R1=GETTCOR(...)":
+//   key = the name, text = the argument text between the parentheses, param = 1 + the index
+//   of the target expression when the result is assigned (0 otherwise).
+// * Control statements: "IF"/"WHILE"/"UNTIL" (expr = condition), "FOR" (text = variable,
+//   expr = start) followed by "TO" (expr = end), "GOTOF"/"GOTOB"/"GOTO"/"GOTOC" (text =
+//   label), "ELSE", "ENDIF", "ENDWHILE", "ENDFOR", "REPEAT", "LOOP", "ENDLOOP", "RET",
+//   "DEF" (text = type) followed by one "DEFVAR" per name (text = name, expr = initial
+//   value, value = array size when declared with [n]), "PROC" (text = name).
+// * Block number: key "N", value. Label: key ":", text = the label.
+// Syntax errors are ParseError "syntax_error" with line and column.
+#include <string>
+#include <string_view>
+
+#include "toolcomp/program/program.hpp"
+
+namespace toolcomp::sinumerik {
+
+Program parse(std::string_view text, std::string name = "<string>", bool strict = true);
+
+// The address names whose "NAME=value" is a word of the block rather than a variable
+// assignment (single letters, and CR, AR, TURN, DISC, OFFN, RPL, I1, J1, K1 ...).
+bool is_address(std::string_view upper_name);
+
+}  // namespace toolcomp::sinumerik

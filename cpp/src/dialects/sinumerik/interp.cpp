@@ -1,0 +1,326 @@
+// Program flow of the Sinumerik interpreter: the block loop, control structures (IF/ELSE/
+// ENDIF, WHILE, FOR, REPEAT/UNTIL, LOOP), jumps (GOTOF/GOTOB/GOTO/GOTOC to labels and block
+// numbers), subprogram calls (L<n>, by name, with P passes) and returns (M17, RET, M2/M30
+// in a subprogram), and the block limit.
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "interp.hpp"
+#include "toolcomp/dialects/sinumerik/lexer.hpp"
+
+namespace toolcomp::sinumerik {
+
+namespace {
+Ctl ctl_of(std::string_view k) {
+    if (k == "IF") return ctl_if;
+    if (k == "ELSE") return ctl_else;
+    if (k == "ENDIF") return ctl_endif;
+    if (k == "WHILE") return ctl_while;
+    if (k == "ENDWHILE") return ctl_endwhile;
+    if (k == "FOR") return ctl_for;
+    if (k == "ENDFOR") return ctl_endfor;
+    if (k == "REPEAT") return ctl_repeat;
+    if (k == "UNTIL") return ctl_until;
+    if (k == "LOOP") return ctl_loop;
+    if (k == "ENDLOOP") return ctl_endloop;
+    return ctl_none;
+}
+
+// The first statement of a block, after its number and label.
+std::span<const Token> statements(std::span<const Token> t) {
+    std::size_t i = 0;
+    while (i < t.size() && (t[i].key == "N" || t[i].key == ":")) ++i;
+    return t.subspan(i);
+}
+}  // namespace
+
+Interp::Interp(const Program& prog, const ToolTable* tools, const ControlProfile& profile, const InterpretOptions& opts,
+               MotionSink& sink, std::vector<Diagnostic>& diags)
+    : main_(prog), tools_(tools), profile_(profile), opts_(opts), sink_(sink), diags_(diags) {
+    edges_ = opts_.tool_data;
+    holders_ = opts_.toolholders;
+    if (profile_.machine == Machine::lathe) st_.plane = Plane::zx;
+}
+
+void Interp::fail(const std::string& code, const std::string& msg, int column) const {
+    throw ProgramError(code, msg, {line_, column});
+}
+
+void Interp::info(const char* code, const std::string& msg, int column) {
+    diags_.push_back({code, Severity::info, msg, {line_, column}});
+}
+
+const ProgramInfo& Interp::info_of(const Program& p) {
+    auto& slot = infos_[&p];
+    if (slot) return *slot;
+    auto info = std::make_unique<ProgramInfo>();
+    const auto& blocks = p.blocks();
+    info->partner.assign(blocks.size(), 0);
+    info->kind.assign(blocks.size(), ctl_none);
+    std::vector<std::size_t> open;
+    for (std::size_t i = 0; i < blocks.size(); ++i) {
+        auto all = p.tokens(blocks[i]);
+        for (const Token& t : all) {
+            if (t.key == "N") info->numbers.emplace(static_cast<long>(t.value), i);
+            if (t.key == ":") info->labels.emplace(t.text, i);
+        }
+        auto t = statements(all);
+        if (t.empty()) continue;
+        Ctl k = ctl_of(t[0].key);
+        if (k == ctl_if) {
+            bool jump = false;
+            for (const Token& x : t) jump |= x.key.rfind("GOTO", 0) == 0;
+            if (jump) k = ctl_jump;
+        } else if (t[0].key.rfind("GOTO", 0) == 0) {
+            k = ctl_jump;
+        }
+        info->kind[i] = k;
+        auto mismatch = [&](const char* what) {
+            throw ProgramError("14060", std::string("14060 ") + what + " without its opening statement",
+                               {blocks[i].line, t[0].column});
+        };
+        auto close = [&](Ctl opener, const char* what) {
+            if (open.empty() || (info->kind[open.back()] != opener && !(opener == ctl_if && info->kind[open.back()] == ctl_else)))
+                mismatch(what);
+            std::size_t o = open.back();
+            open.pop_back();
+            info->partner[o] = i;
+            info->partner[i] = o;
+        };
+        switch (k) {
+            case ctl_if: case ctl_while: case ctl_for: case ctl_repeat: case ctl_loop: open.push_back(i); break;
+            case ctl_else:
+                if (open.empty() || info->kind[open.back()] != ctl_if) mismatch("ELSE");
+                info->partner[open.back()] = i;
+                open.back() = i;
+                break;
+            case ctl_endif: {
+                if (open.empty() || (info->kind[open.back()] != ctl_if && info->kind[open.back()] != ctl_else)) mismatch("ENDIF");
+                std::size_t o = open.back();
+                open.pop_back();
+                info->partner[o] = i;
+                break;
+            }
+            case ctl_endwhile: close(ctl_while, "ENDWHILE"); break;
+            case ctl_endfor: close(ctl_for, "ENDFOR"); break;
+            case ctl_until: close(ctl_repeat, "UNTIL"); break;
+            case ctl_endloop: close(ctl_loop, "ENDLOOP"); break;
+            default: break;
+        }
+    }
+    if (!open.empty()) {
+        const Block& b = blocks[open.back()];
+        throw ProgramError("14060", "14060 Control structure not closed (" + statements(p.tokens(b))[0].key + " without its end)",
+                           {b.line, statements(p.tokens(b))[0].column});
+    }
+    slot = std::move(info);
+    return *slot;
+}
+
+double Interp::eval(std::int32_t e, int column) {
+    try {
+        return expr::evaluate(stack_.back().prog->expression(e), *this);
+    } catch (const expr::MathError& err) {
+        fail("math_error", std::string("14051 Arithmetic error in part program: ") + err.what(), column);
+    }
+}
+
+double Interp::eval_text(const std::string& text, int column) {
+    try {
+        return expr::evaluate(expr::parse_all(text, expr::sinumerik_syntax()), *this);
+    } catch (const expr::SyntaxError& err) {
+        fail("syntax_error", std::string("12080 Syntax error: ") + err.what(), column);
+    } catch (const expr::MathError& err) {
+        fail("math_error", std::string("14051 Arithmetic error in part program: ") + err.what(), column);
+    }
+}
+
+double Interp::value_of(const Token& t) { return t.expr >= 0 ? eval(t.expr, t.column) : t.value; }
+
+void Interp::run() {
+    stack_.push_back(Context{&main_, &info_of(main_), 0, {}, false, 0, 0});
+    try {
+        while (step()) {
+        }
+    } catch (...) {
+        sink_.finish();
+        throw;
+    }
+    sink_.finish();
+    if (const auto& e = main_.syntax_error) throw ParseError(e->code, e->message, e->pos);
+}
+
+bool Interp::step() {
+    Context& c = stack_.back();
+    const auto& blocks = c.prog->blocks();
+    if (c.pc >= blocks.size()) {
+        if (c.prog->syntax_error && stack_.size() > 1) {
+            const auto& e = *c.prog->syntax_error;
+            throw ParseError(e.code, e.message, e.pos);
+        }
+        return ret();
+    }
+    const Block& b = blocks[c.pc];
+    const std::size_t here = c.pc++;
+    if (b.block_delete && opts_.block_delete) return true;
+    line_ = b.line;
+    if (++executed_ > profile_.block_limit)
+        fail("block_limit", "Block limit of " + std::to_string(profile_.block_limit) +
+                                " executed blocks exceeded (endless loop?)");
+    if (opts_.progress && executed_ % opts_.progress_every == 0) opts_.progress(executed_);
+    auto t = statements(c.prog->tokens(b));
+    if (t.empty()) return true;
+    const std::uint8_t kind = c.info->kind[here];
+    if (kind != ctl_none) {
+        c.executable_seen = true;
+        control(t, kind);
+        return !ended_;
+    }
+    block(t);
+    return !ended_;
+}
+
+bool Interp::control(std::span<const Token> t, std::uint8_t kind) {
+    Context& c = stack_.back();
+    const std::size_t here = c.pc - 1;
+    const std::size_t partner = c.info->partner[here];
+    auto truth = [&](const Token& x) { return eval(x.expr, x.column) != 0; };
+    switch (kind) {
+        case ctl_jump: {
+            std::size_t i = 0;
+            if (t[0].key == "IF") {
+                if (!truth(t[0])) return true;
+                i = 1;
+            }
+            if (i >= t.size() || t[i].key.rfind("GOTO", 0) != 0) fail("syntax_error", "GOTOF, GOTOB or GOTO expected", t[0].column);
+            jump(t[i]);
+            return true;
+        }
+        case ctl_if:
+            if (!truth(t[0])) c.pc = partner + 1;
+            return true;
+        case ctl_else: c.pc = partner + 1; return true;  // the IF branch ran: skip the ELSE branch
+        case ctl_endif: case ctl_repeat: case ctl_loop: return true;
+        case ctl_while:
+            if (!truth(t[0])) c.pc = partner + 1;
+            return true;
+        case ctl_endwhile: c.pc = partner; return true;
+        case ctl_endloop: c.pc = partner + 1; return true;
+        case ctl_until:
+            if (!truth(t[0])) c.pc = partner + 1;
+            return true;
+        case ctl_for: {
+            if (t.size() < 2 || t[1].key != "TO") fail("syntax_error", "FOR without TO", t[0].column);
+            double start = eval(t[0].expr, t[0].column);
+            set_variable(t[0].text, {}, start, t[0].column);
+            if (get(t[0].text, {}) > eval(t[1].expr, t[1].column)) c.pc = partner + 1;
+            return true;
+        }
+        case ctl_endfor: {
+            auto ft = statements(c.prog->tokens(c.prog->blocks()[partner]));
+            double v = get(ft[0].text, {}) + 1;
+            set_variable(ft[0].text, {}, v, ft[0].column);
+            if (v <= eval(ft[1].expr, ft[1].column)) c.pc = partner + 1;
+            return true;
+        }
+        default: return false;
+    }
+}
+
+void Interp::jump(const Token& t) {
+    Context& c = stack_.back();
+    const std::size_t here = c.pc - 1;
+    std::optional<std::size_t> target;
+    const std::string& label = t.text;
+    auto find_in = [&](std::size_t from, std::size_t to) -> std::optional<std::size_t> {  // [from, to)
+        for (std::size_t i = from; i < to; ++i) {
+            for (const Token& x : c.prog->tokens(c.prog->blocks()[i])) {
+                if (x.key == ":" && x.text == label) return i;
+                if (x.key == "N" && label.size() > 1 && label[0] == 'N' &&
+                    label.find_first_not_of("0123456789", 1) == std::string::npos &&
+                    static_cast<long>(x.value) == std::stol(label.substr(1)))
+                    return i;
+            }
+        }
+        return std::nullopt;
+    };
+    const std::size_t n = c.prog->blocks().size();
+    if (t.key == "GOTOF") {
+        target = find_in(here + 1, n);
+    } else if (t.key == "GOTOB") {
+        for (std::size_t i = here + 1; i-- > 0 && !target;) target = find_in(i, i + 1);
+    } else {  // GOTO / GOTOC: forward first, then backward
+        target = find_in(here + 1, n);
+        for (std::size_t i = here + 1; !target && i-- > 0;) target = find_in(i, i + 1);
+    }
+    if (!target) {
+        if (t.key == "GOTOC") return;
+        fail("14080", "14080 Jump destination " + label + " not found", t.column);
+    }
+    c.pc = *target;
+}
+
+void Interp::call(const std::string& name, int passes, int column) {
+    if (static_cast<int>(stack_.size()) >= opts_.max_call_depth)
+        fail("call_depth", "Subprogram nesting deeper than " + std::to_string(opts_.max_call_depth) + " program levels",
+             column);
+    const Program* p = nullptr;
+    if (auto it = loaded_by_name_.find(name); it != loaded_by_name_.end()) p = it->second;
+    if (!p) {
+        namespace fs = std::filesystem;
+        std::string found;
+        for (const std::string& dir : opts_.search_path) {
+            std::error_code ec;
+            for (const auto& entry : fs::directory_iterator(dir, ec)) {
+                std::string file = entry.path().filename().string();
+                std::string up;
+                for (char ch : file) up.push_back(static_cast<char>(std::toupper(static_cast<unsigned char>(ch))));
+                if (up == name + ".SPF" || up == name + ".MPF" || up == name) {
+                    found = entry.path().string();
+                    break;
+                }
+            }
+            if (!found.empty()) break;
+        }
+        if (found.empty())
+            fail("14011", "14011 Program " + name + " not existing or will be edited" +
+                              (opts_.search_path.empty() ? " (no search path given)" : " (not on the search path)"),
+                 column);
+        std::ifstream f(found, std::ios::binary);
+        std::ostringstream ss;
+        ss << f.rdbuf();
+        loaded_.push_back(parse(ss.str(), found, false));
+        p = &loaded_.back();
+        loaded_by_name_[name] = p;
+    }
+    stack_.push_back(Context{p, &info_of(*p), 0, {}, false, 0, 0});
+    stack_.back().passes_left = passes - 1;
+    stack_.back().call_line = line_;
+}
+
+bool Interp::ret() {
+    if (stack_.size() == 1) {  // the main program ends with its last block
+        if (!ended_) sink_.control({ControlKind::program_end, line_});
+        ended_ = true;
+        return false;
+    }
+    Context& c = stack_.back();
+    if (c.passes_left > 0) {
+        --c.passes_left;
+        c.pc = 0;
+        c.locals.clear();
+        c.executable_seen = false;
+        return true;
+    }
+    stack_.pop_back();
+    return true;
+}
+
+void interpret(const Program& program, const ToolTable* tools, const ControlProfile& profile,
+               const InterpretOptions& options, MotionSink& sink, std::vector<Diagnostic>& diagnostics) {
+    Interp(program, tools, profile, options, sink, diagnostics).run();
+}
+
+}  // namespace toolcomp::sinumerik

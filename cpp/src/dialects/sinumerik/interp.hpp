@@ -1,0 +1,187 @@
+#pragma once
+// Working data of the Sinumerik interpreter. Private to the front end; the entry point is
+// toolcomp::sinumerik::interpret().
+//
+// Positions are millimetres (G70/G700 inch words are converted as they are read) in the
+// output system (see interpreter.hpp): `pos_` is where the tool is there; the programmable
+// frame maps program (workpiece) coordinates p to it: out = frame.a * p + frame.t.
+#include <Eigen/Core>
+#include <Eigen/LU>
+#include <array>
+#include <deque>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "toolcomp/dialects/sinumerik/interpreter.hpp"
+
+namespace toolcomp::sinumerik {
+
+using Mat3 = Eigen::Matrix3d;
+
+struct Frame {
+    Mat3 a = Mat3::Identity();
+    Vec3 t = Vec3::Zero();
+    Vec3 apply(const Vec3& p) const { return a * p + t; }
+    Vec3 invert(const Vec3& q) const { return a.inverse() * (q - t); }
+};
+
+// A program's control structures and jump targets, found once per program.
+struct ProgramInfo {
+    std::map<std::string, std::size_t> labels;  // label -> block index
+    std::map<long, std::size_t> numbers;        // N number -> first block index
+    std::vector<std::size_t> partner;           // IF->ELSE/ENDIF, ELSE->ENDIF, WHILE<->ENDWHILE, ...
+    std::vector<std::uint8_t> kind;             // the block's control statement (Ctl)
+};
+
+enum Ctl : std::uint8_t { ctl_none, ctl_if, ctl_else, ctl_endif, ctl_while, ctl_endwhile, ctl_for, ctl_endfor,
+                          ctl_repeat, ctl_until, ctl_loop, ctl_endloop, ctl_jump };
+
+struct Variable {
+    std::vector<double> v;
+    bool integer = false;
+};
+
+// A value word of a block, evaluated.
+struct Value {
+    bool set = false;
+    double v = 0;
+    int mod = 0;  // 1 AC, 2 IC
+    int column = 0;
+};
+
+// What one block asks for, after its expressions are evaluated.
+struct BlockData {
+    std::array<Value, 26> letter;  // A..Z (R is never an address)
+    Value cr, ar, turn, disc, offn, rpl, i1, j1, k1, tcarr;
+    std::vector<std::pair<int, int>> g;  // code, column
+    std::vector<std::pair<int, int>> m;
+    std::vector<std::pair<std::string, int>> keywords;  // NORM, CDON, TRANS ..., column
+    std::string tool_name;  // T="name"
+    int tool_name_column = 0;
+    const Value& operator[](char c) const { return letter[static_cast<std::size_t>(c - 'A')]; }
+    Value& operator[](char c) { return letter[static_cast<std::size_t>(c - 'A')]; }
+    bool has(char c) const { return (*this)[c].set; }
+    bool keyword(std::string_view k) const {
+        for (const auto& [w, c] : keywords)
+            if (w == k) return true;
+        return false;
+    }
+};
+
+struct Modal {
+    int motion = 0;  // 0 G0, 1 G1, 2 G2, 3 G3, 5 CIP, 6 CT
+    Plane plane = Plane::xy;
+    bool incremental = false;
+    bool inch = false;       // G70 / G700: geometry in inches
+    bool inch_feed = false;  // G700: feed too
+    bool diameter = false;   // DIAMON
+    int side = 0;            // G41 +1, G42 -1
+    int entry = -1;          // NORM / KONT (EntryStyle), -1 = the profile's
+    int outside = -1;        // G450 / G451 (OutsideCorner)
+    int gouge = -1;          // CDON / CDOF (GougeReaction)
+    double disc = -1;        // DISC
+    double offn = 0;         // OFFN, mm
+};
+
+class Interp : public expr::Env {
+public:
+    Interp(const Program& prog, const ToolTable* tools, const ControlProfile& profile, const InterpretOptions& opts,
+           MotionSink& sink, std::vector<Diagnostic>& diags);
+    void run();
+
+    // expr::Env
+    double get(const std::string& name, std::span<const double> idx) override;
+
+private:
+    struct Context {
+        const Program* prog;
+        const ProgramInfo* info;
+        std::size_t pc = 0;
+        std::map<std::string, Variable> locals;
+        bool executable_seen = false;  // DEF only before the first executable block
+        int passes_left = 0;           // L.. P n: further passes
+        int call_line = 0;
+    };
+
+    // ---- execution (interp.cpp) ----------------------------------------------------------
+    const ProgramInfo& info_of(const Program& p);
+    bool step();  // executes one block; false when the main program ended
+    void block(std::span<const Token> t);
+    bool control(std::span<const Token> t, std::uint8_t kind);  // true when the block was a control statement
+    void jump(const Token& t);
+    void call(const std::string& name, int passes, int column);
+    bool ret();  // end of the current program level; false at the end of the main program
+    [[noreturn]] void fail(const std::string& code, const std::string& msg, int column = 0) const;
+    void info(const char* code, const std::string& msg, int column = 0);
+    double eval(std::int32_t e, int column);
+    double value_of(const Token& t);
+    double eval_text(const std::string& text, int column);  // an argument of a call
+
+    // ---- variables (interp_vars.cpp) ------------------------------------------------------
+    void define(std::span<const Token> t);
+    void assign(const Token& t);
+    Variable* find_variable(const std::string& name);
+    void set_variable(const std::string& name, std::span<const double> idx, double v, int column);
+    void value_call(const Token& t);  // GETTCOR / SETTCOR / LENTOAX
+    std::vector<std::string> split_args(const std::string& text) const;
+
+    // ---- tools (interp_tools.cpp) -----------------------------------------------------------
+    void select_tool(const BlockData& b);
+    void change_tool();
+    void select_edge(int d, int column);
+    const SinumerikEdge* edge() const;  // the active edge, or nullptr (T0 / D0)
+    void update_tool_offset();
+    double radius_now() const;  // the active edge's radius + OFFN, mm
+
+    // ---- geometry (interp_motion.cpp) -------------------------------------------------------
+    void execute(BlockData& b, int first_column);
+    double unit() const { return st_.inch ? kMmPerInch : 1.0; }
+    Vec3 program_pos() const { return frame_.invert(pos_ - zero_shift_); }
+    Vec3 end_point(const BlockData& b, bool machine) const;
+    void frame_statement(const BlockData& b, const std::string& which, int column);
+    void move(MotionKind kind, const Vec3& end, const BlockData& b);
+    void arc(const BlockData& b, const Vec3& end_prog, bool machine);
+    Motion motion_(MotionKind kind, const Vec3& end) const;
+    RadiusRequest radius_request() const;
+    bool mirrored() const;  // the frame mirrors the working plane
+
+    const Program& main_;
+    const ToolTable* tools_;
+    const ControlProfile& profile_;
+    InterpretOptions opts_;
+    MotionSink& sink_;
+    std::vector<Diagnostic>& diags_;
+
+    std::vector<Context> stack_;
+    std::map<const Program*, std::unique_ptr<ProgramInfo>> infos_;
+    std::deque<Program> loaded_;  // subprograms read from the search path
+    std::map<std::string, const Program*> loaded_by_name_;
+    std::size_t executed_ = 0;
+    int line_ = 0;
+
+    Modal st_;
+    Vec3 pos_ = Vec3::Zero();
+    std::array<double, 3> abc_{0, 0, 0};
+    Frame frame_;
+    Vec3 zero_shift_ = Vec3::Zero();  // type P toolholder: table rotation
+    double feed_ = 0;                 // mm/min
+    std::optional<Vec2> last_tangent_;  // direction at the end of the last plane move (CT)
+
+    std::array<double, 1000> r_{};  // R0..R999
+    std::map<std::string, Variable> globals_;
+    SinumerikEdgeMap edges_;
+    std::map<int, Toolholder> holders_;
+    int selected_ = 0, tool_ = 0, d_ = 0, tcarr_ = 0;
+    bool tcoabs_ = false;
+    bool diam90_ = false;  // DIAM90: absolute X in diameter, incremental in radius
+    Vec3 tool_offset_ = Vec3::Zero();
+    std::optional<SinumerikEdge> active_;  // the active edge as selected (later $TC_DP writes
+                                           // take effect at the next T/D selection)
+    bool ended_ = false;
+    bool warned_blending_ = false;
+};
+
+}  // namespace toolcomp::sinumerik

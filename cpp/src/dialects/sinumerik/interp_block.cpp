@@ -1,0 +1,135 @@
+// One Sinumerik block: its statements are evaluated left to right (assignments take effect
+// at once, so "R1=5 X=R1" moves to 5), the words are collected, then executed in the
+// control's order: feed, speed, tool selection and change, edge, plane, units, dimensions,
+// compensation modes, frames, motion, program stop and end, subprogram call.
+#include <cmath>
+
+#include "interp.hpp"
+#include "toolcomp/dialects/sinumerik/lexer.hpp"
+
+namespace toolcomp::sinumerik {
+
+namespace {
+bool is_keyword(std::string_view k) {
+    static constexpr std::string_view known[] = {
+        "NORM", "KONT", "CDON", "CDOF", "CDOF2", "CUT2D", "DIAMON", "DIAMOF", "DIAM90", "TRANS", "ATRANS", "ROT",
+        "AROT", "SCALE", "ASCALE", "MIRROR", "AMIRROR", "SUPA", "TCOABS", "TCOFR", "RET", "STOPRE", "TRAFOOF",
+        "CIP", "CT", "TCOFRZ"};
+    for (std::string_view x : known)
+        if (x == k) return true;
+    return false;
+}
+// Real 840D words toolcomp does not run: an explicit error rather than a silently different path.
+bool is_unsupported(std::string_view k) {
+    static constexpr std::string_view known[] = {
+        "KONTC", "KONTT", "CUT2DF", "CUT3DC", "CUT3DF", "CUT3DFS", "CUT3DFF", "CUT3DCC", "CUT3DCCD", "TRAORI", "TRACYL",
+        "TRANSMIT", "TCOFRY", "TCOFRX", "ASPLINE", "BSPLINE", "CSPLINE", "POLY", "OFFN_AX", "ORIC", "ORID", "CYCLE81",
+        "CYCLE82", "CYCLE83", "POCKET3", "POCKET4", "SLOT1", "SLOT2", "CYCLE800", "CYCLE832", "MCALL", "EXTERN",
+        "G110", "G111", "G112", "BRISK", "SOFT", "FFWON", "FFWOF"};
+    for (std::string_view x : known)
+        if (x == k) return true;
+    return false;
+}
+}  // namespace
+
+void Interp::block(std::span<const Token> t) {
+    Context& c = stack_.back();
+    if (t[0].key == "DEF") {
+        if (c.executable_seen)
+            fail("14500", "14500 Illegal DEF or PROC instruction in the program (DEF after the first executable block)",
+                 t[0].column);
+        define(t);
+        return;
+    }
+    if (t[0].key == "PROC") {
+        if (c.pc != 1 && c.executable_seen)
+            fail("14500", "14500 Illegal DEF or PROC instruction in the program", t[0].column);
+        return;
+    }
+    c.executable_seen = true;
+    BlockData b;
+    std::string call_name;
+    int call_column = 0;
+    for (const Token& x : t) {
+        const std::string& k = x.key;
+        if (k == "=") {
+            assign(x);
+            continue;
+        }
+        if (k == "GETTCOR" || k == "SETTCOR" || k == "LENTOAX") {
+            value_call(x);
+            continue;
+        }
+        if (k == "MSG") {
+            std::string m = x.text;
+            if (m.size() >= 2 && m.front() == '"' && m.back() == '"') m = m.substr(1, m.size() - 2);
+            info("message", m, x.column);
+            continue;
+        }
+        if (k == "SETAL") {
+            const long n = std::lround(eval_text(x.text, x.column));
+            fail("setal", "Alarm " + std::to_string(n) + " set by the program (SETAL)", x.column);
+        }
+        if (is_unsupported(k) || (k == "G" && (x.value == 110 || x.value == 111 || x.value == 112)))
+            fail("unsupported_word", (k == "G" ? "G" + std::to_string(static_cast<int>(x.value)) : k) +
+                                         " is not supported by toolcomp", x.column);
+        if (x.has_value || x.expr >= 0 || (!x.text.empty() && x.text.front() == '"')) {
+            if (k.size() == 1) {
+                const char l = k[0];
+                if (l == 'G') {
+                    double v = value_of(x);
+                    if (v != std::floor(v) || v < 0) fail("12470", "12470 G function G" + std::to_string(v) + " is unknown", x.column);
+                    b.g.emplace_back(static_cast<int>(v), x.column);
+                    continue;
+                }
+                if (l == 'M') {
+                    b.m.emplace_back(static_cast<int>(std::lround(value_of(x))), x.column);
+                    continue;
+                }
+                if (l == 'L' && x.text.size() > 1 && x.expr < 0) {  // L10: subprogram call
+                    call_name = x.text;
+                    call_column = x.column;
+                    continue;
+                }
+                if (l == 'T' && !x.text.empty() && x.text.front() == '"') {
+                    b.tool_name = x.text.substr(1, x.text.size() - 2);
+                    b.tool_name_column = x.column;
+                    b['T'] = Value{true, 0, 0, x.column};
+                    continue;
+                }
+                Value& v = b[l];
+                if (v.set) fail("12010", "12010 Address " + k + " programmed too often", x.column);
+                v = Value{true, value_of(x), x.param, x.column};
+                continue;
+            }
+            Value* v = k == "CR" ? &b.cr : k == "AR" ? &b.ar : k == "TURN" ? &b.turn : k == "DISC" ? &b.disc
+                     : k == "OFFN" ? &b.offn : k == "RPL" ? &b.rpl : k == "I1" ? &b.i1 : k == "J1" ? &b.j1
+                     : k == "K1" ? &b.k1 : k == "TCARR" ? &b.tcarr : nullptr;
+            if (!v) fail("unsupported_word", k + "= is not supported by toolcomp", x.column);
+            if (v->set) fail("12010", "12010 Address " + k + " programmed too often", x.column);
+            *v = Value{true, value_of(x), x.param, x.column};
+            continue;
+        }
+        if (is_keyword(k)) {
+            b.keywords.emplace_back(k, x.column);
+            continue;
+        }
+        if (k.rfind("GOTO", 0) == 0 || k == "IF" || k == "FOR" || k == "WHILE")
+            fail("syntax_error", k + " must begin its block", x.column);
+        // Anything else names a subprogram (found on the search path, or an error there).
+        if (!call_name.empty()) fail("12010", "12010 Two subprogram calls in one block", x.column);
+        call_name = k;
+        call_column = x.column;
+    }
+    execute(b, t[0].column);
+    if (!call_name.empty() && !ended_) {
+        int passes = 1;
+        if (b.has('P')) {
+            passes = static_cast<int>(std::lround(b['P'].v));
+            if (passes < 1 || passes > 9999) fail("14770", "14770 Number of passes P out of range 1..9999", b['P'].column);
+        }
+        call(call_name, passes, call_column);
+    }
+}
+
+}  // namespace toolcomp::sinumerik

@@ -1,0 +1,426 @@
+// Execution of a Sinumerik block's words and its geometry: dimensions (G90/G91, AC()/IC(),
+// G70/G71/G700/G710, DIAMON), the programmable frame (TRANS ROT SCALE MIRROR and the A...
+// forms), G53/G153/SUPA, straight moves, circles (centre I J K, CR=, AR=, CIP, CT, TURN=,
+// helices) and the cutter radius request (G40/G41/G42, NORM/KONT, G450/G451, DISC, CDON/CDOF,
+// OFFN).
+#include <cmath>
+
+#include "interp.hpp"
+#include "toolcomp/geometry/arc.hpp"
+
+namespace toolcomp::sinumerik {
+
+namespace {
+constexpr char kAxes[3] = {'X', 'Y', 'Z'};
+constexpr char kCentre[3] = {'I', 'J', 'K'};
+
+Mat3 rotation(int axis, double deg) {
+    const double a = deg * kPi / 180, c = std::cos(a), s = std::sin(a);
+    Mat3 r = Mat3::Identity();
+    const int i = (axis + 1) % 3, j = (axis + 2) % 3;  // x: (y, z), y: (z, x), z: (x, y)
+    r(i, i) = c;
+    r(i, j) = -s;
+    r(j, i) = s;
+    r(j, j) = c;
+    return r;
+}
+int plane_normal_axis(Plane p) { return p == Plane::xy ? 2 : p == Plane::zx ? 1 : 0; }
+}  // namespace
+
+bool Interp::mirrored() const {
+    const PlaneAxes ax = axes(st_.plane);
+    const double det = frame_.a(ax.a, ax.a) * frame_.a(ax.b, ax.b) - frame_.a(ax.a, ax.b) * frame_.a(ax.b, ax.a);
+    return det < 0;
+}
+
+// The end point of a move in program (workpiece) coordinates, or with `machine` (G53,
+// G153, SUPA) in output coordinates without the programmable frame.
+Vec3 Interp::end_point(const BlockData& b, bool machine) const {
+    Vec3 p = machine ? pos_ : program_pos();
+    for (int i = 0; i < 3; ++i) {
+        const Value& v = b[kAxes[i]];
+        if (!v.set) continue;
+        double x = v.v * unit();
+        const bool incremental = v.mod == 2 || (v.mod == 0 && st_.incremental);
+        if (i == 0 && (st_.diameter || (diam90_ && !incremental))) x /= 2;
+        if (machine && incremental) fail("g53_incremental", "G53/G153/SUPA with incremental dimensions", v.column);
+        p[i] = incremental ? p[i] + x : x;
+    }
+    return p;
+}
+
+Motion Interp::motion_(MotionKind kind, const Vec3& end) const {
+    Motion m;
+    m.kind = kind;
+    m.plane = st_.plane;
+    m.start = pos_;
+    m.end = end;
+    m.abc = abc_;
+    m.feed = kind == MotionKind::rapid ? std::numeric_limits<double>::quiet_NaN() : feed_;
+    m.line = line_;
+    m.tool = tool_;
+    m.tool_offset = tool_offset_;
+    m.radius = radius_request();
+    m.unit = 1.0;
+    return m;
+}
+
+RadiusRequest Interp::radius_request() const {
+    RadiusRequest r;
+    if (st_.side == 0) return r;
+    r.side = static_cast<std::int8_t>(mirrored() ? -st_.side : st_.side);
+    r.radius = radius_now();
+    if (active_ && is_turning_type(active_->type())) r.orientation = static_cast<std::int8_t>(std::lround(active_->DP(2)));
+    r.entry = static_cast<std::int8_t>(st_.entry);
+    r.outside = static_cast<std::int8_t>(st_.outside);
+    r.gouge = static_cast<std::int8_t>(st_.gouge);
+    r.disc = static_cast<float>(st_.disc);
+    return r;
+}
+
+void Interp::frame_statement(const BlockData& b, const std::string& which, int column) {
+    const bool additive = which[0] == 'A';
+    const std::string base = additive ? which.substr(1) : which;
+    Frame f = additive ? frame_ : Frame{};
+    if (base == "TRANS") {
+        Vec3 v = Vec3::Zero();
+        for (int i = 0; i < 3; ++i)
+            if (b[kAxes[i]].set) v[i] = b[kAxes[i]].v * unit();
+        f.t += f.a * v;
+    } else if (base == "ROT") {
+        Mat3 r = Mat3::Identity();
+        if (b.rpl.set) {
+            if (b.has('X') || b.has('Y') || b.has('Z')) fail("syntax_error", "ROT with RPL= and axis angles", column);
+            r = rotation(plane_normal_axis(st_.plane), b.rpl.v);
+        } else {
+            for (int i : {2, 1, 0})  // Z, then Y, then X (RPY angles, MD10600 = 1)
+                if (b[kAxes[i]].set) r = r * rotation(i, b[kAxes[i]].v);
+        }
+        f.a = f.a * r;
+    } else if (base == "SCALE") {
+        Mat3 s = Mat3::Identity();
+        for (int i = 0; i < 3; ++i)
+            if (b[kAxes[i]].set) {
+                if (b[kAxes[i]].v == 0) fail("scale_zero", "SCALE with a factor of zero", b[kAxes[i]].column);
+                s(i, i) = b[kAxes[i]].v;
+            }
+        f.a = f.a * s;
+    } else if (base == "MIRROR") {
+        Mat3 m = Mat3::Identity();
+        for (int i = 0; i < 3; ++i)
+            if (b[kAxes[i]].set) m(i, i) = -1;
+        f.a = f.a * m;
+    }
+    frame_ = f;
+}
+
+void Interp::execute(BlockData& b, int first_column) {
+    // ---- G codes by group -----------------------------------------------------------------
+    int motion = -1, plane = -1, comp = -1, corner = -1, dist = -1, units = -1, nonmodal = -1, workoffset = -1;
+    auto setg = [&](int& slot, int code, int column) {
+        if (slot >= 0 && slot != code)
+            fail("12190", "12190 G functions G" + std::to_string(slot) + " and G" + std::to_string(code) +
+                              " of the same group in one block", column);
+        slot = code;
+    };
+    for (auto [g, column] : b.g) {
+        switch (g) {
+            case 0: case 1: case 2: case 3: setg(motion, g, column); break;
+            case 17: case 18: case 19: setg(plane, g, column); break;
+            case 40: case 41: case 42: setg(comp, g, column); break;
+            case 450: case 451: setg(corner, g, column); break;
+            case 90: case 91: setg(dist, g, column); break;
+            case 70: case 71: case 700: case 710: setg(units, g, column); break;
+            case 4: case 9: case 53: case 153: case 25: case 26: setg(nonmodal, g, column); break;
+            case 500: case 54: case 55: case 56: case 57: setg(workoffset, g, column); break;
+            case 60: case 64: case 94: case 95: case 96: case 97: case 601: case 602: case 603: break;
+            case 641: case 642: case 643: case 644: case 645:
+                if (!warned_blending_) {
+                    info("blending_not_modelled", "G" + std::to_string(g) +
+                         " corner rounding is a tolerance of the executed path; toolcomp returns the programmed path", column);
+                    warned_blending_ = true;
+                }
+                break;
+            default:
+                if (g >= 505 && g <= 599) {
+                    setg(workoffset, g, column);
+                    break;
+                }
+                fail("unsupported_g_code", "G" + std::to_string(g) + " is not supported by toolcomp", column);
+        }
+    }
+    bool cip = false, ct = false, machine = nonmodal == 53 || nonmodal == 153;
+    std::string frame_word;
+    int frame_column = 0;
+    for (const auto& [k, column] : b.keywords) {
+        if (k == "CIP") cip = true;
+        else if (k == "CT") ct = true;
+        else if (k == "SUPA") machine = true;
+        else if (k == "TRANS" || k == "ATRANS" || k == "ROT" || k == "AROT" || k == "SCALE" || k == "ASCALE" ||
+                 k == "MIRROR" || k == "AMIRROR") {
+            if (!frame_word.empty()) fail("12190", "12190 Two frame instructions in one block", column);
+            frame_word = k;
+            frame_column = column;
+        }
+    }
+    if ((cip || ct) && motion >= 0) fail("12190", "12190 CIP/CT and G" + std::to_string(motion) + " in one block", first_column);
+    if (cip && ct) fail("12190", "12190 CIP and CT in one block", first_column);
+
+    // ---- units first: the block's own values follow them ------------------------------------
+    if (units >= 0) {
+        st_.inch = units == 70 || units == 700;
+        st_.inch_feed = units == 700;
+    }
+    // ---- feed, speed, tools ------------------------------------------------------------------
+    if (b.has('F') && nonmodal != 4) feed_ = b['F'].v * (st_.inch_feed ? kMmPerInch : 1.0);
+    if (b.has('T')) select_tool(b);
+    bool m6 = false, stop = false, end = false, sub_end = false;
+    for (auto [m, column] : b.m) {
+        if (m == 6) m6 = true;
+        else if (m == 0 || m == 1) stop = true;
+        else if (m == 2 || m == 30) end = true;
+        else if (m == 17) sub_end = true;
+        else if (m < 0) fail("unsupported_m_code", "M" + std::to_string(m) + " is not an M function", column);
+    }
+    if (m6) {
+        if (st_.side != 0) fail("10750", "10750 Tool change with active TRC", first_column);
+        change_tool();
+    }
+    if (b.has('D')) {
+        const Value& d = b['D'];
+        if (d.v != std::floor(d.v) || d.v < 0) fail("17180", "17180 Illegal D number", d.column);
+        select_edge(static_cast<int>(d.v), d.column);
+    }
+    // ---- plane, dimensions ---------------------------------------------------------------------
+    if (plane >= 0) {
+        Plane p = plane == 17 ? Plane::xy : plane == 18 ? Plane::zx : Plane::yz;
+        if (p != st_.plane && st_.side != 0) fail("10757", "10757 Change of the compensation plane with active TRC", first_column);
+        st_.plane = p;
+        update_tool_offset();
+    }
+    if (dist >= 0) st_.incremental = dist == 91;
+    for (const auto& [k, column] : b.keywords) {
+        if (k == "DIAMON") st_.diameter = true, diam90_ = false;
+        else if (k == "DIAMOF") st_.diameter = false, diam90_ = false;
+        else if (k == "DIAM90") st_.diameter = false, diam90_ = true;
+        else if (k == "NORM") st_.entry = static_cast<int>(EntryStyle::perpendicular_to_next);
+        else if (k == "KONT") st_.entry = static_cast<int>(EntryStyle::around_start_when_behind);
+        else if (k == "CDON") st_.gouge = static_cast<int>(GougeReaction::skip);
+        else if (k == "CDOF" || k == "CDOF2") st_.gouge = static_cast<int>(GougeReaction::error);
+        else if (k == "TCOABS") tcoabs_ = true;
+    }
+    if (corner >= 0) st_.outside = static_cast<int>(corner == 450 ? OutsideCorner::arc : OutsideCorner::intersection);
+    if (b.disc.set) {
+        if (b.disc.v < 0 || b.disc.v > 100) fail("14800", "14800 DISC value outside 0..100", b.disc.column);
+        st_.disc = b.disc.v;
+    }
+    if (b.offn.set) st_.offn = b.offn.v * unit();
+    if (b.tcarr.set) {
+        tcarr_ = static_cast<int>(std::lround(b.tcarr.v));
+        update_tool_offset();
+    }
+    // ---- radius compensation -------------------------------------------------------------------
+    if (comp >= 0) {
+        const int side = comp == 41 ? 1 : comp == 42 ? -1 : 0;
+        if (side != 0 && tool_ == 0)
+            fail("10750", "10750 Tool radius compensation activated without a tool number", first_column);
+        if (side != 0 && d_ == 0)
+            diags_.push_back({"comp_d0", Severity::warning,
+                              "G" + std::to_string(comp) + " with D0: no tool radius compensation", {line_, first_column}});
+        if (side != 0 && (motion == 2 || motion == 3 || cip || ct || (motion < 0 && st_.motion >= 2)) && st_.side == 0)
+            fail("10753", "10753 TRC selection only possible in a linear block", first_column);
+        if (side == 0 && st_.side != 0 && (motion == 2 || motion == 3 || cip || ct || (motion < 0 && st_.motion >= 2)))
+            fail("10754", "10754 TRC deselection only possible in a linear block", first_column);
+        if (side == 0 && st_.side != 0) sink_.control({ControlKind::radius_off, line_});
+        st_.side = side;
+    }
+    // ---- frames and work offsets ---------------------------------------------------------------
+    // G54..G57, G505..G599, G500: the settable frames carry no values here (see interpreter.hpp).
+    const bool axes = b.has('X') || b.has('Y') || b.has('Z');
+    if (!frame_word.empty()) {
+        if (motion >= 0) fail("12190", "12190 " + frame_word + " must be programmed in a block of its own", frame_column);
+        frame_statement(b, frame_word, frame_column);
+    } else if (b.rpl.set) {
+        fail("syntax_error", "RPL= without ROT or AROT", b.rpl.column);
+    }
+    // ---- motion --------------------------------------------------------------------------------
+    if (motion >= 0) st_.motion = motion;
+    if (cip) st_.motion = 5;
+    if (ct) st_.motion = 6;
+    const bool rotary = b.has('A') || b.has('B') || b.has('C');
+    const bool data_axes = !frame_word.empty() || nonmodal == 25 || nonmodal == 26;
+    const bool arc_words = b.has('I') || b.has('J') || b.has('K') || b.cr.set || b.ar.set || b.i1.set || b.j1.set ||
+                           b.k1.set || b.turn.set;
+    if (arc_words && st_.motion < 2)
+        fail("unused_word", "I, J, K, CR=, AR=, I1=, TURN= need G2, G3, CIP or CT", first_column);
+    if (nonmodal == 4) {
+        if (!b.has('F') && !b.has('S')) fail("dwell_missing", "G4 needs the dwell time F (seconds) or S (revolutions)", first_column);
+    } else if (!data_axes && (axes || rotary || (st_.motion >= 2 && arc_words))) {
+        std::array<double, 3> abc = abc_;
+        for (int i = 0; i < 3; ++i) {
+            const Value& v = b[static_cast<char>('A' + i)];
+            if (v.set) abc[static_cast<std::size_t>(i)] = (v.mod == 2 || (v.mod == 0 && st_.incremental)) ? abc[static_cast<std::size_t>(i)] + v.v : v.v;
+        }
+        if (st_.motion >= 2) {
+            if (machine) fail("g53_motion", "G53/G153/SUPA only with G0 or G1", first_column);
+            Vec3 e = end_point(b, false);
+            abc_ = abc;
+            arc(b, e, false);
+        } else {
+            Vec3 e = end_point(b, machine);
+            Vec3 out = machine ? e : frame_.apply(e) + zero_shift_;
+            abc_ = abc;
+            if (st_.motion == 1 && !(feed_ > 0)) fail("10860", "10860 No feedrate programmed", first_column);
+            Motion m = motion_(st_.motion == 0 ? MotionKind::rapid : MotionKind::line, out);
+            if (machine) m.radius = RadiusRequest{};
+            const Vec2 d = in_plane(e - program_pos(), st_.plane);
+            if (d.norm() > 1e-12) last_tangent_ = d.normalized();
+            pos_ = out;
+            sink_.push(m);
+        }
+    }
+    for (const char l : {'U', 'V', 'W', 'O', 'Q', 'E'})
+        if (b.has(l)) fail("unsupported_word", std::string(1, l) + " words are not supported by toolcomp", b[l].column);
+    // ---- stop, end -----------------------------------------------------------------------------
+    if (stop) sink_.control({ControlKind::stop, line_});
+    bool ret_word = b.keyword("RET");
+    if (end && stack_.size() == 1) {
+        sink_.control({ControlKind::program_end, line_});
+        st_.side = 0;
+        ended_ = true;
+        return;
+    }
+    if (end || sub_end || ret_word) {
+        if (stack_.size() == 1) {
+            if (sub_end || ret_word) {  // M17 / RET in a main program ends it too
+                sink_.control({ControlKind::program_end, line_});
+                ended_ = true;
+            }
+            return;
+        }
+        Context& c = stack_.back();
+        c.pc = c.prog->blocks().size();  // ret() at the next step
+    }
+}
+
+void Interp::arc(const BlockData& b, const Vec3& end_prog, bool) {
+    const PlaneAxes ax = axes(st_.plane);
+    const Vec3 s3 = program_pos();
+    const Vec2 s = in_plane(s3, st_.plane);
+    Vec3 e3 = end_prog;
+    Vec2 e = in_plane(e3, st_.plane);
+    const bool end_given = b.has(kAxes[ax.a]) || b.has(kAxes[ax.b]);
+    int dir = st_.motion == 3 ? 1 : -1;
+    Vec2 c;
+    const int first = b.has('X') ? b['X'].column : b.has('Y') ? b['Y'].column : b.has('Z') ? b['Z'].column : 0;
+    const double tol = 0.01;  // MD21000 CIRCLE_ERROR_CONST
+    auto centre_words = [&]() -> std::optional<Vec2> {
+        const Value& ca = b[kCentre[ax.a]];
+        const Value& cb = b[kCentre[ax.b]];
+        if (!ca.set && !cb.set) return std::nullopt;
+        double va = ca.set ? ca.v * unit() : 0, vb = cb.set ? cb.v * unit() : 0;
+        if (ax.a == 0 && ca.set && ca.mod == 1 && st_.diameter) va /= 2;
+        if (ax.b == 0 && cb.set && cb.mod == 1 && st_.diameter) vb /= 2;
+        return Vec2((ca.set && ca.mod == 1) ? va : s.x() + va, (cb.set && cb.mod == 1) ? vb : s.y() + vb);
+    };
+    if (st_.motion == 5) {  // CIP
+        Vec3 m3 = s3;
+        const Value* iv[3] = {&b.i1, &b.j1, &b.k1};
+        for (int i = 0; i < 3; ++i) {
+            if (!iv[i]->set) continue;
+            double x = iv[i]->v * unit();
+            if (i == 0 && st_.diameter) x /= 2;
+            const bool inc = iv[i]->mod == 2 || (iv[i]->mod == 0 && st_.incremental);
+            m3[i] = inc ? s3[i] + x : x;
+        }
+        const Vec2 m = in_plane(m3, st_.plane);
+        const double cr = cross2(m - s, e - s);
+        if (std::fabs(cr) < 1e-9 * std::max(1.0, (e - s).squaredNorm()))
+            fail("14040", "14040 Error in end point of circle: CIP points on one line", first);
+        // Circumcentre of s, m, e.
+        const Vec2 a = m - s, bb = e - s;
+        const double d = 2 * cross2(a, bb);
+        c = s + Vec2(bb.y() * a.squaredNorm() - a.y() * bb.squaredNorm(), a.x() * bb.squaredNorm() - bb.x() * a.squaredNorm()) / d;
+        dir = cr > 0 ? 1 : -1;
+    } else if (st_.motion == 6) {  // CT
+        if (!last_tangent_) fail("14040", "14040 CT needs a preceding move to be tangent to", first);
+        const Vec2 n = left_normal(*last_tangent_);
+        const Vec2 d = e - s;
+        const double dn = d.dot(n);
+        if (std::fabs(dn) < 1e-9) fail("14040", "14040 Error in end point of circle: CT end point on the tangent", first);
+        const double rho = d.squaredNorm() / (2 * dn);
+        c = s + n * rho;
+        dir = rho > 0 ? 1 : -1;
+    } else if (b.cr.set) {
+        if (b.has(kCentre[ax.a]) || b.has(kCentre[ax.b]))
+            fail("14040", "14040 CR= and the centre I, J, K in one block", b.cr.column);
+        const double R = b.cr.v * unit();
+        auto cc = center_from_radius(s, e, R, dir);
+        if (!cc) {
+            if ((e - s).norm() > 2 * std::fabs(R) + tol || (e - s).norm() < 1e-12)
+                fail("14040", "14040 Error in end point of circle: CR= too small for the chord", b.cr.column);
+            cc = (s + e) / 2;
+        }
+        c = *cc;
+    } else if (b.ar.set) {
+        const double A = b.ar.v;
+        if (!(A > 0 && A < 360)) fail("14040", "14040 AR= must lie between 0 and 360 degrees", b.ar.column);
+        const double ang = A * kPi / 180;
+        if (auto cw = centre_words()) {
+            if (end_given) fail("14040", "14040 AR= with both centre and end point", b.ar.column);
+            c = *cw;
+            const Vec2 r = s - c;
+            const double t = dir * ang;
+            e = c + Vec2(r.x() * std::cos(t) - r.y() * std::sin(t), r.x() * std::sin(t) + r.y() * std::cos(t));
+            e3[ax.a] = e.x();
+            e3[ax.b] = e.y();
+        } else {
+            const double chord = (e - s).norm();
+            if (chord < 1e-12) fail("14040", "14040 AR= with the end point at the start", b.ar.column);
+            const Vec2 u = (e - s) / chord;
+            const double dist = (chord / 2) / std::tan(ang / 2);
+            c = (s + e) / 2 + left_normal(u) * (dir * dist);
+        }
+    } else if (auto cw = centre_words()) {
+        c = *cw;
+    } else {
+        fail("14040", "14040 Circle without centre, radius, opening angle or intermediate point", first);
+    }
+    const double rs = (s - c).norm(), re = (e - c).norm();
+    if (rs < 1e-9) fail("14040", "14040 Error in end point of circle: radius zero", first);
+    if (std::fabs(re - rs) > std::max(tol, 0.001 * rs))
+        fail("14040", "14040 Error in end point of circle (start radius " + std::to_string(rs) + ", end radius " +
+                          std::to_string(re) + ")", first);
+    // The centre in 3D at the start's applicate; the frame must keep the working plane.
+    Vec3 c3 = s3;
+    c3[ax.a] = c.x();
+    c3[ax.b] = c.y();
+    const int n = plane_normal_axis(st_.plane);
+    const Mat3& A = frame_.a;
+    const double sa = std::hypot(A(ax.a, ax.a), A(ax.b, ax.a)), sb = std::hypot(A(ax.a, ax.b), A(ax.b, ax.b));
+    if (std::fabs(A(n, ax.a)) > 1e-12 || std::fabs(A(n, ax.b)) > 1e-12 || std::fabs(A(ax.a, n)) > 1e-12 ||
+        std::fabs(A(ax.b, n)) > 1e-12)
+        fail("unsupported_word", "Circles in a frame rotated out of the working plane are not supported by toolcomp", first);
+    if (std::fabs(sa - sb) > 1e-9 * std::max(sa, sb)) {
+        if (st_.side != 0) fail("10761", "10761 Tool radius compensation for an ellipse (circle in a non-uniform SCALE)", first);
+        fail("unsupported_word", "Ellipses (circles in a non-uniform SCALE) are not supported by toolcomp", first);
+    }
+    if (!(feed_ > 0)) fail("10860", "10860 No feedrate programmed", first);
+    int turns = 0;
+    if (b.turn.set) {
+        if (b.turn.v < 0 || b.turn.v != std::floor(b.turn.v)) fail("14040", "14040 TURN= must be a whole number of turns", b.turn.column);
+        turns = static_cast<int>(b.turn.v);
+    }
+    const Vec3 out_end = frame_.apply(e3) + zero_shift_;
+    const Vec3 out_c = frame_.apply(c3) + zero_shift_;
+    const int out_dir = mirrored() ? -dir : dir;
+    Motion m = motion_(out_dir > 0 ? MotionKind::arc_ccw : MotionKind::arc_cw, out_end);
+    m.center = out_c;
+    m.turns = turns;
+    const Vec2 re2 = e - c;
+    last_tangent_ = (dir > 0 ? left_normal(re2) : Vec2(-left_normal(re2))).normalized();
+    pos_ = out_end;
+    sink_.push(m);
+}
+
+}  // namespace toolcomp::sinumerik

@@ -1,0 +1,97 @@
+// Tools on a Sinumerik: T selects (and changes at once on a lathe), M6 changes the selected
+// tool on a mill, the change activates D1 (MD20270 CUTTING_EDGE_DEFAULT = 1), D<n> selects
+// an edge of the active tool, D0 deselects every offset. Edge data come from $TC_DP (the
+// run's tool data and the program's own assignments) or else from the ToolTable (through
+// edge_from_common). The length vector follows the plane (spec §3.2) and, with a toolholder
+// (TCARR=m), its kinematics (spec §3.6).
+#include <cctype>
+
+#include "interp.hpp"
+#include "toolcomp/tools/tool_table.hpp"
+
+namespace toolcomp::sinumerik {
+
+namespace {
+std::string upper(std::string s) {
+    for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return s;
+}
+}  // namespace
+
+void Interp::select_tool(const BlockData& b) {
+    const Value& tv = b['T'];
+    int t = 0;
+    if (!b.tool_name.empty()) {
+        const Tool* found = nullptr;
+        if (tools_)
+            for (const Tool& x : tools_->tools())
+                if (upper(x.name) == upper(b.tool_name)) found = &x;
+        if (!found) fail("17190", "17190 Illegal T number: no tool named \"" + b.tool_name + "\"", b.tool_name_column);
+        t = found->number;
+    } else {
+        if (tv.v != std::floor(tv.v) || tv.v < 0) fail("17190", "17190 Illegal T number", tv.column);
+        t = static_cast<int>(tv.v);
+        bool known = t == 0 || (tools_ && tools_->contains(t));
+        auto it = edges_.lower_bound({t, 0});
+        known |= it != edges_.end() && it->first.first == t;
+        if (!known) fail("17190", "17190 Illegal T number: T" + std::to_string(t) + " is not in the tool data", tv.column);
+    }
+    selected_ = t;
+    if (profile_.machine == Machine::lathe) change_tool();
+}
+
+void Interp::change_tool() {
+    tool_ = selected_;
+    d_ = 0;
+    active_.reset();
+    if (tool_ != 0) {
+        auto it = edges_.lower_bound({tool_, 0});
+        const bool has_d1 = edges_.count({tool_, 1}) || (tools_ && tools_->contains(tool_) && tools_->at(tool_).has_edge(1));
+        if (has_d1 || (it != edges_.end() && it->first.first == tool_)) select_edge(1, 0);
+    }
+    update_tool_offset();
+}
+
+void Interp::select_edge(int d, int column) {
+    if (d == 0) {
+        d_ = 0;
+        active_.reset();
+        update_tool_offset();
+        return;
+    }
+    if (tool_ == 0) fail("17180", "17180 Illegal D number: D" + std::to_string(d) + " without an active tool", column);
+    if (auto it = edges_.find({tool_, d}); it != edges_.end()) {
+        active_ = it->second;
+    } else if (tools_ && tools_->contains(tool_) && tools_->at(tool_).has_edge(d)) {
+        active_ = edge_from_common(tools_->at(tool_).edge(d));
+    } else {
+        fail("17180", "17180 Illegal D number: T" + std::to_string(tool_) + " has no cutting edge D" + std::to_string(d), column);
+    }
+    d_ = d;
+    update_tool_offset();
+}
+
+const SinumerikEdge* Interp::edge() const { return active_ ? &*active_ : nullptr; }
+
+double Interp::radius_now() const {
+    return active_ ? active_->radius(opts_.lengths.wear_sign(), st_.offn) : 0.0;
+}
+
+void Interp::update_tool_offset() {
+    Vec3 l = active_ ? tool_length_vector(*active_, st_.plane, opts_.lengths) : Vec3::Zero();
+    zero_shift_ = Vec3::Zero();
+    if (tcarr_ != 0) {
+        auto it = holders_.find(tcarr_);
+        if (it == holders_.end()) fail("14153", "14153 Toolholder " + std::to_string(tcarr_) + " has no data ($TC_CARR)");
+        try {
+            check_kinematic_type(it->second.kind);
+        } catch (const Error& e) {
+            fail(e.code(), e.what());
+        }
+        l = resulting_tool_length(it->second, l);
+        zero_shift_ = table_zero_offset(it->second);
+    }
+    tool_offset_ = l;
+}
+
+}  // namespace toolcomp::sinumerik

@@ -1,0 +1,271 @@
+// Variables of Sinumerik programs: R parameters (R0..R999, R[n]), local user data (DEF REAL/
+// INT/BOOL, arrays of one or two dimensions), the tool system variables $TC_DPn[t,d] and
+// $TC_CARRn[m], $P_TOOLNO / $P_TOOL, and the value-returning calls GETTCOR and LENTOAX.
+#include <cmath>
+
+#include "interp.hpp"
+#include "toolcomp/tools/sinumerik_gettcor.hpp"
+#include "toolcomp/tools/sinumerik_lentoax.hpp"
+
+namespace toolcomp::sinumerik {
+
+namespace {
+// "$TC_DP12" -> 12 for prefix "$TC_DP"; 0 when the name is not prefix + number.
+int numbered(const std::string& name, std::string_view prefix) {
+    if (name.size() <= prefix.size() || name.compare(0, prefix.size(), prefix) != 0) return 0;
+    int n = 0;
+    for (std::size_t i = prefix.size(); i < name.size(); ++i) {
+        if (!std::isdigit(static_cast<unsigned char>(name[i])) || n > 100000) return 0;
+        n = n * 10 + (name[i] - '0');
+    }
+    return n;
+}
+int as_index(double v) { return static_cast<int>(std::lround(v)); }
+}  // namespace
+
+Variable* Interp::find_variable(const std::string& name) {
+    auto& locals = stack_.back().locals;
+    if (auto it = locals.find(name); it != locals.end()) return &it->second;
+    if (auto it = globals_.find(name); it != globals_.end()) return &it->second;
+    return nullptr;
+}
+
+double Interp::get(const std::string& name, std::span<const double> idx) {
+    if (name == "R" && idx.size() == 1) {
+        int i = as_index(idx[0]);
+        if (i < 0 || i >= static_cast<int>(r_.size())) fail("17020", "17020 Illegal array index: R[" + std::to_string(i) + "]");
+        return r_[static_cast<std::size_t>(i)];
+    }
+    if (int n = numbered(name, "R"); (n > 0 || name == "R0") && idx.empty()) {
+        if (n >= static_cast<int>(r_.size())) fail("12550", "12550 Name " + name + " not defined");
+        return r_[static_cast<std::size_t>(n)];
+    }
+    if (Variable* v = find_variable(name)) {
+        std::size_t flat = 0;
+        if (idx.size() == 1) {
+            flat = static_cast<std::size_t>(as_index(idx[0]));
+        } else if (idx.size() == 2) {
+            flat = static_cast<std::size_t>(as_index(idx[0]) * static_cast<int>(v->v.size()) + as_index(idx[1]));
+        }
+        if (idx.size() > 2 || (idx.empty() && v->v.size() != 1) || (!idx.empty() && (idx[0] < 0 || flat >= v->v.size())))
+            fail("17020", "17020 Illegal array index of " + name);
+        return v->v[flat];
+    }
+    if (int n = numbered(name, "$TC_DP")) {
+        if (idx.size() != 2) fail("17020", "17020 " + name + " needs the indices [t, d]");
+        auto it = edges_.find({as_index(idx[0]), as_index(idx[1])});
+        if (it == edges_.end()) fail("17180", "17180 Illegal D number: no cutting edge D" + std::to_string(as_index(idx[1])) +
+                                                  " of T" + std::to_string(as_index(idx[0])));
+        try {
+            return it->second.DP(n);
+        } catch (const Error& e) {
+            fail("12550", "12550 Name " + name + " not defined");
+        }
+    }
+    if (int n = numbered(name, "$TC_CARR")) {
+        if (idx.size() != 1) fail("17020", "17020 " + name + " needs the index [m]");
+        auto it = holders_.find(as_index(idx[0]));
+        if (it == holders_.end()) return 0;
+        const Toolholder& h = it->second;
+        const Vec3* vecs[] = {&h.l1, &h.l2, &h.v1, &h.v2};
+        if (n >= 1 && n <= 12) return (*vecs[(n - 1) / 3])[(n - 1) % 3];
+        if (n == 13) return h.alpha1;
+        if (n == 14) return h.alpha2;
+        if (n >= 15 && n <= 17) return h.l3[n - 15];
+        if (n >= 18 && n <= 20) return h.l4[n - 18];
+        if (n == 24) return h.offset1;
+        if (n == 25) return h.offset2;
+        fail("12550", "12550 " + name + " cannot be read as a number");
+    }
+    if (name == "$P_TOOLNO" && idx.empty()) return tool_;
+    if (name == "$P_TOOL" && idx.empty()) return d_;
+    fail("12550", "12550 Name " + name + " not defined");
+}
+
+void Interp::set_variable(const std::string& name, std::span<const double> idx, double v, int column) {
+    if (name == "R" && idx.size() == 1) {
+        int i = as_index(idx[0]);
+        if (i < 0 || i >= static_cast<int>(r_.size())) fail("17020", "17020 Illegal array index: R[" + std::to_string(i) + "]", column);
+        r_[static_cast<std::size_t>(i)] = v;
+        return;
+    }
+    if (int n = numbered(name, "R"); (n > 0 || name == "R0") && idx.empty()) {
+        if (n >= static_cast<int>(r_.size())) fail("12550", "12550 Name " + name + " not defined", column);
+        r_[static_cast<std::size_t>(n)] = v;
+        return;
+    }
+    if (Variable* var = find_variable(name)) {
+        std::size_t flat = 0;
+        if (idx.size() == 1) flat = static_cast<std::size_t>(as_index(idx[0]));
+        if (idx.size() == 2) flat = static_cast<std::size_t>(as_index(idx[0]) * static_cast<int>(var->v.size()) + as_index(idx[1]));
+        if (idx.size() > 2 || (idx.empty() && var->v.size() != 1) || (!idx.empty() && (idx[0] < 0 || flat >= var->v.size())))
+            fail("17020", "17020 Illegal array index of " + name, column);
+        var->v[flat] = var->integer ? std::round(v) : v;
+        return;
+    }
+    if (int n = numbered(name, "$TC_DP")) {
+        if (idx.size() != 2) fail("17020", "17020 " + name + " needs the indices [t, d]", column);
+        int t = as_index(idx[0]), d = as_index(idx[1]);
+        if (t < 1 || t > 32000 || d < 1 || d > 32000)
+            fail("17180", "17180 Illegal T or D number in " + name + "[" + std::to_string(t) + "," + std::to_string(d) + "]", column);
+        try {
+            edges_[{t, d}].DP(n) = v;
+        } catch (const Error&) {
+            fail("12550", "12550 Name " + name + " not defined", column);
+        }
+        return;
+    }
+    if (int n = numbered(name, "$TC_CARR")) {
+        if (idx.size() != 1) fail("17020", "17020 " + name + " needs the index [m]", column);
+        try {
+            holders_[as_index(idx[0])].set(n, v);
+        } catch (const Error& e) {
+            fail(e.code(), e.what(), column);
+        }
+        return;
+    }
+    fail("12550", "12550 Name " + name + " not defined", column);
+}
+
+void Interp::define(std::span<const Token> t) {
+    const std::string& type = t[0].text;
+    if (type != "REAL" && type != "INT" && type != "BOOL")
+        fail("unsupported_word", "DEF " + type + " variables are not supported by toolcomp (REAL, INT, BOOL are)", t[0].column);
+    auto& locals = stack_.back().locals;
+    for (std::size_t i = 1; i < t.size(); ++i) {
+        const Token& v = t[i];
+        if (v.key != "DEFVAR") continue;
+        if (locals.count(v.text)) fail("12170", "12170 Name " + v.text + " defined several times", v.column);
+        if (v.text == "R" || (v.text[0] == 'R' && v.text.find_first_not_of("0123456789", 1) == std::string::npos) ||
+            v.text[0] == '$')
+            fail("12170", "12170 Name " + v.text + " is reserved", v.column);
+        Variable var;
+        var.integer = type != "REAL";
+        std::size_t n = v.has_value ? static_cast<std::size_t>(v.value) : 1;
+        if (v.param > 0) n *= static_cast<std::size_t>(v.param);
+        if (n > 100000) fail("12170", "12170 Array " + v.text + " too large", v.column);
+        var.v.assign(n, 0.0);
+        if (v.expr >= 0) {
+            double x = eval(v.expr, v.column);
+            for (double& e : var.v) e = var.integer ? std::round(x) : x;
+        }
+        locals.emplace(v.text, std::move(var));
+    }
+}
+
+void Interp::assign(const Token& t) {
+    const expr::Expr& target = stack_.back().prog->expression(t.param);
+    // The target's indices: the code before its last instruction leaves them on the stack.
+    expr::Expr idx_code = target;
+    const expr::Instr var = idx_code.code.back();
+    idx_code.code.pop_back();
+    std::vector<double> idx;
+    try {
+        expr::evaluate_all(idx_code, *this, idx);
+    } catch (const expr::MathError& err) {
+        fail("math_error", std::string("14051 Arithmetic error in part program: ") + err.what(), t.column);
+    }
+    const std::string& name = target.names[var.name];
+    if (!t.text.empty() && t.text.front() == '"') {
+        int n = numbered(name, "$TC_CARR");
+        if (!n || idx.size() != 1) fail("unsupported_word", "String values are only supported for $TC_CARR21/22/23/34", t.column);
+        try {
+            holders_[as_index(idx[0])].set_text(n, t.text.substr(1, t.text.size() - 2));
+        } catch (const Error& e) {
+            fail(e.code(), e.what(), t.column);
+        }
+        return;
+    }
+    set_variable(name, idx, eval(t.expr, t.column), t.column);
+}
+
+std::vector<std::string> Interp::split_args(const std::string& text) const {
+    std::vector<std::string> out(1);
+    int depth = 0;
+    bool quote = false;
+    for (char c : text) {
+        if (c == '"') quote = !quote;
+        if (!quote && (c == '(' || c == '[')) ++depth;
+        if (!quote && (c == ')' || c == ']')) --depth;
+        if (!quote && depth == 0 && c == ',') {
+            out.emplace_back();
+            continue;
+        }
+        out.back().push_back(c);
+    }
+    for (auto& s : out) {
+        std::size_t b = s.find_first_not_of(" \t"), e = s.find_last_not_of(" \t");
+        s = b == std::string::npos ? "" : s.substr(b, e - b + 1);
+    }
+    return out;
+}
+
+void Interp::value_call(const Token& t) {
+    auto args = split_args(t.text);
+    auto string_arg = [&](std::size_t i) -> std::string {
+        if (i >= args.size() || args[i].empty()) return "";
+        const std::string& a = args[i];
+        if (a.size() < 2 || a.front() != '"' || a.back() != '"')
+            fail("unsupported_word", t.key + ": argument " + std::to_string(i + 1) + " must be a string in quotes", t.column);
+        return a.substr(1, a.size() - 2);
+    };
+    auto array_arg = [&](std::size_t i, std::size_t size) -> Variable& {
+        std::string n = i < args.size() ? args[i] : "";
+        for (char& c : n) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+        Variable* v = n.empty() ? nullptr : find_variable(n);
+        if (!v) fail("12550", "12550 Name " + (n.empty() ? std::string("(missing)") : n) + " not defined: " + t.key +
+                                  " needs a REAL array of " + std::to_string(size) + " elements", t.column);
+        if (v->v.size() < size)
+            fail("17020", "17020 " + t.key + ": array " + n + " has fewer than " + std::to_string(size) + " elements", t.column);
+        return *v;
+    };
+    int status = 0;
+    if (t.key == "GETTCOR") {
+        Variable& len = array_arg(0, 11);
+        GettcorSettings s;
+        s.plane = st_.plane;
+        s.lengths = opts_.lengths;
+        s.set_parameter_def_mask(opts_.tool_parameter_def_mask);
+        const std::string comp = args.size() > 1 ? string_arg(1) : "";
+        const std::string stat = string_arg(2);
+        auto num = [&](std::size_t i, int dflt) {
+            return i < args.size() && !args[i].empty() ? as_index(eval_text(args[i], t.column)) : dflt;
+        };
+        const int tt = num(3, -1), dd = num(4, -1), dl = num(5, -1);
+        std::array<double, 11> out{};
+        if (tt >= 0 || dd >= 0) {
+            status = gettcor(out, comp, edges_, tt >= 0 ? tt : tool_, dd >= 0 ? dd : d_, s, stat, dl);
+        } else if (const SinumerikEdge* e = edge()) {
+            status = gettcor(out, comp, *e, s, stat, dl);
+        } else {
+            status = tool_ == 0 ? gettcor_bad_t : gettcor_bad_d;
+        }
+        if (status == 0)
+            for (std::size_t i = 0; i < 11; ++i) len.v[i] = len.integer ? std::round(out[i]) : out[i];
+    } else if (t.key == "LENTOAX") {
+        Variable& axind = array_arg(0, 3);
+        Variable& matrix = array_arg(1, 9);
+        const std::string coord = args.size() > 2 && !args[2].empty() ? string_arg(2) : "W";
+        const SinumerikEdge* e = edge();
+        LentoaxResult r = lentoax(e ? e->type() : 120, st_.plane, opts_.lengths, coord);
+        status = r.status;
+        if (status == 0) {
+            for (std::size_t i = 0; i < 3; ++i) axind.v[i] = r.axind[i];
+            for (std::size_t i = 0; i < 9; ++i) matrix.v[i] = r.matrix(static_cast<long>(i / 3), static_cast<long>(i % 3));
+        }
+    } else {
+        fail("unsupported_word", t.key + " is not supported by toolcomp yet", t.column);
+    }
+    if (t.param > 0) {
+        Token target;
+        target.param = t.param - 1;
+        const expr::Expr& te = stack_.back().prog->expression(target.param);
+        if (te.code.size() == 1) {
+            set_variable(te.names[te.code[0].name], {}, status, t.column);
+        } else {
+            fail("unsupported_word", "The status of " + t.key + " must go to a plain variable", t.column);
+        }
+    }
+}
+
+}  // namespace toolcomp::sinumerik

@@ -1,0 +1,440 @@
+#include "toolcomp/dialects/sinumerik/lexer.hpp"
+
+#include <array>
+#include <cctype>
+
+namespace toolcomp::sinumerik {
+
+namespace {
+
+bool ident_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_' || c == '$'; }
+bool ident_char(char c) { return ident_start(c) || std::isdigit(static_cast<unsigned char>(c)); }
+bool is_digit(char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; }
+std::string upper(std::string_view s) {
+    std::string r(s);
+    for (char& c : r) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return r;
+}
+
+// Names with digits that are keywords, not an address and a number.
+constexpr std::array<std::string_view, 12> kDigitKeywords = {
+    "CDOF2", "CUT2D", "CUT2DF", "CUT3DC", "CUT3DF", "CUT3DFS", "CUT3DFF", "CUT3DCC", "CUT3DCCD", "TCOFRZ", "TCOFRY", "TCOFRX"};
+
+// Statements that read an expression after them.
+bool condition_keyword(std::string_view k) { return k == "IF" || k == "WHILE" || k == "UNTIL"; }
+bool jump_keyword(std::string_view k) { return k == "GOTOF" || k == "GOTOB" || k == "GOTO" || k == "GOTOC"; }
+// Calls whose result may be assigned ("R1=GETTCOR(...)").
+bool value_call(std::string_view k) { return k == "GETTCOR" || k == "SETTCOR" || k == "LENTOAX"; }
+
+class LineLexer {
+public:
+    LineLexer(std::string_view line, int line_no, Program& prog) : s_(line), line_(line_no), prog_(prog) {}
+
+    void run() {
+        skip();
+        if (i_ >= s_.size()) return;
+        if (s_[i_] == '%') return;  // file header "%_N_NAME_MPF"
+        bool block_delete = false;
+        if (s_[i_] == '/') {
+            block_delete = true;
+            ++i_;
+            while (i_ < s_.size() && is_digit(s_[i_])) ++i_;  // /0 .. /9: skip level
+        }
+        skip();
+        if (i_ >= s_.size() || s_[i_] == ';') {
+            if (i_ < s_.size()) comment_only_ = true;
+            return;
+        }
+        prog_.begin_block(line_, block_delete);
+        // Block number "N10" or main block ":10".
+        if (i_ < s_.size() && (s_[i_] == ':' || ((s_[i_] == 'N' || s_[i_] == 'n') && i_ + 1 < s_.size() && is_digit(s_[i_ + 1])))) {
+            std::size_t j = i_ + 1;
+            while (j < s_.size() && is_digit(s_[j])) ++j;
+            if (j == i_ + 1) error("Block number expected");
+            if (j >= s_.size() || !ident_char(s_[j])) {
+                Token t;
+                t.key = "N";
+                t.value = std::stod(std::string(s_.substr(i_ + 1, j - i_ - 1)));
+                t.has_value = true;
+                t.column = col();
+                prog_.add_token(std::move(t));
+                i_ = j;
+            }
+        }
+        skip();
+        // Jump label "NAME:".
+        if (i_ < s_.size() && ident_start(s_[i_])) {
+            std::size_t j = i_;
+            while (j < s_.size() && ident_char(s_[j])) ++j;
+            if (j < s_.size() && s_[j] == ':') {
+                Token t;
+                t.key = ":";
+                t.text = upper(s_.substr(i_, j - i_));
+                t.column = col();
+                prog_.add_token(std::move(t));
+                i_ = j + 1;
+            }
+        }
+        while (true) {
+            skip();
+            if (i_ >= s_.size()) break;
+            if (s_[i_] == ';') {
+                prog_.add_comment({std::string(s_.substr(i_ + 1)), col()});
+                break;
+            }
+            statement();
+        }
+    }
+
+private:
+    [[noreturn]] void error(const std::string& msg) const { throw ParseError("syntax_error", msg, {line_, col()}); }
+    int col() const { return static_cast<int>(i_) + 1; }
+    void skip() {
+        while (i_ < s_.size() && (s_[i_] == ' ' || s_[i_] == '\t')) ++i_;
+    }
+    std::string ident() {
+        std::size_t b = i_;
+        while (i_ < s_.size() && ident_char(s_[i_])) ++i_;
+        return upper(s_.substr(b, i_ - b));
+    }
+    std::int32_t expression() {
+        try {
+            return prog_.add_expression(expr::parse(s_, i_, expr::sinumerik_syntax()));
+        } catch (const expr::SyntaxError& e) {
+            i_ = e.offset;
+            error(e.what());
+        }
+    }
+    // Stores a constant expression as a literal value.
+    void set_value(Token& t, std::int32_t e) {
+        const expr::Expr& x = prog_.expression(e);
+        if (x.constant()) {
+            t.value = x.code[0].value;
+            t.has_value = true;
+        } else {
+            t.expr = e;
+        }
+    }
+    // Text between balanced parentheses, i_ at '('; leaves i_ after ')'.
+    std::string parenthesised() {
+        int depth = 0;
+        bool quote = false;
+        std::size_t b = i_ + 1;
+        for (; i_ < s_.size(); ++i_) {
+            char c = s_[i_];
+            if (c == '"') quote = !quote;
+            if (quote) continue;
+            if (c == '(') ++depth;
+            if (c == ')' && --depth == 0) {
+                ++i_;
+                return std::string(s_.substr(b, i_ - 1 - b));
+            }
+        }
+        error("')' expected");
+    }
+    bool at_assign() {
+        skip();
+        return i_ < s_.size() && s_[i_] == '=' && (i_ + 1 >= s_.size() || s_[i_ + 1] != '=');
+    }
+
+    void statement() {
+        const int column = col();
+        if (!ident_start(s_[i_])) error(std::string("Unexpected '") + s_[i_] + "'");
+        const std::size_t start = i_;
+        std::string name = ident();
+        Token t;
+        t.column = column;
+        if (condition_keyword(name)) {
+            t.key = name;
+            t.expr = expression();
+            prog_.add_token(std::move(t));
+            return;
+        }
+        if (jump_keyword(name)) {
+            t.key = name;
+            skip();
+            std::size_t b = i_;
+            while (i_ < s_.size() && ident_char(s_[i_])) ++i_;
+            if (i_ == b) error("Jump label expected after " + name);
+            t.text = upper(s_.substr(b, i_ - b));
+            prog_.add_token(std::move(t));
+            return;
+        }
+        if (name == "FOR") {
+            skip();
+            if (i_ >= s_.size() || !ident_start(s_[i_])) error("Loop variable expected after FOR");
+            t.key = "FOR";
+            t.text = ident();
+            if (!at_assign()) error("'=' expected after the FOR variable");
+            ++i_;
+            t.expr = expression();
+            prog_.add_token(std::move(t));
+            skip();
+            const int c2 = col();
+            if (i_ >= s_.size() || !ident_start(s_[i_]) || ident() != "TO") error("TO expected in FOR");
+            Token to;
+            to.key = "TO";
+            to.column = c2;
+            to.expr = expression();
+            prog_.add_token(std::move(to));
+            return;
+        }
+        if (name == "DEF") {
+            skip();
+            t.key = "DEF";
+            t.text = ident();
+            if (t.text.empty()) error("Type expected after DEF");
+            prog_.add_token(std::move(t));
+            for (;;) {
+                skip();
+                Token v;
+                v.key = "DEFVAR";
+                v.column = col();
+                if (i_ >= s_.size() || !ident_start(s_[i_])) error("Variable name expected");
+                v.text = ident();
+                skip();
+                if (i_ < s_.size() && s_[i_] == '[') {
+                    ++i_;
+                    double n = 0;
+                    skip();
+                    if (!expr::read_number(s_, i_, n, false) || n < 1 || n != static_cast<int>(n))
+                        error("Array size expected");
+                    v.value = n;
+                    v.has_value = true;
+                    skip();
+                    if (i_ < s_.size() && s_[i_] == ',') {  // two dimensions [n, m]
+                        ++i_;
+                        skip();
+                        double m2 = 0;
+                        if (!expr::read_number(s_, i_, m2, false) || m2 < 1 || m2 != static_cast<int>(m2))
+                            error("Array size expected");
+                        v.param = static_cast<int>(m2);
+                        skip();
+                    }
+                    if (i_ >= s_.size() || s_[i_] != ']') error("']' expected");
+                    ++i_;
+                }
+                if (at_assign()) {
+                    ++i_;
+                    v.expr = expression();
+                }
+                prog_.add_token(std::move(v));
+                skip();
+                if (i_ < s_.size() && s_[i_] == ',') {
+                    ++i_;
+                    continue;
+                }
+                return;
+            }
+        }
+        if (name == "PROC") {
+            skip();
+            t.key = "PROC";
+            t.text = ident();
+            if (t.text.empty()) error("Subprogram name expected after PROC");
+            skip();
+            if (i_ < s_.size() && s_[i_] == '(') {
+                std::string args = parenthesised();
+                if (args.find_first_not_of(" \t") != std::string::npos) {
+                    i_ = start;
+                    throw ParseError("unsupported_word", "Subprograms with parameters (PROC name(...)) are not supported by toolcomp",
+                                     {line_, column});
+                }
+            }
+            prog_.add_token(std::move(t));
+            // SAVE, DISPLOF ... attributes after PROC: nothing to do for the path.
+            while (i_ < s_.size() && s_[i_] != ';') ++i_;
+            return;
+        }
+        skip();
+        // Call with an argument list.
+        if (i_ < s_.size() && s_[i_] == '(') {
+            t.key = name;
+            t.text = parenthesised();
+            prog_.add_token(std::move(t));
+            return;
+        }
+        // Assignment to an indexed variable: NAME[i, j] = value.
+        if (i_ < s_.size() && s_[i_] == '[') {
+            i_ = start;
+            std::int32_t target = expression();
+            if (!at_assign()) error("'=' expected");
+            ++i_;
+            assignment_value(t, target);
+            return;
+        }
+        if (at_assign()) {
+            ++i_;
+            if (is_address(name)) {
+                t.key = name;
+                skip();
+                if (i_ < s_.size() && s_[i_] == '"') {
+                    t.text = quoted();
+                } else {
+                    address_value(t);
+                }
+                prog_.add_token(std::move(t));
+                return;
+            }
+            expr::Expr target;
+            target.names.push_back(name);
+            target.code.push_back(expr::Instr{expr::Op::variable, 0, expr::Fn::sin, 0, 0});
+            assignment_value(t, prog_.add_expression(std::move(target)));
+            return;
+        }
+        // NAME<number>: address and value ("X10", "G1", "X-5.5", "L10"), unless a keyword.
+        std::size_t letters = 0;
+        while (letters < name.size() && !is_digit(name[letters])) ++letters;
+        bool keyword = false;
+        for (std::string_view k : kDigitKeywords) keyword |= (k == name);
+        bool digits_only = letters < name.size();
+        for (std::size_t k = letters; k < name.size(); ++k) digits_only &= is_digit(name[k]);
+        // One letter glued to its number and the next word ("G1X10Y20") splits too.
+        const bool glued = letters == 1 && name.size() > 1;
+        if (!keyword && letters > 0 && (digits_only || glued || (letters == name.size() && i_ < s_.size() && number_follows()))) {
+            std::size_t p = start + letters;
+            if (letters == name.size()) p = i_;
+            double v = 0;
+            if (!expr::read_number(s_, p, v, false)) {
+                i_ = p;
+                error("Bad number");
+            }
+            i_ = p;
+            t.key = name.substr(0, letters);
+            t.value = v;
+            t.has_value = true;
+            t.text = glued && !digits_only ? t.key + std::string(s_.substr(start + 1, p - start - 1)) : name;
+            prog_.add_token(std::move(t));
+            return;
+        }
+        t.key = name;
+        t.text = name;
+        prog_.add_token(std::move(t));
+    }
+
+    bool number_follows() const {
+        std::size_t j = i_;
+        if (j < s_.size() && (s_[j] == '-' || s_[j] == '+')) ++j;
+        if (j < s_.size() && s_[j] == '.') ++j;
+        return j < s_.size() && is_digit(s_[j]);
+    }
+
+    std::string quoted() {
+        std::size_t b = ++i_;
+        while (i_ < s_.size() && s_[i_] != '"') ++i_;
+        if (i_ >= s_.size()) error("Closing '\"' missing");
+        ++i_;
+        return "\"" + std::string(s_.substr(b, i_ - 1 - b)) + "\"";
+    }
+
+    // The value of an address: an expression, AC(...) or IC(...).
+    void address_value(Token& t) {
+        skip();
+        std::size_t save = i_;
+        if (i_ < s_.size() && ident_start(s_[i_])) {
+            std::string mod = ident();
+            skip();
+            if (i_ < s_.size() && s_[i_] == '(' && (mod == "AC" || mod == "IC")) {
+                ++i_;
+                std::int32_t e = expression();
+                skip();
+                if (i_ >= s_.size() || s_[i_] != ')') error("')' expected");
+                ++i_;
+                t.param = mod == "AC" ? 1 : 2;
+                set_value(t, e);
+                return;
+            }
+            if (i_ < s_.size() && s_[i_] == '(' && (mod == "DC" || mod == "ACP" || mod == "ACN" || mod == "CAC" || mod == "CIC" ||
+                                                    mod == "CACP" || mod == "CACN" || mod == "CDC")) {
+                i_ = save;
+                throw ParseError("unsupported_word", mod + "() positioning of rotary axes is not supported by toolcomp",
+                                 {line_, col()});
+            }
+            i_ = save;
+        }
+        set_value(t, expression());
+    }
+
+    void assignment_value(Token& t, std::int32_t target) {
+        skip();
+        std::size_t save = i_;
+        if (i_ < s_.size() && ident_start(s_[i_])) {
+            std::string fn = ident();
+            skip();
+            if (value_call(fn) && i_ < s_.size() && s_[i_] == '(') {
+                t.key = fn;
+                t.text = parenthesised();
+                t.param = target + 1;
+                prog_.add_token(std::move(t));
+                return;
+            }
+            i_ = save;
+        }
+        t.key = "=";
+        t.param = target;
+        if (i_ < s_.size() && s_[i_] == '"') {  // text data ($TC_CARR23[1]="P")
+            t.text = quoted();
+            prog_.add_token(std::move(t));
+            return;
+        }
+        t.expr = expression();
+        t.param = target;
+        prog_.add_token(std::move(t));
+    }
+
+    std::string_view s_;
+    std::size_t i_ = 0;
+    int line_;
+    Program& prog_;
+    bool comment_only_ = false;
+};
+
+}  // namespace
+
+bool is_address(std::string_view n) {
+    if (n.size() == 1) return n[0] != 'R' && n[0] >= 'A' && n[0] <= 'Z';
+    static constexpr std::array<std::string_view, 18> multi = {"CR", "AR", "TURN", "DISC", "OFFN", "RPL", "I1", "J1",
+                                                               "K1", "ADIS", "ADISPOS", "TCARR", "AP", "RP", "DL",
+                                                               "SF", "FAD", "DISR"};
+    for (std::string_view m : multi)
+        if (m == n) return true;
+    return false;
+}
+
+Program parse(std::string_view text, std::string name, bool strict) {
+    Program prog;
+    prog.name = std::move(name);
+    prog.dialect = Dialect::sinumerik;
+    if (text.size() >= 3 && static_cast<unsigned char>(text[0]) == 0xEF && static_cast<unsigned char>(text[1]) == 0xBB &&
+        static_cast<unsigned char>(text[2]) == 0xBF)
+        text.remove_prefix(3);
+    std::size_t pos = 0;
+    int line = 0;
+    while (pos <= text.size()) {
+        std::size_t end = pos;
+        while (end < text.size() && text[end] != '\n' && text[end] != '\r') ++end;
+        ++line;
+        std::string_view l = text.substr(pos, end - pos);
+        if (l.find('\0') != std::string_view::npos) {
+            ParseError e("syntax_error", "NUL character in the program text", {line, static_cast<int>(l.find('\0')) + 1});
+            if (strict) throw e;
+            prog.syntax_error = e.diagnostic();
+            break;
+        }
+        const std::size_t before = prog.size();
+        try {
+            LineLexer(l, line, prog).run();
+        } catch (const ParseError& e) {
+            if (prog.size() > before) prog.drop_last_block();
+            if (strict) throw;
+            prog.syntax_error = e.diagnostic();
+            break;
+        }
+        if (prog.size() > before) prog.last_line = line;
+        if (end >= text.size()) break;
+        pos = end + ((text[end] == '\r' && end + 1 < text.size() && text[end + 1] == '\n') ? 2 : 1);
+    }
+    return prog;
+}
+
+}  // namespace toolcomp::sinumerik

@@ -1,0 +1,394 @@
+#include "toolcomp/program/expr.hpp"
+
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <string>
+
+#include "toolcomp/geometry/vec.hpp"
+
+namespace toolcomp::expr {
+
+namespace {
+
+constexpr int kMaxDepth = 200;
+
+bool ident_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_' || c == '$'; }
+bool ident_char(char c) { return ident_start(c) || std::isdigit(static_cast<unsigned char>(c)); }
+std::string upper(std::string_view s) {
+    std::string r(s);
+    for (char& c : r) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return r;
+}
+
+struct FnName {
+    std::string_view name;
+    Fn fn;
+    int min_args, max_args;
+};
+constexpr FnName kFunctions[] = {
+    {"SIN", Fn::sin, 1, 1},       {"COS", Fn::cos, 1, 1},         {"TAN", Fn::tan, 1, 1},
+    {"ASIN", Fn::asin, 1, 1},     {"ACOS", Fn::acos, 1, 1},       {"ATAN2", Fn::atan2, 2, 2},
+    {"SQRT", Fn::sqrt, 1, 1},     {"ABS", Fn::abs, 1, 1},         {"EXP", Fn::exp, 1, 1},
+    {"LN", Fn::ln, 1, 1},         {"ROUND", Fn::round, 1, 1},     {"TRUNC", Fn::trunc, 1, 1},
+    {"ROUNDUP", Fn::roundup, 1, 1}, {"POT", Fn::square, 1, 1},    {"MINVAL", Fn::minval, 2, 2},
+    {"MAXVAL", Fn::maxval, 2, 2}, {"BOUND", Fn::bound, 3, 3},
+};
+
+class Parser {
+public:
+    Parser(std::string_view t, std::size_t pos, const Syntax& s) : t_(t), p_(pos), s_(s) {}
+    Expr run() {
+        expression(0, 0);
+        return std::move(e_);
+    }
+    std::size_t pos() const { return p_; }
+
+private:
+    [[noreturn]] void error(const std::string& m) const { throw SyntaxError(m, p_); }
+    void blanks() {
+        while (p_ < t_.size() && (t_[p_] == ' ' || t_[p_] == '\t')) ++p_;
+    }
+    // A word operator matches a whole identifier only; a symbol operator matches its text.
+    bool matches(std::string_view spelling) const {
+        if (t_.size() - p_ < spelling.size()) return false;
+        for (std::size_t i = 0; i < spelling.size(); ++i)
+            if (std::toupper(static_cast<unsigned char>(t_[p_ + i])) != spelling[i]) return false;
+        if (ident_start(spelling[0])) {
+            std::size_t end = p_ + spelling.size();
+            if (end < t_.size() && ident_char(t_[end])) return false;
+        }
+        return true;
+    }
+    void emit(Op op, std::uint8_t argc = 0) { e_.code.push_back(Instr{op, argc, Fn::sin, 0, 0}); }
+
+    void expression(int min_prec, int depth) {
+        if (depth > kMaxDepth) error("Expression nested too deeply");
+        unary(depth + 1);
+        for (;;) {
+            std::size_t save = p_;
+            blanks();
+            const BinaryOp* best = nullptr;
+            for (const BinaryOp& b : s_.binary)
+                if (matches(b.spelling) && (!best || b.spelling.size() > best->spelling.size())) best = &b;
+            if (!best || best->precedence < min_prec) {
+                p_ = save;
+                return;
+            }
+            p_ += best->spelling.size();
+            expression(best->precedence + 1, depth + 1);
+            emit(best->op);
+        }
+    }
+
+    void unary(int depth) {
+        if (depth > kMaxDepth) error("Expression nested too deeply");
+        blanks();
+        if (p_ >= t_.size()) error("Expression expected");
+        char c = t_[p_];
+        if (c == '-' || c == '+') {
+            ++p_;
+            unary(depth + 1);
+            if (c == '-') emit(Op::neg);
+            return;
+        }
+        if (s_.unary_not && matches("NOT")) {
+            p_ += 3;
+            unary(depth + 1);
+            emit(Op::logical_not);
+            return;
+        }
+        if (s_.unary_not && matches("B_NOT")) {
+            p_ += 5;
+            unary(depth + 1);
+            emit(Op::bit_not);
+            return;
+        }
+        primary(depth);
+    }
+
+    void primary(int depth) {
+        char c = t_[p_];
+        double v;
+        if (std::isdigit(static_cast<unsigned char>(c)) || c == '.') {
+            if (!read_number(t_, p_, v, true)) error("Bad number");
+            e_.code.push_back(Instr{Op::number, 0, Fn::sin, 0, v});
+            return;
+        }
+        if (c == s_.open) {
+            ++p_;
+            expression(0, depth + 1);
+            blanks();
+            if (p_ >= t_.size() || t_[p_] != s_.close) error(std::string("'") + s_.close + "' expected");
+            ++p_;
+            return;
+        }
+        if (c == '"') error("A string is not allowed in an arithmetic expression");
+        if (!ident_start(c)) error(std::string("Unexpected '") + c + "' in expression");
+        std::size_t b = p_;
+        while (p_ < t_.size() && ident_char(t_[p_])) ++p_;
+        std::string name = upper(t_.substr(b, p_ - b));
+        if (name == "TRUE" || name == "FALSE") {
+            e_.code.push_back(Instr{Op::number, 0, Fn::sin, 0, name == "TRUE" ? 1.0 : 0.0});
+            return;
+        }
+        std::size_t after = p_;
+        blanks();
+        if (p_ < t_.size() && t_[p_] == s_.open) {
+            const FnName* f = nullptr;
+            for (const FnName& k : kFunctions)
+                if (k.name == name) f = &k;
+            if (!f) {
+                p_ = b;
+                error("Unknown function " + name);
+            }
+            ++p_;
+            int n = 0;
+            blanks();
+            if (p_ < t_.size() && t_[p_] == s_.close) {
+                ++p_;
+            } else {
+                for (;;) {
+                    expression(0, depth + 1);
+                    ++n;
+                    blanks();
+                    if (p_ < t_.size() && t_[p_] == ',') {
+                        ++p_;
+                        continue;
+                    }
+                    if (p_ < t_.size() && t_[p_] == s_.close) {
+                        ++p_;
+                        break;
+                    }
+                    error(std::string("',' or '") + s_.close + "' expected");
+                }
+            }
+            if (n < f->min_args || n > f->max_args) error(name + ": wrong number of arguments");
+            e_.code.push_back(Instr{Op::call, static_cast<std::uint8_t>(n), f->fn, 0, 0});
+            return;
+        }
+        p_ = after;
+        int n = 0;
+        if (s_.index_open && p_ < t_.size() && t_[p_] == s_.index_open) {
+            ++p_;
+            for (;;) {
+                expression(0, depth + 1);
+                if (++n > 8) error("Too many indices");
+                blanks();
+                if (p_ < t_.size() && t_[p_] == ',') {
+                    ++p_;
+                    continue;
+                }
+                if (p_ < t_.size() && t_[p_] == s_.index_close) {
+                    ++p_;
+                    break;
+                }
+                error(std::string("',' or '") + s_.index_close + "' expected");
+            }
+        }
+        std::uint32_t id = 0;
+        while (id < e_.names.size() && e_.names[id] != name) ++id;
+        if (id == e_.names.size()) e_.names.push_back(name);
+        e_.code.push_back(Instr{Op::variable, static_cast<std::uint8_t>(n), Fn::sin, id, 0});
+    }
+
+    std::string_view t_;
+    std::size_t p_;
+    const Syntax& s_;
+    Expr e_;
+};
+
+double to_deg(double r) { return r * 180.0 / kPi; }
+double to_rad(double d) { return d * kPi / 180.0; }
+std::int64_t as_int(double v) {
+    if (!(std::fabs(v) < 9.2e18)) throw MathError("Value out of the integer range");
+    return static_cast<std::int64_t>(std::llround(v));
+}
+
+double call(Fn f, const double* a) {
+    switch (f) {
+        case Fn::sin: return std::sin(to_rad(a[0]));
+        case Fn::cos: return std::cos(to_rad(a[0]));
+        case Fn::tan: {
+            double c = std::cos(to_rad(a[0]));
+            if (std::fabs(c) < 1e-15) throw MathError("TAN of an odd multiple of 90 degrees");
+            return std::sin(to_rad(a[0])) / c;
+        }
+        case Fn::asin:
+            if (a[0] < -1 || a[0] > 1) throw MathError("ASIN argument outside -1..1");
+            return to_deg(std::asin(a[0]));
+        case Fn::acos:
+            if (a[0] < -1 || a[0] > 1) throw MathError("ACOS argument outside -1..1");
+            return to_deg(std::acos(a[0]));
+        case Fn::atan: return to_deg(std::atan(a[0]));
+        case Fn::atan2:
+            if (a[0] == 0 && a[1] == 0) throw MathError("ATAN2 of (0, 0)");
+            return to_deg(std::atan2(a[0], a[1]));
+        case Fn::sqrt:
+            if (a[0] < 0) throw MathError("SQRT of a negative number");
+            return std::sqrt(a[0]);
+        case Fn::abs: return std::fabs(a[0]);
+        case Fn::exp: return std::exp(a[0]);
+        case Fn::ln:
+            if (a[0] <= 0) throw MathError("LN of a number not greater than zero");
+            return std::log(a[0]);
+        case Fn::round: return std::round(a[0]);
+        case Fn::trunc: return std::trunc(a[0]);
+        case Fn::roundup: return std::ceil(a[0]);
+        case Fn::square: return a[0] * a[0];
+        case Fn::minval: return std::fmin(a[0], a[1]);
+        case Fn::maxval: return std::fmax(a[0], a[1]);
+        case Fn::bound:
+            if (a[0] > a[1]) throw MathError("BOUND: minimum greater than maximum");
+            return std::fmin(std::fmax(a[2], a[0]), a[1]);
+    }
+    return 0;
+}
+
+}  // namespace
+
+const Syntax& sinumerik_syntax() {
+    // Siemens PGA priorities: NOT; * / DIV MOD; + -; B_AND; B_XOR; B_OR; AND; XOR; OR;
+    // comparisons last (so "R1>1 AND R2<2" needs brackets, as on the control).
+    static const Syntax s{'(', ')', '[', ']',
+                          {{"*", Op::mul, 10},         {"/", Op::div, 10},         {"DIV", Op::int_div, 10},
+                           {"MOD", Op::mod, 10},       {"+", Op::add, 9},          {"-", Op::sub, 9},
+                           {"B_AND", Op::bit_and, 8},  {"B_XOR", Op::bit_xor, 7},  {"B_OR", Op::bit_or, 6},
+                           {"AND", Op::logical_and, 5}, {"XOR", Op::logical_xor, 4}, {"OR", Op::logical_or, 3},
+                           {"==", Op::eq, 1},          {"<>", Op::ne, 1},          {"<=", Op::le, 1},
+                           {">=", Op::ge, 1},          {"<", Op::lt, 1},           {">", Op::gt, 1}},
+                          true};
+    return s;
+}
+
+bool read_number(std::string_view t, std::size_t& pos, double& value, bool ex_exponent) {
+    std::size_t p = pos;
+    std::string buf;
+    if (p < t.size() && (t[p] == '-' || t[p] == '+')) buf.push_back(t[p++]);
+    bool digits = false;
+    while (p < t.size() && std::isdigit(static_cast<unsigned char>(t[p]))) buf.push_back(t[p++]), digits = true;
+    if (p < t.size() && t[p] == '.') {
+        buf.push_back(t[p++]);
+        while (p < t.size() && std::isdigit(static_cast<unsigned char>(t[p]))) buf.push_back(t[p++]), digits = true;
+    }
+    if (!digits) return false;
+    if (ex_exponent && p + 2 < t.size() + 1 && p + 1 < t.size() && std::toupper(static_cast<unsigned char>(t[p])) == 'E' &&
+        std::toupper(static_cast<unsigned char>(t[p + 1])) == 'X') {
+        std::size_t q = p + 2;
+        std::string ex = "e";
+        if (q < t.size() && (t[q] == '-' || t[q] == '+')) ex.push_back(t[q++]);
+        bool ed = false;
+        while (q < t.size() && std::isdigit(static_cast<unsigned char>(t[q]))) ex.push_back(t[q++]), ed = true;
+        if (ed) {
+            buf += ex;
+            p = q;
+        }
+    }
+    double v = 0;
+    const char* first = buf.data() + (buf[0] == '+' ? 1 : 0);
+    auto r = std::from_chars(first, buf.data() + buf.size(), v);
+    if (r.ec != std::errc() || !std::isfinite(v)) return false;
+    value = v;
+    pos = p;
+    return true;
+}
+
+Expr parse(std::string_view text, std::size_t& pos, const Syntax& syntax) {
+    Parser p(text, pos, syntax);
+    Expr e = p.run();
+    pos = p.pos();
+    return e;
+}
+
+Expr parse_all(std::string_view text, const Syntax& syntax) {
+    std::size_t pos = 0;
+    Expr e = parse(text, pos, syntax);
+    while (pos < text.size() && (text[pos] == ' ' || text[pos] == '\t')) ++pos;
+    if (pos != text.size()) throw SyntaxError("Unexpected text after the expression", pos);
+    return e;
+}
+
+namespace {
+int run(const Expr& e, Env& env, double* stack);
+}
+
+double evaluate(const Expr& e, Env& env) {
+    double stack[512];
+    int sp = run(e, env, stack);
+    return sp == 1 ? stack[0] : 0.0;
+}
+
+void evaluate_all(const Expr& e, Env& env, std::vector<double>& out) {
+    double stack[512];
+    int sp = run(e, env, stack);
+    out.assign(stack, stack + sp);
+}
+
+namespace {
+int run(const Expr& e, Env& env, double* stack) {
+    int sp = 0;
+    auto push = [&](double v) {
+        if (sp >= 512) throw MathError("Expression too complex");
+        stack[sp++] = v;
+    };
+    for (const Instr& in : e.code) {
+        switch (in.op) {
+            case Op::number: push(in.value); break;
+            case Op::variable: {
+                sp -= in.argc;
+                double v = env.get(e.names[in.name], std::span<const double>(stack + sp, in.argc));
+                push(v);
+                break;
+            }
+            case Op::call: {
+                sp -= in.argc;
+                push(call(in.fn, stack + sp));
+                break;
+            }
+            case Op::neg: stack[sp - 1] = -stack[sp - 1]; break;
+            case Op::logical_not: stack[sp - 1] = stack[sp - 1] == 0 ? 1 : 0; break;
+            case Op::bit_not: stack[sp - 1] = static_cast<double>(~as_int(stack[sp - 1])); break;
+            default: {
+                double b = stack[--sp];
+                double& a = stack[sp - 1];
+                switch (in.op) {
+                    case Op::add: a = a + b; break;
+                    case Op::sub: a = a - b; break;
+                    case Op::mul: a = a * b; break;
+                    case Op::div:
+                        if (b == 0) throw MathError("Division by zero");
+                        a = a / b;
+                        break;
+                    case Op::int_div:
+                        if (b == 0) throw MathError("Division by zero");
+                        a = std::trunc(a / b);
+                        break;
+                    case Op::mod:
+                        if (b == 0) throw MathError("Division by zero");
+                        a = std::fmod(a, b);
+                        break;
+                    case Op::pow: a = std::pow(a, b); break;
+                    case Op::eq: a = a == b; break;
+                    case Op::ne: a = a != b; break;
+                    case Op::lt: a = a < b; break;
+                    case Op::le: a = a <= b; break;
+                    case Op::gt: a = a > b; break;
+                    case Op::ge: a = a >= b; break;
+                    case Op::logical_and: a = (a != 0) && (b != 0); break;
+                    case Op::logical_or: a = (a != 0) || (b != 0); break;
+                    case Op::logical_xor: a = (a != 0) != (b != 0); break;
+                    case Op::bit_and: a = static_cast<double>(as_int(a) & as_int(b)); break;
+                    case Op::bit_or: a = static_cast<double>(as_int(a) | as_int(b)); break;
+                    case Op::bit_xor: a = static_cast<double>(as_int(a) ^ as_int(b)); break;
+                    default: break;
+                }
+                if (!std::isfinite(a)) throw MathError("Result out of range");
+            }
+        }
+    }
+    return sp;
+}
+}  // namespace
+
+}  // namespace toolcomp::expr

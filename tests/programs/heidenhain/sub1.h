@@ -1,0 +1,5 @@
+0 BEGIN PGM SUB1 MM
+1 L X+Q1 IY+5
+2 FN 1: Q2 = +Q1 + +7
+3 FN 1: Q1 = +Q1 + +1
+4 END PGM SUB1 MM

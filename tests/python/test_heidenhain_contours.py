@@ -1,0 +1,45 @@
+"""Heidenhain RND next to arcs, CHF next to an arc (refused as on the TNC) and APPR with
+radius compensation already on (a connecting element), with hand-computed numbers."""
+import math
+
+import numpy as np
+import pytest
+
+import toolcomp as tc
+
+
+def test_rnd_between_line_and_arc():
+    # Line (0,0) -> (30,0), CW arc about (40,0) R10 to (40,10); RND R5: centre
+    # (40 - 10*sqrt(2), 5), tangent points (40 - 10*sqrt(2), 0) and (40 - 20*sqrt(2)/3, 10/3).
+    text = ("0 BEGIN PGM T MM\n1 TOOL DEF 1 L+0 R+0\n2 TOOL CALL 1 Z\n3 L X+0 Y+0 Z+0 R0 F100\n"
+            "4 L X+30 Y+0\n5 RND R5\n6 CC X+40 Y+0\n7 C X+40 Y+10 DR-\n8 END PGM T MM\n")
+    p = tc.run(tc.Program.parse(text, dialect="heidenhain")).path
+    s2 = math.sqrt(2)
+    (rnd,) = np.flatnonzero(p.line == 6)
+    assert p.kind[rnd] == tc.ARC_CCW
+    np.testing.assert_allclose(p.start[rnd, :2], [40 - 10 * s2, 0], atol=1e-9)
+    np.testing.assert_allclose(p.center[rnd, :2], [40 - 10 * s2, 5], atol=1e-9)
+    np.testing.assert_allclose(p.end[rnd, :2], [40 - 20 * s2 / 3, 10 / 3], atol=1e-9)
+
+
+def test_chf_next_to_an_arc_is_not_permitted():
+    text = ("0 BEGIN PGM T MM\n1 TOOL DEF 1 L+0 R+0\n2 TOOL CALL 1 Z\n3 L X+0 Y+0 Z+0 R0 F100\n"
+            "4 L X+30 Y+0\n5 CHF 2\n6 CC X+40 Y+0\n7 C X+40 Y+10 DR-\n8 END PGM T MM\n")
+    with pytest.raises(tc.ProgramError, match="CHAMFER NOT PERMITTED") as e:
+        tc.run(tc.Program.parse(text, dialect="heidenhain"))
+    assert e.value.line == 6
+
+
+def test_appr_ct_with_compensation_on_is_a_connecting_element():
+    # r = 2, RL along y = 5 to (20,5); APPR CT X+40 Y+10 CCA90 R+5 without RL/RR: on the
+    # contour PH = (35,5) and a CCW arc about (35,10) to PA; the tool: (35,7), then an arc of
+    # radius 3 to (38,10), compensation still on.
+    text = ("0 BEGIN PGM T MM\n1 TOOL DEF 1 L+0 R+2\n2 TOOL CALL 1 Z\n3 L X+0 Y-10 Z+0 R0 F100\n"
+            "4 L X+0 Y+5 RL\n5 L X+20 Y+5\n6 APPR CT X+40 Y+10 CCA90 R+5\n7 L X+40 Y+30\n"
+            "8 L X+40 Y+50 R0\n9 END PGM T MM\n")
+    p = tc.run(tc.Program.parse(text, dialect="heidenhain")).path
+    appr = np.flatnonzero(p.line == 7)
+    np.testing.assert_allclose(p.end[appr, :2], [[35, 7], [38, 10]], atol=1e-9)
+    assert p.kind[appr[1]] == tc.ARC_CCW
+    np.testing.assert_allclose(p.center[appr[1], :2], [35, 10], atol=1e-9)
+    assert (p.side[appr] == 1).all()
