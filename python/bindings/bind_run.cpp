@@ -32,7 +32,10 @@ void bind_run(py::module_& m) {
                "from there to its programmed end point (LinuxCNC; Fanuc type A)")
         .value("corner_with_exit", ExitStyle::corner_with_exit,
                "the cancel move starts perpendicular to itself at its start, joined to the last move by the corner "
-               "rule, and ends uncompensated (Fanuc type B; Sinumerik KONT)");
+               "rule, and ends uncompensated (Fanuc type B)")
+        .value("around_end_when_behind", ExitStyle::around_end_when_behind,
+               "Sinumerik KONT: as perpendicular_to_last, unless the cancel move's end point lies behind the "
+               "contour; then as corner_with_exit, round the contour end by the outside-corner rule");
     py::enum_<OutsideCorner>(m, "OutsideCorner", "What fills the gap at an outside corner of the compensated path.")
         .value("arc", OutsideCorner::arc, "transition arc of the tool radius about the programmed corner")
         .value("intersection", OutsideCorner::intersection,

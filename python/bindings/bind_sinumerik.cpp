@@ -23,6 +23,7 @@
 #include "toolcomp/program/diagnostic.hpp"
 #include "toolcomp/tools/sinumerik_edge.hpp"
 #include "toolcomp/tools/sinumerik_gettcor.hpp"
+#include "toolcomp/tools/sinumerik_settcor.hpp"
 #include "toolcomp/tools/sinumerik_lentoax.hpp"
 
 using namespace toolcomp;
@@ -218,6 +219,22 @@ void bind_sinumerik(py::module_& parent) {
         },
         py::arg("edge"), py::arg("plane") = 17, py::arg("settings") = py::none(),
         "the tool length vector (x, y, z) of the edge's total lengths L1..L3");
+
+    m.def(
+        "settcor",
+        [](SinumerikEdge& e, const Vec3& corval, const std::string& comp, int corcomp, int cormode, int geoax,
+           const py::object& plane, const std::optional<SinumerikLengthSettings>& s) {
+            return settcor(e, corval, comp, corcomp, cormode, geoax, plane_arg(plane),
+                           s.value_or(SinumerikLengthSettings{}));
+        },
+        py::arg("edge"), py::arg("corval"), py::arg("comp"), py::arg("corcomp") = 0, py::arg("cormode") = 0,
+        py::arg("geoax") = 0, py::arg("plane") = 17, py::arg("settings") = py::none(),
+        "SETTCOR: write a correction into the edge (in place); returns the status (0 OK). corcomp 0 scalar "
+        "corval[0] along geometry axis geoax (1..3), 1/2 vector, 3..5 L1..L3, 6 radius; cormode 0 replace, 1 add");
+    m.attr("SETTCOR_BAD_CORCOMP") = static_cast<int>(settcor_bad_corcomp);
+    m.attr("SETTCOR_BAD_CORMODE") = static_cast<int>(settcor_bad_cormode);
+    m.attr("SETTCOR_BAD_GEOAX") = static_cast<int>(settcor_bad_geoax);
+    m.attr("SETTCOR_NO_RADIUS") = static_cast<int>(settcor_no_radius);
 
     // ---- $TC_DP file form ----------------------------------------------------------------
     m.def(

@@ -398,4 +398,11 @@ class sinumerik:
                 settings: Optional[sinumerik.GettcorSettings] = None, *, plane: Optional[_Plane] = None,
                 stat: str = "", dl: int = -1) -> Tuple[int, npt.NDArray[np.float64]]: ...
     @staticmethod
+    def settcor(edge: sinumerik.Edge, corval: _Vec3, comp: str, corcomp: int = 0, cormode: int = 0, geoax: int = 0,
+                plane: _Plane = 17, settings: Optional[sinumerik.LengthSettings] = None) -> int: ...
+    SETTCOR_BAD_CORCOMP: int
+    SETTCOR_BAD_CORMODE: int
+    SETTCOR_BAD_GEOAX: int
+    SETTCOR_NO_RADIUS: int
+    @staticmethod
     def rotate_about_axis(v: _Vec3, axis: _Vec3, angle_deg: float) -> npt.NDArray[np.float64]: ...

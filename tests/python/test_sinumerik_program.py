@@ -369,3 +369,67 @@ def test_unsupported_words_are_explicit():
     raises("G0 X0\nKONTC\nM30\n", "unsupported_word", 2)
     raises("G0 X0\nG112 X0 Y0\nM30\n", "unsupported_word", 2)
     raises("G0 X0\nG1 X10 U5 F100\nM30\n", "unsupported_word", 2)
+
+
+def test_kont_retract_goes_round_the_end_point_only_when_it_lies_behind():
+    # Contour X0 -> X50 on y = 0, G41 r = 5: the tool ends the contour at C = (50, 5).
+    # In front (60, 10): NORM and KONT both leave from (50, 5) straight to (60, 10).
+    # Behind (60, -10): KONT goes round P = (50, 0) by G450: a circle from (50, 5) to
+    # P + 5 (1, 1)/sqrt 2, perpendicular to the cancel move's start, then to (60, -10).
+    base = "T1 M6\nG0 X-10 Y10\nG1 G41 X0 Y0 F100\nX50\nG40 X60 Y{}\nM30\n"
+    for mode in ("NORM", "KONT"):
+        s = segs(run(mode + "\n" + base.format(10)).path)
+        assert s[-2:] == [(1, (0.0, 5.0), (50.0, 5.0), False), (1, (50.0, 5.0), (60.0, 10.0), False)]
+    assert segs(run("NORM\n" + base.format(-10)).path)[-1] == (1, (50.0, 5.0), (60.0, -10.0), False)
+    k = 5 / math.sqrt(2)
+    s = segs(run("KONT\n" + base.format(-10)).path)
+    assert s[-2] == (tc.ARC_CW, (50.0, 5.0), (round(50 + k, 9), round(k, 9)), True)
+    assert s[-1] == (1, (round(50 + k, 9), round(k, 9)), (60.0, -10.0), False)
+
+
+def test_toolholder_type_p_shifts_the_zero_point_spec_3_6():
+    # l4 = (0, 0, 15), table axis v1 = Y at 45 degrees: offset Rot(Y, 45) l4 - l4 =
+    # (15 sin 45, 0, 15 cos 45 - 15) = (10.607, 0, -4.393); the tool length is not changed.
+    prog = ('$TC_CARR23[1]="P"\n$TC_CARR8[1]=1\n$TC_CARR13[1]=45\n$TC_CARR20[1]=15\n'
+            "TCARR=1 TCOABS\nT1 M6\nG0 X0 Y0 Z0\nM30\n")
+    res = run(prog)
+    s = 15 * math.sqrt(0.5)
+    np.testing.assert_allclose(res.nominal.end[0], [s, 0, s - 15], atol=1e-12)
+    np.testing.assert_allclose(res.nominal.tool_offset[0], [0, 0, 100], atol=1e-12)
+
+
+def test_toolholder_type_t_tool_length_spec_3_6():
+    # l1 = (-200, 0, 0), l3 = (-100, 0, 0), v1 = X, v2 = (-1, 0, 1)/sqrt 2, tool L1 = 250 on
+    # Z: L_res = (-300, 0, 250) at zero angles.
+    tools = "$TC_DP1[3,1]=120\n$TC_DP3[3,1]=250\n"
+    holder = ('$TC_CARR23[2]="T"\n$TC_CARR1[2]=-200\n$TC_CARR15[2]=-100\n$TC_CARR7[2]=1\n'
+              "$TC_CARR10[2]=-1\n$TC_CARR12[2]=1\n")
+    res = run(holder + "TCARR=2\nT3 M6\nG0 X0\nM30\n", tools=tools)
+    np.testing.assert_allclose(res.nominal.tool_offset[0], [-300, 0, 250], atol=1e-12)
+
+
+def test_settcor_corrects_the_tool_data_the_next_selection_uses():
+    # Wear of L1 set to -0.2 (component W, _CORCOMP 3 = L1, replace); then +0.05 added to
+    # the geometry radius (G, 6, add): L1 = 100 - 0.2, R = 5.05. The active edge keeps its
+    # old values until D is programmed again (spec 3.3).
+    prog = ("DEF REAL V[3]\n" + TOOLS + "T1 M6\nG0 X0\n"
+            'V[0]=-0.2\nR1=SETTCOR(V,"W",3,0)\nV[0]=0.05\nR2=SETTCOR(V,"G",6,1)\nG0 X1\nD1\n'
+            "G0 X=R1 Y=R2 Z=$TC_DP6[1,1]\nR3=SETTCOR(V,\"GX\",3)\nG0 X=R3\nM30\n")
+    res = run(prog, tools="")
+    off = res.nominal.tool_offset
+    np.testing.assert_allclose(off[:2], [[0, 0, 100], [0, 0, 100]])
+    np.testing.assert_allclose(off[2], [0, 0, 99.8], atol=1e-12)
+    np.testing.assert_allclose(res.nominal.end[2], [0, 0, 5.05], atol=1e-12)
+    assert res.nominal.end[3][0] == -3  # invalid component letter
+
+
+def test_settcor_in_the_workpiece_system_follows_the_plane():
+    e = tc.sinumerik.Edge(dp={1: 120, 3: 100})
+    # G18: L1 acts on Y; a WCS vector (0, 0.3, 0) corrects L1 only (replace with 0.3).
+    assert tc.sinumerik.settcor(e, (0, 0.3, 0), "W", corcomp=1, plane=18) == 0
+    assert e.get_dp(12) == pytest.approx(0.3) and e.get_dp(13) == 0 and e.get_dp(14) == 0
+    # scalar along Z (geoax 3) in G17 is L1 too; adding to geometry
+    assert tc.sinumerik.settcor(e, (1.5, 0, 0), "G", corcomp=0, cormode=1, geoax=3) == 0
+    assert e.get_dp(3) == pytest.approx(101.5)
+    assert tc.sinumerik.settcor(e, (1, 0, 0), "C", corcomp=6) == tc.sinumerik.SETTCOR_NO_RADIUS
+    assert tc.sinumerik.settcor(e, (1, 0, 0), "G", corcomp=9) == tc.sinumerik.SETTCOR_BAD_CORCOMP

@@ -118,6 +118,12 @@ void RadiusCompensation::push(const Motion& m) {
     if (active_ && m.radius.side != 0 && m.radius.radius <= 0) turn_off(m.line, /*cancel=*/false);  // radius 0 (T00)
     if (m.is_arc() && (arc_not_allowed_ || exit_open_))
         fail("comp_exit_arc", profile_.radius.messages.exit_arc, m.line);
+    if (exit_open_ && exit_when_behind_ && m.radius.side == 0 &&
+        (plane2(m.end) - plane2(program_)).dot(plane2(current_) - plane2(program_)) >= 0) {
+        // KONT with the end point in front of the contour: the NORM exit.
+        exit_open_ = false;
+        turn_off(exit_line_);
+    }
     if (exit_open_ && m.radius.side == 0 && (plane2(m.end) - plane2(program_)).norm() > tol::length) {
         // Type B cancel: the cancel move is joined like a compensated move, then runs to its
         // programmed (uncompensated) end point.
@@ -211,7 +217,7 @@ void RadiusCompensation::turn_off(int line, bool cancel) {
 
 void RadiusCompensation::control(const ControlEvent& e) {
     switch (e.kind) {
-        case ControlKind::radius_off:
+        case ControlKind::radius_off: {
             if (active_ && e.direction.squaredNorm() > 0 && !queue_.empty()) {
                 // Let the last move end as if the contour went on in the given direction.
                 Motion v = queue_.front().m;
@@ -227,13 +233,19 @@ void RadiusCompensation::control(const ControlEvent& e) {
                     queue_.pop_back();  // the virtual element itself is not cut
                 }
             }
-            if (active_ && profile_.radius.exit == ExitStyle::corner_with_exit && !queue_.empty()) {
+            const ExitStyle exit = !queue_.empty() && queue_.front().m.radius.exit >= 0
+                                       ? static_cast<ExitStyle>(queue_.front().m.radius.exit)
+                                       : profile_.radius.exit;
+            if (active_ && exit != ExitStyle::perpendicular_to_last && !queue_.empty()) {
                 exit_open_ = true;  // settled by the cancel move
+                exit_when_behind_ = exit == ExitStyle::around_end_when_behind;
+                exit_line_ = e.line;
                 exit_orientation_ = queue_.front().m.radius.orientation;
                 break;
             }
             turn_off(e.line);
             break;
+        }
         case ControlKind::stop:
             if (exit_open_) {
                 exit_open_ = false;

@@ -40,8 +40,12 @@ enum class ExitStyle {
     // cancel move runs from there to its programmed end point (LinuxCNC; Fanuc type A).
     perpendicular_to_last = 0,
     // The cancel move starts perpendicular to itself at its start, joined to the last move by
-    // the corner rule, and ends uncompensated (Fanuc type B; Sinumerik KONT).
+    // the corner rule, and ends uncompensated (Fanuc type B).
     corner_with_exit = 1,
+    // Sinumerik KONT: as perpendicular_to_last, unless the cancel move's end point lies behind
+    // the contour (on the far side of the last contour point from the tool); then as
+    // corner_with_exit, so the tool goes round the contour end by the outside-corner rule.
+    around_end_when_behind = 2,
 };
 
 // What fills the gap at an outside corner (spec §1.4.1).

@@ -116,6 +116,8 @@ private:
     std::string bridge_lines_;      // lines of arcs left out, waiting for the next element
     bool exit_open_ = false;        // G40 seen, the cancel move settles the last joint (type B exit)
     std::int8_t exit_orientation_ = 0;
+    bool exit_when_behind_ = false;  // KONT: the cancel move decides between the two exits
+    int exit_line_ = 0;
     std::vector<Emitted> window_;   // emitted, not yet released (look-ahead for bottlenecks)
     bool have_last_ = false;
     Vec3 last_ = Vec3::Zero();      // end of the last emitted move (nose centre)

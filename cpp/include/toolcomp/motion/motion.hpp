@@ -34,6 +34,7 @@ struct RadiusRequest {
     // negative: the profile's. `entry` is read on the activation move, the others at the
     // corner before this move.
     std::int8_t entry = -1;    // EntryStyle
+    std::int8_t exit = -1;     // ExitStyle (read on the last compensated move)
     std::int8_t outside = -1;  // OutsideCorner
     std::int8_t gouge = -1;    // GougeReaction
     float disc = -1;           // DISC 0..100

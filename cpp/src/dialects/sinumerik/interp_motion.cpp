@@ -72,6 +72,8 @@ RadiusRequest Interp::radius_request() const {
     r.radius = radius_now();
     if (active_ && is_turning_type(active_->type())) r.orientation = static_cast<std::int8_t>(std::lround(active_->DP(2)));
     r.entry = static_cast<std::int8_t>(st_.entry);
+    if (st_.entry == static_cast<int>(EntryStyle::around_start_when_behind))
+        r.exit = static_cast<std::int8_t>(ExitStyle::around_end_when_behind);
     r.outside = static_cast<std::int8_t>(st_.outside);
     r.gouge = static_cast<std::int8_t>(st_.gouge);
     r.disc = static_cast<float>(st_.disc);

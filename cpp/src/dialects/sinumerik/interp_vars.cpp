@@ -6,6 +6,8 @@
 #include "interp.hpp"
 #include "toolcomp/tools/sinumerik_gettcor.hpp"
 #include "toolcomp/tools/sinumerik_lentoax.hpp"
+#include "toolcomp/tools/sinumerik_settcor.hpp"
+#include "toolcomp/tools/tool_table.hpp"
 
 namespace toolcomp::sinumerik {
 
@@ -252,6 +254,23 @@ void Interp::value_call(const Token& t) {
         if (status == 0) {
             for (std::size_t i = 0; i < 3; ++i) axind.v[i] = r.axind[i];
             for (std::size_t i = 0; i < 9; ++i) matrix.v[i] = r.matrix(static_cast<long>(i / 3), static_cast<long>(i % 3));
+        }
+    } else if (t.key == "SETTCOR") {
+        Variable& corval = array_arg(0, 3);
+        const std::string comp = args.size() > 1 ? string_arg(1) : "";
+        auto num = [&](std::size_t i, int dflt) {
+            return i < args.size() && !args[i].empty() ? as_index(eval_text(args[i], t.column)) : dflt;
+        };
+        const int corcomp = num(2, 0), cormode = num(3, 0), geoax = num(4, 0);
+        const int tt = num(5, tool_), dd = num(6, d_), dl = num(7, -1);
+        if (dl > 1) {
+            status = gettcor_bad_dl;
+        } else {
+            // A tool of the ToolTable joins the program's $TC_DP data when it is corrected.
+            if (!edges_.count({tt, dd}) && tools_ && tools_->contains(tt) && tools_->at(tt).has_edge(dd))
+                edges_[{tt, dd}] = edge_from_common(tools_->at(tt).edge(dd));
+            status = settcor(edges_, tt, dd, Vec3(corval.v[0], corval.v[1], corval.v[2]), comp, corcomp, cormode, geoax,
+                             st_.plane, opts_.lengths);
         }
     } else {
         fail("unsupported_word", t.key + " is not supported by toolcomp yet", t.column);
