@@ -177,7 +177,7 @@ def _progress_bar(program, stream=None):
     return tqdm(total=len(program), unit="block", unit_scale=True, file=stream, leave=False)
 
 
-def execute(program_file, tools_file=None, dialect=None, units_table=None) -> Outcome:
+def execute(program_file, tools_file=None, dialect=None, units_table=None, search_path=()) -> Outcome:
     """Read the program and tool table and run it with ``strict=False``; every problem
     becomes a diagnostic record. Raises UsageError for unreadable inputs."""
     _check_readable(program_file, "program")
@@ -210,6 +210,8 @@ def execute(program_file, tools_file=None, dialect=None, units_table=None) -> Ou
         parse_error = None
 
     run_kwargs = {} if tools is None else {"tools": tools}
+    if search_path:
+        run_kwargs["search_path"] = list(search_path)
     if source is program_file:
         run_kwargs.update(kwargs)
     bar = _progress_bar(out.program)
@@ -365,7 +367,7 @@ def write_csv(path, filename):
 # ---------------------------------------------------------------------------------------
 
 def cmd_run(args) -> int:
-    out = execute(args.program, args.tools, args.dialect, args.units_table)
+    out = execute(args.program, args.tools, args.dialect, args.units_table, args.search_path)
     summary = summarize(out)
     print(format_summary(summary))
     if args.csv:
@@ -390,7 +392,7 @@ def cmd_check(args) -> int:
     # Unreadable files are usage errors: check them all before running any.
     for p in args.programs:
         _check_readable(p, "program")
-    outcomes = [execute(p, args.tools, args.dialect, args.units_table) for p in args.programs]
+    outcomes = [execute(p, args.tools, args.dialect, args.units_table, args.search_path) for p in args.programs]
     if args.format == "json":
         doc = [{"program": o.program_file, "ok": not o.has_errors,
                 "diagnostics": [r.as_dict() for r in o.records]} for o in outcomes]
@@ -403,7 +405,7 @@ def cmd_check(args) -> int:
 
 
 def cmd_export(args) -> int:
-    out = execute(args.program, args.tools, args.dialect, args.units_table)
+    out = execute(args.program, args.tools, args.dialect, args.units_table, args.search_path)
     if out.has_errors or out.result is None:
         # A program the control refuses has no compensated path to export.
         for r in out.records:
@@ -447,6 +449,9 @@ def build_parser() -> argparse.ArgumentParser:
                         help="control dialect (default: from the program's suffix)")
         sp.add_argument("--units-table", choices=("mm", "inch"), dest="units_table",
                         help="units of the tool table's lengths (default: the table's own)")
+        sp.add_argument("--search-path", metavar="DIR", action="append", default=[], dest="search_path",
+                        help="directory where called programs are looked for (Heidenhain CALL PGM, "
+                             "Sinumerik L10 / named subprograms); repeatable, searched in order")
 
     r = sub.add_parser("run", help="run a program and print a summary of its paths",
                        description="Run a program (errors do not stop the report: the path "

@@ -235,3 +235,18 @@ def test_check_a_gouging_program_names_the_block(tmp_path):
     assert r.returncode == 1
     m = DIAG_RE.match(r.stdout.splitlines()[0])
     assert (m["file"], m["line"], m["severity"], m["code"]) == (str(gouge), "6", "error", "comp_gouge")
+
+
+def test_search_path_finds_sinumerik_subprograms(tmp_path):
+    # The main program calls L10 twice (P2); L10 moves 10 in X incrementally: ends at X20.
+    subs = tmp_path / "subs"
+    subs.mkdir()
+    (subs / "L10.SPF").write_text("G91 G1 X10 F100\nG90\nM17\n")
+    main = tmp_path / "main.mpf"
+    main.write_text("G0 X0 Y0\nL10 P2\nM30\n")
+    out = toolcomp("check", main)
+    assert out.returncode == 1 and "14011" in out.stdout
+    js = tmp_path / "s.json"
+    out = toolcomp("run", main, "--search-path", subs, "--json", js)
+    assert out.returncode == 0, out.stdout + out.stderr
+    assert json.loads(js.read_text())["segments"]["nominal"] == 3
