@@ -444,7 +444,7 @@ def build_parser() -> argparse.ArgumentParser:
 
     def common(sp):
         sp.add_argument("--tools", metavar="TABLE",
-                        help="tool table (.tbl, .t, .csv, .json, ...; format from suffix)")
+                        help="tool table (.tbl, .t, .ini, .csv, .json; format from suffix)")
         sp.add_argument("--dialect", choices=DIALECTS,
                         help="control dialect (default: from the program's suffix)")
         sp.add_argument("--units-table", choices=("mm", "inch"), dest="units_table",

@@ -75,7 +75,7 @@ def cmd_validate(args) -> int:
 
 def add_parser(sub) -> None:
     t = sub.add_parser("tools", help="show, convert and validate tool tables",
-                       description="Tool tables: .tbl (LinuxCNC), .t (Heidenhain TOOL.T), .csv, .json.")
+                       description="Tool tables: .tbl (LinuxCNC), .t (Heidenhain TOOL.T), .ini (Sinumerik $TC_DP), .csv, .json.")
     tsub = t.add_subparsers(dest="tools_command", metavar="ACTION")
     tsub.required = True
 

@@ -20,6 +20,7 @@ std::string_view to_string(TableFormat f) {
         case TableFormat::csv: return "csv";
         case TableFormat::json: return "json";
         case TableFormat::heidenhain: return "heidenhain";
+        case TableFormat::sinumerik: return "sinumerik";
     }
     return "?";
 }
@@ -30,8 +31,9 @@ TableFormat table_format_from_string(std::string_view s) {
     if (f == "csv") return TableFormat::csv;
     if (f == "json") return TableFormat::json;
     if (f == "heidenhain" || f == "t") return TableFormat::heidenhain;
+    if (f == "sinumerik" || f == "ini") return TableFormat::sinumerik;
     throw ToolTableError("table_unknown_format",
-                         "unknown tool table format '" + std::string(s) + "' (use linuxcnc, csv, json or heidenhain)");
+                         "unknown tool table format '" + std::string(s) + "' (use linuxcnc, csv, json, heidenhain or sinumerik)");
 }
 
 TableFormat table_format_from_path(const std::string& path) {
@@ -43,10 +45,11 @@ TableFormat table_format_from_path(const std::string& path) {
         if (ext == "csv") return TableFormat::csv;
         if (ext == "json") return TableFormat::json;
         if (ext == "t") return TableFormat::heidenhain;
+        if (ext == "ini") return TableFormat::sinumerik;
     }
     throw ToolTableError("table_unknown_format",
                          "cannot tell the tool table format from the name '" + path +
-                             "' (suffix .tbl, .csv, .json or .t, or pass the format)");
+                             "' (suffix .tbl, .csv, .json, .t or .ini, or pass the format)");
 }
 
 }  // namespace toolcomp

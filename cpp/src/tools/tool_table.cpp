@@ -5,15 +5,15 @@
 #include "toolcomp/tools/format_heidenhain.hpp"
 #include "toolcomp/tools/format_json.hpp"
 #include "toolcomp/tools/format_linuxcnc.hpp"
+#include "toolcomp/tools/format_sinumerik.hpp"
 
 #include <algorithm>
 
 namespace toolcomp {
 
 const Tool* ToolTable::find(int number) const {
-    for (const auto& t : tools_)
-        if (t.number == number) return &t;
-    return nullptr;
+    const auto it = index_.find(number);
+    return it == index_.end() ? nullptr : &tools_[it->second];
 }
 
 Tool* ToolTable::find(int number) {
@@ -27,16 +27,21 @@ const Tool& ToolTable::at(int number) const {
 
 void ToolTable::set(Tool t) {
     validate_tool(t);
-    if (Tool* old = find(t.number))
+    if (Tool* old = find(t.number)) {
         *old = std::move(t);
-    else
+    } else {
+        index_.emplace(t.number, tools_.size());
         tools_.push_back(std::move(t));
+    }
 }
 
 bool ToolTable::remove(int number) {
-    auto it = std::find_if(tools_.begin(), tools_.end(), [&](const Tool& t) { return t.number == number; });
-    if (it == tools_.end()) return false;
-    tools_.erase(it);
+    const auto it = index_.find(number);
+    if (it == index_.end()) return false;
+    const std::size_t pos = it->second;
+    index_.erase(it);
+    tools_.erase(tools_.begin() + static_cast<std::ptrdiff_t>(pos));
+    for (std::size_t i = pos; i < tools_.size(); ++i) index_[tools_[i].number] = i;
     return true;
 }
 
@@ -46,6 +51,7 @@ ToolTable read_tool_table(std::string_view text, TableFormat format, LengthUnit 
         case TableFormat::csv: return read_csv_table(text, units);
         case TableFormat::json: return read_json_table(text, units);
         case TableFormat::heidenhain: return read_heidenhain_table(text, units);
+        case TableFormat::sinumerik: return read_sinumerik_table(text, units);
     }
     throw ToolTableError("table_unknown_format", "unknown tool table format");
 }
@@ -56,6 +62,7 @@ std::string write_tool_table(const ToolTable& table, TableFormat format) {
         case TableFormat::csv: return write_csv_table(table);
         case TableFormat::json: return write_json_table(table);
         case TableFormat::heidenhain: return write_heidenhain_table(table);
+        case TableFormat::sinumerik: return write_sinumerik_table(table);
     }
     throw ToolTableError("table_unknown_format", "unknown tool table format");
 }

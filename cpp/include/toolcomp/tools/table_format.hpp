@@ -5,7 +5,7 @@
 
 namespace toolcomp {
 
-enum class TableFormat { linuxcnc, csv, json, heidenhain };
+enum class TableFormat { linuxcnc, csv, json, heidenhain, sinumerik };
 
 // "linuxcnc" / "csv" / "json" / "heidenhain".
 std::string_view to_string(TableFormat f);

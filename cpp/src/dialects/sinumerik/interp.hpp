@@ -133,6 +133,9 @@ private:
     void change_tool();
     void select_edge(int d, int column);
     const SinumerikEdge* edge() const;  // the active edge, or nullptr (T0 / D0)
+    // Edge d of tool t of the ToolTable as $TC_DP data (a tool data file's own data when
+    // unchanged, else through edge_from_common).
+    std::optional<SinumerikEdge> table_edge(int t, int d) const;
     void update_tool_offset();
     double radius_now() const;  // the active edge's radius + OFFN, mm
 

@@ -7,6 +7,7 @@
 #include <cctype>
 
 #include "interp.hpp"
+#include "toolcomp/tools/format_sinumerik.hpp"
 #include "toolcomp/tools/tool_table.hpp"
 
 namespace toolcomp::sinumerik {
@@ -62,13 +63,19 @@ void Interp::select_edge(int d, int column) {
     if (tool_ == 0) fail("17180", "17180 Illegal D number: D" + std::to_string(d) + " without an active tool", column);
     if (auto it = edges_.find({tool_, d}); it != edges_.end()) {
         active_ = it->second;
-    } else if (tools_ && tools_->contains(tool_) && tools_->at(tool_).has_edge(d)) {
-        active_ = edge_from_common(tools_->at(tool_).edge(d));
+    } else if (auto e = table_edge(tool_, d)) {
+        active_ = *e;
     } else {
         fail("17180", "17180 Illegal D number: T" + std::to_string(tool_) + " has no cutting edge D" + std::to_string(d), column);
     }
     d_ = d;
     update_tool_offset();
+}
+
+std::optional<SinumerikEdge> Interp::table_edge(int t, int d) const {
+    if (!tools_ || !tools_->contains(t) || !tools_->at(t).has_edge(d)) return std::nullopt;
+    if (const SinumerikEdge* src = sinumerik_source_edge(*tools_, t, d)) return *src;  // a $TC_DP file
+    return edge_from_common(tools_->at(t).edge(d));
 }
 
 const SinumerikEdge* Interp::edge() const { return active_ ? &*active_ : nullptr; }

@@ -236,7 +236,10 @@ void Interp::value_call(const Token& t) {
         const int tt = num(3, -1), dd = num(4, -1), dl = num(5, -1);
         std::array<double, 11> out{};
         if (tt >= 0 || dd >= 0) {
-            status = gettcor(out, comp, edges_, tt >= 0 ? tt : tool_, dd >= 0 ? dd : d_, s, stat, dl);
+            const int t2 = tt >= 0 ? tt : tool_, d2 = dd >= 0 ? dd : d_;
+            if (!edges_.count({t2, d2}))
+                if (auto e = table_edge(t2, d2)) edges_[{t2, d2}] = *e;
+            status = gettcor(out, comp, edges_, t2, d2, s, stat, dl);
         } else if (const SinumerikEdge* e = edge()) {
             status = gettcor(out, comp, *e, s, stat, dl);
         } else {
@@ -267,8 +270,8 @@ void Interp::value_call(const Token& t) {
             status = gettcor_bad_dl;
         } else {
             // A tool of the ToolTable joins the program's $TC_DP data when it is corrected.
-            if (!edges_.count({tt, dd}) && tools_ && tools_->contains(tt) && tools_->at(tt).has_edge(dd))
-                edges_[{tt, dd}] = edge_from_common(tools_->at(tt).edge(dd));
+            if (!edges_.count({tt, dd}))
+                if (auto e = table_edge(tt, dd)) edges_[{tt, dd}] = *e;
             status = settcor(edges_, tt, dd, Vec3(corval.v[0], corval.v[1], corval.v[2]), comp, corcomp, cormode, geoax,
                              st_.plane, opts_.lengths);
         }
