@@ -433,3 +433,18 @@ def test_settcor_in_the_workpiece_system_follows_the_plane():
     assert e.get_dp(3) == pytest.approx(101.5)
     assert tc.sinumerik.settcor(e, (1, 0, 0), "C", corcomp=6) == tc.sinumerik.SETTCOR_NO_RADIUS
     assert tc.sinumerik.settcor(e, (1, 0, 0), "G", corcomp=9) == tc.sinumerik.SETTCOR_BAD_CORCOMP
+
+
+@pytest.mark.parametrize("body, alarm, line", [
+    # KONT, start (0,-3) behind the contour start (0,0) and within r = 5 of it: no room
+    ("KONT T1 M6\nG0 X0 Y-3\nG1 G41 X0 Y0 F100\nX50\nG40 X60 Y10\nM30\n", "10755", 3),
+    # KONT, cancel end (52,-2) behind the contour end (50,0), 2.83 < 5 from it
+    ("KONT T1 M6\nG0 X-10 Y10\nG1 G41 X0 Y0 F100\nX50\nG40 X52 Y-2\nM30\n", "10756", 5),
+    # helix with TRC while a type T toolholder tilts the tool 30 degrees about X
+    ('$TC_CARR23[1]="T"\n$TC_CARR7[1]=1\n$TC_CARR13[1]=30\nTCARR=1 T1 M6\nG0 X0 Y-10\n'
+     "G1 G41 X0 Y0 F100\nG3 X0 Y20 Z-5 CR=10\nM30\n", "10760", 7),
+    # a circle in a non-uniform SCALE is an ellipse
+    ("SCALE X2 Y1\nT1 M6\nG0 X0 Y-10\nG1 G41 X0 Y0 F100\nG3 X0 Y20 CR=10\nM30\n", "10761", 5),
+])
+def test_more_alarms_with_numbers_and_lines(body, alarm, line):
+    raises(body, alarm, line)

@@ -127,6 +127,8 @@ ControlProfile profile_for(Dialect d, Machine machine) {
             r.messages.gouge_feed = r.messages.gouge_traverse = r.messages.gouge_arc = r.messages.arc_to_line =
                 r.messages.arc_to_arc = r.messages.arc_too_small =
                     "10751 Danger of collision: no intersection within the look-ahead of the bottleneck detection";
+            r.messages.around_start = "10755 Selection via KONT not possible at the current start point";
+            r.messages.around_end = "10756 Deselection via KONT not possible at the programmed end point";
             r.messages.too_many_non_plane = "10762 Too many empty blocks between two traversing blocks with active TRC";
             break;
         }

@@ -118,11 +118,15 @@ void RadiusCompensation::push(const Motion& m) {
     if (active_ && m.radius.side != 0 && m.radius.radius <= 0) turn_off(m.line, /*cancel=*/false);  // radius 0 (T00)
     if (m.is_arc() && (arc_not_allowed_ || exit_open_))
         fail("comp_exit_arc", profile_.radius.messages.exit_arc, m.line);
-    if (exit_open_ && exit_when_behind_ && m.radius.side == 0 &&
-        (plane2(m.end) - plane2(program_)).dot(plane2(current_) - plane2(program_)) >= 0) {
-        // KONT with the end point in front of the contour: the NORM exit.
-        exit_open_ = false;
-        turn_off(exit_line_);
+    if (exit_open_ && exit_when_behind_ && m.radius.side == 0) {
+        const Vec2 P = plane2(program_), E = plane2(m.end);
+        if ((E - P).dot(plane2(current_) - P) >= 0) {
+            // KONT with the end point in front of the contour: the NORM exit.
+            exit_open_ = false;
+            turn_off(exit_line_);
+        } else if (!profile_.radius.messages.around_end.empty() && (E - P).norm() < r_) {
+            fail("comp_around_end", profile_.radius.messages.around_end, m.line);
+        }
     }
     if (exit_open_ && m.radius.side == 0 && (plane2(m.end) - plane2(program_)).norm() > tol::length) {
         // Type B cancel: the cancel move is joined like a compensated move, then runs to its

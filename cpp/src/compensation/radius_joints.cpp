@@ -129,8 +129,12 @@ bool RadiusCompensation::close_open_entry(const Vec2& mid) {
     if (entry_ == EntryStyle::around_start_when_behind && !queue_.empty()) {
         // Behind: the start point and the new element's equidistant lie on opposite sides of
         // the element's line through the contour start.
-        const Vec2 S = plane2(program_);
-        if ((plane2(queue_.front().m.start) - S).dot(mid - S) < 0) return false;
+        const Vec2 S = plane2(program_), A = plane2(queue_.front().m.start);
+        if ((A - S).dot(mid - S) < 0) {
+            if (!profile_.radius.messages.around_start.empty() && (A - S).norm() < r_)
+                fail("comp_around_start", profile_.radius.messages.around_start, queue_.front().m.line);
+            return false;
+        }
     }
     for (auto& h : queue_) h.m.end = with_plane(h.m.end, mid);
     flush();

@@ -76,6 +76,11 @@ struct RadiusMessages {
     std::string too_many_non_plane = "Too many blocks without motion in the compensation plane";
     std::string g10 = "";  // set when G10 is refused whatever it changes
     std::string side_change = "";  // set when RL <-> RR needs a cancel block between
+    // Set when the control refuses to go round the contour start (end) because the start
+    // point of the activation move (end point of the cancel move) lies behind the contour
+    // within the tool radius of that contour point: no room to go round (Sinumerik KONT).
+    std::string around_start = "";
+    std::string around_end = "";
 };
 
 // What happens when too many blocks without motion in the plane follow each other while

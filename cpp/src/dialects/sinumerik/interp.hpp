@@ -6,6 +6,7 @@
 // output system (see interpreter.hpp): `pos_` is where the tool is there; the programmable
 // frame maps program (workpiece) coordinates p to it: out = frame.a * p + frame.t.
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <Eigen/LU>
 #include <array>
 #include <deque>
@@ -181,6 +182,7 @@ private:
     bool tcoabs_ = false;
     bool diam90_ = false;  // DIAM90: absolute X in diameter, incremental in radius
     Vec3 tool_offset_ = Vec3::Zero();
+    Vec3 tool_axis_ = Vec3(0, 0, 1);
     std::optional<SinumerikEdge> active_;  // the active edge as selected (later $TC_DP writes
                                            // take effect at the next T/D selection)
     bool ended_ = false;

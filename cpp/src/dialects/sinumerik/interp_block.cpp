@@ -13,8 +13,8 @@ namespace {
 bool is_keyword(std::string_view k) {
     static constexpr std::string_view known[] = {
         "NORM", "KONT", "CDON", "CDOF", "CDOF2", "CUT2D", "DIAMON", "DIAMOF", "DIAM90", "TRANS", "ATRANS", "ROT",
-        "AROT", "SCALE", "ASCALE", "MIRROR", "AMIRROR", "SUPA", "TCOABS", "TCOFR", "RET", "STOPRE", "TRAFOOF",
-        "CIP", "CT", "TCOFRZ"};
+        "AROT", "SCALE", "ASCALE", "MIRROR", "AMIRROR", "SUPA", "TCOABS", "RET", "STOPRE", "TRAFOOF",
+        "CIP", "CT"};
     for (std::string_view x : known)
         if (x == k) return true;
     return false;
@@ -23,7 +23,7 @@ bool is_keyword(std::string_view k) {
 bool is_unsupported(std::string_view k) {
     static constexpr std::string_view known[] = {
         "KONTC", "KONTT", "CUT2DF", "CUT3DC", "CUT3DF", "CUT3DFS", "CUT3DFF", "CUT3DCC", "CUT3DCCD", "TRAORI", "TRACYL",
-        "TRANSMIT", "TCOFRY", "TCOFRX", "ASPLINE", "BSPLINE", "CSPLINE", "POLY", "OFFN_AX", "ORIC", "ORID", "CYCLE81",
+        "TRANSMIT", "TCOFR", "TCOFRZ", "TCOFRY", "TCOFRX", "ASPLINE", "BSPLINE", "CSPLINE", "POLY", "OFFN_AX", "ORIC", "ORID", "CYCLE81",
         "CYCLE82", "CYCLE83", "POCKET3", "POCKET4", "SLOT1", "SLOT2", "CYCLE800", "CYCLE832", "MCALL", "EXTERN",
         "G110", "G111", "G112", "BRISK", "SOFT", "FFWON", "FFWOF"};
     for (std::string_view x : known)

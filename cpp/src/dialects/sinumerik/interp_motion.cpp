@@ -60,6 +60,7 @@ Motion Interp::motion_(MotionKind kind, const Vec3& end) const {
     m.line = line_;
     m.tool = tool_;
     m.tool_offset = tool_offset_;
+    m.tool_axis = tool_axis_;
     m.radius = radius_request();
     m.unit = 1.0;
     return m;
@@ -408,6 +409,12 @@ void Interp::arc(const BlockData& b, const Vec3& end_prog, bool) {
         fail("unsupported_word", "Ellipses (circles in a non-uniform SCALE) are not supported by toolcomp", first);
     }
     if (!(feed_ > 0)) fail("10860", "10860 No feedrate programmed", first);
+    if (st_.side != 0 && std::fabs(e3[n] - s3[n]) > 1e-9) {
+        Vec3 normal = Vec3::Zero();
+        normal[n] = 1;
+        if (tool_axis_.cross(frame_.a * normal).norm() > 1e-9)
+            fail("10760", "10760 Helical axis is not parallel to the tool orientation", first);
+    }
     int turns = 0;
     if (b.turn.set) {
         if (b.turn.v < 0 || b.turn.v != std::floor(b.turn.v)) fail("14040", "14040 TURN= must be a whole number of turns", b.turn.column);

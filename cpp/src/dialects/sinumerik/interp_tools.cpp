@@ -87,6 +87,7 @@ double Interp::radius_now() const {
 void Interp::update_tool_offset() {
     Vec3 l = active_ ? tool_length_vector(*active_, st_.plane, opts_.lengths) : Vec3::Zero();
     zero_shift_ = Vec3::Zero();
+    tool_axis_ = Vec3(0, 0, 1);
     if (tcarr_ != 0) {
         auto it = holders_.find(tcarr_);
         if (it == holders_.end()) fail("14153", "14153 Toolholder " + std::to_string(tcarr_) + " has no data ($TC_CARR)");
@@ -95,8 +96,12 @@ void Interp::update_tool_offset() {
         } catch (const Error& e) {
             fail(e.code(), e.what());
         }
-        l = resulting_tool_length(it->second, l);
-        zero_shift_ = table_zero_offset(it->second);
+        const Toolholder& h = it->second;
+        l = resulting_tool_length(h, l);
+        zero_shift_ = table_zero_offset(h);
+        // The tool's direction (tip towards spindle), Z at zero angles: the head's rotations.
+        if (h.kind == 'T') tool_axis_ = rotate_about_axis(rotate_about_axis(Vec3(0, 0, 1), h.v2, h.angle2()), h.v1, h.angle1());
+        if (h.kind == 'M') tool_axis_ = rotate_about_axis(Vec3(0, 0, 1), h.v1, h.angle1());
     }
     tool_offset_ = l;
 }
