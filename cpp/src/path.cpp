@@ -8,12 +8,13 @@
 namespace toolcomp {
 
 namespace {
-void put3(std::vector<double>& v, const Vec3& p) {
+template <class V>
+void put3(V& v, const Vec3& p) {
     v.push_back(p.x());
     v.push_back(p.y());
     v.push_back(p.z());
 }
-Vec3 get3(const std::vector<double>& v, std::size_t i) { return {v[3 * i], v[3 * i + 1], v[3 * i + 2]}; }
+Vec3 get3(const Column<double>& v, std::size_t i) { return {v[3 * i], v[3 * i + 1], v[3 * i + 2]}; }
 }  // namespace
 
 void Path::reserve(std::size_t n) {

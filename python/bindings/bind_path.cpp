@@ -9,8 +9,8 @@
 using namespace toolcomp;
 
 namespace {
-template <class T>
-py::array view(py::handle owner, const std::vector<T>& v, std::size_t n, std::size_t width,
+template <class T, class A>
+py::array view(py::handle owner, const std::vector<T, A>& v, std::size_t n, std::size_t width,
                py::dtype dtype = py::dtype::of<T>()) {
     std::vector<py::ssize_t> shape{static_cast<py::ssize_t>(n)}, strides{static_cast<py::ssize_t>(sizeof(T) * width)};
     if (width > 1) {
@@ -24,7 +24,7 @@ py::array view(py::handle owner, const std::vector<T>& v, std::size_t n, std::si
 }
 
 template <class T>
-auto column(std::vector<T> Path::*member, std::size_t width) {
+auto column(Column<T> Path::*member, std::size_t width) {
     return [member, width](py::object self) {
         const Path& p = self.cast<const Path&>();
         return view(self, p.*member, p.size(), width);

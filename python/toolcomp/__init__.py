@@ -44,7 +44,7 @@ __all__ = [
     "CompensationError", "ControlProfile", "CuttingEdge", "Diagnostic", "EntryStyle", "Error", "ExitStyle",
     "GougeReaction", "LengthAxes", "Machine", "NonPlaneReaction", "OutsideCorner", "ParseError", "Path",
     "Program", "ProgramError", "RadiusRules", "Result", "TipConvention", "Tool", "ToolTable",
-    "ToolTableError", "compensate_3d", "run", "sinumerik", "__version__",
+    "ToolTableError", "compensate_3d", "run", "run_many", "sinumerik", "__version__",
 ]
 
 _sys.modules[__name__ + ".sinumerik"] = sinumerik  # type: ignore[assignment]  # `import toolcomp.sinumerik`
@@ -115,3 +115,6 @@ def _table_diff(self, other, tol=0.0):
 ToolTable.to_pandas = _table_to_pandas
 ToolTable.from_pandas = staticmethod(_table_from_pandas)
 ToolTable.diff = _table_diff
+
+
+from .batch import run_many  # noqa: E402  (needs run above)

@@ -83,11 +83,29 @@ def bench_program(n, comp, tools):
     del res, prog
 
 
+def bench_batch(n, tools):
+    """8 programs of n/8 blocks each (with compensation), one after the other and with run_many."""
+    text, blocks = generate(max(6, n // 8), True)
+    with tempfile.TemporaryDirectory() as d:
+        paths = []
+        for i in range(8):
+            p = os.path.join(d, f"p{i}.ngc")
+            with open(p, "w") as f:
+                f.write(text)
+            paths.append(p)
+        t_seq, _ = best_of(lambda: [tc.run(p, tools) for p in paths], repeat=2)
+        cores = os.cpu_count() or 1
+        t_many, _ = best_of(lambda: tc.run_many(paths, tools, workers=cores), repeat=2)
+    print(f"batch          : 8 programs of {blocks:,} blocks: one by one {t_seq:.3f} s, "
+          f"run_many on {cores} threads {t_many:.3f} s: {t_seq / t_many:.2f} x")
+
+
 def main():
     n = int(os.environ.get("TOOLCOMP_BENCH_BLOCKS", "1000000"))
     tools = tc.ToolTable.parse("T1 P1 Z50 D6\n", "linuxcnc")
     bench_program(n, True, tools)
     bench_program(n, False, tools)
+    bench_batch(n, tools)
 
     # 3D compensation of CAM points (one core).
     import numpy as np

@@ -71,7 +71,7 @@ Caught caught(F&& f) {
     return c;
 }
 
-Vec3 col(const std::vector<double>& v, std::size_t i) { return {v[3 * i], v[3 * i + 1], v[3 * i + 2]}; }
+Vec3 col(const Column<double>& v, std::size_t i) { return {v[3 * i], v[3 * i + 1], v[3 * i + 2]}; }
 
 const std::string kMainHead = "0 BEGIN PGM M MM\n1 TOOL DEF 1 L+0 R+2\n2 TOOL CALL 1 Z\n3 L X+0 Y-10 Z+0 R0 F100\n";
 
@@ -89,7 +89,7 @@ TEST_CASE("heidenhain CALL PGM runs the called program inline with shared Q para
     CHECK(col(p.start, 2) == Vec3(17, 0, 0));  // the position carries into the called program
     CHECK(col(p.end, 2) == Vec3(11, 5, 0));
     // Lines: source line 2 of sub1.h, source line 7 of call_main.h, line 2 of sub1.h again.
-    CHECK(p.line == std::vector<std::int32_t>{2, 7, 2});
+    CHECK(std::vector<std::int32_t>(p.line.begin(), p.line.end()) == std::vector<std::int32_t>{2, 7, 2});
     CHECK(r.ok());
 }
 

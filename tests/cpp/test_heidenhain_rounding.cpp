@@ -30,7 +30,7 @@ std::string pgm(const std::string& body) {
 
 Result run_h(const std::string& body) { return tctest::run_text(pgm(body), nullptr, Dialect::heidenhain); }
 
-Vec3 col(const std::vector<double>& v, std::size_t i) { return {v[3 * i], v[3 * i + 1], v[3 * i + 2]}; }
+Vec3 col(const Column<double>& v, std::size_t i) { return {v[3 * i], v[3 * i + 1], v[3 * i + 2]}; }
 
 // Indices of the segments produced by source line `line`.
 std::vector<std::size_t> of_line(const Path& p, int line) {

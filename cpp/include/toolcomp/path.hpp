@@ -6,19 +6,20 @@
 #include <cstdint>
 #include <vector>
 
+#include "toolcomp/column.hpp"
 #include "toolcomp/motion/motion.hpp"
 
 namespace toolcomp {
 
 class Path : public MotionSink {
 public:
-    std::vector<std::uint8_t> kind;
-    std::vector<double> start, end, center, abc, tool_offset, normal, tool_axis;  // 3 per segment
-    std::vector<std::int32_t> line, tool, turns;
-    std::vector<double> feed;
-    std::vector<std::int8_t> side;
-    std::vector<std::uint8_t> plane;
-    std::vector<std::uint8_t> generated;  // bool as byte
+    Column<std::uint8_t> kind;
+    Column<double> start, end, center, abc, tool_offset, normal, tool_axis;  // 3 per segment
+    Column<std::int32_t> line, tool, turns;
+    Column<double> feed;
+    Column<std::int8_t> side;
+    Column<std::uint8_t> plane;
+    Column<std::uint8_t> generated;  // bool as byte
 
     std::size_t size() const { return kind.size(); }
     void reserve(std::size_t n);

@@ -1,0 +1,43 @@
+"""Running many programs at once.
+
+:func:`run_many` runs programs on a thread pool. The engine releases the GIL while it reads
+and runs a program, so the threads use every core. The same work maps onto a Dask bag when
+one machine is not enough (see the README): each task runs :func:`toolcomp.run` on one
+program and returns plain data.
+"""
+from __future__ import annotations
+
+import os
+from concurrent.futures import ThreadPoolExecutor
+from typing import Any, Iterable, List, Optional
+
+
+def run_many(programs: Iterable[Any], tools: Any = None, *, workers: Optional[int] = None,
+             return_exceptions: bool = False, **kwargs: Any) -> List[Any]:
+    """Run every program of ``programs`` (Program objects or paths) with ``tools`` (a
+    ToolTable or a path, read once) on ``workers`` threads (default: the number of cores) and
+    return their Results in the order given. ``kwargs`` are those of :func:`toolcomp.run`.
+    The first program that raises makes run_many raise that error, unless
+    ``return_exceptions`` is true: then the error object takes that program's place."""
+    from . import ToolTable, run  # the package's own run (paths, units, search path)
+
+    programs = list(programs)
+    if isinstance(tools, (str, os.PathLike)):
+        tools = ToolTable.read(os.fspath(tools), units=kwargs.pop("units", "mm"))
+    if workers is None:
+        workers = os.cpu_count() or 1
+    if workers < 1:
+        raise ValueError("workers must be at least 1")
+
+    def one(program):
+        try:
+            return run(program, tools, **kwargs)
+        except Exception as exc:  # noqa: BLE001 - handed back or re-raised in order
+            if not return_exceptions:
+                raise
+            return exc
+
+    if workers == 1 or len(programs) <= 1:
+        return [one(p) for p in programs]
+    with ThreadPoolExecutor(max_workers=min(workers, len(programs))) as pool:
+        return list(pool.map(one, programs))
