@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "toolcomp/column.hpp"
 #include "toolcomp/program/dialect.hpp"
 #include "toolcomp/program/expr.hpp"
 #include "toolcomp/geometry/vec.hpp"
@@ -72,7 +73,7 @@ public:
     bool inch = false;  // conversational programs declare their unit (BEGIN PGM ... INCH)
 
     std::size_t size() const { return blocks_.size(); }
-    const std::vector<Block>& blocks() const { return blocks_; }
+    const Column<Block>& blocks() const { return blocks_; }
     std::span<const Word> words(const Block& b) const {
         return {words_.data() + b.first_word, b.word_count};
     }
@@ -106,8 +107,8 @@ public:
     }
 
 private:
-    std::vector<Block> blocks_;
-    std::vector<Word> words_;
+    Column<Block> blocks_;
+    Column<Word> words_;
     std::vector<Comment> comments_;
     std::vector<Token> tokens_;
     std::vector<expr::Expr> exprs_;
