@@ -15,11 +15,13 @@ void put3(V& v, const Vec3& p) {
     v.push_back(p.z());
 }
 Vec3 get3(const Column<double>& v, std::size_t i) { return {v[3 * i], v[3 * i + 1], v[3 * i + 2]}; }
+Vec3 get3(const Vec3Column& v, std::size_t i) { return {v(i, 0), v(i, 1), v(i, 2)}; }
 }  // namespace
 
 void Path::reserve(std::size_t n) {
     kind.reserve(n);
-    for (auto* v : {&start, &end, &center, &abc, &tool_offset, &normal, &tool_axis}) v->reserve(3 * n);
+    for (auto* v : {&start, &end, &center, &tool_offset}) v->reserve(3 * n);
+    for (auto* v : {&abc, &normal, &tool_axis}) v->reserve(n);
     line.reserve(n);
     tool.reserve(n);
     turns.reserve(n);
@@ -34,10 +36,11 @@ void Path::push(const Motion& m) {
     put3(start, m.start * m.unit);
     put3(end, m.end * m.unit);
     put3(center, m.center * m.unit);
-    abc.insert(abc.end(), m.abc.begin(), m.abc.end());
+    abc.push(m.abc[0], m.abc[1], m.abc[2]);
     put3(tool_offset, m.tool_offset * m.unit);
-    put3(normal, m.surface.active() ? Vec3(m.surface.normal.normalized()) : m.surface.normal);
-    put3(tool_axis, m.tool_axis);
+    const Vec3 n = m.surface.active() ? Vec3(m.surface.normal.normalized()) : m.surface.normal;
+    normal.push(n.x(), n.y(), n.z());
+    tool_axis.push(m.tool_axis.x(), m.tool_axis.y(), m.tool_axis.z());
     line.push_back(m.line);
     tool.push_back(m.tool);
     turns.push_back(m.turns);
@@ -55,7 +58,7 @@ Motion Path::segment(std::size_t i) const {
     m.end = get3(end, i);
     m.center = get3(center, i);
     m.turns = turns[i];
-    m.abc = {abc[3 * i], abc[3 * i + 1], abc[3 * i + 2]};
+    m.abc = {abc(i, 0), abc(i, 1), abc(i, 2)};
     m.feed = feed[i];
     m.line = line[i];
     m.tool = tool[i];

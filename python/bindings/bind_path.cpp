@@ -23,6 +23,25 @@ py::array view(py::handle owner, const std::vector<T, A>& v, std::size_t n, std:
     return a;
 }
 
+// A Vec3Column: its rows, or while every row is the same, that one row repeated (stride 0).
+py::array view3(py::handle owner, const Vec3Column& v) {
+    const auto n = static_cast<py::ssize_t>(v.size());
+    if (!v.uniform()) {
+        py::array a(py::dtype::of<double>(), {n, py::ssize_t(3)}, {py::ssize_t(24), py::ssize_t(8)}, v.data(), owner);
+        py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
+        return a;
+    }
+    py::array_t<double> row(3);
+    std::copy(v.fill(), v.fill() + 3, row.mutable_data());
+    py::array a(py::dtype::of<double>(), {n, py::ssize_t(3)}, {py::ssize_t(0), py::ssize_t(8)}, row.data(), row);
+    py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
+    return a;
+}
+
+auto column3(Vec3Column Path::*member) {
+    return [member](py::object self) { return view3(self, self.cast<const Path&>().*member); };
+}
+
 template <class T>
 auto column(Column<T> Path::*member, std::size_t width) {
     return [member, width](py::object self) {
@@ -46,7 +65,7 @@ void bind_path(py::module_& m) {
                                "end point of each segment, float64 (N, 3), mm, program coordinates")
         .def_property_readonly("center", column(&Path::center, 3),
                                "arc centre, float64 (N, 3), mm, program coordinates; NaN for rapids and lines")
-        .def_property_readonly("abc", column(&Path::abc, 3),
+        .def_property_readonly("abc", column3(&Path::abc),
                                "rotary axes A B C at the segment end, float64 (N, 3), degrees")
         .def_property_readonly("line", column(&Path::line, 1),
                                "source line of the block, int32 (N,), 1-based; an inserted corner piece carries "
@@ -67,9 +86,9 @@ void bind_path(py::module_& m) {
         .def_property_readonly("plane", column(&Path::plane, 1),
                                "working plane of each segment: 0 XY (G17), 1 ZX (G18), 2 YZ (G19)")
         .def_property_readonly("turns", column(&Path::turns, 1), "arcs: extra full turns (LinuxCNC P word - 1)")
-        .def_property_readonly("normal", column(&Path::normal, 3),
+        .def_property_readonly("normal", column3(&Path::normal),
                                "surface normal of 3D-compensated segments (Heidenhain LN), unit length; NaN elsewhere")
-        .def_property_readonly("tool_axis", column(&Path::tool_axis, 3), "unit tool axis (tip towards the spindle)")
+        .def_property_readonly("tool_axis", column3(&Path::tool_axis), "unit tool axis (tip towards the spindle)")
         .def(
             "contact_points",
             [](const Path& p, double r, double r2) {

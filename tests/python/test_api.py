@@ -242,3 +242,15 @@ def test_syntax_errors_are_met_when_the_run_reaches_them(tmp_path):
     # After M2 the control reads no further: a bad line there is no error.
     f.write_text("G21 G0 X1\nM2\nG1 X3 & Y1\n")
     assert tc.run(f).ok
+
+
+def test_constant_columns_are_stride_0_views_until_they_vary():
+    # abc is the same on every row here: a read-only view of one row repeated; a program
+    # that moves A gets its rows stored.
+    res = tc.run(tc.Program.parse("G21 G0 X1\nX2\nM2\n"))
+    assert res.path.abc.strides[0] == 0 and res.path.abc.shape == (2, 3)
+    assert not res.path.abc.flags.writeable
+    np.testing.assert_array_equal(res.path.tool_axis, [[0, 0, 1], [0, 0, 1]])
+    res = tc.run(tc.Program.parse("G21 G0 X1\nX2 A90\nM2\n"))
+    np.testing.assert_array_equal(res.path.abc, [[0, 0, 0], [90, 0, 0]])
+    assert res.path.abc.strides[0] == 24

@@ -4,6 +4,7 @@
 // Three-vectors are stored row-major (x0 y0 z0 x1 y1 z1 ...) so that Python sees (N, 3)
 // float64 arrays without a copy.
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "toolcomp/column.hpp"
@@ -12,9 +13,14 @@
 namespace toolcomp {
 
 class Path : public MotionSink {
+    static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
 public:
     Column<std::uint8_t> kind;
-    Column<double> start, end, center, abc, tool_offset, normal, tool_axis;  // 3 per segment
+    Column<double> start, end, center, tool_offset;  // 3 per segment
+    Vec3Column abc{0, 0, 0};                          // degrees
+    Vec3Column normal{kNaN, kNaN, kNaN};              // unit surface normal (3D compensation)
+    Vec3Column tool_axis{0, 0, 1};
     Column<std::int32_t> line, tool, turns;
     Column<double> feed;
     Column<std::int8_t> side;
