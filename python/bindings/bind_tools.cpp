@@ -180,8 +180,9 @@ void bind_tools(py::module_& m) {
                 write_tool_table_file(t, path.string(), f);
             },
             py::arg("path"), py::arg("format") = py::none(),
-            "Write the table (temporary file + rename: the old file is never lost); format from the "
-            "suffix unless given. Unchanged tools keep their original text.")
+            "Write the table (temporary file, fsync, rename: the file is always the complete old or new "
+            "table); format from the suffix unless given. Unchanged tools keep their original text. "
+            "A second writer of the same table meanwhile raises ToolTableError('table_locked').")
         .def(
             "dumps",
             [](const ToolTable& t, const std::string& format) {

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+
+#include "toolcomp/program/diagnostic.hpp"
 
 namespace toolcomp {
 
@@ -48,9 +51,22 @@ double arc_length(const Arc& a) {
 int arc_chords(const Arc& a, double tolerance) {
     double r = std::max(arc_start_radius(a), arc_end_radius(a));
     double sweep = arc_sweep(a);
-    if (r <= tolerance || tolerance <= 0) return std::max(1, static_cast<int>(std::ceil(sweep / (kPi / 8))));
-    double step = 2 * std::acos(1 - tolerance / r);
-    return std::max(1, static_cast<int>(std::ceil(sweep / step)));
+    double n = 0;
+    if (r <= tolerance || tolerance <= 0) {
+        n = std::ceil(sweep / (kPi / 8));
+    } else {
+        double step = 2 * std::acos(1 - tolerance / r);
+        n = std::ceil(sweep / step);
+    }
+    // A helix of a million turns sampled at 1 µm would need more points than memory holds
+    // (and more than an int counts): refuse it instead (also a NaN count).
+    constexpr double kMaxChords = 50'000'000;
+    if (!(n <= kMaxChords))
+        throw Error(ErrorKind::generic, "sample_too_fine",
+                    "An arc would need more than 50 million chords at tolerance " + std::to_string(tolerance) +
+                        " (sweep " + std::to_string(sweep) + " rad, radius " + std::to_string(r) +
+                        "): sample with a coarser tolerance");
+    return std::max(1, static_cast<int>(n));
 }
 
 std::optional<Vec2> center_from_radius(const Vec2& s, const Vec2& e, double R, int dir) {

@@ -1,4 +1,13 @@
 // Reading and safely replacing tool-table files.
+//
+// A write never leaves a half-written table behind, even when the process is killed: the
+// new text goes to a temporary file in the same directory, which is fsynced and renamed
+// over the table (rename is atomic), and the directory is fsynced. Two writers of one table
+// would otherwise race on that temporary file and on which rename wins, so a writer first
+// takes an exclusive flock() on "<table>.lock" and a second writer fails at once with
+// ToolTableError("table_locked"). flock() locks die with their process, so a writer killed
+// mid-save leaves at most a stale lock file and a stale temporary file, both of which the
+// next writer reuses. Reading opens the table read-only and takes no lock.
 #include "toolcomp/program/diagnostic.hpp"
 #include "toolcomp/tools/tool_table.hpp"
 
@@ -7,6 +16,7 @@
 #include <cstring>
 #include <fcntl.h>
 #include <string>
+#include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -50,6 +60,46 @@ void write_all(int fd, const std::string& data, const std::string& path) {
     }
 }
 
+// An exclusive lock on "<table>.lock" for the time of one write. The lock file is removed
+// (while still locked) when the write is done. A writer that opened the file before its
+// removal then holds a lock on an unlinked file: it must check that the file it locked is
+// still the one at the lock path, and start again otherwise.
+class WriterLock {
+public:
+    WriterLock(const std::string& table_path) : path_(table_path + ".lock") {
+        for (int attempt = 0; attempt < 1000; ++attempt) {
+            fd_ = ::open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0666);
+            if (fd_ < 0) fail("cannot create the lock file", path_, errno);
+            if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+                const int err = errno;
+                ::close(fd_);
+                if (err == EWOULDBLOCK || err == EINTR)
+                    throw ToolTableError("table_locked", "tool table '" + table_path +
+                                                             "' is being written by another writer (lock file '" +
+                                                             path_ + "'); try again when it has finished");
+                fail("cannot lock", path_, err);
+            }
+            struct stat held {}, now {};
+            if (::fstat(fd_, &held) == 0 && ::stat(path_.c_str(), &now) == 0 && held.st_dev == now.st_dev &&
+                held.st_ino == now.st_ino)
+                return;
+            ::close(fd_);  // locked a lock file that its last holder had just removed
+        }
+        throw ToolTableError("table_locked", "cannot lock tool table '" + table_path + "' (lock file '" + path_ +
+                                                 "' keeps being replaced)");
+    }
+    ~WriterLock() {
+        ::unlink(path_.c_str());  // before closing: nobody else holds the lock yet
+        ::close(fd_);
+    }
+    WriterLock(const WriterLock&) = delete;
+    WriterLock& operator=(const WriterLock&) = delete;
+
+private:
+    std::string path_;
+    int fd_ = -1;
+};
+
 }  // namespace
 
 ToolTable read_tool_table_file(const std::string& path, std::optional<TableFormat> format, LengthUnit units) {
@@ -66,12 +116,16 @@ void write_tool_table_file(const ToolTable& table, const std::string& path, std:
     const auto slash = path.find_last_of('/');
     const std::string dir = slash == std::string::npos ? "." : (slash == 0 ? "/" : path.substr(0, slash));
     const std::string base = slash == std::string::npos ? path : path.substr(slash + 1);
-    std::string tmp = dir + "/." + base + ".tmpXXXXXX";
-    const int fd = ::mkstemp(tmp.data());
+    const WriterLock lock(path);
+    // One temporary name per table: under the lock nobody else uses it, and a file left
+    // there by a writer that was killed is simply replaced.
+    const std::string tmp = dir + "/." + base + ".tmp";
+    if (::unlink(tmp.c_str()) != 0 && errno != ENOENT) fail("cannot remove the old temporary file", tmp, errno);
+    const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC | O_NOFOLLOW, 0600);
     if (fd < 0) fail("cannot create a temporary file for", path, errno);
     bool fd_open = true;
     try {
-        // Keep the permissions of the file being replaced (mkstemp creates 0600).
+        // Keep the permissions of the file being replaced (the temporary file starts as 0600).
         struct stat st {};
         if (::stat(path.c_str(), &st) == 0) {
             ::fchmod(fd, st.st_mode & 07777);

@@ -24,7 +24,8 @@ double arc_sweep(const Arc& a);
 Vec3 arc_point(const Arc& a, double u);
 // Length of the (possibly helical) arc.
 double arc_length(const Arc& a);
-// Number of chords so that no chord deviates more than `tolerance` from the arc.
+// Number of chords so that no chord deviates more than `tolerance` from the arc; throws
+// Error("sample_too_fine") beyond 50 million chords.
 int arc_chords(const Arc& a, double tolerance);
 
 // Centre of the arc of signed radius R from s to e (plane coordinates), direction dir:

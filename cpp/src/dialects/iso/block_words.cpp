@@ -1,6 +1,7 @@
 #include "block_words.hpp"
 
 #include <cctype>
+#include <climits>
 #include <cmath>
 #include <string>
 
@@ -22,7 +23,7 @@ std::string code_text(char letter, int code10) {
 void add_g(BlockWords& bw, const Word& w, Dialect d) {
     double v10 = w.value * 10;
     if (w.value < 0) fail("negative_g_code", "Negative g code used", bw.line, w.column);
-    int code = static_cast<int>(std::lround(v10));
+    int code = int_value(v10);
     if (code > 9999) fail("g_code_out_of_range", "G-code out of range", bw.line, w.column);
     if (std::fabs(v10 - code) > 1e-6) fail("unknown_g_code", "Unknown g code used", bw.line, w.column);
     int group = g_group(code, d);
@@ -45,9 +46,10 @@ void add_m(BlockWords& bw, const Word& w, Dialect d) {
     if (w.value < 0) fail("negative_m_code", "Negative m code used", bw.line, w.column);
     if (std::fabs(w.value - std::round(w.value)) > 1e-9)
         fail("non_integer_value", "Non integer value for integer", bw.line, w.column);
-    int m = static_cast<int>(std::lround(w.value));
+    int m = int_value(w.value);
     if (m > 199 && d == Dialect::linuxcnc)
         fail("m_code_out_of_range", "M-code greater than 199: M" + std::to_string(m), bw.line, w.column);
+    if (m > 99999) fail("unknown_m_code", "Unknown m code used: M" + std::to_string(m), bw.line, w.column);
     int group = m_group(m * 10, d);
     if (group == kUnknown) fail("unknown_m_code", "Unknown m code used: M" + std::to_string(m), bw.line, w.column);
     if (group == kUnsupported)
@@ -60,6 +62,14 @@ void add_m(BlockWords& bw, const Word& w, Dialect d) {
 }
 
 }  // namespace
+
+int int_value_truncated(double v) {
+    if (!(v > static_cast<double>(INT_MIN) - 1)) return INT_MIN;  // also NaN
+    if (v >= static_cast<double>(INT_MAX) + 1) return INT_MAX;
+    return static_cast<int>(v);
+}
+
+int int_value(double v) { return int_value_truncated(std::round(v)); }
 
 int BlockWords::axis_column() const {
     int col = 0;

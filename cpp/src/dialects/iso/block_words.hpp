@@ -35,4 +35,12 @@ struct BlockWords {
 
 BlockWords collect_words(const Program& prog, const Block& block);
 
+// The value of a word that is an integer (T, D, H, L, P, Q, M, G x 10), rounded to the
+// nearest (`int_value`) or truncated (`int_value_truncated`, LinuxCNC's reading of G10's P).
+// Values beyond the int range saturate at INT_MIN / INT_MAX (NaN gives INT_MIN), where the
+// word's own range check rejects them, instead of wrapping round to a small valid number
+// (T4294967297 is not tool 1) or converting with undefined behaviour.
+int int_value(double v);
+int int_value_truncated(double v);
+
 }  // namespace toolcomp::iso

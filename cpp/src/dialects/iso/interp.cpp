@@ -64,12 +64,20 @@ void Interp::info(const char* code, const std::string& msg, int column) {
     diags_.push_back({code, Severity::info, msg, {line_, column}});
 }
 
+void Interp::count_block(int column) {
+    if (++executed_ > profile_.block_limit)
+        fail("block_limit", "More than " + std::to_string(profile_.block_limit) +
+                                " blocks executed, canned cycle repeats included (ControlProfile.block_limit)",
+             column);
+}
+
 void Interp::run() {
     std::size_t read = 0;
     for (const Block& block : prog_.blocks()) {
         if (opts_.progress && ++read % opts_.progress_every == 0) opts_.progress(read);
         if (block.block_delete && opts_.block_delete) continue;
         line_ = block.line;
+        count_block();
         BlockWords bw = collect_words(prog_, block);
         for (const Comment& c : prog_.comments(block)) {
             std::string head = lower_prefix(c.text, 6);
@@ -221,7 +229,7 @@ bool Interp::execute(const BlockWords& bw) {
         if (g0 == 100) {
             if (!profile_.radius.messages.g10.empty())
                 fail("comp_g10", profile_.radius.messages.g10, bw.g_column[g_nonmodal]);
-            const int p = bw.has('P') ? static_cast<int>(bw['P'].value) : -1;
+            const int p = bw.has('P') ? int_value_truncated(bw['P'].value) : -1;
             if (p == 0 || p == st_.coord_system)
                 fail("comp_g10", "Cannot change the active coordinate system with cutter radius compensation on",
                      bw.g_column[g_nonmodal]);

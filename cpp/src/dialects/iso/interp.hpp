@@ -50,6 +50,10 @@ private:
     void check_words(const BlockWords& bw, int motion_to_be);
     [[noreturn]] void fail(const char* code, const std::string& msg, int column = 0) const;
     void info(const char* code, const std::string& msg, int column = 0);
+    // One more block executed (every block read, and every repeat of a canned cycle after
+    // its first): beyond ControlProfile::block_limit the run stops with "block_limit"
+    // instead of running (and collecting moves) for hours.
+    void count_block(int column = 0);
 
     // ---- units and coordinates -----------------------------------------------------------
     double scale() const { return st_.inch ? kMmPerInch : 1.0; }
@@ -114,6 +118,7 @@ private:
     std::vector<Diagnostic>& diags_;
 
     int line_ = 0;  // current block's source line
+    std::size_t executed_ = 0;  // blocks executed, cycle repeats included (count_block)
     ModalState st_;
     Vec6 pos_ = Vec6::Zero();
     std::array<Vec6, 9> g5x_;

@@ -24,7 +24,7 @@ void Interp::cycle(const BlockWords& bw, int code) {
     if (st_.feed_mode == 930) fail("cycle_inverse_time", "Cannot use inverse time feed with canned cycles");
     int repeats = 1;
     if (bw.has('L')) {
-        repeats = static_cast<int>(std::lround(bw['L'].value));
+        repeats = int_value(bw['L'].value);
         if (repeats < 0) fail("negative_l", "Negative l word used", bw['L'].column);
         if (repeats == 0) fail("zero_repeats", "Cannot do zero repeats of cycle", bw['L'].column);
     }
@@ -104,6 +104,7 @@ void Interp::cycle(const BlockWords& bw, int code) {
     const double feed = feed_for(bw, 10, 0);
     const double rapid_delta = st_.inch ? 0.010 : 0.010 * kMmPerInch;  // LinuxCNC's G83_RAPID_DELTA
     for (int rep = 0; rep < repeats; ++rep) {
+        if (rep > 0) count_block(bw['L'].column);
         a += da;
         b += db;
         // To the hole at the current level, but never below the clearance level (LinuxCNC

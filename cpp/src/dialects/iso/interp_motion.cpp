@@ -128,7 +128,7 @@ void Interp::motion_arc(const BlockWords& bw, int code) {
         double pv = bw['P'].value;
         if (std::fabs(pv - std::round(pv)) > 1e-9)
             fail("arc_p_not_integer", "P value not an integer with M19 G2 or G3", bw['P'].column);
-        p = static_cast<int>(std::lround(pv));
+        p = int_value(pv);
         if (p < 1) fail("arc_p_not_positive", "P value should be 1 or greater with G2 or G3", bw['P'].column);
     }
 

@@ -38,12 +38,12 @@ void Interp::set_coord_system(int n) { change_offset(st_.coord_system, n); }
 void Interp::g10(const BlockWords& bw) {
     const int col = bw.g_column[g_nonmodal];
     if (!bw.has('L')) fail("g10_bad_l", "Line with G10 does not have L0, L1, L10, L11, L2, or L20", col);
-    int l = static_cast<int>(std::lround(bw['L'].value));
+    int l = int_value(bw['L'].value);
     if (l == 0 || l == 1 || l == 10 || l == 11)
         fail("unsupported_g10", "G10 L" + std::to_string(l) + " (tool table edit) is not supported by toolcomp", col);
     if (l != 2 && l != 20) fail("g10_bad_l", "Line with G10 does not have L0, L1, L10, L11, L2, or L20", col);
     const std::string which = l == 2 ? "G10 L2" : "G10 L20";
-    int p = bw.has('P') ? static_cast<int>(bw['P'].value) : -1;  // the control truncates P
+    int p = bw.has('P') ? int_value_truncated(bw['P'].value) : -1;  // the control truncates P
     if (!bw.has('P') || p < 0 || p > 9) fail("g10_bad_p", "P value out of range (0-9) with " + which, col);
     if (l == 2 && (bw.has('I') || bw.has('J'))) fail("g10_ij", "I J words not allowed with G10 L2", col);
     if (l == 20 && bw.has('R')) fail("g10_l20_r", "R not allowed in G10 L20", bw['R'].column);

@@ -33,7 +33,7 @@ void Interp::radius_comp(const BlockWords& bw, int code) {
         radius = bw['D'].value / 2;  // program units
         if (bw.has('L')) {
             if (st_.plane != Plane::zx) fail("comp_l_not_g18", name + " with L word, but plane is not G18", bw['L'].column);
-            orientation = static_cast<int>(std::lround(bw['L'].value));
+            orientation = int_value(bw['L'].value);
         }
     } else if (profile_.t_offsets) {
         if (bw.has('D'))
@@ -49,7 +49,7 @@ void Interp::radius_comp(const BlockWords& bw, int code) {
             if (std::fabs(d - std::round(d)) > 1e-9)
                 fail("comp_d_not_integer", name + " requires D word to be a whole number", bw['D'].column);
             if (d < 0) fail("comp_negative_d", "Negative d word tool radius index used", bw['D'].column);
-            tool = static_cast<int>(std::lround(d));
+            tool = int_value(d);
         }
         if (tool != 0 && tools_) {
             const Tool* t = tools_->find(tool);

@@ -58,7 +58,7 @@ Interp::OffsetValues Interp::offset_values() const {
 }
 
 void Interp::select_tool(const BlockWords& bw) {
-    int t = static_cast<int>(std::lround(bw['T'].value));
+    int t = int_value(bw['T'].value);
     if (profile_.t_offsets) {
         // Lathe turret: the turret indexes and the offsets apply at once. The T word is
         // <tool><offset> with the profile's format (geometry and wear numbers).
@@ -96,7 +96,7 @@ void Interp::change_tool(const BlockWords& bw, int mcode) {
     // M61 Q: tell the control which tool is in the spindle, without a change.
     if (!bw.has('Q') || bw['Q'].value < 0 || std::fabs(bw['Q'].value - std::round(bw['Q'].value)) > 1e-9)
         fail("m61_q", "Need non-negative Q-word to specify tool number with M61", bw.m_column[m_tool_change]);
-    int t = static_cast<int>(std::lround(bw['Q'].value));
+    int t = int_value(bw['Q'].value);
     if (t != 0 && tools_ && !tools_->find(t))
         fail("tool_not_found", "Requested tool " + std::to_string(t) + " not found in the tool table",
              bw['Q'].column);
@@ -109,7 +109,7 @@ void Interp::length_comp(const BlockWords& bw, int code) {
     auto h_tool = [&]() {
         double h = bw['H'].value;
         if (std::fabs(h - std::round(h)) > 1e-9) fail("non_integer_value", "Non integer value for integer", bw['H'].column);
-        int t = static_cast<int>(std::lround(h));
+        int t = int_value(h);
         if (t < 0) fail("tool_not_found", "Requested tool " + std::to_string(t) + " not found in the tool table", bw['H'].column);
         return t;
     };

@@ -1,0 +1,7 @@
+// libFuzzer target: the json tool-table reader and the writers (see fuzz_targets.hpp).
+#include "fuzz_targets.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    (void)toolcomp::fuzz::table(toolcomp::TableFormat::json, data, size);
+    return 0;
+}

@@ -1,0 +1,194 @@
+#pragma once
+// What each fuzz target does with one input, shared by the libFuzzer executables (fuzz/*.cpp)
+// and the regression test that replays saved inputs (tests/cpp/test_fuzz_regressions.cpp).
+//
+// Every function returns Outcome::ok when the input went through and Outcome::error when it
+// was rejected with a toolcomp::Error, the documented way to refuse input. Anything else
+// (another exception, a sanitizer report, a crash, a hang) is a bug.
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "toolcomp/compensation/profile.hpp"
+#include "toolcomp/dialects/heidenhain/lexer.hpp"
+#include "toolcomp/dialects/iso/lexer.hpp"
+#include "toolcomp/dialects/sinumerik/lexer.hpp"
+#include "toolcomp/program/diagnostic.hpp"
+#include "toolcomp/run.hpp"
+#include "toolcomp/tools/sinumerik_edge.hpp"
+#include "toolcomp/tools/tool_table.hpp"
+
+namespace toolcomp::fuzz {
+
+enum class Outcome { ok, error };
+
+inline std::string_view as_text(const std::uint8_t* data, std::size_t size) {
+    return {reinterpret_cast<const char*>(data), size};
+}
+
+template <class F>
+Outcome ok_or_error(F&& f) {
+    try {
+        f();
+        return Outcome::ok;
+    } catch (const Error&) {
+        return Outcome::error;
+    }
+}
+
+// ---- front ends -------------------------------------------------------------------------
+
+// ISO word-address front end. First byte: dialect (% 3: linuxcnc, fanuc, rockwell) and
+// strict (/ 3 even) or lenient parsing; the rest is the program text.
+inline Outcome iso_parse(const std::uint8_t* data, std::size_t size) {
+    if (size < 1) return Outcome::ok;
+    static constexpr Dialect dialects[] = {Dialect::linuxcnc, Dialect::fanuc, Dialect::rockwell};
+    const Dialect d = dialects[data[0] % 3];
+    const bool strict = (data[0] / 3) % 2 == 0;
+    const std::string_view text = as_text(data + 1, size - 1);
+    return ok_or_error([&] { (void)iso::parse(text, d, "<fuzz>", strict); });
+}
+
+// Heidenhain conversational front end; the last byte's low bit parses leniently.
+inline Outcome heidenhain_parse(const std::uint8_t* data, std::size_t size) {
+    const std::string_view text = as_text(data, size);
+    const bool strict = size == 0 || (data[size - 1] & 1) == 0;
+    return ok_or_error([&] { (void)heidenhain::parse(text, "<fuzz>", strict); });
+}
+
+// Sinumerik 840D front end; the last byte's low bit parses leniently.
+inline Outcome sinumerik_parse(const std::uint8_t* data, std::size_t size) {
+    const std::string_view text = as_text(data, size);
+    const bool strict = size == 0 || (data[size - 1] & 1) == 0;
+    return ok_or_error([&] { (void)sinumerik::parse(text, "<fuzz>", strict); });
+}
+
+// ---- the whole pipeline -----------------------------------------------------------------
+
+// Mill tools 1-8 (end mills, toroid, ball, zero radius, a radius that wear makes negative),
+// lathe offsets 10-19 (every tip number, with wear) and a two-edge tool 20.
+inline const ToolTable& pipeline_tools() {
+    static const ToolTable t = [] {
+        ToolTable tt;
+        auto add = [&](int n, double x, double z, double r, double r2, int tip, double rw, double zw) {
+            Tool tool;
+            tool.number = n;
+            tool.pocket = n;
+            CuttingEdge& e = tool.edges.front();
+            e.length = {x, 0, z};
+            e.radius = r;
+            e.corner_radius = r2;
+            e.orientation = tip;
+            e.radius_wear = rw;
+            e.length_wear = {0.01, 0, zw};
+            tt.set(tool);
+        };
+        add(1, 0, 50, 5, 0, 0, 0, 0);
+        add(2, 0, 40, 3, 1, 0, -0.02, 0.05);
+        add(3, 0, 75, 4, 4, 0, 0, 0);
+        add(4, 0.5, 30, 0.5, 0, 0, 0, 0);
+        add(5, 0, 100, 10, 2, 0, 0.1, -0.1);
+        add(6, 0, 25, 1, 0, 0, 0, 0);
+        add(7, 0, 20, 0, 0, 0, 0, 0);
+        add(8, 0, 20, 0.1, 0, 0, -0.2, 0);
+        for (int tip = 0; tip <= 9; ++tip) add(10 + tip, -2.5 + tip, 1.25 * tip, 0.8, 0, tip, 0.005, -0.01);
+        Tool multi;
+        multi.number = 20;
+        multi.edges.front().radius = 2;
+        CuttingEdge e2;
+        e2.number = 2;
+        e2.radius = 2.5;
+        e2.length = {0, 0, 10};
+        multi.set_edge(e2);
+        tt.set(multi);
+        return tt;
+    }();
+    return t;
+}
+
+// Parse + run with pipeline_tools(). First byte: % 8 picks dialect and profile
+//   0 linuxcnc, 1 fanuc mill, 2 fanuc lathe, 3 rockwell, 4 heidenhain,
+//   5 linuxcnc program under the sinumerik profile, 6 linuxcnc under the fanuc profile, 7 sinumerik;
+// bit 3 runs lenient (strict = false), bit 4 skips '/' blocks.
+inline Outcome pipeline(const std::uint8_t* data, std::size_t size) {
+    if (size < 1) return Outcome::ok;
+    const unsigned sel = data[0];
+    const std::string_view text = as_text(data + 1, size - 1);
+    Dialect d = Dialect::linuxcnc;
+    std::optional<ControlProfile> prof;
+    switch (sel % 8) {
+        case 1: d = Dialect::fanuc; break;
+        case 2: d = Dialect::fanuc; prof = profile_for(Dialect::fanuc, Machine::lathe); break;
+        case 3: d = Dialect::rockwell; break;
+        case 4: d = Dialect::heidenhain; break;
+        case 5: prof = profile_for(Dialect::sinumerik); break;
+        case 6: prof = profile_for(Dialect::fanuc); break;
+        case 7: d = Dialect::sinumerik; break;
+        default: break;
+    }
+    if (!prof) prof = profile_for(d);
+    // Loops and repeats stop with an error here instead of taking the fuzzer's time.
+    prof->block_limit = 20000;
+    RunOptions opt;
+    opt.strict = (sel & 8) == 0;
+    opt.block_delete = (sel & 16) != 0;
+    opt.profile = *prof;
+    return ok_or_error([&] {
+        const Program p = parse_program(text, d, "<fuzz>", opt.strict);
+        const Result r = run(p, &pipeline_tools(), opt);
+        (void)r.ok();
+    });
+}
+
+// ---- tool tables --------------------------------------------------------------------------
+
+// Read; write back in the same format (the lossless path) and read that again; change one
+// tool, remove one, add one and write (the partial-rewrite path); convert to every other
+// format (the canonical writers). The last byte's low bit reads the lengths as inches.
+inline Outcome table(TableFormat format, const std::uint8_t* data, std::size_t size) {
+    const std::string_view text = as_text(data, size);
+    const LengthUnit units = size > 0 && (data[size - 1] & 1) ? LengthUnit::inch : LengthUnit::mm;
+    ToolTable t;
+    if (ok_or_error([&] { t = read_tool_table(text, format, units); }) == Outcome::error) return Outcome::error;
+    ok_or_error([&] { (void)read_tool_table(write_tool_table(t, format), format, units); });
+    ok_or_error([&] {
+        ToolTable edited = t;
+        if (!edited.empty()) {
+            Tool first = edited.tools().front();
+            first.comment += " x";
+            first.edges.front().radius += 0.125;
+            first.edges.front().length.z() -= 1.5;
+            edited.set(first);
+            if (edited.size() > 1) edited.remove(edited.tools().back().number);
+        }
+        Tool added;
+        added.number = 9999;
+        added.edges.front().radius = 1.25;
+        added.edges.front().length.z() = 42;
+        edited.set(added);
+        (void)read_tool_table(write_tool_table(edited, format), format, units);
+    });
+    for (TableFormat other : {TableFormat::linuxcnc, TableFormat::csv, TableFormat::json, TableFormat::heidenhain,
+                              TableFormat::sinumerik})
+        if (other != format) ok_or_error([&] { (void)write_tool_table(t, other); });
+    return Outcome::ok;
+}
+
+// Sinumerik tool data ("$TC_DPn[t,d]=value" lines): parse, the totals of every edge, write,
+// parse again.
+inline Outcome tc_dp(const std::uint8_t* data, std::size_t size) {
+    const std::string_view text = as_text(data, size);
+    return ok_or_error([&] {
+        const sinumerik::SinumerikEdgeMap edges = sinumerik::parse_tc_dp(text);
+        for (const auto& [key, e] : edges) {
+            (void)e.length(1);
+            (void)e.radius(-1.0, 0.5);
+            (void)sinumerik::tool_length_vector(e, Plane::zx);
+        }
+        (void)sinumerik::parse_tc_dp(sinumerik::write_tc_dp(edges));
+    });
+}
+
+}  // namespace toolcomp::fuzz
