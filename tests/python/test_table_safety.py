@@ -57,14 +57,20 @@ def kill_saves(path, kills, seed):
     interrupted, torn, stopped = 0, [], 0
     folder = Path(path).parent
     for _ in range(kills):
+        ready_r, ready_w = os.pipe()
         pid = os.fork()
-        if pid == 0:  # the writer
+        if pid == 0:  # the writer: saves until killed, telling after each round
             try:
+                os.close(ready_r)
                 while True:
                     new.write(path)
                     old.write(path)
+                    os.write(ready_w, b"x")  # a round of saves done (the pipe holds 64 KB)
             finally:
                 os._exit(1)
+        os.close(ready_w)
+        os.read(ready_r, 1)  # the writer runs at full speed: it has finished a round
+        os.close(ready_r)
         time.sleep(rng.uniform(0, 1.5 * save))
         os.kill(pid, signal.SIGKILL)
         _, status = os.waitpid(pid, 0)
@@ -74,7 +80,8 @@ def kill_saves(path, kills, seed):
             torn.append(len(data))
         if (folder / "tools.tbl.lock").exists() or (folder / ".tools.tbl.tmp").exists():
             interrupted += 1  # killed inside a save
-    json.dump({"interrupted": interrupted, "torn": torn, "stopped": stopped,
+    json.dump({"interrupted": interrupted, "torn": torn, "stopped": stopped, "save": save,
+               "files": sorted(os.listdir(folder)),
                "distinct": old_bytes != new_bytes, "size": len(new_bytes)}, sys.stdout)
 
 
@@ -92,7 +99,7 @@ def test_killed_saves_leave_the_old_or_the_new_table(tmp_path):
     assert r["distinct"] and r["size"] > 500_000
     assert r["stopped"] == 0, "the writer stopped on its own (a save failed?)"
     assert r["torn"] == [], f"torn tables: {r['torn']}"
-    assert r["interrupted"] >= KILLS // 10, f"only {r['interrupted']} of {KILLS} kills hit a save"
+    assert r["interrupted"] >= KILLS // 10, f"only {r['interrupted']} of {KILLS} kills hit a save: {r}"
     old, new = big_tables()
     new_bytes = new.dumps("linuxcnc").encode()
 

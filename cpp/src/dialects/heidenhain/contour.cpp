@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "interp.hpp"
+#include "toolcomp/program/int_value.hpp"
 #include "toolcomp/geometry/arc.hpp"
 #include "toolcomp/geometry/element.hpp"
 
@@ -300,7 +301,7 @@ void Interp::polar_arc(Tokens t) {
     if (auto v = number(t, "IPA")) {
         pa = a0 + *v;
         if (std::fabs(*v) > 5400) fail("helix_angle", "The helix angle is limited to 5400 degrees", t[0].column);
-        turns = std::max(0, static_cast<int>(std::floor((std::fabs(*v) - 1e-9) / 360)));
+        turns = std::max(0, int_value_truncated(std::floor((std::fabs(*v) - 1e-9) / 360)));
     }
     Vec3 end = end_point(t, 1);
     end = with_plane(end, *pole_ + r * Vec2(std::cos(rad(pa)), std::sin(rad(pa))));

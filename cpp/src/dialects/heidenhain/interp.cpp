@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "interp.hpp"
+#include "toolcomp/program/int_value.hpp"
 #include "qparams.hpp"
 #include "toolcomp/dialects/heidenhain/lexer.hpp"
 #include "toolcomp/tools/tool_table.hpp"
@@ -83,14 +84,14 @@ void Interp::modal_words(Tokens t, std::size_t from) {
         } else if (k.key == "FAUTO") {
             fail("unsupported_word", "FAUTO is not supported by toolcomp", k.column);
         } else if (k.key == "M" && k.has_value) {
-            const int m = static_cast<int>(k.value);
+            const int m = int_value_truncated(k.value);
             switch (m) {
                 case 97: corner_ = static_cast<std::int8_t>(OutsideCorner::intersection); break;
                 case 98: open_corner_ = true; break;
                 case 120: {
                     const Token* la = find(t, "LA");
-                    lookahead_ = la && la->has_value ? static_cast<int>(la->value) : 0;
-                    if (lookahead_ > 99) fail("bad_lookahead", "M120 LA allows at most 99 blocks", la->column);
+                    lookahead_ = la && la->has_value ? int_value_truncated(la->value) : 0;
+                    if (lookahead_ > 99 || lookahead_ < 0) fail("bad_lookahead", "M120 LA allows 0 to 99 blocks", la->column);
                     break;
                 }
                 case 107: m107_ = true; break;
@@ -142,7 +143,9 @@ void Interp::tool_def(Tokens t) {
     d.length = number(t, "L").value_or(0);
     d.radius = number(t, "R").value_or(0);
     d.r2 = number(t, "R2").value_or(0);
-    defs_[static_cast<int>(t[2].value)] = d;
+    if (!(t[2].value >= 0 && t[2].value <= 32767))
+        fail("tool_def", "TOOL DEF: tool number out of range 0..32767", t[2].column);
+    defs_[int_value(t[2].value)] = d;
 }
 
 // TOOL CALL n|"name" X|Y|Z [S] [F] [DL] [DR] [DR2]: the tool axis sets the working plane;
@@ -154,7 +157,9 @@ void Interp::tool_call(Tokens t) {
     if (i < t.size() && t[i].key.empty() && t[i].has_value) {
         if (std::fabs(t[i].value - std::round(t[i].value)) > 1e-9)
             fail("unsupported_tool_index", "Tool indexes (TOOL CALL n.i) are not supported by toolcomp", t[i].column);
-        number_ = static_cast<int>(t[i].value);
+        if (!(t[i].value >= 0 && t[i].value <= 32767))
+            fail("tool_call", "TOOL CALL: tool number out of range 0..32767", t[i].column);
+        number_ = int_value(t[i].value);
         ++i;
     } else if (i < t.size() && !t[i].text.empty()) {
         if (tools_)
@@ -294,7 +299,7 @@ bool Interp::run_blocks(const Program& prog, int depth) {
     for (std::size_t i = 0; i < blocks.size(); ++i) {
         auto t = prog.tokens(blocks[i]);
         if (t.size() >= 2 && t[0].key == "LBL" && t[1].has_value && t[1].value != 0)
-            labels[static_cast<int>(t[1].value)] = i;
+            labels[int_value(t[1].value)] = i;
     }
     auto label = [&](int n, const Token& at) {
         auto it = labels.find(n);
@@ -331,13 +336,13 @@ bool Interp::run_blocks(const Program& prog, int depth) {
             continue;
         }
         if (k0 == "CALL" && t.size() >= 3 && t[1].key == "LBL" && t[2].has_value) {
-            const std::size_t target = label(static_cast<int>(t[2].value), t[2]) + 1;
+            const std::size_t target = label(int_value(t[2].value), t[2]) + 1;
             if (const Token* rep = find(t, "REP")) {
                 // REP m, or REP followed by the count as a separate number (REP 2/2)
                 double m = rep->has_value ? rep->value : 0;
                 if (!rep->has_value && rep + 1 < t.data() + t.size() && rep[1].key.empty() && rep[1].has_value)
                     m = rep[1].value;
-                auto [it, fresh] = repeats.try_emplace(pc, static_cast<int>(m));
+                auto [it, fresh] = repeats.try_emplace(pc, int_value_truncated(m));
                 if (it->second > 0) {
                     --it->second;
                     pc = target;  // run the section between LBL n and this block again

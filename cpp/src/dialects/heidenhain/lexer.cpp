@@ -129,6 +129,7 @@ private:
             ++i_;
             std::string digits;
             while (i_ < s_.size() && std::isdigit(static_cast<unsigned char>(s_[i_]))) digits.push_back(s_[i_++]);
+            if (digits.size() > 5) fail("bad_word", "Q parameter number Q" + digits + " out of range", col());
             t.param = std::stoi(digits);
             t.value = sign;
             t.has_value = true;

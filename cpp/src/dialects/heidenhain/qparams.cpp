@@ -52,6 +52,7 @@ public:
         std::size_t st = i_;
         while (i_ < s_.size() && std::isdigit(static_cast<unsigned char>(s_[i_]))) ++i_;
         if (st == i_) throw std::invalid_argument("number expected");
+        if (i_ - st > 6) throw std::invalid_argument("number " + std::string(s_.substr(st, i_ - st)) + " out of range");
         return std::stoi(std::string(s_.substr(st, i_ - st)));
     }
     bool done() {

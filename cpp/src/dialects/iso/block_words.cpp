@@ -63,14 +63,6 @@ void add_m(BlockWords& bw, const Word& w, Dialect d) {
 
 }  // namespace
 
-int int_value_truncated(double v) {
-    if (!(v > static_cast<double>(INT_MIN) - 1)) return INT_MIN;  // also NaN
-    if (v >= static_cast<double>(INT_MAX) + 1) return INT_MAX;
-    return static_cast<int>(v);
-}
-
-int int_value(double v) { return int_value_truncated(std::round(v)); }
-
 int BlockWords::axis_column() const {
     int col = 0;
     for (char c : {'X', 'Y', 'Z', 'A', 'B', 'C', 'U', 'V', 'W'})

@@ -4,6 +4,7 @@
 #include <array>
 
 #include "codes.hpp"
+#include "toolcomp/program/int_value.hpp"
 #include "toolcomp/program/program.hpp"
 
 namespace toolcomp::iso {
@@ -35,12 +36,9 @@ struct BlockWords {
 
 BlockWords collect_words(const Program& prog, const Block& block);
 
-// The value of a word that is an integer (T, D, H, L, P, Q, M, G x 10), rounded to the
-// nearest (`int_value`) or truncated (`int_value_truncated`, LinuxCNC's reading of G10's P).
-// Values beyond the int range saturate at INT_MIN / INT_MAX (NaN gives INT_MIN), where the
-// word's own range check rejects them, instead of wrapping round to a small valid number
-// (T4294967297 is not tool 1) or converting with undefined behaviour.
-int int_value(double v);
-int int_value_truncated(double v);
+// Integer words (T, D, H, L, P, Q, M, G x 10) convert through toolcomp::int_value
+// (program/int_value.hpp; G10's P is truncated, LinuxCNC's reading).
+using toolcomp::int_value;
+using toolcomp::int_value_truncated;
 
 }  // namespace toolcomp::iso

@@ -43,6 +43,9 @@ enum Ctl : std::uint8_t { ctl_none, ctl_if, ctl_else, ctl_endif, ctl_while, ctl_
 struct Variable {
     std::vector<double> v;
     bool integer = false;
+    std::size_t cols = 0;  // two-dimensional [rows, cols]; 0 for scalars and one dimension
+    // Row-major position of the indices, or nullopt when they do not fit the declaration.
+    std::optional<std::size_t> at(std::span<const double> idx) const;
 };
 
 // A value word of a block, evaluated.

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "interp.hpp"
+#include "toolcomp/program/int_value.hpp"
 #include "toolcomp/dialects/sinumerik/lexer.hpp"
 
 namespace toolcomp::sinumerik {
@@ -71,19 +72,23 @@ void Interp::block(std::span<const Token> t) {
             fail("setal", "Alarm " + std::to_string(n) + " set by the program (SETAL)", x.column);
         }
         if (is_unsupported(k) || (k == "G" && (x.value == 110 || x.value == 111 || x.value == 112)))
-            fail("unsupported_word", (k == "G" ? "G" + std::to_string(static_cast<int>(x.value)) : k) +
+            fail("unsupported_word", (k == "G" ? "G" + std::to_string(int_value(x.value)) : k) +
                                          " is not supported by toolcomp", x.column);
         if (x.has_value || x.expr >= 0 || (!x.text.empty() && x.text.front() == '"')) {
-            if (k.size() == 1) {
+            if (k.size() == 1 && k[0] >= 'A' && k[0] <= 'Z') {
                 const char l = k[0];
                 if (l == 'G') {
                     double v = value_of(x);
-                    if (v != std::floor(v) || v < 0) fail("12470", "12470 G function G" + std::to_string(v) + " is unknown", x.column);
-                    b.g.emplace_back(static_cast<int>(v), x.column);
+                    if (v != std::floor(v) || v < 0 || v > 9999)
+                        fail("12470", "12470 G function G" + std::to_string(v) + " is unknown", x.column);
+                    b.g.emplace_back(int_value(v), x.column);
                     continue;
                 }
                 if (l == 'M') {
-                    b.m.emplace_back(static_cast<int>(std::lround(value_of(x))), x.column);
+                    const double v = value_of(x);
+                    if (v != std::floor(v) || v < 0 || v > 2147483647)
+                        fail("unsupported_m_code", "M" + std::to_string(v) + " is not an M function", x.column);
+                    b.m.emplace_back(int_value(v), x.column);
                     continue;
                 }
                 if (l == 'L' && x.text.size() > 1 && x.expr < 0) {  // L10: subprogram call
@@ -105,7 +110,7 @@ void Interp::block(std::span<const Token> t) {
             Value* v = k == "CR" ? &b.cr : k == "AR" ? &b.ar : k == "TURN" ? &b.turn : k == "DISC" ? &b.disc
                      : k == "OFFN" ? &b.offn : k == "RPL" ? &b.rpl : k == "I1" ? &b.i1 : k == "J1" ? &b.j1
                      : k == "K1" ? &b.k1 : k == "TCARR" ? &b.tcarr : nullptr;
-            if (!v) fail("unsupported_word", k + "= is not supported by toolcomp", x.column);
+            if (!v) fail("unsupported_word", (x.text.empty() || x.text[0] == '"' ? k + "=" : x.text) + " is not supported by toolcomp", x.column);
             if (v->set) fail("12010", "12010 Address " + k + " programmed too often", x.column);
             *v = Value{true, value_of(x), x.param, x.column};
             continue;
@@ -125,7 +130,7 @@ void Interp::block(std::span<const Token> t) {
     if (!call_name.empty() && !ended_) {
         int passes = 1;
         if (b.has('P')) {
-            passes = static_cast<int>(std::lround(b['P'].v));
+            passes = int_value(b['P'].v);
             if (passes < 1 || passes > 9999) fail("14770", "14770 Number of passes P out of range 1..9999", b['P'].column);
         }
         call(call_name, passes, call_column);

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "interp.hpp"
+#include "toolcomp/program/int_value.hpp"
 #include "toolcomp/geometry/arc.hpp"
 
 namespace toolcomp::sinumerik {
@@ -71,7 +72,10 @@ RadiusRequest Interp::radius_request() const {
     if (st_.side == 0) return r;
     r.side = static_cast<std::int8_t>(mirrored() ? -st_.side : st_.side);
     r.radius = radius_now();
-    if (active_ && is_turning_type(active_->type())) r.orientation = static_cast<std::int8_t>(std::lround(active_->DP(2)));
+    if (active_ && is_turning_type(active_->type())) {
+        const int tip = int_value(active_->DP(2));
+        r.orientation = static_cast<std::int8_t>(tip >= 0 && tip <= 9 ? tip : 0);
+    }
     r.entry = static_cast<std::int8_t>(st_.entry);
     if (st_.entry == static_cast<int>(EntryStyle::around_start_when_behind))
         r.exit = static_cast<std::int8_t>(ExitStyle::around_end_when_behind);
@@ -192,7 +196,8 @@ void Interp::execute(BlockData& b, int first_column) {
     if (b.has('D')) {
         const Value& d = b['D'];
         if (d.v != std::floor(d.v) || d.v < 0) fail("17180", "17180 Illegal D number", d.column);
-        select_edge(static_cast<int>(d.v), d.column);
+        if (d.v > 32000) fail("17180", "17180 Illegal D number", d.column);
+        select_edge(int_value(d.v), d.column);
     }
     // ---- plane, dimensions ---------------------------------------------------------------------
     if (plane >= 0) {
@@ -219,7 +224,8 @@ void Interp::execute(BlockData& b, int first_column) {
     }
     if (b.offn.set) st_.offn = b.offn.v * unit();
     if (b.tcarr.set) {
-        tcarr_ = static_cast<int>(std::lround(b.tcarr.v));
+        if (!(b.tcarr.v >= 0 && b.tcarr.v <= 99999)) fail("14153", "14153 TCARR= toolholder number out of range", b.tcarr.column);
+        tcarr_ = int_value(b.tcarr.v);
         update_tool_offset();
     }
     // ---- radius compensation -------------------------------------------------------------------
@@ -417,8 +423,9 @@ void Interp::arc(const BlockData& b, const Vec3& end_prog, bool) {
     }
     int turns = 0;
     if (b.turn.set) {
-        if (b.turn.v < 0 || b.turn.v != std::floor(b.turn.v)) fail("14040", "14040 TURN= must be a whole number of turns", b.turn.column);
-        turns = static_cast<int>(b.turn.v);
+        if (!(b.turn.v >= 0 && b.turn.v <= 999999) || b.turn.v != std::floor(b.turn.v))
+            fail("14040", "14040 TURN= must be a whole number of turns (0..999999)", b.turn.column);
+        turns = int_value(b.turn.v);
     }
     const Vec3 out_end = frame_.apply(e3) + zero_shift_;
     const Vec3 out_c = frame_.apply(c3) + zero_shift_;

@@ -7,6 +7,7 @@
 #include <cctype>
 
 #include "interp.hpp"
+#include "toolcomp/program/int_value.hpp"
 #include "toolcomp/tools/format_sinumerik.hpp"
 #include "toolcomp/tools/tool_table.hpp"
 
@@ -30,8 +31,8 @@ void Interp::select_tool(const BlockData& b) {
         if (!found) fail("17190", "17190 Illegal T number: no tool named \"" + b.tool_name + "\"", b.tool_name_column);
         t = found->number;
     } else {
-        if (tv.v != std::floor(tv.v) || tv.v < 0) fail("17190", "17190 Illegal T number", tv.column);
-        t = static_cast<int>(tv.v);
+        if (tv.v != std::floor(tv.v) || !(tv.v >= 0 && tv.v <= 32000)) fail("17190", "17190 Illegal T number", tv.column);
+        t = int_value(tv.v);
         bool known = t == 0 || (tools_ && tools_->contains(t));
         auto it = edges_.lower_bound({t, 0});
         known |= it != edges_.end() && it->first.first == t;

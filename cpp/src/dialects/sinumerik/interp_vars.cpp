@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "interp.hpp"
+#include "toolcomp/program/int_value.hpp"
 #include "toolcomp/tools/sinumerik_gettcor.hpp"
 #include "toolcomp/tools/sinumerik_lentoax.hpp"
 #include "toolcomp/tools/sinumerik_settcor.hpp"
@@ -22,8 +23,24 @@ int numbered(const std::string& name, std::string_view prefix) {
     }
     return n;
 }
-int as_index(double v) { return static_cast<int>(std::lround(v)); }
+int as_index(double v) { return int_value(v); }
 }  // namespace
+
+std::optional<std::size_t> Variable::at(std::span<const double> idx) const {
+    const std::size_t rows = cols ? v.size() / cols : v.size();
+    auto index = [](double x, std::size_t n) -> std::optional<std::size_t> {
+        const int i = as_index(x);
+        if (i < 0 || static_cast<std::size_t>(i) >= n) return std::nullopt;
+        return static_cast<std::size_t>(i);
+    };
+    if (idx.empty()) return v.size() == 1 ? std::optional<std::size_t>(0) : std::nullopt;
+    if (idx.size() == 1 && !cols) return index(idx[0], v.size());
+    if (idx.size() == 2 && cols) {
+        auto r = index(idx[0], rows), c = index(idx[1], cols);
+        if (r && c) return *r * cols + *c;
+    }
+    return std::nullopt;
+}
 
 Variable* Interp::find_variable(const std::string& name) {
     auto& locals = stack_.back().locals;
@@ -43,15 +60,9 @@ double Interp::get(const std::string& name, std::span<const double> idx) {
         return r_[static_cast<std::size_t>(n)];
     }
     if (Variable* v = find_variable(name)) {
-        std::size_t flat = 0;
-        if (idx.size() == 1) {
-            flat = static_cast<std::size_t>(as_index(idx[0]));
-        } else if (idx.size() == 2) {
-            flat = static_cast<std::size_t>(as_index(idx[0]) * static_cast<int>(v->v.size()) + as_index(idx[1]));
-        }
-        if (idx.size() > 2 || (idx.empty() && v->v.size() != 1) || (!idx.empty() && (idx[0] < 0 || flat >= v->v.size())))
-            fail("17020", "17020 Illegal array index of " + name);
-        return v->v[flat];
+        const auto flat = v->at(idx);
+        if (!flat) fail("17020", "17020 Illegal array index of " + name);
+        return v->v[*flat];
     }
     if (int n = numbered(name, "$TC_DP")) {
         if (idx.size() != 2) fail("17020", "17020 " + name + " needs the indices [t, d]");
@@ -97,12 +108,9 @@ void Interp::set_variable(const std::string& name, std::span<const double> idx, 
         return;
     }
     if (Variable* var = find_variable(name)) {
-        std::size_t flat = 0;
-        if (idx.size() == 1) flat = static_cast<std::size_t>(as_index(idx[0]));
-        if (idx.size() == 2) flat = static_cast<std::size_t>(as_index(idx[0]) * static_cast<int>(var->v.size()) + as_index(idx[1]));
-        if (idx.size() > 2 || (idx.empty() && var->v.size() != 1) || (!idx.empty() && (idx[0] < 0 || flat >= var->v.size())))
-            fail("17020", "17020 Illegal array index of " + name, column);
-        var->v[flat] = var->integer ? std::round(v) : v;
+        const auto flat = var->at(idx);
+        if (!flat) fail("17020", "17020 Illegal array index of " + name, column);
+        var->v[*flat] = var->integer ? std::round(v) : v;
         return;
     }
     if (int n = numbered(name, "$TC_DP")) {
@@ -144,7 +152,10 @@ void Interp::define(std::span<const Token> t) {
         Variable var;
         var.integer = type != "REAL";
         std::size_t n = v.has_value ? static_cast<std::size_t>(v.value) : 1;
-        if (v.param > 0) n *= static_cast<std::size_t>(v.param);
+        if (v.param > 0) {
+            var.cols = static_cast<std::size_t>(v.param);
+            n *= var.cols;
+        }
         if (n > 100000) fail("12170", "12170 Array " + v.text + " too large", v.column);
         var.v.assign(n, 0.0);
         if (v.expr >= 0) {

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cctype>
+#include <cmath>
 
 namespace toolcomp::sinumerik {
 
@@ -197,8 +198,8 @@ private:
                     ++i_;
                     double n = 0;
                     skip();
-                    if (!expr::read_number(s_, i_, n, false) || n < 1 || n != static_cast<int>(n))
-                        error("Array size expected");
+                    if (!expr::read_number(s_, i_, n, false) || n < 1 || n > 100000 || n != std::floor(n))
+                        error("Array size 1..100000 expected");
                     v.value = n;
                     v.has_value = true;
                     skip();
@@ -206,8 +207,8 @@ private:
                         ++i_;
                         skip();
                         double m2 = 0;
-                        if (!expr::read_number(s_, i_, m2, false) || m2 < 1 || m2 != static_cast<int>(m2))
-                            error("Array size expected");
+                        if (!expr::read_number(s_, i_, m2, false) || m2 < 1 || m2 > 100000 || m2 != std::floor(m2))
+                            error("Array size 1..100000 expected");
                         v.param = static_cast<int>(m2);
                         skip();
                     }
