@@ -448,3 +448,20 @@ def test_settcor_in_the_workpiece_system_follows_the_plane():
 ])
 def test_more_alarms_with_numbers_and_lines(body, alarm, line):
     raises(body, alarm, line)
+
+
+def test_d_change_during_trc_ends_and_starts_perpendicular():
+    # D1 r = 5 -> D2 r = 3 at (30,0) on a straight contour along +X: (30,5), then a link to
+    # (30,3), then on at y = 3.
+    tools = TOOLS + "$TC_DP1[1,2]=120\n$TC_DP3[1,2]=100\n$TC_DP6[1,2]=3\n"
+    s = segs(run("T1 M6\nG0 X0 Y10\nG1 G41 X0 Y0 F100\nX30\nD2 X60\nG40 X70 Y10\nM30\n", tools=tools).path)
+    assert (1, (0.0, 5.0), (30.0, 5.0), False) in s
+    assert (1, (30.0, 5.0), (30.0, 3.0), True) in s
+    assert (1, (30.0, 3.0), (60.0, 3.0), False) in s
+
+
+def test_direct_g41_g42_change():
+    s = segs(run("T1 M6\nG0 X0 Y10\nG1 G41 X0 Y0 F100\nX50\nG42 X100\nG40 X110 Y-10\nM30\n").path)
+    assert (1, (0.0, 5.0), (50.0, 5.0), False) in s
+    assert (1, (50.0, 5.0), (50.0, -5.0), True) in s
+    assert (1, (50.0, -5.0), (100.0, -5.0), False) in s
