@@ -73,6 +73,7 @@ bench: build
 # exception, timeout or out-of-memory fails; the input is saved as build/fuzz/crashes/<target>-*
 # and replays with `build/fuzz/<target> FILE`.
 FUZZ_SECONDS ?= 60
+JOBS         ?= $(shell nproc)
 FUZZ_DIR     := build/fuzz
 FUZZ_TARGETS := fuzz_iso_parse fuzz_heidenhain_parse fuzz_sinumerik_parse fuzz_pipeline \
                 fuzz_table_linuxcnc fuzz_table_csv fuzz_table_json fuzz_table_heidenhain \
@@ -90,7 +91,7 @@ build/.fuzz-apt-stamp: build/.apt-stamp
 fuzz: bootstrap build/.fuzz-apt-stamp
 	PATH=$(abspath $(VENV))/bin:$$PATH cmake -S . -B $(FUZZ_DIR) -G Ninja -DCMAKE_CXX_COMPILER=clang++ \
 	  -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTOOLCOMP_FUZZ=ON -DTOOLCOMP_PYTHON=OFF -DTOOLCOMP_TESTS=OFF >/dev/null
-	PATH=$(abspath $(VENV))/bin:$$PATH cmake --build $(FUZZ_DIR) --target fuzzers -j1
+	PATH=$(abspath $(VENV))/bin:$$PATH cmake --build $(FUZZ_DIR) --target fuzzers -j$(JOBS)
 	$(PYTHON) fuzz/seed_corpus.py $(FUZZ_DIR)/seeds
 	@mkdir -p $(FUZZ_DIR)/crashes; failed=; \
 	for t in $(FUZZ_TARGETS); do \
@@ -131,7 +132,7 @@ test-sanitize: bootstrap
 	PATH=$(abspath $(VENV))/bin:$$PATH cmake -S . -B $(SAN_DIR) -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
 	  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DTOOLCOMP_SANITIZE=ON -DTOOLCOMP_TESTS=ON -DTOOLCOMP_PYTHON=ON \
 	  -DPython_EXECUTABLE=$(abspath $(PY)) -Dpybind11_DIR=$$($(PY) -m pybind11 --cmakedir) >/dev/null
-	PATH=$(abspath $(VENV))/bin:$$PATH cmake --build $(SAN_DIR) -j1
+	PATH=$(abspath $(VENV))/bin:$$PATH cmake --build $(SAN_DIR) -j$(JOBS)
 	@rm -rf $(SAN_DIR)/logs $(SAN_DIR)/site && mkdir -p $(SAN_DIR)/logs $(SAN_DIR)/site
 	cp -r python/toolcomp $(SAN_DIR)/site/toolcomp && cp $(SAN_DIR)/_core.*.so $(SAN_DIR)/site/toolcomp/
 	test -x $(SAN_DIR)/venv/bin/python || $(PY) -m venv --without-pip $(SAN_DIR)/venv
