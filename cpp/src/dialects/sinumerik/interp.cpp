@@ -238,7 +238,7 @@ void Interp::jump(const Token& t) {
         for (std::size_t i = from; i < to; ++i) {
             for (const Token& x : c.prog->tokens(c.prog->blocks()[i])) {
                 if (x.key == ":" && x.text == label) return i;
-                if (x.key == "N" && label.size() > 1 && label[0] == 'N' &&
+                if (x.key == "N" && label.size() > 1 && label.size() <= 10 && label[0] == 'N' &&
                     label.find_first_not_of("0123456789", 1) == std::string::npos &&
                     static_cast<long>(x.value) == std::stol(label.substr(1)))
                     return i;

@@ -52,6 +52,7 @@ public:
             std::size_t j = i_ + 1;
             while (j < s_.size() && is_digit(s_[j])) ++j;
             if (j == i_ + 1) error("Block number expected");
+            if (j - i_ - 1 > 9) error("Block number longer than 9 digits");
             if (j >= s_.size() || !ident_char(s_[j])) {
                 Token t;
                 t.key = "N";
