@@ -43,8 +43,12 @@ private:
     MotionSink& b_;
 };
 
-sinumerik::InterpretOptions sinumerik_options(const RunOptions& o) {
+sinumerik::InterpretOptions sinumerik_options(const RunOptions& o, const ControlProfile& p) {
     sinumerik::InterpretOptions s;
+    s.lengths.tool_length_const = p.tool_length_const;
+    s.lengths.tool_length_type = p.tool_length_type;
+    s.lengths.wear_sign_inverted = p.wear_sign < 0;
+    s.tool_parameter_def_mask = p.tool_parameter_def_mask;
     s.block_delete = o.block_delete;
     s.progress = o.progress;
     s.progress_every = o.progress_every ? o.progress_every : 1;
@@ -106,7 +110,7 @@ Result run(const Program& program, const ToolTable* tools, const RunOptions& opt
             heidenhain::interpret(program, tools, profile, tee, res.diagnostics, iopts.progress, iopts.progress_every,
                                   options.search_path);
         else if (program.dialect == Dialect::sinumerik)
-            sinumerik::interpret(program, tools, profile, sinumerik_options(options), tee, res.diagnostics);
+            sinumerik::interpret(program, tools, profile, sinumerik_options(options, profile), tee, res.diagnostics);
         else if (is_iso(program.dialect))
             iso::interpret(program, tools, profile, iopts, tee, res.diagnostics);
         else

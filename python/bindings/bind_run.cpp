@@ -148,6 +148,12 @@ void bind_run(py::module_& m) {
                        "the last 1, 2 or 3 digits and geometry from the tool number (9/Series)")
         .def_readwrite("wear_sign", &ControlProfile::wear_sign,
                        "effective offset = geometry + wear_sign * wear")
+        .def_readwrite("tool_length_const", &ControlProfile::tool_length_const,
+                       "Sinumerik SD42940 TOOL_LENGTH_CONST: 0, or 17/18/19 (and negative) to fix the length axes")
+        .def_readwrite("tool_length_type", &ControlProfile::tool_length_type,
+                       "Sinumerik SD42950 TOOL_LENGTH_TYPE: 0 by tool type, 1 always milling, 2 always turning")
+        .def_readwrite("tool_parameter_def_mask", &ControlProfile::tool_parameter_def_mask,
+                       "Sinumerik MD20360: bit 0 wear, bit 1 geometry in diameter on the transverse axis (GETTCOR)")
         .def_readwrite("name", &ControlProfile::name,
                        "profile name (the dialect's name for built-in profiles)")
         .def_readwrite("startup_inch", &ControlProfile::startup_inch,

@@ -232,6 +232,9 @@ class ControlProfile:
     t_offsets: bool
     t_format: int
     wear_sign: float
+    tool_length_const: int
+    tool_length_type: int
+    tool_parameter_def_mask: int
     name: str
     startup_inch: bool
     block_limit: int

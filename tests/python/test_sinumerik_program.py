@@ -465,3 +465,16 @@ def test_direct_g41_g42_change():
     assert (1, (0.0, 5.0), (50.0, 5.0), False) in s
     assert (1, (50.0, 5.0), (50.0, -5.0), True) in s
     assert (1, (50.0, -5.0), (100.0, -5.0), False) in s
+
+
+def test_machine_data_from_the_profile():
+    # SD42940 = 17 fixes the G17 assignment: in G18 the milling tool's L1 stays on Z.
+    # SD42930 (wear_sign -1): L1 = 100 - (-0.5) = 100.5.
+    tools = "$TC_DP1[1,1]=120\n$TC_DP3[1,1]=100\n$TC_DP12[1,1]=-0.5\n"
+    prof = tc.ControlProfile("sinumerik")
+    prof.tool_length_const = 17
+    prof.wear_sign = -1
+    res = run("T1 M6\nG18 G0 X0\nM30\n", tools=tools, profile=prof)
+    np.testing.assert_allclose(res.nominal.tool_offset[0], [0, 0, 100.5], atol=1e-12)
+    res = run("T1 M6\nG18 G0 X0\nM30\n", tools=tools)
+    np.testing.assert_allclose(res.nominal.tool_offset[0], [0, 99.5, 0], atol=1e-12)

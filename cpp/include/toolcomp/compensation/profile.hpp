@@ -179,7 +179,14 @@ struct ControlProfile {
     // installer formats: 1-3 geometry and wear from the last 1, 2 or 3 digits; 4-6 wear from
     // the last 1, 2 or 3 digits and geometry from the tool number.
     int t_format = 0;
-    double wear_sign = 1;  // effective = geometry + wear_sign * wear
+    double wear_sign = 1;  // effective = geometry + wear_sign * wear (Sinumerik SD42930)
+
+    // Sinumerik machine data of tool lengths (spec §3.2, §3.5): SD42940 TOOL_LENGTH_CONST
+    // (0, ±17, ±18, ±19), SD42950 TOOL_LENGTH_TYPE (0 by tool type, 1 milling, 2 turning),
+    // MD20360 TOOL_PARAMETER_DEF_MASK (bit 0 wear, bit 1 geometry in diameter; GETTCOR).
+    int tool_length_const = 0;
+    int tool_length_type = 0;
+    unsigned tool_parameter_def_mask = 0;
 
     // ---- tool length compensation ------------------------------------------------------
     LengthAxes length_axes = LengthAxes::all;
