@@ -6,6 +6,12 @@
 using namespace toolcomp;
 
 namespace {
+// Messages quote program text, which need not be UTF-8 (a Latin-1 comment, a stray byte):
+// undecodable bytes become U+FFFD instead of a UnicodeDecodeError in place of the error.
+py::str text(const std::string& s) {
+    return py::reinterpret_steal<py::str>(PyUnicode_DecodeUTF8(s.data(), static_cast<Py_ssize_t>(s.size()), "replace"));
+}
+
 const char* severity_name(Severity s) {
     switch (s) {
         case Severity::info: return "info";
@@ -40,7 +46,7 @@ void bind_errors(py::module_& m) {
                       "stable machine-readable code, snake_case (e.g. 'arc_end_off_circle')")
         .def_property_readonly("severity", [](const Diagnostic& d) { return severity_name(d.severity); },
                                "'info', 'warning' or 'error'")
-        .def_readonly("message", &Diagnostic::message,
+        .def_property_readonly("message", [](const Diagnostic& d) { return text(d.message); },
                       "human-readable message (the control's own text where it has one)")
         .def_property_readonly("line", [](const Diagnostic& d) { return d.pos.line; },
                                "source line, 1-based; 0 when not tied to a line")
@@ -48,7 +54,7 @@ void bind_errors(py::module_& m) {
                                "source column, 1-based; 0 for the whole line")
         .def("__repr__", [](const Diagnostic& d) {
             return "Diagnostic(code='" + d.code + "', severity='" + severity_name(d.severity) + "', message=" +
-                   py::repr(py::str(d.message)).cast<std::string>() + ", line=" + std::to_string(d.pos.line) +
+                   py::repr(text(d.message)).cast<std::string>() + ", line=" + std::to_string(d.pos.line) +
                    ", column=" + std::to_string(d.pos.column) + ")";
         })
         .def("__eq__", [](const Diagnostic& a, const Diagnostic& b) {
@@ -61,7 +67,7 @@ void bind_errors(py::module_& m) {
             if (p) std::rethrow_exception(p);
         } catch (const Error& e) {
             py::object cls = py::module_::import("toolcomp._errors").attr(class_name(e.kind()));
-            py::object exc = cls(e.what(), e.code(), e.line(), e.column());
+            py::object exc = cls(text(e.what()), e.code(), e.line(), e.column());
             PyErr_SetObject(cls.ptr(), exc.ptr());
         }
     });

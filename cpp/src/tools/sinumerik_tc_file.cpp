@@ -1,5 +1,6 @@
 // Reading and writing "$TC_DPn[t,d]=value" initialisation lines (spec §3.1).
 #include <cctype>
+#include "toolcomp/program/text.hpp"
 #include <sstream>
 
 #include "number_text.hpp"
@@ -69,6 +70,7 @@ bool is_end_word(std::string_view t) {
 }  // namespace
 
 SinumerikEdgeMap parse_tc_dp(std::string_view text, int max_t, int max_d) {
+    text = skip_bom(text);
     SinumerikEdgeMap out;
     int line_no = 0;
     std::size_t pos = 0;

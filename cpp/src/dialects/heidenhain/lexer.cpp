@@ -1,4 +1,5 @@
 #include "toolcomp/dialects/heidenhain/lexer.hpp"
+#include "toolcomp/program/text.hpp"
 
 #include <cctype>
 #include <charconv>
@@ -198,6 +199,7 @@ void read_blank(Program& prog, const Block& b) {
 }  // namespace
 
 Program parse(std::string_view text, std::string name, bool strict) {
+    text = skip_bom(text);
     Program prog;
     prog.name = std::move(name);
     prog.dialect = Dialect::heidenhain;

@@ -1,4 +1,5 @@
 #include "toolcomp/dialects/iso/lexer.hpp"
+#include "toolcomp/program/text.hpp"
 
 #include <cctype>
 #include <charconv>
@@ -153,6 +154,7 @@ std::string_view trimmed(std::string_view l) {
 }  // namespace
 
 Program parse(std::string_view text, Dialect dialect, std::string name, bool strict) {
+    text = skip_bom(text);
     Program prog;
     prog.name = std::move(name);
     prog.dialect = dialect;

@@ -76,6 +76,10 @@ const ProgramInfo& Interp::info_of(const Program& p) {
         } else if (t[0].key.rfind("GOTO", 0) == 0) {
             k = ctl_jump;
         }
+        if (k != ctl_none && (t[0].has_value || ((k == ctl_if || k == ctl_while || k == ctl_until || k == ctl_for) &&
+                                                 t[0].expr < 0)))
+            throw ProgramError("syntax_error", "12080 Syntax error: " + (t[0].text.empty() ? t[0].key : t[0].text),
+                               {blocks[i].line, t[0].column});
         info->kind[i] = k;
         auto mismatch = [&](const char* what) {
             throw ProgramError("14060", std::string("14060 ") + what + " without its opening statement",

@@ -1,4 +1,5 @@
 #include "toolcomp/dialects/sinumerik/lexer.hpp"
+#include "toolcomp/program/text.hpp"
 
 #include <array>
 #include <cctype>
@@ -407,9 +408,7 @@ Program parse(std::string_view text, std::string name, bool strict) {
     Program prog;
     prog.name = std::move(name);
     prog.dialect = Dialect::sinumerik;
-    if (text.size() >= 3 && static_cast<unsigned char>(text[0]) == 0xEF && static_cast<unsigned char>(text[1]) == 0xBB &&
-        static_cast<unsigned char>(text[2]) == 0xBF)
-        text.remove_prefix(3);
+    text = skip_bom(text);
     std::size_t pos = 0;
     int line = 0;
     while (pos <= text.size()) {
