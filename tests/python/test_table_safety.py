@@ -70,10 +70,10 @@ def kill_saves(path, kills, seed):
                 os._exit(1)
         os.close(ready_w)
         os.read(ready_r, 1)  # the writer runs at full speed: it has finished a round
-        os.close(ready_r)
         time.sleep(rng.uniform(0, 1.5 * save))
         os.kill(pid, signal.SIGKILL)
         _, status = os.waitpid(pid, 0)
+        os.close(ready_r)  # only now: a writer must never write into a closed pipe
         stopped += not os.WIFSIGNALED(status)
         data = Path(path).read_bytes()
         if data not in (old_bytes, new_bytes):

@@ -343,7 +343,9 @@ int run(const Expr& e, Env& env, double* stack) {
             }
             case Op::call: {
                 sp -= in.argc;
-                push(call(in.fn, stack + sp));
+                const double r = call(in.fn, stack + sp);
+                if (!std::isfinite(r)) throw MathError("Result out of range");
+                push(r);
                 break;
             }
             case Op::neg: stack[sp - 1] = -stack[sp - 1]; break;

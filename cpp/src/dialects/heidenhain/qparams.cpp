@@ -1,6 +1,7 @@
 #include "qparams.hpp"
 
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -92,10 +93,20 @@ private:
         return v;
     }
     double unary() {
+        // Every nesting passes here: bound it so that a pathological formula is an error,
+        // not a stack overflow.
+        struct Depth {
+            int& d;
+            explicit Depth(int& d) : d(d) {
+                if (++d > 200) throw std::invalid_argument("formula nested too deeply");
+            }
+            ~Depth() { --d; }
+        } guard(depth_);
         if (eat('-')) return -unary();
         if (eat('+')) return unary();
         return atom_value();
     }
+    int depth_ = 0;
     double atom_value() {
         skip();
         if (eat('(')) {
@@ -107,7 +118,11 @@ private:
             std::string num;
             while (i_ < s_.size() && (std::isdigit(static_cast<unsigned char>(s_[i_])) || s_[i_] == '.' || s_[i_] == ','))
                 num.push_back(s_[i_] == ',' ? '.' : s_[i_]), ++i_;
-            return std::stod(num);
+            double v = 0;
+            const auto res = std::from_chars(num.data(), num.data() + num.size(), v);
+            if (res.ec != std::errc() || res.ptr != num.data() + num.size() || !std::isfinite(v))
+                throw std::invalid_argument("bad number " + num);
+            return v;
         }
         if (i_ < s_.size() && (s_[i_] == 'Q' || s_[i_] == 'q') && i_ + 1 < s_.size() &&
             std::isdigit(static_cast<unsigned char>(s_[i_ + 1]))) {
@@ -158,7 +173,11 @@ int target_q(Parser& p) {
 
 }  // namespace
 
-double evaluate_formula(std::string_view text, const QLookup& q) { return Parser(text, q).formula(); }
+double evaluate_formula(std::string_view text, const QLookup& q) {
+    const double v = Parser(text, q).formula();
+    if (!std::isfinite(v)) throw std::domain_error("result out of range");
+    return v;
+}
 
 QResult run_statement(std::string_view text, const QLookup& q) {
     Parser p(text, q);
@@ -169,6 +188,7 @@ QResult run_statement(std::string_view text, const QLookup& q) {
         if (!p.eat('=')) throw std::invalid_argument("'=' expected");
         r.assign = n;
         r.value = p.formula();
+        if (!std::isfinite(r.value)) throw std::domain_error("result out of range");
         return r;
     }
     if (head != "FN") throw std::invalid_argument("FN or Q expected");
@@ -237,6 +257,7 @@ QResult run_statement(std::string_view text, const QLookup& q) {
             throw std::invalid_argument("FN " + std::to_string(fn) + " is not supported by toolcomp");
     }
     if (!p.done()) throw std::invalid_argument("unexpected text after the statement");
+    if (!std::isfinite(r.value)) throw std::domain_error("result out of range");
     return r;
 }
 

@@ -395,6 +395,7 @@ void Interp::arc(const BlockData& b, const Vec3& end_prog, bool) {
     } else {
         fail("14040", "14040 Circle without centre, radius, opening angle or intermediate point", first);
     }
+    if (!c.allFinite()) fail("14040", "14040 Error in end point of circle: the centre cannot be computed", first);
     const double rs = (s - c).norm(), re = (e - c).norm();
     if (rs < 1e-9) fail("14040", "14040 Error in end point of circle: radius zero", first);
     if (std::fabs(re - rs) > std::max(tol, 0.001 * rs))
