@@ -63,7 +63,7 @@ const ProgramInfo& Interp::info_of(const Program& p) {
     for (std::size_t i = 0; i < blocks.size(); ++i) {
         auto all = p.tokens(blocks[i]);
         for (const Token& t : all) {
-            if (t.key == "N") info->numbers.emplace(static_cast<long>(t.value), i);
+            if (t.key == "N" && t.text.empty()) info->numbers.emplace(static_cast<long>(t.value), i);  // block number
             if (t.key == ":") info->labels.emplace(t.text, i);
         }
         auto t = statements(all);
@@ -242,7 +242,7 @@ void Interp::jump(const Token& t) {
         for (std::size_t i = from; i < to; ++i) {
             for (const Token& x : c.prog->tokens(c.prog->blocks()[i])) {
                 if (x.key == ":" && x.text == label) return i;
-                if (x.key == "N" && label.size() > 1 && label.size() <= 10 && label[0] == 'N' &&
+                if (x.key == "N" && x.text.empty() && label.size() > 1 && label.size() <= 10 && label[0] == 'N' &&
                     label.find_first_not_of("0123456789", 1) == std::string::npos &&
                     static_cast<long>(x.value) == std::stol(label.substr(1)))
                     return i;

@@ -290,6 +290,7 @@ void Interp::execute(BlockData& b, int first_column) {
     }
     for (const char l : {'U', 'V', 'W', 'O', 'Q', 'E'})
         if (b.has(l)) fail("unsupported_word", std::string(1, l) + " words are not supported by toolcomp", b[l].column);
+    if (b.has('N')) fail("syntax_error", "12080 Syntax error: a block number N must begin the block", b['N'].column);
     // ---- stop, end -----------------------------------------------------------------------------
     if (stop) sink_.control({ControlKind::stop, line_});
     bool ret_word = b.keyword("RET");
