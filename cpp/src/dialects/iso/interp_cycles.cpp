@@ -167,6 +167,9 @@ void Interp::cycle(const BlockWords& bw, int code) {
             case 730:
             case 830:
                 for (double depth = r - cyc_.q; depth > bottom; depth -= cyc_.q) {
+                    // Every peck counts against the block limit: a huge depth with a tiny Q
+                    // (or one that no longer changes the depth) stops there, never hangs.
+                    count_block(bw['Q'].column);
                     straight(MotionKind::line, at(a, b, depth), feed);
                     if (code == 830) straight(MotionKind::rapid, at(a, b, r), nan);
                     straight(MotionKind::rapid, at(a, b, depth + rapid_delta), nan);
