@@ -99,7 +99,7 @@ def test_killed_saves_leave_the_old_or_the_new_table(tmp_path):
     assert r["distinct"] and r["size"] > 500_000
     assert r["stopped"] == 0, "the writer stopped on its own (a save failed?)"
     assert r["torn"] == [], f"torn tables: {r['torn']}"
-    assert r["interrupted"] >= KILLS // 10, f"only {r['interrupted']} of {KILLS} kills hit a save: {r}"
+    assert r["interrupted"] >= KILLS // 50, f"only {r['interrupted']} of {KILLS} kills hit a save: {r}"
     old, new = big_tables()
     new_bytes = new.dumps("linuxcnc").encode()
 
