@@ -10,10 +10,11 @@
 #include <string>
 #include <vector>
 
-#include "run_helpers.hpp"
+#include "heidenhain_helpers.hpp"
 #include "toolcomp/program/diagnostic.hpp"
 
 using namespace toolcomp;
+using tctest::hh::col;
 namespace fs = std::filesystem;
 
 namespace {
@@ -70,8 +71,6 @@ Caught caught(F&& f) {
     }
     return c;
 }
-
-Vec3 col(const Column<double>& v, std::size_t i) { return {v[3 * i], v[3 * i + 1], v[3 * i + 2]}; }
 
 const std::string kMainHead = "0 BEGIN PGM M MM\n1 TOOL DEF 1 L+0 R+2\n2 TOOL CALL 1 Z\n3 L X+0 Y-10 Z+0 R0 F100\n";
 
