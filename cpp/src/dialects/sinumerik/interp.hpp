@@ -150,7 +150,7 @@ private:
     Vec3 end_point(const BlockData& b, bool machine) const;
     void frame_statement(const BlockData& b, const std::string& which, int column);
     void move(MotionKind kind, const Vec3& end, const BlockData& b);
-    void arc(const BlockData& b, const Vec3& end_prog, bool machine);
+    void arc(const BlockData& b, const Vec3& end_prog);
     Motion motion_(MotionKind kind, const Vec3& end) const;
     RadiusRequest radius_request() const;
     bool mirrored() const;  // the frame mirrors the working plane
@@ -182,7 +182,6 @@ private:
     SinumerikEdgeMap edges_;
     std::map<int, Toolholder> holders_;
     int selected_ = 0, tool_ = 0, d_ = 0, tcarr_ = 0;
-    bool tcoabs_ = false;
     bool diam90_ = false;  // DIAM90: absolute X in diameter, incremental in radius
     Vec3 tool_offset_ = Vec3::Zero();
     Vec3 tool_axis_ = Vec3(0, 0, 1);

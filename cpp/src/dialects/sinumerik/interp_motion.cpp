@@ -215,7 +215,7 @@ void Interp::execute(BlockData& b, int first_column) {
         else if (k == "KONT") st_.entry = static_cast<int>(EntryStyle::around_start_when_behind);
         else if (k == "CDON") st_.gouge = static_cast<int>(GougeReaction::skip);
         else if (k == "CDOF" || k == "CDOF2") st_.gouge = static_cast<int>(GougeReaction::error);
-        else if (k == "TCOABS") tcoabs_ = true;
+        // TCOABS: the holder angles $TC_CARR13/14 are the only source toolcomp models (TCOFR is refused).
     }
     if (corner >= 0) st_.outside = static_cast<int>(corner == 450 ? OutsideCorner::arc : OutsideCorner::intersection);
     if (b.disc.set) {
@@ -274,7 +274,7 @@ void Interp::execute(BlockData& b, int first_column) {
             if (machine) fail("g53_motion", "G53/G153/SUPA only with G0 or G1", first_column);
             Vec3 e = end_point(b, false);
             abc_ = abc;
-            arc(b, e, false);
+            arc(b, e);
         } else {
             Vec3 e = end_point(b, machine);
             Vec3 out = machine ? e : frame_.apply(e) + zero_shift_;
@@ -313,7 +313,7 @@ void Interp::execute(BlockData& b, int first_column) {
     }
 }
 
-void Interp::arc(const BlockData& b, const Vec3& end_prog, bool) {
+void Interp::arc(const BlockData& b, const Vec3& end_prog) {
     const PlaneAxes ax = axes(st_.plane);
     const Vec3 s3 = program_pos();
     const Vec2 s = in_plane(s3, st_.plane);
