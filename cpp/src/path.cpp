@@ -22,6 +22,7 @@ void Path::reserve(std::size_t n) {
     kind.reserve(n);
     for (auto* v : {&start, &end, &center, &tool_offset}) v->reserve(3 * n);
     for (auto* v : {&abc, &normal, &tool_axis}) v->reserve(n);
+    file.reserve(n);
     line.reserve(n);
     tool.reserve(n);
     turns.reserve(n);
@@ -48,6 +49,7 @@ void Path::push(const Motion& m) {
     side.push_back(m.radius.side);
     plane.push_back(static_cast<std::uint8_t>(m.plane));
     generated.push_back(m.generated ? 1 : 0);
+    file.push(m.file);
 }
 
 Motion Path::segment(std::size_t i) const {
@@ -61,6 +63,7 @@ Motion Path::segment(std::size_t i) const {
     m.abc = {abc(i, 0), abc(i, 1), abc(i, 2)};
     m.feed = feed[i];
     m.line = line[i];
+    m.file = file(i);
     m.tool = tool[i];
     m.tool_offset = get3(tool_offset, i);
     m.surface.normal = get3(normal, i);

@@ -105,6 +105,10 @@ Result run(const Program& program, const ToolTable* tools, const RunOptions& opt
     iopts.block_delete = options.block_delete;
     iopts.progress = options.progress;
     iopts.progress_every = options.progress_every ? options.progress_every : 1;
+    iopts.search_path = options.search_path;
+    iopts.parameters = options.parameters;
+    iso::InterpretOutput out;
+    out.files.push_back(program.name);
     try {
         if (program.dialect == Dialect::heidenhain)
             heidenhain::interpret(program, tools, profile, tee, res.diagnostics, iopts.progress, iopts.progress_every,
@@ -112,7 +116,7 @@ Result run(const Program& program, const ToolTable* tools, const RunOptions& opt
         else if (program.dialect == Dialect::sinumerik)
             sinumerik::interpret(program, tools, profile, sinumerik_options(options, profile), tee, res.diagnostics);
         else if (is_iso(program.dialect))
-            iso::interpret(program, tools, profile, iopts, tee, res.diagnostics);
+            iso::interpret(program, tools, profile, iopts, tee, res.diagnostics, &out);
         else
             dialect_not_supported(program.dialect);
     } catch (const Error& e) {
@@ -120,6 +124,9 @@ Result run(const Program& program, const ToolTable* tools, const RunOptions& opt
         tee.finish();
         res.diagnostics.push_back(e.diagnostic());
     }
+    res.nominal.files = out.files;
+    res.path.files = std::move(out.files);
+    res.parameters = std::move(out.parameters);
     return res;
 }
 

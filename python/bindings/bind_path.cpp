@@ -3,6 +3,7 @@
 #include "bindings.hpp"
 
 #include <pybind11/numpy.h>
+#include <pybind11/stl.h>
 
 #include "toolcomp/path.hpp"
 
@@ -34,6 +35,22 @@ py::array view3(py::handle owner, const Vec3Column& v) {
     py::array_t<double> row(3);
     std::copy(v.fill(), v.fill() + 3, row.mutable_data());
     py::array a(py::dtype::of<double>(), {n, py::ssize_t(3)}, {py::ssize_t(0), py::ssize_t(8)}, row.data(), row);
+    py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
+    return a;
+}
+
+// A scalar UniformColumn the same way: its rows, or one value repeated (stride 0).
+template <class T>
+py::array view1(py::handle owner, const UniformColumn<T, 1>& v) {
+    const auto n = static_cast<py::ssize_t>(v.size());
+    py::array a;
+    if (!v.uniform()) {
+        a = py::array(py::dtype::of<T>(), {n}, {py::ssize_t(sizeof(T))}, v.data(), owner);
+    } else {
+        py::array_t<T> one(1);
+        one.mutable_data()[0] = v.fill()[0];
+        a = py::array(py::dtype::of<T>(), {n}, {py::ssize_t(0)}, one.data(), one);
+    }
     py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
     return a;
 }
@@ -70,6 +87,11 @@ void bind_path(py::module_& m) {
         .def_property_readonly("line", column(&Path::line, 1),
                                "source line of the block, int32 (N,), 1-based; an inserted corner piece carries "
                                "the line of the block after the corner")
+        .def_property_readonly("file", [](py::object self) { return view1(self, self.cast<const Path&>().file); },
+                               "file of the block, int32 (N,): index into `files` (0 = the main program)")
+        .def_readonly("files", &Path::files,
+                      "names of the files segments come from: the main program, then each called program or "
+                      "subprogram file in the order the run entered it")
         .def_property_readonly("tool", column(&Path::tool, 1), "number of the tool in the spindle, int32 (N,)")
         .def_property_readonly("feed", column(&Path::feed, 1), "feed rate, float64 (N,), mm/min; NaN for rapids")
         .def_property_readonly("side", column(&Path::side, 1),

@@ -159,6 +159,8 @@ void bind_run(py::module_& m) {
         .def_readwrite("startup_inch", &ControlProfile::startup_inch,
                        "G20 (inch) active at program start")
         .def_readwrite("block_limit", &ControlProfile::block_limit, "blocks a program may execute (loops count)")
+        .def_readwrite("call_depth_limit", &ControlProfile::call_depth_limit,
+                       "nested subprogram calls a program may make (LinuxCNC 9, Fanuc 10, default 100)")
         .def_readwrite("length_axes", &ControlProfile::length_axes,
                        "LengthAxes: which axes a tool length offset (G43 H) acts on")
         .def_readwrite("length_subtract_word", &ControlProfile::length_subtract_word,
@@ -178,6 +180,9 @@ void bind_run(py::module_& m) {
         .def_property_readonly("path", [](std::shared_ptr<Result> r) { return std::shared_ptr<Path>(r, &r->path); },
                                "the compensated Path (after the compensation stages)")
         .def_readonly("blocks", &Result::blocks, "number of blocks in the program")
+        .def_readonly("parameters", &Result::parameters,
+                      "numbered parameters set at the end of the run, {number: value} (LinuxCNC, Fanuc; vacant "
+                      "Fanuc variables and LinuxCNC zeros left out)")
         .def_property_readonly(
             "blank",
             [](const Result& r) -> py::object {
@@ -229,8 +234,9 @@ void bind_run(py::module_& m) {
         "run",
         [](const Program& program, const ToolTable* tools, bool strict, bool block_delete,
            std::optional<ControlProfile> profile, py::object progress, std::size_t progress_every,
-           std::vector<std::string> search_path) {
+           std::vector<std::string> search_path, std::map<int, double> parameters) {
             RunOptions o;
+            o.parameters = std::move(parameters);
             o.strict = strict;
             o.block_delete = block_delete;
             o.profile = std::move(profile);
@@ -246,10 +252,11 @@ void bind_run(py::module_& m) {
         },
         py::arg("program"), py::arg("tools") = nullptr, py::arg("strict") = true, py::arg("block_delete") = false,
         py::arg("profile") = py::none(), py::arg("progress") = py::none(), py::arg("progress_every") = 1 << 16,
-        py::arg("search_path") = std::vector<std::string>{},
+        py::arg("search_path") = std::vector<std::string>{}, py::arg("parameters") = std::map<int, double>{},
         "Interpret a Program with an optional ToolTable and apply tool compensation; returns a Result. strict=True "
         "raises the first error, strict=False returns the path up to it; block_delete skips '/' blocks; profile "
         "overrides the dialect's ControlProfile; progress(blocks_read) is called every progress_every blocks; "
-        "search_path lists the directories where Heidenhain CALL PGM looks for called programs. "
+        "search_path lists the directories where called programs and subprogram files are looked up; parameters "
+        "gives numbered parameters their start values ({number: value}, e.g. a LinuxCNC .var file). "
         "The GIL is released while the program runs.");
 }

@@ -51,7 +51,7 @@ _sys.modules[__name__ + ".sinumerik"] = sinumerik  # type: ignore[assignment]  #
 
 
 def run(program, tools=None, *, dialect=None, strict=True, block_delete=False, profile=None,
-        units="mm", progress=None, progress_every=65536, search_path=()):
+        units="mm", progress=None, progress_every=65536, search_path=(), parameters=None):
     """Interpret ``program`` and apply tool compensation.
 
     ``program`` is a :class:`Program` or a path to a program file (dialect from the suffix
@@ -65,8 +65,13 @@ def run(program, tools=None, *, dialect=None, strict=True, block_delete=False, p
     called programs are looked for, in order, and nowhere else: Heidenhain ``CALL PGM name``
     (``name`` or ``name.h``), Sinumerik ``L10`` / ``NAME`` (``L10.spf``, ``NAME.spf``,
     ``.mpf``, any case); segments of a called program carry line numbers of that program's
-    file. The GIL
-    is released while the program runs.
+    file. LinuxCNC ``o<name> call`` looks for ``name.ngc`` there (before the program's own
+    definitions, as LinuxCNC does), Fanuc ``M98 P1000`` / ``G65 P1000`` for ``O1000.nc``,
+    ``O1000`` or ``1000.nc`` when the program file holds no ``O1000``; every segment's
+    ``file`` column indexes ``path.files``. ``parameters`` gives numbered parameters their
+    start values: a ``{number: value}`` dict, or the path of a LinuxCNC ``.var`` file (read
+    with :func:`toolcomp.params.read_var`); ``result.parameters`` holds the values at the
+    end. The GIL is released while the program runs.
     """
     if isinstance(program, (str, _os.PathLike)):
         # Read leniently: a syntax error is raised (or reported) when the run reaches its
@@ -77,8 +82,14 @@ def run(program, tools=None, *, dialect=None, strict=True, block_delete=False, p
     if isinstance(search_path, (str, bytes, _os.PathLike)):
         search_path = [search_path]
     search_path = [_os.fsdecode(d) for d in search_path]
+    if isinstance(parameters, (str, _os.PathLike)):
+        from .params import read_var
+
+        parameters = read_var(parameters)
+    parameters = {int(k): float(v) for k, v in (parameters or {}).items()}
     return _core.run(program, tools, strict=strict, block_delete=block_delete, profile=profile,
-                     progress=progress, progress_every=progress_every, search_path=search_path)
+                     progress=progress, progress_every=progress_every, search_path=search_path,
+                     parameters=parameters)
 
 
 def _result_plot(self, ax=None, **kwargs):

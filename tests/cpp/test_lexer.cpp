@@ -83,8 +83,30 @@ TEST_CASE("syntax errors carry LinuxCNC's message, the line and the column") {
     require_error("G0 (a (b) c)\n", "Nested comment found", 1, 7);
 }
 
-TEST_CASE("parameters, expressions and O-words are refused explicitly") {
-    CHECK_THROWS_AS(P("G0 X#1\n"), ParseError);
-    CHECK_THROWS_AS(P("G0 X[1+2]\n"), ParseError);
-    CHECK_THROWS_AS(P("o100 sub\n"), ParseError);
+TEST_CASE("the 9/Series dialect refuses parameters, expressions and O-words explicitly") {
+    auto R = [](const std::string& t) { return iso::parse(t, Dialect::rockwell); };
+    CHECK_THROWS_AS(R("G0 X#1\n"), ParseError);
+    CHECK_THROWS_AS(R("G0 X[1+2]\n"), ParseError);
+    CHECK_THROWS_AS(R("o100 sub\n"), ParseError);
+}
+
+TEST_CASE("LinuxCNC lines: computed words, statements, the 252-character limit") {
+    Program p = P("G0 X[1+2] Y#1 Z - 5\n#<a b>=[2]\no100 if [#1 EQ 0] (c)\n");
+    REQUIRE(p.size() == 3);
+    const auto w = p.words(p.blocks()[0]);
+    CHECK(w[1].value == 3);  // a constant expression is folded when read
+    CHECK(w[1].expr < 0);
+    CHECK(w[2].expr >= 0);
+    CHECK(w[3].value == -5);
+    CHECK(p.statements(p.blocks()[1])[0].label == "ab");  // blanks dropped, case folded
+    CHECK(p.statements(p.blocks()[2])[0].kind == Stmt::o_if);
+    CHECK(p.comments(p.blocks()[2]).size() == 1);
+    require_error("o1 if [1] G1 X1\n", "Unexpected character after O-word", 1, 11);
+    require_error("o1 foo\n", "Unknown control command in o word", 1, 4);
+    require_error("o1 if\n", "Left bracket missing after 'if'", 1, 6);
+    require_error("G1 X[1+2\n", "Unclosed expression", 1, 9);
+    require_error("G1 X-INF\n", "Unknown word where unary operation could be", 1, 6);
+    require_error("#1 5\n", "Equal sign missing in parameter setting", 1, 5);
+    require_error("G0 X1 (" + std::string(245, 'a') + ")\n", "Command too long", 1, 253);
+    CHECK_NOTHROW(P("G0 X1 (" + std::string(244, 'a') + ")\n"));  // 252 characters
 }

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstddef>
 #include <new>
+#include <type_traits>
 #include <vector>
 
 namespace toolcomp {
@@ -36,39 +37,59 @@ struct ColumnAllocator {
 template <class T>
 using Column = std::vector<T, ColumnAllocator<T>>;
 
-// Three doubles per row that are usually the same on every row (rotary axes, surface
-// normals, tool axis): nothing is stored while every row equals `fill`; the first row that
-// differs (bit for bit, so NaN equals NaN) writes out the rows before it and from then on
-// every row is stored. 72 of the Path's 192 bytes per segment on ordinary programs.
-class Vec3Column {
+// K values per row that are usually the same on every row (rotary axes, surface normals,
+// tool axis, the file a segment comes from): nothing is stored while every row equals
+// `fill`; the first row that differs (bit for bit, so NaN equals NaN) writes out the rows
+// before it and from then on every row is stored. 72 of the Path's 192 bytes per segment on
+// ordinary programs.
+template <class T, int K>
+class UniformColumn {
 public:
-    explicit Vec3Column(double x = 0, double y = 0, double z = 0) : fill_{x, y, z} {}
+    UniformColumn() { std::fill(fill_, fill_ + K, T{}); }
+    explicit UniformColumn(T x, T y = T{}, T z = T{}) {
+        const T v[3] = {x, y, z};
+        std::copy(v, v + K, fill_);
+    }
     std::size_t size() const { return n_; }
     bool uniform() const { return data_.empty(); }  // every row equals fill()
-    const double* fill() const { return fill_; }
-    const double* data() const { return data_.data(); }  // rows, when not uniform
-    double operator()(std::size_t row, int k) const { return uniform() ? fill_[k] : data_[3 * row + static_cast<std::size_t>(k)]; }
+    const T* fill() const { return fill_; }
+    const T* data() const { return data_.data(); }  // rows, when not uniform
+    T operator()(std::size_t row, int k = 0) const {
+        return uniform() ? fill_[k] : data_[K * row + static_cast<std::size_t>(k)];
+    }
     void reserve(std::size_t rows) { reserve_ = rows; }
-    void push(double x, double y, double z) {
-        if (uniform() && same(x, fill_[0]) && same(y, fill_[1]) && same(z, fill_[2])) {
-            ++n_;
-            return;
-        }
+    void push(const T* row) {
         if (uniform()) {
-            data_.reserve(3 * std::max(reserve_, n_ + 1));
-            for (std::size_t i = 0; i < n_; ++i) data_.insert(data_.end(), fill_, fill_ + 3);
+            bool same_row = true;
+            for (int k = 0; k < K; ++k) same_row = same_row && same(row[k], fill_[k]);
+            if (same_row) {
+                ++n_;
+                return;
+            }
+            data_.reserve(K * std::max(reserve_, n_ + 1));
+            for (std::size_t i = 0; i < n_; ++i) data_.insert(data_.end(), fill_, fill_ + K);
         }
-        data_.push_back(x);
-        data_.push_back(y);
-        data_.push_back(z);
+        data_.insert(data_.end(), row, row + K);
         ++n_;
     }
+    void push(T x, T y, T z) requires(K == 3) {
+        const T v[3] = {x, y, z};
+        push(v);
+    }
+    void push(T x) requires(K == 1) { push(&x); }
 
 private:
-    static bool same(double a, double b) { return a == b ? (a != 0 || std::signbit(a) == std::signbit(b)) : (a != a && b != b); }
-    double fill_[3];
+    static bool same(T a, T b) {
+        if constexpr (std::is_floating_point_v<T>)
+            return a == b ? (a != 0 || std::signbit(a) == std::signbit(b)) : (a != a && b != b);
+        else
+            return a == b;
+    }
+    T fill_[K];
     std::size_t n_ = 0, reserve_ = 0;
-    Column<double> data_;
+    Column<T> data_;
 };
+
+using Vec3Column = UniformColumn<double, 3>;
 
 }  // namespace toolcomp

@@ -5,6 +5,7 @@
 // float64 arrays without a copy.
 #include <cstdint>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include "toolcomp/column.hpp"
@@ -26,6 +27,10 @@ public:
     Column<std::int8_t> side;
     Column<std::uint8_t> plane;
     Column<std::uint8_t> generated;  // bool as byte
+    UniformColumn<std::int32_t, 1> file;  // index into `files` of the file the block is in
+    // The files segments come from: the main program first, then each called program or
+    // subprogram file in the order the run first entered it.
+    std::vector<std::string> files;
 
     std::size_t size() const { return kind.size(); }
     void reserve(std::size_t n);

@@ -2,6 +2,7 @@
 // The whole pipeline: program text -> Program -> interpreter -> Motion stream ->
 // compensation stages -> Path.
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -30,9 +31,13 @@ struct RunOptions {
     // `progress_every` blocks; may throw to stop the run.
     std::function<void(std::size_t)> progress;
     std::size_t progress_every = 1 << 16;
-    // Directories where programs called by name (Heidenhain CALL PGM) are looked up, in
-    // order, and nowhere else. Moves of a called program carry line numbers of its own file.
+    // Directories where programs called by name (Heidenhain CALL PGM, Sinumerik
+    // subprograms, LinuxCNC o<name> call, Fanuc M98 / G65) are looked up, in order, and
+    // nowhere else. Moves of a called program carry line numbers of its own file and its
+    // index in Path::files.
     std::vector<std::string> search_path;
+    // Numbered parameters the run starts from (LinuxCNC, Fanuc): a .var file's values.
+    std::map<int, double> parameters;
 };
 
 struct Result {
@@ -41,6 +46,7 @@ struct Result {
     std::vector<Diagnostic> diagnostics;
     std::size_t blocks = 0;
     std::optional<Blank> blank;  // the workpiece blank the program declares (mm), if any
+    std::map<int, double> parameters;  // numbered parameters set at the end (LinuxCNC, Fanuc)
     bool ok() const;
 };
 

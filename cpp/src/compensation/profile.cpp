@@ -8,6 +8,10 @@ ControlProfile profile_for(Dialect d, Machine machine) {
     ControlProfile p;
     p.name = std::string(dialect_name(d));
     p.machine = machine;
+    // Nested subprogram levels: LinuxCNC allows 9 (the 10th call is "Too many subroutine
+    // levels"), Fanuc 10 (M98 and G65 together, 0i/30i).
+    if (d == Dialect::linuxcnc) p.call_depth_limit = 9;
+    if (d == Dialect::fanuc) p.call_depth_limit = 10;
     switch (d) {
         case Dialect::fanuc: {
             // Fanuc "tool length compensation type A": the H value acts on Z; G44 subtracts.

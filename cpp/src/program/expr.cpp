@@ -26,21 +26,37 @@ struct FnName {
     std::string_view name;
     Fn fn;
     int min_args, max_args;
+    std::uint8_t families;
 };
+constexpr std::uint8_t S = family_sinumerik, L = family_linuxcnc, F = family_fanuc;
 constexpr FnName kFunctions[] = {
-    {"SIN", Fn::sin, 1, 1},       {"COS", Fn::cos, 1, 1},         {"TAN", Fn::tan, 1, 1},
-    {"ASIN", Fn::asin, 1, 1},     {"ACOS", Fn::acos, 1, 1},       {"ATAN2", Fn::atan2, 2, 2},
-    {"SQRT", Fn::sqrt, 1, 1},     {"ABS", Fn::abs, 1, 1},         {"EXP", Fn::exp, 1, 1},
-    {"LN", Fn::ln, 1, 1},         {"ROUND", Fn::round, 1, 1},     {"TRUNC", Fn::trunc, 1, 1},
-    {"ROUNDUP", Fn::roundup, 1, 1}, {"POT", Fn::square, 1, 1},    {"MINVAL", Fn::minval, 2, 2},
-    {"MAXVAL", Fn::maxval, 2, 2}, {"BOUND", Fn::bound, 3, 3},
+    {"SIN", Fn::sin, 1, 1, S | L | F},      {"COS", Fn::cos, 1, 1, S | L | F},
+    {"TAN", Fn::tan, 1, 1, S | L | F},      {"ASIN", Fn::asin, 1, 1, S | L | F},
+    {"ACOS", Fn::acos, 1, 1, S | L | F},    {"ATAN2", Fn::atan2, 2, 2, S},
+    {"SQRT", Fn::sqrt, 1, 1, S | L | F},    {"ABS", Fn::abs, 1, 1, S | L | F},
+    {"EXP", Fn::exp, 1, 1, S | L | F},      {"LN", Fn::ln, 1, 1, S | L | F},
+    {"ROUND", Fn::round, 1, 1, S | L | F},  {"TRUNC", Fn::trunc, 1, 1, S},
+    {"ROUNDUP", Fn::roundup, 1, 1, S},      {"POT", Fn::square, 1, 1, S},
+    {"MINVAL", Fn::minval, 2, 2, S},        {"MAXVAL", Fn::maxval, 2, 2, S},
+    {"BOUND", Fn::bound, 3, 3, S},          {"FIX", Fn::floor, 1, 1, L},
+    {"FUP", Fn::ceil, 1, 1, L},             {"FIX", Fn::trunc, 1, 1, F},
+    {"FUP", Fn::away, 1, 1, F},
 };
+const FnName* find_function(const std::string& name, std::uint8_t family) {
+    for (const FnName& k : kFunctions)
+        if (k.name == name && (k.families & family)) return &k;
+    return nullptr;
+}
 
 class Parser {
 public:
     Parser(std::string_view t, std::size_t pos, const Syntax& s) : t_(t), p_(pos), s_(s) {}
     Expr run() {
         expression(0, 0);
+        return std::move(e_);
+    }
+    Expr run_value() {
+        unary(0);
         return std::move(e_);
     }
     std::size_t pos() const { return p_; }
@@ -55,7 +71,8 @@ private:
         if (t_.size() - p_ < spelling.size()) return false;
         for (std::size_t i = 0; i < spelling.size(); ++i)
             if (std::toupper(static_cast<unsigned char>(t_[p_ + i])) != spelling[i]) return false;
-        if (ident_start(spelling[0])) {
+        // (ISO controls read lines without blanks: "[#3LT3]" has the operator LT.)
+        if (ident_start(spelling[0]) && !s_.hash_parameters) {
             std::size_t end = p_ + spelling.size();
             if (end < t_.size() && ident_char(t_[end])) return false;
         }
@@ -93,6 +110,10 @@ private:
             if (c == '-') emit(Op::neg);
             return;
         }
+        if (c == '#' && s_.hash_parameters) {
+            parameter(depth + 1);
+            return;
+        }
         if (s_.unary_not && matches("NOT")) {
             p_ += 3;
             unary(depth + 1);
@@ -112,7 +133,7 @@ private:
         char c = t_[p_];
         double v;
         if (std::isdigit(static_cast<unsigned char>(c)) || c == '.') {
-            if (!read_number(t_, p_, v, true)) error("Bad number");
+            if (!read_number(t_, p_, v, s_.ex_exponent)) error("Bad number");
             e_.code.push_back(Instr{Op::number, 0, Fn::sin, 0, v});
             return;
         }
@@ -120,7 +141,8 @@ private:
             ++p_;
             expression(0, depth + 1);
             blanks();
-            if (p_ >= t_.size() || t_[p_] != s_.close) error(std::string("'") + s_.close + "' expected");
+            if (p_ >= t_.size() || t_[p_] != s_.close)
+                error(s_.hash_parameters ? std::string("Unclosed expression") : std::string("'") + s_.close + "' expected");
             ++p_;
             return;
         }
@@ -129,16 +151,18 @@ private:
         std::size_t b = p_;
         while (p_ < t_.size() && ident_char(t_[p_])) ++p_;
         std::string name = upper(t_.substr(b, p_ - b));
-        if (name == "TRUE" || name == "FALSE") {
+        if (!s_.hash_parameters && (name == "TRUE" || name == "FALSE")) {
             e_.code.push_back(Instr{Op::number, 0, Fn::sin, 0, name == "TRUE" ? 1.0 : 0.0});
             return;
         }
         std::size_t after = p_;
         blanks();
+        if (s_.hash_parameters) {
+            iso_function(name, b, depth);
+            return;
+        }
         if (p_ < t_.size() && t_[p_] == s_.open) {
-            const FnName* f = nullptr;
-            for (const FnName& k : kFunctions)
-                if (k.name == name) f = &k;
+            const FnName* f = find_function(name, s_.family);
             if (!f) {
                 p_ = b;
                 error("Unknown function " + name);
@@ -193,6 +217,95 @@ private:
         e_.code.push_back(Instr{Op::variable, static_cast<std::uint8_t>(n), Fn::sin, id, 0});
     }
 
+    // '#' then what names the parameter: a number, another '#', a bracketed expression, or
+    // (LinuxCNC) <name>.
+    void parameter(int depth) {
+        if (depth > kMaxDepth) error("Expression nested too deeply");
+        ++p_;
+        blanks();
+        if (p_ < t_.size() && t_[p_] == '<' && (s_.family & family_linuxcnc)) {
+            emit_named(Op::variable, named_parameter());
+            return;
+        }
+        if (p_ >= t_.size()) error("Parameter number expected after '#'");
+        char c = t_[p_];
+        if (c == '#') {
+            parameter(depth + 1);
+        } else if (c == s_.open) {
+            primary(depth + 1);
+        } else if (std::isdigit(static_cast<unsigned char>(c)) || c == '.') {
+            double v;
+            if (!read_number(t_, p_, v, false)) error("Bad number");
+            e_.code.push_back(Instr{Op::number, 0, Fn::sin, 0, v});
+        } else if (c == '-' || c == '+') {
+            unary(depth + 1);  // "#-1": refused by the reader of the number
+        } else {
+            error("Bad parameter number");
+        }
+        emit(Op::param);
+    }
+    // <name> of a LinuxCNC named parameter (blanks inside are dropped, case folded); p_ at '<'.
+    std::string named_parameter() {
+        std::size_t b = ++p_;
+        while (p_ < t_.size() && t_[p_] != '>') ++p_;
+        if (p_ >= t_.size()) error("Named parameter not terminated");
+        std::string name;
+        for (std::size_t i = b; i < p_; ++i)
+            if (t_[i] != ' ' && t_[i] != '\t') name.push_back(static_cast<char>(std::tolower(static_cast<unsigned char>(t_[i]))));
+        ++p_;
+        if (name.empty()) error("Named parameter with no name");
+        return name;
+    }
+    void emit_named(Op op, const std::string& name) {
+        std::uint32_t id = 0;
+        while (id < e_.names.size() && e_.names[id] != name) ++id;
+        if (id == e_.names.size()) e_.names.push_back(name);
+        e_.code.push_back(Instr{op, 0, Fn::sin, id, 0});
+    }
+    // A function of the ISO controls: NAME[arg], ATAN[a]/[b], EXISTS[#<name>]. Bare names
+    // are not values there.
+    void iso_function(const std::string& name, std::size_t begin, int depth) {
+        auto bracketed = [&] {
+            blanks();
+            if (p_ >= t_.size() || t_[p_] != s_.open) error(std::string("'") + s_.open + "' expected after " + name);
+            primary(depth + 1);
+        };
+        if (name == "EXISTS" && (s_.family & family_linuxcnc)) {
+            blanks();
+            if (p_ >= t_.size() || t_[p_] != s_.open) error("'[' expected after EXISTS");
+            ++p_;
+            blanks();
+            if (p_ + 1 >= t_.size() || t_[p_] != '#') error("EXISTS takes a named parameter");
+            ++p_;
+            blanks();
+            if (p_ >= t_.size() || t_[p_] != '<') error("EXISTS takes a named parameter");
+            std::string n = named_parameter();
+            blanks();
+            if (p_ >= t_.size() || t_[p_] != s_.close) error(std::string("'") + s_.close + "' expected");
+            ++p_;
+            emit_named(Op::exists, n);
+            return;
+        }
+        if (name == "ATAN" && s_.atan_slash) {
+            bracketed();
+            blanks();
+            if (p_ >= t_.size() || t_[p_] != '/') error("Slash missing after first atan argument");
+            ++p_;
+            blanks();
+            if (p_ >= t_.size() || t_[p_] != s_.open) error("Left bracket missing after slash with atan");
+            bracketed();
+            e_.code.push_back(Instr{Op::call, 2, Fn::atan_ratio, 0, 0});
+            return;
+        }
+        const FnName* f = find_function(name, s_.family);
+        if (!f) {
+            p_ = begin;
+            error("Unknown word where unary operation could be");
+        }
+        bracketed();
+        e_.code.push_back(Instr{Op::call, 1, f->fn, 0, 0});
+    }
+
     std::string_view t_;
     std::size_t p_;
     const Syntax& s_;
@@ -202,7 +315,7 @@ private:
 double to_deg(double r) { return r * 180.0 / kPi; }
 double to_rad(double d) { return d * kPi / 180.0; }
 std::int64_t as_int(double v) {
-    if (!(std::fabs(v) < 9.2e18)) throw MathError("Value out of the integer range");
+    if (!(std::fabs(v) < 9.2e18)) throw MathError("Value out of the integer range", MathFault::integer_range);
     return static_cast<std::int64_t>(std::llround(v));
 }
 
@@ -212,35 +325,39 @@ double call(Fn f, const double* a) {
         case Fn::cos: return std::cos(to_rad(a[0]));
         case Fn::tan: {
             double c = std::cos(to_rad(a[0]));
-            if (std::fabs(c) < 1e-15) throw MathError("TAN of an odd multiple of 90 degrees");
+            if (std::fabs(c) < 1e-15) throw MathError("TAN of an odd multiple of 90 degrees", MathFault::tan_pole);
             return std::sin(to_rad(a[0])) / c;
         }
         case Fn::asin:
-            if (a[0] < -1 || a[0] > 1) throw MathError("ASIN argument outside -1..1");
+            if (a[0] < -1 || a[0] > 1) throw MathError("ASIN argument outside -1..1", MathFault::asin_domain);
             return to_deg(std::asin(a[0]));
         case Fn::acos:
-            if (a[0] < -1 || a[0] > 1) throw MathError("ACOS argument outside -1..1");
+            if (a[0] < -1 || a[0] > 1) throw MathError("ACOS argument outside -1..1", MathFault::acos_domain);
             return to_deg(std::acos(a[0]));
         case Fn::atan: return to_deg(std::atan(a[0]));
         case Fn::atan2:
-            if (a[0] == 0 && a[1] == 0) throw MathError("ATAN2 of (0, 0)");
+            if (a[0] == 0 && a[1] == 0) throw MathError("ATAN2 of (0, 0)", MathFault::atan_origin);
             return to_deg(std::atan2(a[0], a[1]));
         case Fn::sqrt:
-            if (a[0] < 0) throw MathError("SQRT of a negative number");
+            if (a[0] < 0) throw MathError("SQRT of a negative number", MathFault::sqrt_negative);
             return std::sqrt(a[0]);
         case Fn::abs: return std::fabs(a[0]);
         case Fn::exp: return std::exp(a[0]);
         case Fn::ln:
-            if (a[0] <= 0) throw MathError("LN of a number not greater than zero");
+            if (a[0] <= 0) throw MathError("LN of a number not greater than zero", MathFault::ln_domain);
             return std::log(a[0]);
         case Fn::round: return std::round(a[0]);
         case Fn::trunc: return std::trunc(a[0]);
         case Fn::roundup: return std::ceil(a[0]);
         case Fn::square: return a[0] * a[0];
+        case Fn::floor: return std::floor(a[0]);
+        case Fn::atan_ratio: return to_deg(std::atan2(a[0], a[1]));
+        case Fn::ceil: return std::ceil(a[0]);
+        case Fn::away: return a[0] < 0 ? -std::ceil(-a[0]) : std::ceil(a[0]);
         case Fn::minval: return std::fmin(a[0], a[1]);
         case Fn::maxval: return std::fmax(a[0], a[1]);
         case Fn::bound:
-            if (a[0] > a[1]) throw MathError("BOUND: minimum greater than maximum");
+            if (a[0] > a[1]) throw MathError("BOUND: minimum greater than maximum", MathFault::bound_order);
             return std::fmin(std::fmax(a[2], a[0]), a[1]);
     }
     return 0;
@@ -259,6 +376,34 @@ const Syntax& sinumerik_syntax() {
                            {"==", Op::eq, 1},          {"<>", Op::ne, 1},          {"<=", Op::le, 1},
                            {">=", Op::ge, 1},          {"<", Op::lt, 1},           {">", Op::gt, 1}},
                           true};
+    return s;
+}
+
+const Syntax& linuxcnc_syntax() {
+    // RS274/NGC: ** ; * / MOD ; + - ; EQ NE GT GE LT LE ; AND OR XOR, all left to right.
+    // EQ/NE compare within 0.0001 (LinuxCNC's TOLERANCE_EQUAL), the others exactly; MOD's
+    // result is never negative ([-7 MOD 3] = 2, [5 MOD -3] = 2).
+    static const Syntax s{'[', ']', 0, 0,
+                          {{"**", Op::pow, 6},          {"*", Op::mul, 5},           {"/", Op::div, 5},
+                           {"MOD", Op::mod, 5},         {"+", Op::add, 4},           {"-", Op::sub, 4},
+                           {"EQ", Op::eq, 3},           {"NE", Op::ne, 3},           {"GT", Op::gt, 3},
+                           {"GE", Op::ge, 3},           {"LT", Op::lt, 3},           {"LE", Op::le, 3},
+                           {"AND", Op::logical_and, 2}, {"OR", Op::logical_or, 2},   {"XOR", Op::logical_xor, 2}},
+                          false, family_linuxcnc, true, true, false, 1e-4, true, false};
+    return s;
+}
+
+const Syntax& fanuc_syntax() {
+    // Fanuc Macro B: * / AND MOD ; + - OR XOR ; the comparisons EQ NE GT GE LT LE of IF and
+    // WHILE conditions. AND / OR / XOR are read as logical operations (the bitwise reading of
+    // the manual agrees on the 0/1 values conditions produce). Vacant values (Syntax::vacant).
+    static const Syntax s{'[', ']', 0, 0,
+                          {{"*", Op::mul, 5},           {"/", Op::div, 5},           {"AND", Op::logical_and, 5},
+                           {"MOD", Op::mod, 5},         {"+", Op::add, 4},           {"-", Op::sub, 4},
+                           {"OR", Op::logical_or, 4},   {"XOR", Op::logical_xor, 4}, {"EQ", Op::eq, 3},
+                           {"NE", Op::ne, 3},           {"GT", Op::gt, 3},           {"GE", Op::ge, 3},
+                           {"LT", Op::lt, 3},           {"LE", Op::le, 3}},
+                          false, family_fanuc, true, true, false, 0, false, true};
     return s;
 }
 
@@ -301,6 +446,13 @@ Expr parse(std::string_view text, std::size_t& pos, const Syntax& syntax) {
     return e;
 }
 
+Expr parse_value(std::string_view text, std::size_t& pos, const Syntax& syntax) {
+    Parser p(text, pos, syntax);
+    Expr e = p.run_value();
+    pos = p.pos();
+    return e;
+}
+
 Expr parse_all(std::string_view text, const Syntax& syntax) {
     std::size_t pos = 0;
     Expr e = parse(text, pos, syntax);
@@ -310,28 +462,32 @@ Expr parse_all(std::string_view text, const Syntax& syntax) {
 }
 
 namespace {
-int run(const Expr& e, Env& env, double* stack);
+int run(const Expr& e, Env& env, double* stack, const Syntax* syntax);
 }
 
-double evaluate(const Expr& e, Env& env) {
+double evaluate(const Expr& e, Env& env, const Syntax* syntax) {
     double stack[512];
-    int sp = run(e, env, stack);
+    int sp = run(e, env, stack, syntax);
     return sp == 1 ? stack[0] : 0.0;
 }
 
 void evaluate_all(const Expr& e, Env& env, std::vector<double>& out) {
     double stack[512];
-    int sp = run(e, env, stack);
+    int sp = run(e, env, stack, nullptr);
     out.assign(stack, stack + sp);
 }
 
 namespace {
-int run(const Expr& e, Env& env, double* stack) {
+// Fanuc: a vacant value counts as 0 in arithmetic and functions.
+double value_of(double v, const Syntax* s) { return s && s->vacant && std::isnan(v) ? 0.0 : v; }
+
+int run(const Expr& e, Env& env, double* stack, const Syntax* syn) {
     int sp = 0;
     auto push = [&](double v) {
         if (sp >= 512) throw MathError("Expression too complex");
         stack[sp++] = v;
     };
+    const double eq_tol = syn ? syn->eq_tolerance : 0;
     for (const Instr& in : e.code) {
         switch (in.op) {
             case Op::number: push(in.value); break;
@@ -341,38 +497,58 @@ int run(const Expr& e, Env& env, double* stack) {
                 push(v);
                 break;
             }
+            case Op::param: {
+                const double n = stack[--sp];
+                push(env.param(value_of(n, syn)));
+                break;
+            }
+            case Op::exists: push(env.exists(e.names[in.name]) ? 1.0 : 0.0); break;
             case Op::call: {
                 sp -= in.argc;
+                for (int k = 0; k < in.argc; ++k) stack[sp + k] = value_of(stack[sp + k], syn);
                 const double r = call(in.fn, stack + sp);
-                if (!std::isfinite(r)) throw MathError("Result out of range");
+                if (!std::isfinite(r)) throw MathError("Result out of range", MathFault::out_of_range);
                 push(r);
                 break;
             }
-            case Op::neg: stack[sp - 1] = -stack[sp - 1]; break;
-            case Op::logical_not: stack[sp - 1] = stack[sp - 1] == 0 ? 1 : 0; break;
+            case Op::neg: stack[sp - 1] = -value_of(stack[sp - 1], syn); break;
+            case Op::logical_not: stack[sp - 1] = value_of(stack[sp - 1], syn) == 0 ? 1 : 0; break;
             case Op::bit_not: stack[sp - 1] = static_cast<double>(~as_int(stack[sp - 1])); break;
             default: {
                 double b = stack[--sp];
                 double& a = stack[sp - 1];
+                if ((in.op == Op::eq || in.op == Op::ne) && syn && syn->vacant && (std::isnan(a) || std::isnan(b))) {
+                    // Fanuc: vacant equals only vacant (#1 EQ #0), never 0.
+                    const bool same = std::isnan(a) && std::isnan(b);
+                    a = (in.op == Op::eq) == same ? 1 : 0;
+                    break;
+                }
+                a = value_of(a, syn);
+                b = value_of(b, syn);
                 switch (in.op) {
                     case Op::add: a = a + b; break;
                     case Op::sub: a = a - b; break;
                     case Op::mul: a = a * b; break;
                     case Op::div:
-                        if (b == 0) throw MathError("Division by zero");
+                        if (b == 0) throw MathError("Division by zero", MathFault::divide_by_zero);
                         a = a / b;
                         break;
                     case Op::int_div:
-                        if (b == 0) throw MathError("Division by zero");
+                        if (b == 0) throw MathError("Division by zero", MathFault::divide_by_zero);
                         a = std::trunc(a / b);
                         break;
                     case Op::mod:
-                        if (b == 0) throw MathError("Division by zero");
+                        if (b == 0) throw MathError("Division by zero", MathFault::not_a_number);
                         a = std::fmod(a, b);
+                        if (syn && syn->mod_floor && a < 0) a += std::fabs(b);
                         break;
-                    case Op::pow: a = std::pow(a, b); break;
-                    case Op::eq: a = a == b; break;
-                    case Op::ne: a = a != b; break;
+                    case Op::pow:
+                        if (a < 0 && std::floor(b) != b)
+                            throw MathError("Negative base raised to a non-integer power", MathFault::negative_power);
+                        a = std::pow(a, b);
+                        break;
+                    case Op::eq: a = eq_tol > 0 ? std::fabs(a - b) < eq_tol : a == b; break;
+                    case Op::ne: a = eq_tol > 0 ? std::fabs(a - b) >= eq_tol : a != b; break;
                     case Op::lt: a = a < b; break;
                     case Op::le: a = a <= b; break;
                     case Op::gt: a = a > b; break;
@@ -385,7 +561,7 @@ int run(const Expr& e, Env& env, double* stack) {
                     case Op::bit_xor: a = static_cast<double>(as_int(a) ^ as_int(b)); break;
                     default: break;
                 }
-                if (!std::isfinite(a)) throw MathError("Result out of range");
+                if (!std::isfinite(a)) throw MathError("Result out of range", MathFault::out_of_range);
             }
         }
     }

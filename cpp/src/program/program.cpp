@@ -9,6 +9,7 @@ void Program::begin_block(int line, bool block_delete) {
     b.first_word = static_cast<std::uint32_t>(words_.size());
     b.first_comment = static_cast<std::uint32_t>(comments_.size());
     b.first_token = static_cast<std::uint32_t>(tokens_.size());
+    b.first_statement = static_cast<std::uint32_t>(statements_.size());
     blocks_.push_back(b);
 }
 
@@ -18,6 +19,7 @@ void Program::drop_last_block() {
     words_.resize(b.first_word);
     comments_.resize(b.first_comment);
     tokens_.resize(b.first_token);
+    statements_.resize(b.first_statement);
     blocks_.pop_back();
 }
 

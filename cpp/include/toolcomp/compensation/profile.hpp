@@ -155,8 +155,10 @@ struct ControlProfile {
     // ---- interpreter ------------------------------------------------------------------
     bool startup_inch = false;  // G20 active at program start
     // Blocks a program may execute (loops and repeats count every pass): beyond it the run
-    // stops with an error instead of hanging.
-    std::size_t block_limit = 50'000'000;
+    // stops with an error instead of hanging. Subprogram calls nested deeper than
+    // `call_depth_limit` (recursion without end) stop it the same way.
+    std::size_t block_limit = 100'000'000;
+    std::size_t call_depth_limit = 100;
     // Arc tolerances, in program units ([0] for mm programs, [1] for inch programs), as
     // LinuxCNC 2.9 applies them: an arc given by its centre is refused when its start and
     // end radius differ by more than `arc_spiral_hard_factor`·`arc_spiral_abs`, or by more

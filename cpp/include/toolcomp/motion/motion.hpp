@@ -57,6 +57,7 @@ struct Motion {
     std::array<double, 3> abc{0, 0, 0};  // rotary axes at the end, degrees
     double feed = std::numeric_limits<double>::quiet_NaN();  // mm/min, NaN for rapids
     std::int32_t line = 0;
+    std::int32_t file = 0;  // which file the block is in (Path::files)
     std::int32_t tool = 0;
     Vec3 tool_offset = Vec3::Zero();
     RadiusRequest radius;

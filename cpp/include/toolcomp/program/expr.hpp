@@ -7,6 +7,11 @@
 // operators, function calls); what differs between controls is the spelling and precedence
 // of the operators and the brackets, given by a Syntax. Trigonometry works in degrees, as
 // on every control toolcomp reads.
+//
+// ISO macro forms (LinuxCNC, Fanuc Macro B) read parameters with '#': "#5", "##2" (the
+// parameter whose number is in #2), "#[1+2]" and, LinuxCNC only, "#<name>". Fanuc's
+// parameters can be vacant (never set): a vacant value travels as NaN through a plain copy
+// and counts as 0 in arithmetic (Syntax::vacant).
 #include <cstdint>
 #include <span>
 #include <stdexcept>
@@ -18,6 +23,8 @@ namespace toolcomp::expr {
 
 enum class Op : std::uint8_t {
     number, variable, call,
+    param,   // ISO '#': pops a parameter number, pushes its value
+    exists,  // LinuxCNC EXISTS[#<name>]: 1 when the named parameter is defined
     neg, logical_not, bit_not,
     add, sub, mul, div, int_div, mod, pow,
     eq, ne, lt, le, gt, ge,
@@ -27,7 +34,12 @@ enum class Op : std::uint8_t {
 enum class Fn : std::uint8_t {
     sin, cos, tan, asin, acos, atan, atan2, sqrt, abs, exp, ln, round, trunc, roundup, square,
     minval, maxval, bound,
+    floor, ceil, away,  // LinuxCNC FIX / FUP; Fanuc FUP (away from zero)
+    atan_ratio,         // ATAN[a]/[b]: atan2 in degrees, 0 for 0/0
 };
+
+// Which controls know a function name.
+enum Family : std::uint8_t { family_sinumerik = 1, family_linuxcnc = 2, family_fanuc = 4 };
 
 struct Instr {
     Op op = Op::number;
@@ -54,23 +66,41 @@ struct Syntax {
     char index_open = '[', index_close = ']';  // array indices of variables (0: none)
     std::vector<BinaryOp> binary;              // longest spellings first where they overlap
     bool unary_not = true;                     // NOT / B_NOT prefixes
+    std::uint8_t family = family_sinumerik;    // function names of this control
+    bool hash_parameters = false;              // '#' parameters; no bare names
+    bool atan_slash = false;                   // ATAN[a]/[b]
+    bool ex_exponent = true;                   // numbers with EX exponents (1.5EX3)
+    double eq_tolerance = 0;                   // EQ / NE compare within this
+    bool mod_floor = false;                    // MOD takes the divisor's sign (never negative for b > 0)
+    bool vacant = false;                       // NaN parameters are vacant (Fanuc)
 };
 const Syntax& sinumerik_syntax();
+const Syntax& linuxcnc_syntax();
+const Syntax& fanuc_syntax();
 
 // A syntax error: message and the 0-based offset into the text where it was found.
 struct SyntaxError : std::runtime_error {
     SyntaxError(const std::string& m, std::size_t offset) : std::runtime_error(m), offset(offset) {}
     std::size_t offset;
 };
-// A math error while evaluating (division by zero, SQRT of a negative number, ...).
+// A math error while evaluating (division by zero, SQRT of a negative number, ...). `fault`
+// lets a dialect word it the way its control does.
+enum class MathFault : std::uint8_t {
+    other, divide_by_zero, sqrt_negative, ln_domain, asin_domain, acos_domain, tan_pole, atan_origin,
+    negative_power, out_of_range, not_a_number, integer_range, bound_order,
+};
 struct MathError : std::runtime_error {
-    using std::runtime_error::runtime_error;
+    explicit MathError(const std::string& m, MathFault f = MathFault::other) : std::runtime_error(m), fault(f) {}
+    MathFault fault;
 };
 
 // Parses the expression starting at `pos` (leading blanks skipped) and stops before the first
 // text that cannot continue it (so "10 Y20" parses "10" and leaves pos at " Y20"). Throws
 // SyntaxError. Nesting deeper than 200 levels is a syntax error, never a stack overflow.
 Expr parse(std::string_view text, std::size_t& pos, const Syntax& syntax);
+// One operand only (signs, then a number, a variable or parameter, a bracketed expression or
+// a function): the value of a LinuxCNC word ("X#1", "X[1+2]", "Xsin[30]").
+Expr parse_value(std::string_view text, std::size_t& pos, const Syntax& syntax);
 // The whole text must be one expression.
 Expr parse_all(std::string_view text, const Syntax& syntax);
 
@@ -79,10 +109,14 @@ class Env {
 public:
     virtual ~Env() = default;
     virtual double get(const std::string& name, std::span<const double> indices) = 0;
+    // ISO '#n' (Syntax::hash_parameters); NaN = vacant where the syntax has vacant values.
+    virtual double param(double number) { (void)number; throw MathError("Parameters are not available here"); }
+    virtual bool exists(const std::string& name) { (void)name; return false; }
 };
 
 // Evaluates; throws MathError, and whatever Env::get throws.
-double evaluate(const Expr& e, Env& env);
+// `syntax` (optional) gives the comparison tolerance, MOD's sign and vacant values.
+double evaluate(const Expr& e, Env& env, const Syntax* syntax = nullptr);
 // Evaluates code that leaves several values (the indices of an assignment target) into `out`.
 void evaluate_all(const Expr& e, Env& env, std::vector<double>& out);
 

@@ -22,6 +22,32 @@ struct Word {
     char letter = 0;   // upper case
     double value = 0;  // as written (program units)
     int column = 0;    // 1-based column of the letter
+    std::int32_t expr = -1;  // a computed value (X[#1+2], X#5): index of its expression
+};
+
+// A statement of an ISO block that computes or steers (LinuxCNC parameters and O-words,
+// Fanuc Macro B). Expressions are indices into Program::expression; -1 = none.
+enum class Stmt : std::uint8_t {
+    assign,  // #n = value / #<name> = value (target: number expression, or name)
+    // LinuxCNC O-words (label: "100" or "<name>")
+    o_sub, o_endsub, o_call, o_return, o_if, o_elseif, o_else, o_endif,
+    o_while, o_endwhile, o_do, o_repeat, o_endrepeat, o_break, o_continue,
+    // Fanuc Macro B
+    program_number,  // O1000 (label) at the start of a program
+    goto_n,          // GOTO n (target: expression of the sequence number)
+    if_goto,         // IF [cond] GOTO n
+    if_then,         // IF [cond] THEN: the assignments after it in the block are conditional
+    while_do,        // WHILE [cond] DO m (loop: m)
+    end_loop,        // END m
+};
+struct Statement {
+    Stmt kind = Stmt::assign;
+    int column = 0;
+    std::string label;         // O-word label; assign to a named parameter: its name
+    std::int32_t target = -1;  // assign: parameter number; goto: sequence number
+    std::int32_t value = -1;   // assign value, condition, repeat count, return value
+    std::int32_t loop = 0;     // Fanuc DO / END identifier
+    std::vector<std::int32_t> args;  // o_call arguments
 };
 
 // A token of a conversational block (Heidenhain Klartext): a keyword or address with an
@@ -49,6 +75,7 @@ struct Block {
     std::uint32_t first_word = 0, word_count = 0;
     std::uint32_t first_comment = 0, comment_count = 0;
     std::uint32_t first_token = 0, token_count = 0;
+    std::uint32_t first_statement = 0, statement_count = 0;
 };
 
 // The workpiece blank (Heidenhain BLK FORM 0.1 / 0.2), program units.
@@ -81,6 +108,9 @@ public:
         return {comments_.data() + b.first_comment, b.comment_count};
     }
     std::span<const Token> tokens(const Block& b) const { return {tokens_.data() + b.first_token, b.token_count}; }
+    std::span<const Statement> statements(const Block& b) const {
+        return {statements_.data() + b.first_statement, b.statement_count};
+    }
     std::size_t word_count() const { return words_.size(); }
     const expr::Expr& expression(std::int32_t i) const { return exprs_[static_cast<std::size_t>(i)]; }
 
@@ -95,10 +125,15 @@ public:
         comments_.push_back(std::move(c));
         ++blocks_.back().comment_count;
     }
+    void add_statement(Statement s) {
+        statements_.push_back(std::move(s));
+        ++blocks_.back().statement_count;
+    }
     std::int32_t add_expression(expr::Expr e) {
         exprs_.push_back(std::move(e));
         return static_cast<std::int32_t>(exprs_.size() - 1);
     }
+    void drop_last_expression() { exprs_.pop_back(); }
     // Removes the last block (a front end that failed half-way through it).
     void drop_last_block();
     void reserve(std::size_t blocks, std::size_t words) {
@@ -112,6 +147,7 @@ private:
     std::vector<Comment> comments_;
     std::vector<Token> tokens_;
     std::vector<expr::Expr> exprs_;
+    std::vector<Statement> statements_;
 };
 
 }  // namespace toolcomp

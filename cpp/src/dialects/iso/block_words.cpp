@@ -31,8 +31,11 @@ void add_g(BlockWords& bw, const Word& w, Dialect d) {
     if (group == kUnsupported)
         fail("unsupported_g_code", code_text('G', code) + " is not supported by toolcomp", bw.line, w.column);
     if (bw.g[group] >= 0) {
-        // LinuxCNC lets G80 stand beside another motion code; the other code wins.
-        if (group == g_motion && (code == 800 || bw.g[group] == 800)) {
+        // LinuxCNC lets G80 stand beside another motion code; the other code wins. On Fanuc
+        // the last code of a modal group in a block is the one that counts.
+        if (d == Dialect::fanuc && group != g_nonmodal) {
+            // replaced below
+        } else if (group == g_motion && (code == 800 || bw.g[group] == 800)) {
             if (code == 800) return;
         } else {
             fail("modal_group_conflict", "Two g codes used from same modal group", bw.line, w.column);
@@ -71,15 +74,19 @@ int BlockWords::axis_column() const {
 }
 
 BlockWords collect_words(const Program& prog, const Block& block) {
+    return collect_words(prog.words(block), block.line, prog.dialect);
+}
+
+BlockWords collect_words(std::span<const Word> words, int line, Dialect dialect) {
     BlockWords bw;
-    bw.line = block.line;
+    bw.line = line;
     bw.g.fill(-1);
     bw.m.fill(-1);
-    for (const Word& w : prog.words(block)) {
+    for (const Word& w : words) {
         if (w.letter == 'G') {
-            add_g(bw, w, prog.dialect);
+            add_g(bw, w, dialect);
         } else if (w.letter == 'M') {
-            add_m(bw, w, prog.dialect);
+            add_m(bw, w, dialect);
         } else {
             WordSlot& slot = bw.letter[w.letter - 'A'];
             if (slot.set) {

@@ -2,6 +2,7 @@
 // The words of one block sorted by meaning: one slot per letter, G codes by modal group,
 // M codes by group. Built with LinuxCNC's checks (one word per letter, one code per group).
 #include <array>
+#include <span>
 
 #include "codes.hpp"
 #include "toolcomp/program/int_value.hpp"
@@ -35,6 +36,8 @@ struct BlockWords {
 };
 
 BlockWords collect_words(const Program& prog, const Block& block);
+// The same for words whose values are already computed (programs with parameters).
+BlockWords collect_words(std::span<const Word> words, int line, Dialect dialect);
 
 // Integer words (T, D, H, L, P, Q, M, G x 10) convert through toolcomp::int_value
 // (program/int_value.hpp; G10's P is truncated, LinuxCNC's reading).

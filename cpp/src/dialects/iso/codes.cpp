@@ -19,6 +19,8 @@ int g_group(int c, Dialect d) {
         case 400: case 410: case 420: case 411: case 421: return g_radius_comp;
         case 430: case 431: case 432: case 490: return g_length_comp;
         case 440: return d == Dialect::fanuc ? g_length_comp : kUnknown;
+        case 650: return d == Dialect::fanuc ? g_nonmodal : kUnknown;  // Fanuc G65 macro call
+        case 660: case 661: case 670: return d == Dialect::fanuc ? kUnsupported : kUnknown;  // modal macro calls
         case 980: case 990: return g_retract;
         case 540: case 550: case 560: case 570: case 580: case 590: case 591: case 592: case 593:
             return g_coord_system;
@@ -46,8 +48,8 @@ int m_group(int c, Dialect d) {
             return m_io;  // digital/analog I/O: refused when run (see interp.cpp)
         case 190: case 700: case 710: case 720: case 730:
             return kUnsupported;
-        case 980: case 990:
-            return d == Dialect::fanuc ? kUnsupported : kUnknown;
+        case 980: case 990:  // Fanuc M98 subprogram call, M99 return
+            return d == Dialect::fanuc ? m_subprogram : kUnknown;
         case 8000: case 8010:  // 9/Series: M800 / M801 disable / enable the TTRC checks
             return d == Dialect::rockwell ? m_checks : kUnknown;
         default:

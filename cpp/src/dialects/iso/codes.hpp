@@ -15,6 +15,7 @@ enum GGroup : int {
 };
 enum MGroup : int {
     m_io = 5, m_stop = 4, m_tool_change = 6, m_checks = 10, m_spindle = 7, m_coolant = 8, m_override = 9,
+    m_subprogram = 11,
     m_group_count = 12
 };
 

@@ -32,7 +32,11 @@ std::string lower_prefix(const std::string& s, std::size_t n) {
 
 Interp::Interp(const Program& prog, const ToolTable* tools, const ControlProfile& profile,
                const InterpretOptions& opts, MotionSink& sink, std::vector<Diagnostic>& diags)
-    : prog_(prog), tools_(tools), profile_(profile), opts_(opts), sink_(sink), diags_(diags) {
+    : prog_(prog), tools_(tools), profile_(profile), opts_(opts), sink_(sink), diags_(diags),
+      params_(prog.dialect == Dialect::fanuc) {
+    if (prog.dialect == Dialect::linuxcnc) syntax_ = &expr::linuxcnc_syntax();
+    if (prog.dialect == Dialect::fanuc) syntax_ = &expr::fanuc_syntax();
+    params_.load(opts.parameters);
     for (auto& o : g5x_) o.setZero();
     st_.inch = profile.startup_inch;
     st_.diameter = profile.x_diameter;
@@ -72,24 +76,77 @@ void Interp::count_block(int column) {
 }
 
 void Interp::run() {
+    main_.prog = &prog_;
+    main_.flow = scan_flow(prog_);
+    files_.push_back(prog_.name);
+    Frame top;
+    top.at = &main_;
+    frames_.push_back(top);
     std::size_t read = 0;
-    for (const Block& block : prog_.blocks()) {
+    const bool fanuc = prog_.dialect == Dialect::fanuc;
+    for (;;) {
+        Frame& f = frames_.back();
+        const Program& p = f.prog();
+        if (f.pc >= p.size()) {
+            if (frames_.size() == 1) break;
+            line_ = p.last_line;
+            file_ = f.at->file;
+            if (const auto& e = p.syntax_error) throw ParseError(e->code, e->message, e->pos);
+            fail("subprogram_end_missing", f.kind == Frame::o_call ? "File ended inside a subroutine (no endsub)"
+                                                                   : "Subprogram file ended without M99");
+        }
+        const std::size_t k = f.pc++;
+        const Block& block = p.blocks()[k];
         if (opts_.progress && ++read % opts_.progress_every == 0) opts_.progress(read);
         if (block.block_delete && opts_.block_delete) continue;
         line_ = block.line;
+        file_ = f.at->file;
         count_block();
-        BlockWords bw = collect_words(prog_, block);
-        for (const Comment& c : prog_.comments(block)) {
+        if (block.statement_count)
+            if (const Statement* s = control_statement(p, block)) {
+                control(*s, k);
+                continue;
+            }
+        const std::span<const Word> words = syntax_ ? block_words(block) : p.words(block);
+        if (fanuc) {
+            bool g65 = false;
+            for (const Word& w : words) g65 = g65 || (w.letter == 'G' && w.value == 65);
+            if (g65) {
+                int column = 0;
+                for (const Word& w : words)
+                    if (w.letter == 'G') column = w.column;
+                macro_call(words, column);
+                continue;
+            }
+        }
+        BlockWords bw = collect_words(words, block.line, p.dialect);
+        alarm_text_.clear();
+        if (fanuc && block.comment_count) alarm_text_ = p.comments(block)[0].text;
+        if (block.statement_count) assignments(block);  // messages show the values after them
+        for (const Comment& c : p.comments(block)) {
             std::string head = lower_prefix(c.text, 6);
-            if (head.rfind("msg,", 0) == 0 || head.rfind("debug,", 0) == 0 || head.rfind("print,", 0) == 0)
+            if (head.rfind("msg,", 0) == 0)
                 info("message", c.text.substr(c.text.find(',') + 1), c.column);
+            else if (head.rfind("debug,", 0) == 0 || head.rfind("print,", 0) == 0)
+                info("message", substitute(c.text.substr(c.text.find(',') + 1)), c.column);
+        }
+        // Fanuc M98 / M99 run after the rest of their block.
+        const int sub_m = bw.m[m_subprogram];
+        WordSlot p_word, l_word;
+        if (sub_m >= 0) {
+            p_word = bw['P'];
+            l_word = bw['L'];
+            bw.letter['P' - 'A'] = bw.letter['L' - 'A'] = {};
         }
         if (!execute(bw)) {
             sink_.finish();
             return;
         }
+        if (sub_m >= 0) subprogram(sub_m, p_word, l_word, bw.m_column[m_subprogram]);
     }
     sink_.finish();
+    line_ = 0;
+    file_ = 0;
     if (const auto& e = prog_.syntax_error) throw ParseError(e->code, e->message, e->pos);
     if (prog_.dialect == Dialect::linuxcnc) {
         // LinuxCNC refuses a file that simply stops: it must end with M2/M30 or '%'.
@@ -316,8 +373,16 @@ bool Interp::execute(const BlockWords& bw) {
 }
 
 void interpret(const Program& program, const ToolTable* tools, const ControlProfile& profile,
-               const InterpretOptions& options, MotionSink& sink, std::vector<Diagnostic>& diagnostics) {
-    Interp(program, tools, profile, options, sink, diagnostics).run();
+               const InterpretOptions& options, MotionSink& sink, std::vector<Diagnostic>& diagnostics,
+               InterpretOutput* output) {
+    Interp interp(program, tools, profile, options, sink, diagnostics);
+    try {
+        interp.run();
+    } catch (...) {
+        if (output) *output = interp.output();
+        throw;
+    }
+    if (output) *output = interp.output();
 }
 
 }  // namespace toolcomp::iso

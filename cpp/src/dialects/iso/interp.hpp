@@ -7,12 +7,19 @@
 // machine = program + G92 + G5x + tool length offset. Moves leave in millimetres.
 #include <Eigen/Core>
 #include <array>
+#include <deque>
+#include <map>
+#include <memory>
+#include <set>
 #include <type_traits>
 #include <string>
 #include <vector>
 
 #include "block_words.hpp"
+#include "flow.hpp"
+#include "params.hpp"
 #include "toolcomp/dialects/iso/interpreter.hpp"
+#include "toolcomp/program/expr.hpp"
 
 namespace toolcomp::iso {
 
@@ -38,11 +45,35 @@ struct CycleMemory {
     double i = 0, j = 0, k = 0;          // G87: offsets of the back bore, K as written
 };
 
-class Interp {
+// A program the run executes blocks of: the main program or a subprogram file.
+struct LoadedProgram {
+    const Program* prog = nullptr;
+    FlowInfo flow;
+    int file = 0;  // index into the run's files
+};
+
+// Where execution is: the main program, or a subprogram and where it returns to.
+struct Frame {
+    enum Kind : std::uint8_t { main, o_call, m98, g65 } kind = main;
+    const LoadedProgram* at = nullptr;
+    std::size_t pc = 0;         // next block
+    std::size_t entry = 0;      // first block of the body (M98 / G65 L repeats)
+    std::size_t sub_block = FlowInfo::npos;  // LinuxCNC: the sub block of the running subroutine
+    long repeats_left = 0;      // M98 / G65 L: passes still to run after this one
+    std::map<std::size_t, long> repeat_counts;  // o-repeat block -> passes left
+    const Program& prog() const { return *at->prog; }
+};
+
+class Interp : public expr::Env {
 public:
     Interp(const Program& prog, const ToolTable* tools, const ControlProfile& profile,
            const InterpretOptions& opts, MotionSink& sink, std::vector<Diagnostic>& diags);
     void run();
+    // expr::Env: named parameters, numbered parameters (interp_params.cpp)
+    double get(const std::string& name, std::span<const double> indices) override;
+    double param(double number) override;
+    bool exists(const std::string& name) override;
+    InterpretOutput output() const;
 
 private:
     // ---- block execution (interp.cpp) --------------------------------------------------
@@ -54,6 +85,32 @@ private:
     // its first): beyond ControlProfile::block_limit the run stops with "block_limit"
     // instead of running (and collecting moves) for hours.
     void count_block(int column = 0);
+
+    // ---- programs that compute (interp_flow.cpp) ----------------------------------------
+    // Runs one block's control statement (O-word, Fanuc GOTO/WHILE/END); block index k.
+    void control(const Statement& s, std::size_t k);
+    // Evaluates an expression of the current program; math errors become ProgramErrors
+    // with the control's message at `column`.
+    double eval(std::int32_t e, int column);
+    bool condition(std::int32_t e, int column) { return eval(e, column) != 0; }
+    // The words of a block with their computed values (Fanuc: a word whose value is vacant
+    // is left out); the block's own words when nothing is computed.
+    std::span<const Word> block_words(const Block& b);
+    void assignments(const Block& b);  // #n = ... of the block, all read first, then set
+    void set_param(double number, double v, int column);
+    std::string substitute(const std::string& text);  // DEBUG / PRINT messages: #n, #<name> values
+    void call_sub(const Statement& s);  // LinuxCNC o-call
+    void return_from_sub(const Statement& s);
+    void subprogram(int mcode, const WordSlot& p, const WordSlot& l, int column);  // Fanuc M98 / M99
+    void call_program(Frame::Kind kind, const WordSlot& p, const WordSlot& l, int column);
+    void macro_call(std::span<const Word> words, int column);  // Fanuc G65 (the whole block)
+    void push_frame(Frame f);
+    // A subprogram file on the search path (parsed once), or nullptr.
+    const LoadedProgram* load(const std::string& file_name);
+    const LoadedProgram* fanuc_program(long number);
+    void goto_sequence(double n, int column);
+    // System parameters (read from the interpreter's state), or nullptr / NaN when n is storage.
+    bool system_param(int n, double& v) const;
 
     // ---- units and coordinates -----------------------------------------------------------
     double scale() const { return st_.inch ? kMmPerInch : 1.0; }
@@ -110,7 +167,7 @@ private:
     // ---- canned cycles (interp_cycles.cpp) ---------------------------------------------------
     void cycle(const BlockWords& bw, int code);
 
-    const Program& prog_;
+    const Program& prog_;  // the main program
     const ToolTable* tools_;
     const ControlProfile& profile_;
     InterpretOptions opts_;
@@ -138,6 +195,23 @@ private:
     bool cycle_il_set_ = false;
     int spindle_ = 0;            // 0 stopped, 1 clockwise, -1 counter-clockwise
     RadiusRequest radius_;       // cutter radius compensation carried on every move (side 0 = off)
+
+    // ---- programs that compute -------------------------------------------------------------
+    ParameterStore params_;
+    const expr::Syntax* syntax_ = nullptr;  // null for dialects without parameters
+    LoadedProgram main_;
+    std::deque<LoadedProgram> loaded_;               // subprogram files read from the search path
+    std::deque<Program> loaded_programs_;
+    std::map<std::string, const LoadedProgram*> by_file_;
+    std::vector<std::string> files_;                 // main program first
+    std::vector<Frame> frames_;
+    int file_ = 0;                                   // file of the running block
+    std::vector<Word> scratch_words_;
+    std::vector<double> scratch_values_;
+    std::string alarm_text_;                         // Fanuc #3000: the comment of the block
+    std::set<std::pair<const LoadedProgram*, std::size_t>> recorded_subs_;  // definitions passed or called
+    bool value_returned_ = false;
+    double value_ = 0;                               // #<_value>: what the last return gave
 };
 
 }  // namespace toolcomp::iso

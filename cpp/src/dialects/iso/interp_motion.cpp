@@ -67,6 +67,7 @@ Motion Interp::motion_to(MotionKind kind, const Vec6& end) const {
     m.end = end.head<3>();
     m.abc = {end[3], end[4], end[5]};
     m.line = line_;
+    m.file = file_;
     m.tool = tool_;
     m.tool_offset = tlo_.head<3>();
     m.radius = radius_;

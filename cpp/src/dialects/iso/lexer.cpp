@@ -1,8 +1,12 @@
 #include "toolcomp/dialects/iso/lexer.hpp"
+
+#include "line_lexer.hpp"
 #include "toolcomp/program/text.hpp"
 
 #include <cctype>
 #include <charconv>
+#include <cmath>
+#include <optional>
 #include <string>
 
 namespace toolcomp::iso {
@@ -12,7 +16,7 @@ namespace {
 bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
 
 // Letters that are address words in ISO G-code (LinuxCNC's set for a machine with axes
-// XYZABC; O, #, [ are the programming features of a later stage, reported as unsupported).
+// XYZABC; O, # and [ belong to the statements of programs that compute).
 bool is_word_letter(char u, Dialect d) {
     // Fanuc and 9/Series: U V W are words too (incremental X Y Z on lathes, extra axes on mills).
     if ((u == 'U' || u == 'V' || u == 'W') && (d == Dialect::fanuc || d == Dialect::rockwell)) return true;
@@ -25,119 +29,6 @@ bool is_word_letter(char u, Dialect d) {
             return false;
     }
 }
-
-class LineLexer {
-public:
-    LineLexer(std::string_view line, int line_no, Program& prog)
-        : s_(line), line_(line_no), prog_(prog) {}
-
-    void run() {
-        skip_blanks();
-        bool block_delete = false;
-        if (i_ < s_.size() && s_[i_] == '/') {
-            block_delete = true;
-            ++i_;
-        }
-        prog_.begin_block(line_, block_delete);
-        bool first_word = true;
-        while (true) {
-            skip_blanks();
-            if (i_ >= s_.size()) break;
-            char c = s_[i_];
-            if (c == '(') {
-                comment_paren();
-                continue;
-            }
-            if (c == ';') {
-                prog_.add_comment({std::string(s_.substr(i_ + 1)), col()});
-                break;
-            }
-            char u = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-            if (u == '#' || u == '[')
-                fail("parameters_not_supported",
-                     "Parameters and expressions ('#', '[') are not supported yet");
-            if (u == '$') fail("bad_character", "Unknown word where unary operation could be");
-            if (u == 'O' && first_word)
-                fail("o_word_not_supported", "O-word subprograms and control flow are not supported yet");
-            if (!is_word_letter(u, prog_.dialect) || (u == 'N' && !first_word)) {
-                char lower = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-                fail("bad_character", std::string("Bad character '") + lower + "' used");
-            }
-            int column = col();
-            ++i_;
-            prog_.add_word({u, number(), column});
-            first_word = false;
-        }
-    }
-
-private:
-    int col() const { return static_cast<int>(i_) + 1; }
-    [[noreturn]] void fail(const char* code, const std::string& msg) {
-        throw ParseError(code, msg, {line_, col()});
-    }
-    void skip_blanks() {
-        while (i_ < s_.size() && is_blank(s_[i_])) ++i_;
-    }
-    void comment_paren() {
-        int column = col();
-        std::size_t start = ++i_;
-        while (i_ < s_.size() && s_[i_] != ')') {
-            if (s_[i_] == '(') fail("nested_comment", "Nested comment found");
-            ++i_;
-        }
-        if (i_ >= s_.size()) {
-            i_ = static_cast<std::size_t>(column - 1);
-            fail("unclosed_comment", "Unclosed comment found");
-        }
-        prog_.add_comment({std::string(s_.substr(start, i_ - start)), column});
-        ++i_;
-    }
-    // A real number: signs, then a run of digits and points; blanks may appear anywhere
-    // inside (LinuxCNC strips them before reading). Messages are LinuxCNC's.
-    double number() {
-        bool negative = false;
-        skip_blanks();
-        const std::size_t start = i_;  // errors point at the number's first character
-        while (i_ < s_.size() && (s_[i_] == '+' || s_[i_] == '-')) {
-            if (s_[i_] == '-') negative = !negative;
-            ++i_;
-            skip_blanks();
-        }
-        std::string text;
-        int points = 0;
-        bool digits = false;
-        while (true) {
-            skip_blanks();
-            if (i_ >= s_.size()) break;
-            char c = s_[i_];
-            if (c >= '0' && c <= '9') {
-                digits = true;
-            } else if (c == '.') {
-                ++points;
-            } else {
-                break;
-            }
-            text.push_back(c);
-            ++i_;
-        }
-        const std::size_t end = i_;
-        i_ = start;
-        if (text.empty()) fail("bad_number_format", "No characters found in reading real value");
-        if (points > 1)
-            fail("bad_number_format", "bad number format (trailing characters) parsing '" + text + "'");
-        if (!digits) fail("bad_number_format", "bad number format (conversion failed) parsing '" + text + "'");
-        i_ = end;
-        if (text.front() == '.') text.insert(text.begin(), '0');
-        double v = 0;
-        std::from_chars(text.data(), text.data() + text.size(), v);
-        return negative ? -v : v;
-    }
-
-    std::string_view s_;
-    std::size_t i_ = 0;
-    int line_;
-    Program& prog_;
-};
 
 bool blank_line(std::string_view l) {
     for (char c : l)
@@ -152,6 +43,162 @@ std::string_view trimmed(std::string_view l) {
 }
 
 }  // namespace
+
+std::optional<double> LineLexer::constant_value(const expr::Expr& e) const {
+    for (const expr::Instr& in : e.code)
+        if (in.op == expr::Op::variable || in.op == expr::Op::param || in.op == expr::Op::exists) return std::nullopt;
+    struct NoParameters : expr::Env {
+        double get(const std::string&, std::span<const double>) override { return 0; }
+    } none;
+    try {
+        return expr::evaluate(e, none, &syntax());
+    } catch (const expr::MathError&) {
+        return std::nullopt;  // [1/0]: an error when (and only if) the block runs
+    }
+}
+
+LineLexer::LineLexer(std::string_view line, int line_no, Program& prog) : raw_(line), line_(line_no), prog_(prog) {
+    // LinuxCNC's reading: blanks dropped outside comments; comment texts kept as written.
+    s_.reserve(line.size());
+    cols_.reserve(line.size());
+    comment_.reserve(line.size());
+    auto keep = [&](std::size_t k, bool in_comment) {
+        s_.push_back(line[k]);
+        cols_.push_back(static_cast<int>(k) + 1);
+        comment_.push_back(in_comment);
+    };
+    for (std::size_t k = 0; k < line.size(); ++k) {
+        const char c = line[k];
+        if (c == '(') {
+            for (; k < line.size() && line[k] != ')'; ++k) keep(k, true);
+            if (k < line.size()) keep(k, true);
+        } else if (c == ';') {
+            for (; k < line.size(); ++k) keep(k, true);
+        } else if (!is_blank(c)) {
+            keep(k, false);
+        }
+    }
+    std::size_t last = line.size();
+    while (last > 0 && is_blank(line[last - 1])) --last;
+    end_col_ = static_cast<int>(last) + 1;
+}
+
+void LineLexer::fail_at(const char* code, const std::string& msg, std::size_t i) const {
+    throw ParseError(code, msg, {line_, col_at(i)});
+}
+
+void LineLexer::run() {
+    bool block_delete = false;
+    if (!at_end() && s_[i_] == '/') {
+        block_delete = true;
+        ++i_;
+    }
+    prog_.begin_block(line_, block_delete);
+    while (!at_end()) {
+        const char c = s_[i_];
+        if (c == '(') {
+            comment_paren();
+            continue;
+        }
+        if (c == ';') {
+            prog_.add_comment({s_.substr(i_ + 1), col()});
+            break;
+        }
+        const char u = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+        if (macros()) {
+            if (u == 'O' && first_word_) {
+                o_word();
+                return;
+            }
+            if (u == '#') {
+                assignment();
+                first_word_ = false;
+                continue;
+            }
+            if (first_word_ && prog_.dialect == Dialect::fanuc && fanuc_statement()) continue;
+        } else if (u == '#' || u == '[') {
+            fail("parameters_not_supported", "Parameters and expressions ('#', '[') are not supported in this dialect");
+        } else if (u == 'O' && first_word_) {
+            fail("o_word_not_supported", "O-word subprograms and control flow are not supported in this dialect");
+        }
+        if (u == '$') fail("bad_character", "Unknown word where unary operation could be");
+        if (!is_word_letter(u, prog_.dialect) || (u == 'N' && (!first_word_ || prog_.blocks().back().word_count > 0))) {
+            char lower = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+            fail("bad_character", std::string("Bad character '") + lower + "' used");
+        }
+        Word w{u, 0, col()};
+        ++i_;
+        word_value(w);
+        prog_.add_word(w);
+        if (u != 'N') first_word_ = false;
+    }
+}
+
+void LineLexer::comment_paren() {
+    const std::size_t open = i_;
+    std::size_t start = ++i_;
+    while (i_ < s_.size() && s_[i_] != ')') {
+        if (s_[i_] == '(') fail("nested_comment", "Nested comment found");
+        ++i_;
+    }
+    if (i_ >= s_.size()) fail_at("unclosed_comment", "Unclosed comment found", open);
+    prog_.add_comment({s_.substr(start, i_ - start), col_at(open)});
+    ++i_;
+}
+
+void LineLexer::word_value(Word& w) {
+    if (macros() && !at_end()) {
+        std::size_t k = i_;
+        while (k < s_.size() && (s_[k] == '+' || s_[k] == '-')) ++k;
+        const char c = k < s_.size() ? s_[k] : 0;
+        const bool letter = prog_.dialect == Dialect::linuxcnc && std::isalpha(static_cast<unsigned char>(c));
+        if (c == '#' || c == '[' || letter) {
+            const std::int32_t e = expression(true);
+            if (auto v = constant_value(prog_.expression(e))) {
+                w.value = *v;  // "X[2*3]" is X6: nothing to evaluate at run time
+                prog_.drop_last_expression();
+            } else {
+                w.expr = e;
+            }
+            return;
+        }
+    }
+    w.value = number();
+}
+
+// A real number: signs, then a run of digits and points. Messages are LinuxCNC's.
+double LineLexer::number() {
+    bool negative = false;
+    const std::size_t start = i_;  // errors point at the number's first character
+    while (i_ < s_.size() && (s_[i_] == '+' || s_[i_] == '-')) {
+        if (s_[i_] == '-') negative = !negative;
+        ++i_;
+    }
+    std::string text;
+    int points = 0;
+    bool digits = false;
+    while (i_ < s_.size() && !comment_[i_]) {
+        const char c = s_[i_];
+        if (c >= '0' && c <= '9') {
+            digits = true;
+        } else if (c == '.') {
+            ++points;
+        } else {
+            break;
+        }
+        text.push_back(c);
+        ++i_;
+    }
+    if (text.empty()) fail_at("bad_number_format", "No characters found in reading real value", start);
+    if (points > 1) fail_at("bad_number_format", "bad number format (trailing characters) parsing '" + text + "'", start);
+    if (!digits) fail_at("bad_number_format", "bad number format (conversion failed) parsing '" + text + "'", start);
+    if (text.front() == '.') text.insert(text.begin(), '0');
+    double v = 0;
+    auto r = std::from_chars(text.data(), text.data() + text.size(), v);
+    if (r.ec != std::errc() || !std::isfinite(v))
+        fail_at("bad_number_format", "bad number format (conversion failed) parsing '" + text + "'", start);
+    return negative ? -v : v;
+}
 
 Program parse(std::string_view text, Dialect dialect, std::string name, bool strict) {
     text = skip_bom(text);
@@ -186,6 +233,9 @@ Program parse(std::string_view text, Dialect dialect, std::string name, bool str
         seen_content = true;
         prog.last_line = line_no;
         try {
+            // LinuxCNC reads at most 252 characters a line (a CR of a CRLF end counts).
+            if (dialect == Dialect::linuxcnc && line.size() > 252)
+                throw ParseError("line_too_long", "Command too long", {line_no, 253});
             LineLexer(line, line_no, prog).run();
         } catch (const ParseError& e) {
             if (strict) throw;

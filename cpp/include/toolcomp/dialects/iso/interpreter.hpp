@@ -2,6 +2,8 @@
 #include <functional>
 // The ISO interpreter: runs a Program block by block with LinuxCNC's modal semantics (or
 // Fanuc's where the profile says so) and emits the Motion stream.
+#include <map>
+#include <string>
 #include <vector>
 
 #include "toolcomp/compensation/profile.hpp"
@@ -15,16 +17,32 @@ class ToolTable;
 
 namespace toolcomp::iso {
 
+// Numbered parameter values (#n -> value): what a run starts from (a LinuxCNC .var file,
+// Fanuc common variables) and what it ends with.
+using ParameterValues = std::map<int, double>;
+
 struct InterpretOptions {
     bool block_delete = false;  // skip blocks that start with '/'
     std::function<void(std::size_t)> progress;  // blocks read so far, every progress_every
     std::size_t progress_every = 1 << 16;
+    // Directories where called subprogram files are looked up, in order, and nowhere else
+    // (LinuxCNC o<name> call: name.ngc; Fanuc M98/G65 P1000: O1000.nc, O1000, 1000.nc).
+    std::vector<std::string> search_path;
+    ParameterValues parameters;  // start values
+};
+
+// What a run leaves besides its moves.
+struct InterpretOutput {
+    std::vector<std::string> files;  // the files moves came from, main program first (Motion::file)
+    ParameterValues parameters;      // numbered parameters at the end (set ones only)
 };
 
 // Emits every move into `sink`; non-fatal messages go to `diagnostics`.
 // Throws ProgramError (code, message, line, column) at the first error, after the moves
 // before the failing block have been emitted.
+// `output` (optional) receives the files and parameters, also when the run stops at an error.
 void interpret(const Program& program, const ToolTable* tools, const ControlProfile& profile,
-               const InterpretOptions& options, MotionSink& sink, std::vector<Diagnostic>& diagnostics);
+               const InterpretOptions& options, MotionSink& sink, std::vector<Diagnostic>& diagnostics,
+               InterpretOutput* output = nullptr);
 
 }  // namespace toolcomp::iso

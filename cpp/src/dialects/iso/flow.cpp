@@ -1,0 +1,139 @@
+#include "flow.hpp"
+
+#include <cmath>
+
+namespace toolcomp::iso {
+
+namespace {
+bool is_control(Stmt k) { return k != Stmt::assign && k != Stmt::if_then; }
+
+std::string o_name(const std::string& label) { return "o" + label; }
+}  // namespace
+
+const Statement* control_statement(const Program& prog, const Block& b) {
+    for (const Statement& s : prog.statements(b))
+        if (is_control(s.kind)) return &s;
+    return nullptr;
+}
+
+FlowInfo scan_flow(const Program& prog) {
+    const std::size_t n = prog.size();
+    FlowInfo f;
+    const bool fanuc = prog.dialect == Dialect::fanuc;
+    struct Open {
+        std::size_t block;
+        Stmt kind;
+        std::string label;
+        std::vector<std::size_t> branches;  // if: the if and its elseif/else blocks
+    };
+    std::vector<Open> stack;
+    std::vector<std::pair<std::size_t, int>> fanuc_loops;  // WHILE block, DO number
+    auto innermost = [&](const std::string& label, bool loops_only) -> Open* {
+        for (auto it = stack.rbegin(); it != stack.rend(); ++it) {
+            const bool loop = it->kind == Stmt::o_while || it->kind == Stmt::o_do || it->kind == Stmt::o_repeat;
+            if (it->label == label && (!loops_only || loop)) return &*it;
+        }
+        return nullptr;
+    };
+    for (std::size_t k = 0; k < n; ++k) {
+        const Block& b = prog.blocks()[k];
+        if (fanuc)
+            for (const Word& w : prog.words(b))
+                if (w.letter == 'N' && w.expr < 0 && std::fabs(w.value) < 1e9) f.numbers.emplace(std::lround(w.value), k);
+        if (b.statement_count == 0) continue;
+        const Statement* s = control_statement(prog, b);
+        if (!s) continue;
+        auto error = [&](const std::string& m) { f.errors.emplace(k, m); };
+        auto close = [&](Stmt opener, const char* what) {
+            if (stack.empty() || stack.back().label != s->label || stack.back().kind != opener) {
+                error(o_name(s->label) + " " + what + " does not close an open " + o_name(s->label) + " structure");
+                return static_cast<Open*>(nullptr);
+            }
+            return &stack.back();
+        };
+        switch (s->kind) {
+            case Stmt::o_sub:
+                if (!stack.empty()) {
+                    error("Subroutine " + o_name(s->label) + " defined inside another structure");
+                    break;
+                }
+                f.subs.emplace(s->label, k);
+                stack.push_back({k, s->kind, s->label, {}});
+                break;
+            case Stmt::o_if:
+                stack.push_back({k, s->kind, s->label, {k}});
+                break;
+            case Stmt::o_do: case Stmt::o_repeat:
+                stack.push_back({k, s->kind, s->label, {}});
+                break;
+            case Stmt::o_while:
+                if (!stack.empty() && stack.back().kind == Stmt::o_do && stack.back().label == s->label) {
+                    f.links[k].closes_do = true;
+                    f.links[k].partner = stack.back().block;
+                    f.links[stack.back().block].partner = k;
+                    stack.pop_back();
+                } else {
+                    stack.push_back({k, s->kind, s->label, {}});
+                }
+                break;
+            case Stmt::o_elseif: case Stmt::o_else:
+                if (Open* o = close(Stmt::o_if, s->kind == Stmt::o_else ? "else" : "elseif")) {
+                    f.links[o->branches.back()].partner = k;
+                    o->branches.push_back(k);
+                }
+                break;
+            case Stmt::o_endif:
+                if (Open* o = close(Stmt::o_if, "endif")) {
+                    f.links[o->branches.back()].partner = k;
+                    for (std::size_t br : o->branches) f.links[br].endif = k;
+                    stack.pop_back();
+                }
+                break;
+            case Stmt::o_endwhile: case Stmt::o_endrepeat: case Stmt::o_endsub: {
+                const Stmt opener = s->kind == Stmt::o_endwhile ? Stmt::o_while
+                                  : s->kind == Stmt::o_endrepeat ? Stmt::o_repeat : Stmt::o_sub;
+                const char* what = s->kind == Stmt::o_endwhile ? "endwhile" : s->kind == Stmt::o_endrepeat ? "endrepeat" : "endsub";
+                if (Open* o = close(opener, what)) {
+                    f.links[o->block].partner = k;
+                    f.links[k].partner = o->block;
+                    if (opener == Stmt::o_sub) f.links[k].loop = o->block;
+                    stack.pop_back();
+                }
+                break;
+            }
+            case Stmt::o_break: case Stmt::o_continue:
+                if (Open* o = innermost(s->label, true))
+                    f.links[k].loop = o->block;
+                else
+                    error(o_name(s->label) + (s->kind == Stmt::o_break ? " break" : " continue") +
+                          " is not inside an " + o_name(s->label) + " loop");
+                break;
+            case Stmt::o_return:
+                if (Open* o = innermost(s->label, false); o && o->kind == Stmt::o_sub)
+                    f.links[k].loop = o->block;
+                else if (!stack.empty() && stack.front().kind == Stmt::o_sub)
+                    error("Return " + o_name(s->label) + " inside subroutine " + o_name(stack.front().label));
+                break;  // outside a sub definition: a return from the called file, checked when run
+            case Stmt::program_number:
+                f.programs.emplace(std::stol(s->label), k);
+                break;
+            case Stmt::while_do:
+                fanuc_loops.push_back({k, s->loop});
+                break;
+            case Stmt::end_loop:
+                if (fanuc_loops.empty() || fanuc_loops.back().second != s->loop) {
+                    error("END " + std::to_string(s->loop) + " without WHILE [...] DO " + std::to_string(s->loop));
+                } else {
+                    f.links[fanuc_loops.back().first].partner = k;
+                    f.links[k].partner = fanuc_loops.back().first;
+                    fanuc_loops.pop_back();
+                }
+                break;
+            default:
+                break;
+        }
+    }
+    return f;
+}
+
+}  // namespace toolcomp::iso

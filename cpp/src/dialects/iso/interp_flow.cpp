@@ -1,0 +1,410 @@
+// Programs that compute: control statements (LinuxCNC O-words, Fanuc Macro B), subprogram
+// calls and returns, subprogram files on the search path, the computed values of words and
+// the parameter assignments of a block.
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "interp.hpp"
+#include "toolcomp/dialects/iso/lexer.hpp"
+
+namespace toolcomp::iso {
+
+namespace {
+// LinuxCNC's words for math errors (Fanuc: the same meaning, alarm PS0112 / PS0119 there).
+const char* math_message(expr::MathFault f) {
+    switch (f) {
+        case expr::MathFault::divide_by_zero: return "Attempt to divide by zero";
+        case expr::MathFault::sqrt_negative: return "Negative argument to sqrt";
+        case expr::MathFault::ln_domain: return "Zero or negative argument to ln";
+        case expr::MathFault::asin_domain: return "Argument to asin out of range";
+        case expr::MathFault::acos_domain: return "Argument to acos out of range";
+        case expr::MathFault::negative_power: return "Attempt to raise negative to non-integer power";
+        case expr::MathFault::out_of_range: return "Calculation resulted in 'infinity'";
+        case expr::MathFault::not_a_number: return "Calculation resulted in 'not a number'";
+        default: return nullptr;
+    }
+}
+constexpr std::size_t npos = FlowInfo::npos;
+}  // namespace
+
+double Interp::eval(std::int32_t e, int column) {
+    try {
+        return expr::evaluate(frames_.back().prog().expression(e), *this, syntax_);
+    } catch (const expr::MathError& err) {
+        const char* m = math_message(err.fault);
+        fail("math_error", m ? m : err.what(), column);
+    }
+}
+
+std::span<const Word> Interp::block_words(const Block& b) {
+    const Program& p = frames_.back().prog();
+    std::span<const Word> words = p.words(b);
+    bool computed = false;
+    for (const Word& w : words) computed = computed || w.expr >= 0;
+    if (!computed) return words;
+    scratch_words_.clear();
+    for (const Word& w : words) {
+        Word v = w;
+        if (w.expr >= 0) {
+            v.value = eval(w.expr, w.column);
+            v.expr = -1;
+            if (std::isnan(v.value)) continue;  // Fanuc: an address with a vacant value is left out
+        }
+        scratch_words_.push_back(v);
+    }
+    return scratch_words_;
+}
+
+void Interp::assignments(const Block& b) {
+    const Program& p = frames_.back().prog();
+    // Every value of the block is read before any parameter is set (LinuxCNC: "#1=2 #2=#1"
+    // gives #2 the old #1). A Fanuc IF [..] THEN guards the assignments after it.
+    struct Set {
+        double number;
+        const std::string* name;
+        double value;
+        int column;
+    };
+    std::vector<Set> sets;
+    bool active = true;
+    for (const Statement& s : p.statements(b)) {
+        if (s.kind == Stmt::if_then) {
+            active = condition(s.value, s.column);
+            continue;
+        }
+        if (s.kind != Stmt::assign || !active) continue;
+        const double number = s.label.empty() ? eval(s.target, s.column) : 0;
+        sets.push_back({number, s.label.empty() ? nullptr : &s.label, eval(s.value, s.column), s.column});
+    }
+    for (const Set& s : sets) {
+        if (s.name)
+            params_.set_named(*s.name, s.value);
+        else
+            set_param(s.number, s.value, s.column);
+    }
+}
+
+void Interp::push_frame(Frame f) {
+    if (frames_.size() > profile_.call_depth_limit)
+        fail("call_depth", prog_.dialect == Dialect::linuxcnc
+                               ? std::string("Too many subroutine levels")
+                               : "More than " + std::to_string(profile_.call_depth_limit) +
+                                     " nested subprogram calls (ControlProfile.call_depth_limit)");
+    frames_.push_back(std::move(f));
+}
+
+const LoadedProgram* Interp::load(const std::string& file_name) {
+    if (auto it = by_file_.find(file_name); it != by_file_.end()) return it->second;
+    for (const std::string& dir : opts_.search_path) {
+        const std::filesystem::path path = std::filesystem::path(dir) / file_name;
+        std::error_code ec;
+        if (!std::filesystem::is_regular_file(path, ec)) continue;
+        std::ifstream in(path, std::ios::binary);
+        std::ostringstream text;
+        text << in.rdbuf();
+        if (!in && !in.eof()) continue;
+        loaded_programs_.push_back(parse(text.str(), prog_.dialect, path.string(), true));
+        LoadedProgram lp;
+        lp.prog = &loaded_programs_.back();
+        lp.flow = scan_flow(*lp.prog);
+        lp.file = static_cast<int>(files_.size());
+        files_.push_back(path.string());
+        loaded_.push_back(std::move(lp));
+        by_file_[file_name] = &loaded_.back();
+        return &loaded_.back();
+    }
+    return by_file_[file_name] = nullptr;
+}
+
+void Interp::call_sub(const Statement& s) {
+    std::vector<double> args;
+    args.reserve(s.args.size());
+    for (std::int32_t a : s.args) args.push_back(eval(a, s.column));
+    // The sub: a file <label>.ngc on the search path (LinuxCNC looks there first), else a
+    // definition in the running file, else one in the main program.
+    const std::string name = s.label.front() == '<' ? s.label.substr(1, s.label.size() - 2) : s.label;
+    const LoadedProgram* where = load(name + ".ngc");
+    if (where && !where->flow.subs.count(s.label)) {
+        line_ = where->prog->last_line;
+        file_ = where->file;
+        fail("unknown_o_word", "EOF in file:" + where->prog->name + " seeking o-word: o<" + name + "> from line: 0");
+    }
+    if (!where) where = frames_.back().at;
+    auto found = where->flow.subs.find(s.label);
+    if (found == where->flow.subs.end() && where != &main_) {
+        where = &main_;
+        found = where->flow.subs.find(s.label);
+    }
+    if (found == where->flow.subs.end()) {
+        const int from = line_;
+        line_ = frames_.back().prog().last_line;
+        fail("unknown_o_word", "EOF in file:" + frames_.back().prog().name + " seeking o-word: o<" + name +
+                                   "> from line: " + std::to_string(from));
+    }
+    const std::size_t sub = found->second;
+    if (where->flow.at(sub).partner == npos) {
+        line_ = where->prog->last_line;
+        fail("o_word_structure", "File ended with no percent sign or program end");
+    }
+    // A definition the flow has not passed yet is recorded now (a forward call): the flow
+    // must then never reach it.
+    recorded_subs_.insert({where, sub});
+    Frame f;
+    f.kind = Frame::o_call;
+    f.at = where;
+    f.pc = f.entry = sub + 1;
+    f.sub_block = sub;
+    push_frame(std::move(f));
+    params_.enter(args);
+    value_returned_ = false;
+}
+
+void Interp::return_from_sub(const Statement& s) {
+    if (frames_.size() < 2 || frames_.back().kind != Frame::o_call)
+        fail("return_outside_sub", "not in a subroutine definition: 'o" + s.label +
+                                       (s.kind == Stmt::o_return ? " return'" : " endsub'"));
+    const bool has_value = s.value >= 0;
+    const double v = has_value ? eval(s.value, s.column) : 0.0;
+    frames_.pop_back();
+    params_.leave();
+    value_returned_ = has_value;
+    value_ = v;  // a return without a value resets #<_value> to 0
+}
+
+void Interp::control(const Statement& s, std::size_t k) {
+    Frame& f = frames_.back();
+    const FlowInfo& flow = f.at->flow;
+    if (auto e = flow.errors.find(k); e != flow.errors.end()) fail("o_word_structure", e->second, s.column);
+    const FlowInfo::Links& links = flow.at(k);
+    // A structure whose end is missing: the control skips to the end of the file looking for it.
+    auto unclosed = [&] {
+        line_ = f.prog().last_line;
+        fail("o_word_structure", "File ended with no percent sign or program end");
+    };
+    auto missing = [&](const char* what) {
+        fail("o_word_structure", "o" + s.label + " has no matching " + what, s.column);
+    };
+    switch (s.kind) {
+        case Stmt::o_sub:  // a definition met in the flow: recorded and skipped
+            if (!recorded_subs_.insert({f.at, k}).second)
+                fail("o_word_structure", "File:" + f.prog().name + " line:" + std::to_string(line_) + " sub: o|" +
+                                             s.label + "| found in illegal location");
+            if (links.partner == npos) unclosed();
+            f.pc = links.partner + 1;
+            break;
+        case Stmt::o_endsub: case Stmt::o_return:
+            return_from_sub(s);
+            break;
+        case Stmt::o_call:
+            call_sub(s);
+            break;
+        case Stmt::o_if: {
+            std::size_t at = k;
+            bool take = condition(s.value, s.column);
+            while (!take) {
+                const std::size_t next = f.at->flow.at(at).partner;
+                if (next == npos) unclosed();
+                const Statement& b = *control_statement(f.prog(), f.prog().blocks()[next]);
+                at = next;
+                if (b.kind == Stmt::o_elseif) {
+                    line_ = f.prog().blocks()[next].line;
+                    count_block();
+                    take = condition(b.value, b.column);
+                } else {
+                    break;  // else or endif
+                }
+            }
+            f.pc = at + 1;
+            break;
+        }
+        case Stmt::o_elseif: case Stmt::o_else:  // the branch before it ran: on to the endif
+            // LinuxCNC evaluates every elseif it reaches, even after a taken branch.
+            if (s.kind == Stmt::o_elseif) (void)condition(s.value, s.column);
+            if (links.endif == npos) unclosed();
+            f.pc = links.endif + 1;
+            break;
+        case Stmt::o_endif: case Stmt::o_do: case Stmt::program_number:
+            break;
+        case Stmt::o_while:
+            if (links.closes_do) {
+                if (condition(s.value, s.column)) f.pc = links.partner + 1;
+            } else if (!condition(s.value, s.column)) {
+                if (links.partner == npos) unclosed();
+                f.pc = links.partner + 1;
+            } else if (links.partner == npos) {
+                missing("endwhile");
+            }
+            break;
+        case Stmt::o_endwhile:
+            if (links.partner == npos) missing("while");
+            f.pc = links.partner;
+            break;
+        case Stmt::o_repeat: {
+            // The count rounds half to even ([2.5]: two passes), as LinuxCNC reads it.
+            const double n = std::nearbyint(eval(s.value, s.column));
+            if (n >= 1) {
+                if (links.partner == npos) missing("endrepeat");
+                f.repeat_counts[k] = static_cast<long>(std::min(n, 1e15));
+            } else {
+                if (links.partner == npos) unclosed();
+                f.pc = links.partner + 1;
+            }
+            break;
+        }
+        case Stmt::o_endrepeat: {
+            if (links.partner == npos) missing("repeat");
+            auto it = f.repeat_counts.find(links.partner);
+            if (it != f.repeat_counts.end() && --it->second > 0) {
+                f.pc = links.partner + 1;
+            } else if (it != f.repeat_counts.end()) {
+                f.repeat_counts.erase(it);
+            }
+            break;
+        }
+        case Stmt::o_break: case Stmt::o_continue: {
+            const std::size_t loop = links.loop;
+            const FlowInfo::Links& l = flow.at(loop);
+            if (l.partner == npos) missing("loop end");
+            const Stmt lk = control_statement(f.prog(), f.prog().blocks()[loop])->kind;
+            if (lk == Stmt::o_repeat)  // LinuxCNC: break and continue belong to while and do loops only
+                fail("o_word_structure", "no matching while/do label: 'o" + s.label +
+                                             (s.kind == Stmt::o_break ? " break'" : " continue'") + " (found 'repeat' in line " +
+                                             std::to_string(f.prog().blocks()[loop].line) + ")");
+            if (s.kind == Stmt::o_break) {
+                f.pc = l.partner + 1;
+            } else {
+                f.pc = lk == Stmt::o_while ? loop : l.partner;  // while: test again; do / repeat: at the end
+            }
+            break;
+        }
+        case Stmt::goto_n:
+            goto_sequence(eval(s.target, s.column), s.column);
+            break;
+        case Stmt::if_goto:
+            if (condition(s.value, s.column)) goto_sequence(eval(s.target, s.column), s.column);
+            break;
+        case Stmt::while_do:
+            if (links.partner == npos) fail("macro_loop", "WHILE [...] DO " + std::to_string(s.loop) + " without END " + std::to_string(s.loop), s.column);
+            if (!condition(s.value, s.column)) f.pc = links.partner + 1;
+            break;
+        case Stmt::end_loop:
+            f.pc = links.partner;
+            break;
+        default:
+            break;
+    }
+}
+
+void Interp::goto_sequence(double n, int column) {
+    Frame& f = frames_.back();
+    if (std::isnan(n) || n < 0 || n > 99999999 || n != std::floor(n))
+        fail("bad_sequence_number", "GOTO with a sequence number outside 1..99999999", column);
+    auto it = f.at->flow.numbers.find(std::lround(n));
+    if (it == f.at->flow.numbers.end())
+        fail("sequence_number_not_found", "Sequence number N" + std::to_string(std::lround(n)) + " not found", column);
+    f.pc = it->second;
+}
+
+const LoadedProgram* Interp::fanuc_program(long number) {
+    // O<number> in the running file or the main program, else a file of that name.
+    for (const LoadedProgram* lp : {frames_.back().at, static_cast<const LoadedProgram*>(&main_)})
+        if (lp->flow.programs.count(number)) return lp;
+    const std::string n = std::to_string(number);
+    std::string padded = n;
+    while (padded.size() < 4) padded.insert(padded.begin(), '0');
+    for (const std::string& name : {"O" + padded + ".nc", "O" + padded, "O" + n + ".nc", n + ".nc"})
+        if (const LoadedProgram* lp = load(name)) return lp;
+    return nullptr;
+}
+
+void Interp::subprogram(int mcode, const WordSlot& p_word, const WordSlot& l_word, int column) {
+    if (mcode == 990) {  // M99: return (to N P of the caller when given)
+        if (frames_.size() < 2) {
+            // In the main program M99 runs it again from the top (the block limit stops it).
+            frames_.back().pc = 0;
+            if (p_word.set) goto_sequence(p_word.value, p_word.column);
+            return;
+        }
+        Frame& f = frames_.back();
+        if (f.kind == Frame::o_call) fail("m99_in_sub", "M99 inside an O-word subroutine", column);
+        if (f.repeats_left > 0) {
+            --f.repeats_left;
+            f.pc = f.entry;
+            return;
+        }
+        if (f.kind == Frame::g65) params_.leave();
+        frames_.pop_back();
+        if (p_word.set) goto_sequence(p_word.value, p_word.column);
+        return;
+    }
+    call_program(Frame::m98, p_word, l_word, column);
+}
+
+void Interp::call_program(Frame::Kind kind, const WordSlot& p_word, const WordSlot& l_word, int column) {
+    const char* what = kind == Frame::g65 ? "G65" : "M98";
+    if (!p_word.set) fail("program_number_missing", std::string(what) + " without P (program number)", column);
+    const double p = p_word.value;
+    if (!(p >= 1 && p <= 99999999 && p == std::floor(p)))
+        fail("bad_program_number", std::string(what) + " P must be a program number 1..99999999", p_word.column);
+    long number = std::lround(p), times = 1;
+    if (l_word.set) {
+        const double l = l_word.value;
+        if (!(l >= 1 && l <= 9999 && l == std::floor(l)))
+            fail("bad_repeat_count", "L must be a whole number 1..9999", l_word.column);
+        times = std::lround(l);
+    } else if (kind == Frame::m98 && number > 9999) {  // M98 P30001000: 3 passes of O1000
+        times = number / 10000;
+        number %= 10000;
+    }
+    const LoadedProgram* lp = fanuc_program(number);
+    if (!lp)
+        fail("program_not_found",
+             "Program O" + std::to_string(number) + " not found" +
+                 (opts_.search_path.empty() ? " (no search path given)" : " (not in the file nor on the search path)"),
+             p_word.column);
+    Frame f;
+    f.kind = kind;
+    f.at = lp;
+    auto start = lp->flow.programs.find(number);
+    f.pc = f.entry = start == lp->flow.programs.end() ? 0 : start->second + 1;
+    f.repeats_left = times - 1;
+    push_frame(std::move(f));
+}
+
+void Interp::macro_call(std::span<const Word> words, int column) {
+    // Argument specification I: A B C -> #1 #2 #3, I J K -> #4 #5 #6, D E F -> #7 #8 #9,
+    // H -> #11, M -> #13, Q R S T U V W X Y Z -> #17 ... #26. Unset arguments stay vacant.
+    static constexpr std::pair<char, int> kArgs[] = {
+        {'A', 1}, {'B', 2}, {'C', 3}, {'I', 4}, {'J', 5}, {'K', 6}, {'D', 7}, {'E', 8}, {'F', 9}, {'H', 11},
+        {'M', 13}, {'Q', 17}, {'R', 18}, {'S', 19}, {'T', 20}, {'U', 21}, {'V', 22}, {'W', 23}, {'X', 24},
+        {'Y', 25}, {'Z', 26}};
+    std::array<double, 34> locals;
+    locals.fill(ParameterStore::kVacant);
+    WordSlot p_word, l_word;
+    for (const Word& w : words) {
+        if (w.letter == 'N') continue;
+        if (w.letter == 'G') {
+            if (w.value != 65) fail("g65_other_codes", "G65 must be the only G code of its block", w.column);
+            continue;
+        }
+        if (w.letter == 'P' || w.letter == 'L') {
+            WordSlot& slot = w.letter == 'P' ? p_word : l_word;
+            if (slot.set) fail("multiple_words", std::string("Multiple ") + static_cast<char>(w.letter + 32) + " words on one line", w.column);
+            slot = {true, w.value, w.column};
+            continue;
+        }
+        bool ok = false;
+        for (auto [letter, n] : kArgs)
+            if (letter == w.letter) {
+                locals[static_cast<std::size_t>(n)] = w.value;
+                ok = true;
+            }
+        if (!ok) fail("bad_macro_argument", std::string("Address ") + w.letter + " is not a G65 argument", w.column);
+    }
+    call_program(Frame::g65, p_word, l_word, column);
+    params_.enter_fanuc(locals);
+}
+
+}  // namespace toolcomp::iso

@@ -1,0 +1,183 @@
+// Parameters as the running program sees them: stored ones (params.hpp) and the system
+// parameters computed from the interpreter's state (LinuxCNC 5161-5428, Fanuc #3000 and the
+// position variables), named parameters, and the substitution of values into messages.
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+
+#include "interp.hpp"
+#include "toolcomp/tools/tool_table.hpp"
+
+namespace toolcomp::iso {
+
+namespace {
+std::string number_text(double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%f", v);
+    return buf;
+}
+}  // namespace
+
+bool Interp::system_param(int n, double& v) const {
+    const bool fanuc = params_.fanuc();
+    if (fanuc) {
+        if (n >= 5001 && n <= 5003) {  // end point of the last block, workpiece coordinates
+            v = pos_[n - 5001];
+            return true;
+        }
+        if (n >= 5041 && n <= 5043) {  // current position, workpiece coordinates
+            v = pos_[n - 5041];
+            return true;
+        }
+        if (n == 4120) {  // T code
+            v = tool_;
+            return true;
+        }
+        return false;
+    }
+    auto axis9 = [](const Vec6& p, int j) { return j < 6 ? p[j] : 0.0; };  // U V W: none
+    if (n >= 5161 && n <= 5169) return v = axis9(g28_, n - 5161), true;
+    if (n >= 5181 && n <= 5189) return v = axis9(g30_, n - 5181), true;
+    if (n >= 5211 && n <= 5219) return v = axis9(g92_, n - 5211), true;
+    if (n == 5210) return v = g92_.isZero() ? 0.0 : 1.0, true;
+    if (n == 5220) return v = st_.coord_system, true;
+    if (n >= 5221 && n <= 5400 - 1 && n < 5221 + 9 * 20) {
+        const int cs = (n - 5221) / 20, j = (n - 5221) % 20;
+        if (j < 9) return v = axis9(g5x_[static_cast<std::size_t>(cs)], j), true;
+        if (j == 9) return v = rotation_[static_cast<std::size_t>(cs)], true;
+        return false;
+    }
+    if (n == 5400) return v = tool_, true;
+    if (n >= 5401 && n <= 5409) return v = axis9(tlo_, n - 5401), true;
+    if (n >= 5410 && n <= 5413) {
+        const OffsetValues o = offset_values();
+        v = n == 5410 ? 2 * o.radius : n == 5413 ? o.orientation : 0.0;
+        return true;
+    }
+    if (n >= 5420 && n <= 5428) return v = axis9(pos_, n - 5420), true;
+    return false;
+}
+
+double Interp::param(double number) {
+    const bool fanuc = params_.fanuc();
+    if (std::isnan(number) || std::fabs(number - std::round(number)) > 1e-9)
+        fail("bad_parameter_number", "Parameter number must be a whole number");
+    const double r = std::round(number);
+    if (fanuc) {
+        if (r == 0) return ParameterStore::kVacant;
+        if (r < 0 || r > 99999) fail("bad_parameter_number", "Variable number #" + number_text(r) + " out of range");
+    } else if (r < 1 || r > 5601) {
+        fail("parameter_out_of_range", "Parameter number out of range");
+    }
+    const int n = static_cast<int>(r);
+    double v;
+    if (system_param(n, v)) return v;
+    if (!fanuc && n >= 5061 && n <= 5070)
+        fail("probe_parameter_unset", "Probe result #" + std::to_string(n) + " read, but this run made no probe move");
+    if (!fanuc && n == 5399) fail("unsupported_parameter", "#5399 (M66 input result) is not supported by toolcomp");
+    if (params_.stored(n)) return params_.get(n);
+    fail("unsupported_parameter", "System variable #" + std::to_string(n) + " is not supported by toolcomp");
+}
+
+void Interp::set_param(double number, double v, int column) {
+    const bool fanuc = params_.fanuc();
+    if (std::isnan(number) || std::fabs(number - std::round(number)) > 1e-9)
+        fail("bad_parameter_number", "Parameter number must be a whole number", column);
+    const int n = static_cast<int>(std::clamp(std::round(number), -1.0, 1e6));
+    if (fanuc && n == 3000) {
+        // #3000 = n (MESSAGE): the control stops with macro alarm 3000 + n.
+        const double a = std::isnan(v) ? 0 : v;
+        fail("macro_alarm", "Alarm " + std::to_string(3000 + static_cast<long>(a)) +
+                                (alarm_text_.empty() ? std::string() : " " + alarm_text_),
+             column);
+    }
+    if (fanuc && n == 0) fail("vacant_assignment", "#0 is always vacant and cannot be set", column);
+    if (!fanuc && (n < 1 || n > 5601)) fail("parameter_out_of_range", "Parameter number out of range", column);
+    if (!fanuc && ((n >= 5400 && n <= 5413) || (n >= 5420 && n <= 5428)))
+        fail("read_only_parameter", "Parameter is readonly", column);
+    double dummy;
+    if ((!fanuc && n >= 5061) || system_param(n, dummy) || !params_.stored(n))
+        fail("read_only_parameter",
+             "#" + std::to_string(n) + " is a system parameter: toolcomp does not let programs set it" +
+                 (fanuc ? "" : " (set offsets with G10, G92, G28.1 / G30.1)"),
+             column);
+    params_.set(n, v);
+}
+
+double Interp::get(const std::string& name, std::span<const double>) {
+    // LinuxCNC's predefined named parameters (read only) first, then the program's.
+    const bool inch = st_.inch;
+    if (name == "_value") return value_;
+    if (name == "_value_returned") return value_returned_ ? 1 : 0;
+    if (name == "_call_level") return static_cast<double>(frames_.size() - 1);
+    if (name == "_metric") return inch ? 0 : 1;
+    if (name == "_imperial") return inch ? 1 : 0;
+    if (name == "_absolute") return st_.incremental ? 0 : 1;
+    if (name == "_incremental") return st_.incremental ? 1 : 0;
+    if (name == "_current_tool") return tool_;
+    if (name == "_selected_tool") return selected_;
+    if (name == "_feed") return feed_ / scale();
+    if (name == "_rpm") return speed_;
+    if (name.size() == 2 && name[0] == '_') {
+        static constexpr char kAxes[] = "xyzabc";
+        for (int j = 0; j < 6; ++j)
+            if (name[1] == kAxes[j]) return pos_[j];
+    }
+    if (const double* v = params_.named(name)) return *v;
+    fail("named_parameter_undefined", "Named parameter #<" + name + "> not defined");
+}
+
+bool Interp::exists(const std::string& name) {
+    if (params_.named(name)) return true;
+    double v;
+    try {
+        v = get(name, {});
+    } catch (const ProgramError&) {
+        return false;
+    }
+    (void)v;
+    return true;
+}
+
+std::string Interp::substitute(const std::string& text) {
+    // (DEBUG, ...) and (PRINT, ...): #n and #<name> become their values.
+    std::string out;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        if (text[i] != '#') {
+            out.push_back(text[i]);
+            continue;
+        }
+        std::size_t j = i + 1;
+        if (j < text.size() && text[j] == '<') {
+            const std::size_t close = text.find('>', j);
+            if (close == std::string::npos) {
+                out.push_back('#');
+                continue;
+            }
+            std::string name;
+            for (std::size_t k = j + 1; k < close; ++k)
+                if (text[k] != ' ' && text[k] != '\t') name.push_back(static_cast<char>(std::tolower(static_cast<unsigned char>(text[k]))));
+            const double* v = params_.named(name);
+            out += v ? number_text(*v) : "######";
+            i = close;
+            continue;
+        }
+        std::size_t k = j;
+        while (k < text.size() && std::isdigit(static_cast<unsigned char>(text[k]))) ++k;
+        if (k == j) {
+            out.push_back('#');
+            continue;
+        }
+        const int n = std::stoi(text.substr(j, std::min<std::size_t>(k - j, 7)));
+        double v = 0;
+        if (!system_param(n, v)) v = params_.stored(n) ? params_.get(n) : 0;
+        out += number_text(v);
+        i = k - 1;
+    }
+    return out;
+}
+
+InterpretOutput Interp::output() const { return {files_, params_.snapshot()}; }
+
+}  // namespace toolcomp::iso

@@ -1,0 +1,61 @@
+#pragma once
+// The lexer of one ISO line, private to the front end: words (lexer.cpp) and the statements
+// of programs that compute (macro_lexer.cpp: parameters, LinuxCNC O-words, Fanuc Macro B).
+//
+// LinuxCNC reads a line with its blanks removed and its letters folded (outside comments),
+// so "X 1 0 . 5" is X10.5 and "#<Tool Dia>" is #<tooldia>: the lexer works on that text,
+// `s_`, and maps every character back to its column in the source line for messages.
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "toolcomp/program/expr.hpp"
+#include "toolcomp/program/program.hpp"
+
+namespace toolcomp::iso {
+
+class LineLexer {
+public:
+    LineLexer(std::string_view line, int line_no, Program& prog);
+    void run();
+
+private:
+    // ---- words (lexer.cpp) ----------------------------------------------------------------
+    int col() const { return col_at(i_); }
+    int col_at(std::size_t i) const { return i < cols_.size() ? cols_[i] : end_col_; }
+    [[noreturn]] void fail(const char* code, const std::string& msg) const { fail_at(code, msg, i_); }
+    [[noreturn]] void fail_at(const char* code, const std::string& msg, std::size_t i) const;
+    bool at_end() const { return i_ >= s_.size(); }
+    void comment_paren();
+    // The value of an address word: a number, or (programs that compute) a parameter,
+    // a bracketed expression or a function; an expression is stored in Word::expr.
+    void word_value(Word& w);
+    double number();
+    // The value of an expression without parameters that evaluates cleanly, else nullopt.
+    std::optional<double> constant_value(const expr::Expr& e) const;
+
+    // ---- statements (macro_lexer.cpp) ----------------------------------------------------
+    bool macros() const;  // this dialect computes (LinuxCNC, Fanuc)
+    const expr::Syntax& syntax() const;
+    // Compiles the expression at i_ (a LinuxCNC value when `value_only`: number, '#',
+    // '[...]' or function; else a whole Fanuc expression).
+    std::int32_t expression(bool value_only);
+    void o_word();                 // LinuxCNC: o100 sub / o<name> call [..] ...
+    bool fanuc_statement();        // IF / WHILE / END / GOTO at the start of a block
+    void assignment();             // #n = value, #<name> = value
+    bool keyword(std::string_view k);  // consumes k (upper case) when the text continues with it
+    void rest_is_comments();       // after an O-word or a GOTO: only comments may follow
+
+    std::string s_;               // the line as LinuxCNC reads it (comment texts kept as written)
+    std::vector<int> cols_;       // 1-based source column of each character of s_
+    std::vector<bool> comment_;   // s_[i] belongs to a comment
+    int end_col_ = 1;
+    std::string_view raw_;
+    std::size_t i_ = 0;
+    int line_;
+    Program& prog_;
+    bool first_word_ = true;
+};
+
+}  // namespace toolcomp::iso

@@ -1,0 +1,101 @@
+"""LinuxCNC parameter files (``.var``): the numbered parameters a program starts from and
+leaves behind.
+
+The format is LinuxCNC's: one parameter a line, its number, a tab and its value, numbers
+ascending. LinuxCNC itself skips lines it cannot read and refuses a file whose numbers are
+out of order or repeated ("Parameter file out of order"); :func:`read_var` does the same, and
+:func:`write_var` keeps every line it was not asked to change (comments, unreadable lines,
+the order), so a file users own is never rewritten differently than asked.
+
+    values = tc.params.read_var("sim.var")
+    res = tc.run("probe.ngc", parameters=values)
+    tc.params.write_var("sim.var", res.parameters)    # only the numbers given change
+"""
+from __future__ import annotations
+
+import os
+import re
+import tempfile
+
+from ._errors import ParseError
+
+__all__ = ["read_var", "write_var"]
+
+_LINE = re.compile(r"^\s*(\d+)\s+([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*$")
+
+
+def _parse(text: str, path: str) -> list[tuple[int | None, str]]:
+    rows: list[tuple[int | None, str]] = []
+    last = 0
+    for lineno, line in enumerate(text.splitlines(), 1):
+        m = _LINE.match(line)
+        if not m:
+            rows.append((None, line))
+            continue
+        n = int(m.group(1))
+        if n <= last:
+            raise ParseError(f"Parameter file out of order: #{n} after #{last} in {path}", "parameter_file_order",
+                             lineno, 1)
+        if n > 5601:
+            raise ParseError(f"Parameter number out of range: {n} in {path}", "parameter_out_of_range", lineno, 1)
+        last = n
+        rows.append((n, line))
+    return rows
+
+
+def read_var(path) -> dict[int, float]:
+    """The parameters of a ``.var`` file as ``{number: value}`` (unreadable lines skipped)."""
+    path = os.fspath(path)
+    with open(path, encoding="utf-8", errors="replace", newline="") as f:
+        text = f.read()
+    out = {}
+    for n, line in _parse(text, path):
+        if n is not None:
+            out[n] = float(line.split()[1])
+    return out
+
+
+def write_var(path, values: dict[int, float]) -> None:
+    """Set the given parameters in ``path`` (created if missing) and keep every other line.
+
+    Values are written as LinuxCNC writes them (``%f``); new numbers go in at their place in
+    the ascending order. The file is replaced atomically (a temporary file in the same
+    folder, flushed to disk, renamed over the old one), so it is never left half written.
+    """
+    path = os.fspath(path)
+    try:
+        with open(path, encoding="utf-8", errors="surrogateescape", newline="") as f:
+            text = f.read()
+    except FileNotFoundError:
+        text = ""
+    newline = "\r\n" if "\r\n" in text else "\n"
+    rows = _parse(text, path)
+    todo = {int(k): float(v) for k, v in values.items()}
+    for n in todo:
+        if not 1 <= n <= 5601:
+            raise ValueError(f"parameter number out of range: {n}")
+    out: list[str] = []
+    for n, line in rows:
+        if n is not None:
+            for m in sorted(k for k in todo if k < n):
+                out.append(f"{m}\t{todo.pop(m):f}")
+            if n in todo:
+                line = f"{n}\t{todo.pop(n):f}"
+        out.append(line)
+    for m in sorted(todo):
+        out.append(f"{m}\t{todo[m]:f}")
+    body = newline.join(out) + (newline if out else "")
+    folder = os.path.dirname(os.path.abspath(path))
+    fd, tmp = tempfile.mkstemp(prefix=".toolcomp-", suffix=".var", dir=folder)
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8", errors="surrogateescape", newline="") as f:
+            f.write(body)
+            f.flush()
+            os.fsync(f.fileno())
+        os.replace(tmp, path)
+    except BaseException:
+        try:
+            os.unlink(tmp)
+        except FileNotFoundError:
+            pass
+        raise
