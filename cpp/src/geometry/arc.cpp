@@ -75,7 +75,10 @@ std::optional<Vec2> center_from_radius(const Vec2& s, const Vec2& e, double R, i
     double absR = std::fabs(R);
     if (c < tol::length || c > 2 * absR) return std::nullopt;
     Vec2 mid = 0.5 * (s + e);
-    double h = std::sqrt(std::max(0.0, absR * absR - 0.25 * c * c));
+    // h = sqrt(R² - (c/2)²), scaled by R before squaring: R² overflows for |R| > 1e154, and
+    // a radius of 1e300 (a nearly straight arc) still has a finite centre.
+    const double q = 0.5 * c / absR;
+    double h = absR * std::sqrt(std::max(0.0, (1 - q) * (1 + q)));
     // For a CCW arc of at most 180° the centre lies left of the chord (spec §1.3).
     double sigma = (dir > 0 ? 1.0 : -1.0) * (R > 0 ? 1.0 : -1.0);
     return mid + sigma * h * left_normal(chord / c);

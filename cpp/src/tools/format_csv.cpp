@@ -3,6 +3,7 @@
 
 #include "fields.hpp"
 #include "number_text.hpp"
+#include "text_lines.hpp"
 #include "toolcomp/program/diagnostic.hpp"
 
 #include <algorithm>
@@ -59,8 +60,11 @@ class Positions {
 public:
     explicit Positions(std::string_view text) {
         starts_.push_back(0);
-        for (std::size_t i = 0; i < text.size(); ++i)
-            if (text[i] == '\n') starts_.push_back(i + 1);
+        for (std::size_t i = 0; i < text.size();) {
+            const std::size_t n = tables::line_end_length(text, i);
+            i += n ? n : 1;
+            if (n) starts_.push_back(i);
+        }
     }
     SourcePos at(std::size_t offset) const {
         auto it = std::upper_bound(starts_.begin(), starts_.end(), offset);
@@ -85,12 +89,11 @@ std::vector<Record> split_records(std::string_view text, const Positions& pos) {
         std::size_t q = p;
         while (q < n && is_space(text[q])) ++q;
         if (q < n && text[q] == '#') {  // comment line, taken as it is
-            std::size_t nl = text.find('\n', p);
-            std::size_t end = nl == std::string_view::npos ? n : nl;
-            rec.end = (end > p && text[end - 1] == '\r' && nl != std::string_view::npos) ? end - 1 : end;
-            rec.eol = std::string(text.substr(rec.end, (nl == std::string_view::npos ? n : nl + 1) - rec.end));
+            const std::size_t end = std::min(text.find_first_of("\r\n", p), n);
+            rec.end = end;
+            rec.eol = std::string(text.substr(end, tables::line_end_length(text, end)));
             rec.kind = RecordKind::comment;
-            p = nl == std::string_view::npos ? n : nl + 1;
+            p = end + rec.eol.size();
             out.push_back(std::move(rec));
             continue;
         }
@@ -118,19 +121,16 @@ std::vector<Record> split_records(std::string_view text, const Positions& pos) {
                     break;
                 }
                 while (r < n && is_space(text[r])) ++r;
-                if (r < n && text[r] == '\r' && r + 1 < n && text[r + 1] == '\n') ++r;
-                if (r < n && text[r] != ',' && text[r] != '\n')
+                if (r < n && text[r] != ',' && !tables::line_end_length(text, r))
                     throw ToolTableError("csv_bad_quote", "text after the closing quote of a field", pos.at(r));
                 after = r;
-                cell.end = (r < n && text[r] == '\n' && text[r - 1] == '\r') ? r - 1 : r;
+                cell.end = r;
             } else {
                 std::size_t r = p;
-                while (r < n && text[r] != ',' && text[r] != '\n') ++r;
+                while (r < n && text[r] != ',' && !tables::line_end_length(text, r)) ++r;
                 after = r;
-                std::size_t end = r;
-                if (r < n && text[r] == '\n' && end > p && text[end - 1] == '\r') --end;
-                cell.end = end;
-                const std::string_view raw = text.substr(p, end - p);
+                cell.end = r;
+                const std::string_view raw = text.substr(p, r - p);
                 const std::size_t quote = raw.find('"');
                 if (quote != std::string_view::npos)
                     throw ToolTableError("csv_bad_quote", "quote inside an unquoted field", pos.at(p + quote));
@@ -150,9 +150,9 @@ std::vector<Record> split_records(std::string_view text, const Positions& pos) {
             }
             // end of record
             rec.end = rec.cells.back().end;
-            if (after < n) {  // text[after] == '\n'
-                rec.eol = std::string(text.substr(rec.end, after + 1 - rec.end));
-                p = after + 1;
+            if (after < n) {  // a line ending starts at text[after]
+                rec.eol = std::string(text.substr(after, tables::line_end_length(text, after)));
+                p = after + rec.eol.size();
             } else {
                 p = n;
             }
@@ -435,7 +435,7 @@ std::string write_csv_table(const ToolTable& table) {
             const auto& had = src.file_edges.at(rec.tool);
             for (const CuttingEdge& e : t->edges) {
                 if (std::find(had.begin(), had.end(), e.number) != had.end()) continue;
-                if (!out.empty() && out.back() != '\n') out += src.eol;
+                if (!tables::ends_with_line_end(out)) out += src.eol;
                 out += row_text(columns, *t, e, nullptr, scale) + src.eol;
             }
         }
@@ -443,7 +443,7 @@ std::string write_csv_table(const ToolTable& table) {
     for (const Tool& t : table.tools()) {
         if (written.count(t.number)) continue;
         for (const CuttingEdge& e : t.edges) {
-            if (!out.empty() && out.back() != '\n') out += src.eol;
+            if (!tables::ends_with_line_end(out)) out += src.eol;
             out += row_text(columns, t, e, nullptr, scale) + src.eol;
         }
     }

@@ -5,6 +5,7 @@
 #include "text_lines.hpp"
 #include "toolcomp/program/diagnostic.hpp"
 
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <limits>
@@ -462,6 +463,11 @@ ToolTable read_heidenhain_table(std::string_view text, LengthUnit units) {
         for (const Word& w : words_of(h)) {
             const std::string u = upper(w.text);
             if (u == "[END]") break;
+            // Column titles start with a letter; a number means line 2 is already a tool row.
+            if (std::isdigit(static_cast<unsigned char>(u[0])) || u[0] == '+' || u[0] == '-' || u[0] == '.')
+                error("heidenhain_missing_header",
+                      "line 2 must be the column titles of the tool table (T NAME L R ...), not a tool row", 2,
+                      w.column + 1);
             if (!seen.insert(u).second)
                 error("heidenhain_duplicate_column", "column '" + w.text + "' appears twice in the header", 2,
                       w.column + 1);

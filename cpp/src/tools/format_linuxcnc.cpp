@@ -185,7 +185,7 @@ void check_representable(const Tool& t) {
     if (e.length_wear != Eigen::Vector3d::Zero() || e.radius_wear != 0 || e.corner_radius_wear != 0)
         refuse("wear values");
     if (!t.name.empty()) refuse("a tool name (only a comment)");
-    if (t.comment.find('\n') != std::string::npos) refuse("a comment with a line break");
+    if (t.comment.find_first_of("\r\n") != std::string::npos) refuse("a comment with a line break");
 }
 
 std::string canonical_comment(const Tool& t) { return t.comment.empty() ? "" : " ;" + t.comment; }
@@ -283,7 +283,7 @@ std::string write_linuxcnc_table(const ToolTable& table) {
     }
     for (const Tool& t : table.tools()) {
         if (written.count(t.number)) continue;
-        if (!out.empty() && out.back() != '\n') out += eol;
+        if (!tables::ends_with_line_end(out)) out += eol;
         out += canonical_line(t, scale) + eol;
     }
     return out;

@@ -212,6 +212,8 @@ void Interp::arc_about_pole(Tokens t) {
     const Vec3 end = end_point(t, 1);
     const double r1 = (plane2(pos_) - *pole_).norm(), r2 = (plane2(end) - *pole_).norm();
     if (std::fabs(r1 - r2) > kArcTolerance / unit_) fail("arc_end_incorrect", "ARC END POS. INCORRECT", t[0].column);
+    // Start or end on the centre: a circle of radius 0, or no direction to start or end in.
+    if (std::min(r1, r2) < tol::length / unit_) fail("arc_end_incorrect", "ARC END POS. INCORRECT (circle of radius 0)", t[0].column);
     if (feed_ <= 0) fail("no_feed", "No feed rate programmed");
     Motion m = motion_to(dir > 0 ? MotionKind::arc_ccw : MotionKind::arc_cw, end);
     m.center = with_plane(pos_, *pole_);

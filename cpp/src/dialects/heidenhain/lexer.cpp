@@ -1,8 +1,10 @@
 #include "toolcomp/dialects/heidenhain/lexer.hpp"
 #include "toolcomp/program/text.hpp"
+#include "words.hpp"
 
 #include <cctype>
 #include <charconv>
+#include <optional>
 
 namespace toolcomp::heidenhain {
 
@@ -196,6 +198,32 @@ void read_blank(Program& prog, const Block& b) {
     prog.blank = bl;
 }
 
+// A program starts with BEGIN PGM and ends with END PGM: without them, a file cut short in
+// a transfer would run as if it were complete.
+void check_frame(Program& prog, bool ended, bool strict) {
+    std::optional<ParseError> e;
+    const Block* first = nullptr;  // comments before BEGIN PGM are tolerated
+    for (const Block& b : prog.blocks())
+        if (b.token_count > 0) {
+            first = &b;
+            break;
+        }
+    if (!first) {
+        e.emplace("begin_pgm_missing", "The program does not start with BEGIN PGM (no blocks)",
+                  SourcePos{prog.size() ? prog.blocks().front().line : 1, 1});
+    } else {
+        auto t = prog.tokens(*first);
+        if (t.size() < 2 || t[0].key != "BEGIN" || t[1].key != "PGM")
+            e.emplace("begin_pgm_missing", "The program does not start with BEGIN PGM", SourcePos{first->line, t[0].column});
+        else if (!ended)
+            e.emplace("end_pgm_missing", "END PGM missing: the program ends without END PGM (cut short?)",
+                      SourcePos{prog.last_line, 1});
+    }
+    if (!e) return;
+    if (strict) throw *e;
+    prog.syntax_error = e->diagnostic();
+}
+
 }  // namespace
 
 Program parse(std::string_view text, std::string name, bool strict) {
@@ -205,15 +233,24 @@ Program parse(std::string_view text, std::string name, bool strict) {
     prog.dialect = Dialect::heidenhain;
     std::size_t pos = 0;
     int line_no = 0;
+    bool ended = false;  // END PGM seen
     while (pos <= text.size()) {
-        std::size_t nl = text.find('\n', pos);
+        // A line ends with "\n" (CRs right before it are blanks: "\r\n", "\r\r\n") or with a
+        // lone "\r" (old Mac line ends). nl: the last character of the line ending.
+        std::size_t nl = text.find_first_of("\r\n", pos);
         if (nl == std::string_view::npos) nl = text.size();
+        if (nl < text.size() && text[nl] == '\r') {
+            std::size_t j = nl;
+            while (j < text.size() && text[j] == '\r') ++j;
+            if (j < text.size() && text[j] == '\n') nl = j;
+        }
         std::string_view line = text.substr(pos, nl - pos);
         ++line_no;
         pos = nl + 1;
         if (!is_blank_line(line)) {
             try {
                 LineLexer(line, line_no, prog).run();
+                check_path_words(prog.tokens(prog.blocks().back()), line_no);
             } catch (const ParseError& e) {
                 if (strict) throw;
                 prog.drop_last_block();
@@ -226,10 +263,14 @@ Program parse(std::string_view text, std::string name, bool strict) {
             if (t.size() >= 2 && t[0].key == "BEGIN" && t[1].key == "PGM")
                 for (const Token& k : t) prog.inch = prog.inch || k.key == "INCH";
             read_blank(prog, b);
-            if (t.size() >= 2 && t[0].key == "END" && t[1].key == "PGM") break;
+            if (t.size() >= 2 && t[0].key == "END" && t[1].key == "PGM") {
+                ended = true;
+                break;
+            }
         }
         if (nl == text.size()) break;
     }
+    if (!prog.syntax_error) check_frame(prog, ended, strict);
     return prog;
 }
 

@@ -56,6 +56,17 @@ public:
         if (i_ - st > 6) throw std::invalid_argument("number " + std::string(s_.substr(st, i_ - st)) + " out of range");
         return std::stoi(std::string(s_.substr(st, i_ - st)));
     }
+    // The number of a Q parameter after the letter Q: at most five digits, as in words
+    // (X+Q12345).
+    int q_number() {
+        skip();
+        std::size_t st = i_;
+        while (i_ < s_.size() && std::isdigit(static_cast<unsigned char>(s_[i_]))) ++i_;
+        if (st == i_) throw std::invalid_argument("Q parameter number expected");
+        if (i_ - st > 5)
+            throw std::invalid_argument("Q parameter number Q" + std::string(s_.substr(st, i_ - st)) + " out of range");
+        return std::stoi(std::string(s_.substr(st, i_ - st)));
+    }
     bool done() {
         skip();
         return i_ >= s_.size();
@@ -127,7 +138,7 @@ private:
         if (i_ < s_.size() && (s_[i_] == 'Q' || s_[i_] == 'q') && i_ + 1 < s_.size() &&
             std::isdigit(static_cast<unsigned char>(s_[i_ + 1]))) {
             ++i_;
-            return q_(integer());
+            return q_(q_number());
         }
         const std::string f = word();
         if (f.empty()) throw std::invalid_argument("operand expected");
@@ -166,7 +177,7 @@ private:
 int target_q(Parser& p) {
     const std::string w = p.word();
     if (w != "Q") throw std::invalid_argument("Q parameter expected");
-    const int n = p.integer();
+    const int n = p.q_number();
     if (!p.eat('=')) throw std::invalid_argument("'=' expected");
     return n;
 }
@@ -184,7 +195,7 @@ QResult run_statement(std::string_view text, const QLookup& q) {
     QResult r;
     const std::string head = p.word();
     if (head == "Q") {  // Qn = formula
-        const int n = p.integer();
+        const int n = p.q_number();
         if (!p.eat('=')) throw std::invalid_argument("'=' expected");
         r.assign = n;
         r.value = p.formula();

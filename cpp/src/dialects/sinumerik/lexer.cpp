@@ -310,6 +310,12 @@ private:
             prog_.add_token(std::move(t));
             return;
         }
+        // A single address letter without a value ("G1 Y" cut short): not a subprogram call,
+        // whose names start with two letters.
+        if (name.size() == 1 && is_address(name)) {
+            i_ = start;
+            error("Value expected after the address " + name);
+        }
         t.key = name;
         t.text = name;
         prog_.add_token(std::move(t));

@@ -1,0 +1,71 @@
+"""Words of Heidenhain path blocks: a word the function does not take, an axis given twice
+(X twice, or X with IX), a TNC word toolcomp does not model, a Q number out of range, and a
+circle of radius 0 are errors at their line, never ignored or silently resolved."""
+import pytest
+
+import toolcomp as tc
+
+
+def pgm(body):
+    """BEGIN PGM on line 1: the body's k-th line is source line k + 1."""
+    lines = ["BEGIN PGM T MM", "TOOL DEF 1 L+0 R+2", "TOOL CALL 1 Z S3000", "L X+0 Y+0 Z-1 R0 F100"]
+    lines += body.strip().splitlines() + ["END PGM T MM"]
+    return "\n".join(f"{i} {l.strip()}" for i, l in enumerate(lines)) + "\n"
+
+
+def error_of(body):
+    with pytest.raises(tc.Error) as e:
+        tc.run(tc.Program.parse(pgm(body), dialect="heidenhain"))
+    return e.value.code, e.value.line, e.value.column
+
+
+@pytest.mark.parametrize("body, code, column", [
+    ("L X+10 X+20 Y+0", "bad_word", 8),           # the second X
+    ("L X+10 IX+5", "bad_word", 8),               # X absolute and incremental
+    ("CC X+1 Y+2 Y+3", "bad_word", 12),
+    ("L X+10 F100 F200", "bad_word", 13),
+    ("L X+10 ZZ+5", "bad_word", 8),               # no such word
+    ("L X+10 DR+", "bad_word", 8),                # DR belongs to arcs
+    ("L X+10 R+5", "bad_word", 8),                # a radius in a straight line
+    ("CC X+5 Y+0 F100", "bad_word", 12),          # CC moves nothing
+    ("L X+10 W+5", "unsupported_word", 8),        # parallel axis
+    ("L X+10 IB+5", "unsupported_word", 8),
+    ("L X+10 FZ0.1", "unsupported_word", 8),
+])
+def test_word_errors_at_their_column(body, code, column):
+    # column: in the body line; the program line starts with its block number "4 ".
+    assert error_of(body) == (code, 5, column + 2)
+
+
+def test_long_line_of_repeated_axis_words_fails_at_the_second():
+    assert error_of("L " + "X+1 " * 25_000) == ("bad_word", 5, 2 + 7)
+
+
+@pytest.mark.parametrize("body", [
+    "L X+10 Y+5 RL F200 M3 M8\nL X+20 R0",    # two M functions in one block
+    "L Z+1 R+ F100",                          # paraxial R+ (R0 off)
+    "CC X+5 Y+0\nC X+10 Y+0 DR+ F100",         # arc about CC
+    "CR X+10 Y+0 R+5 DR- F100",
+    "CC X+0 Y+0\nLP PR+5 PA+90 F100",
+    "CC X+5 Y+0\nCP IPA+360 IZ-1 DR+ F100",    # helix
+    "L X+10 Y+0 F100\nRND R2\nL Y+10\nCHF 1\nL X+20",
+    "L X+10 A+90 C+45 F100",                  # rotary axes
+])
+def test_valid_words_are_accepted(body):
+    tc.run(tc.Program.parse(pgm(body), dialect="heidenhain"))
+
+
+def test_q_parameter_numbers_have_at_most_five_digits():
+    res = tc.run(tc.Program.parse(pgm("Q12345 = 7\nL X+Q12345 F100"), dialect="heidenhain"))
+    assert res.path.end[-1, 0] == 7
+    assert error_of("Q123456 = 5")[:2] == ("q_syntax", 5)
+    assert error_of("Q1 = Q123456 + 1")[:2] == ("q_syntax", 5)
+    assert error_of("FN 0: Q123456 = +5")[:2] == ("q_syntax", 5)
+    assert error_of("L X+Q123456")[:2] == ("bad_word", 5)
+
+
+@pytest.mark.parametrize("body", ["CC X+0 Y+0\nC X+0 Y+0 DR+",    # start and end on the centre
+                                  "CC X+0 Y+0.01\nC X+0 Y+0.01 DR+"])  # end on the centre
+def test_circle_of_radius_zero_is_arc_end_incorrect(body):
+    code, line, _ = error_of(body)
+    assert (code, line) == ("arc_end_incorrect", 6)
