@@ -112,9 +112,10 @@ Result run(const Program& program, const ToolTable* tools, const RunOptions& opt
     try {
         if (program.dialect == Dialect::heidenhain)
             heidenhain::interpret(program, tools, profile, tee, res.diagnostics, iopts.progress, iopts.progress_every,
-                                  options.search_path);
+                                  options.search_path, &out.files);
         else if (program.dialect == Dialect::sinumerik)
-            sinumerik::interpret(program, tools, profile, sinumerik_options(options, profile), tee, res.diagnostics);
+            sinumerik::interpret(program, tools, profile, sinumerik_options(options, profile), tee, res.diagnostics,
+                                 &out.files);
         else if (is_iso(program.dialect))
             iso::interpret(program, tools, profile, iopts, tee, res.diagnostics, &out);
         else

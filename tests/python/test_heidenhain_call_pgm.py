@@ -18,6 +18,8 @@ def test_call_pgm_runs_the_called_program_with_shared_q_parameters():
     res = tc.run(DATA / "call_main.h", search_path=[DATA])
     np.testing.assert_allclose(res.path.end[:, :2], [[10, 5], [17, 0], [11, 5]])
     assert list(res.path.line) == [2, 7, 2]  # sub1.h line 2, call_main.h line 7, sub1.h line 2
+    assert list(res.path.file) == [1, 0, 1]
+    assert [pathlib.Path(f).name.lower() for f in res.path.files] == ["call_main.h", "sub1.h"]
     assert res.ok
 
 

@@ -3,6 +3,7 @@ expressions, control structures, subprograms, frames, circles, units, tool data,
 compensation with the modal G groups, and the alarms with their numbers and lines. Every
 expected number is worked by hand (comments) from the programmed contour."""
 import math
+import pathlib
 
 import numpy as np
 import pytest
@@ -169,6 +170,9 @@ def test_subprograms_from_the_search_path_with_passes(tmp_path):
     res = run("G0 X0 Y0\nL10 P3\nR5=7\nPOCKET\nM30\n", tools="", search_path=[str(tmp_path)])
     assert ends(res.nominal) == [(0, 0, 0), (10, 0, 0), (20, 0, 0), (30, 0, 0), (30, 7, 0)]
     assert list(res.nominal.line) == [1, 1, 1, 1, 2]  # lines of the subprogram files
+    assert list(res.nominal.file) == [0, 1, 1, 1, 2]  # ... and which files those are
+    assert [pathlib.Path(f).name for f in res.nominal.files[1:]] == ["L10.SPF", "pocket.spf"]
+    assert res.path.files == res.nominal.files
 
 
 def test_missing_subprogram_is_14011():

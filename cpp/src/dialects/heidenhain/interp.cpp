@@ -117,6 +117,7 @@ Motion Interp::motion_to(MotionKind kind, const Vec3& end) const {
     m.end = end;
     m.abc = abc_;
     m.line = line_;
+    m.file = file_;
     m.tool = tool_;
     m.tool_offset = tlo_;
     m.unit = unit_;
@@ -294,6 +295,13 @@ void Interp::run() {
 }
 
 bool Interp::run_blocks(const Program& prog, int depth) {
+    const int caller_file = file_;
+    file_ = files_.index(prog.name);
+    struct Restore {
+        int& f;
+        int v;
+        ~Restore() { f = v; }
+    } restore{file_, caller_file};
     const auto& blocks = prog.blocks();
     std::map<int, std::size_t> labels;
     for (std::size_t i = 0; i < blocks.size(); ++i) {
@@ -467,8 +475,8 @@ std::string Interp::find_program(const std::string& name, int column) const {
 
 // CALL PGM name: the TNC cancels radius compensation (and M120) at a program call, then runs
 // the called program from its beginning to END PGM as a subprogram: Q parameters, the tool,
-// feed, plane, pole and position carry over both ways. Its moves keep the line numbers of the
-// called file (the Path has no file column).
+// feed, plane, pole and position carry over both ways. Its moves carry the line numbers of the
+// called file and its index in Path::files.
 void Interp::call_program(Tokens t, int depth) {
     const Token* name = t.size() > 2 ? &t[2] : nullptr;
     std::string text = name ? (!name->text.empty() ? name->text : name->key) : std::string();
@@ -512,10 +520,17 @@ void Interp::call_program(Tokens t, int depth) {
 
 void interpret(const Program& program, const ToolTable* tools, const ControlProfile& profile, MotionSink& sink,
                std::vector<Diagnostic>& diagnostics, const std::function<void(std::size_t)>& progress,
-               std::size_t progress_every, const std::vector<std::string>& search_path) {
+               std::size_t progress_every, const std::vector<std::string>& search_path,
+               std::vector<std::string>* files) {
     Interp interp(program, tools, profile, sink, diagnostics, search_path);
     if (progress) interp.on_progress(progress, progress_every);
-    interp.run();
+    try {
+        interp.run();
+    } catch (...) {
+        if (files) *files = interp.files();
+        throw;
+    }
+    if (files) *files = interp.files();
 }
 
 }  // namespace toolcomp::heidenhain

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "toolcomp/program/source_files.hpp"
 #include "toolcomp/compensation/approach.hpp"
 #include "toolcomp/geometry/element.hpp"
 #include "toolcomp/dialects/heidenhain/interpreter.hpp"
@@ -23,6 +24,7 @@ public:
     Interp(const Program& prog, const ToolTable* tools, const ControlProfile& profile, MotionSink& sink,
            std::vector<Diagnostic>& diags, std::vector<std::string> search_path = {});
     void run();
+    const std::vector<std::string>& files() const { return files_.names(); }
     // Called with the number of blocks executed so far, every `every` blocks.
     void on_progress(std::function<void(std::size_t)> f, std::size_t every) {
         progress_ = std::move(f);
@@ -96,6 +98,8 @@ private:
     std::vector<Diagnostic>& diags_;
 
     int line_ = 0;
+    int file_ = 0;        // Path::files index of the program whose blocks run
+    SourceFiles files_;
     double unit_ = 1.0;  // mm per program unit
     Plane plane_ = Plane::xy;
     Vec3 pos_ = Vec3::Zero();

@@ -144,7 +144,7 @@ double Interp::eval_text(const std::string& text, int column) {
 double Interp::value_of(const Token& t) { return t.expr >= 0 ? eval(t.expr, t.column) : t.value; }
 
 void Interp::run() {
-    stack_.push_back(Context{&main_, &info_of(main_), 0, {}, false, 0, 0});
+    stack_.push_back(Context{&main_, &info_of(main_), 0, {}, false, 0, 0, files_.index(main_.name)});
     try {
         while (step()) {
         }
@@ -299,7 +299,7 @@ void Interp::call(const std::string& name, int passes, int column) {
         p = &loaded_.back();
         loaded_by_name_[name] = p;
     }
-    stack_.push_back(Context{p, &info_of(*p), 0, {}, false, 0, 0});
+    stack_.push_back(Context{p, &info_of(*p), 0, {}, false, 0, 0, files_.index(p->name)});
     stack_.back().passes_left = passes - 1;
     stack_.back().call_line = line_;
 }
@@ -323,8 +323,16 @@ bool Interp::ret() {
 }
 
 void interpret(const Program& program, const ToolTable* tools, const ControlProfile& profile,
-               const InterpretOptions& options, MotionSink& sink, std::vector<Diagnostic>& diagnostics) {
-    Interp(program, tools, profile, options, sink, diagnostics).run();
+               const InterpretOptions& options, MotionSink& sink, std::vector<Diagnostic>& diagnostics,
+               std::vector<std::string>* files) {
+    Interp interp(program, tools, profile, options, sink, diagnostics);
+    try {
+        interp.run();
+    } catch (...) {
+        if (files) *files = interp.files();
+        throw;
+    }
+    if (files) *files = interp.files();
 }
 
 }  // namespace toolcomp::sinumerik

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "toolcomp/program/source_files.hpp"
 #include "toolcomp/dialects/sinumerik/interpreter.hpp"
 
 namespace toolcomp::sinumerik {
@@ -95,6 +96,7 @@ public:
     Interp(const Program& prog, const ToolTable* tools, const ControlProfile& profile, const InterpretOptions& opts,
            MotionSink& sink, std::vector<Diagnostic>& diags);
     void run();
+    const std::vector<std::string>& files() const { return files_.names(); }
 
     // expr::Env
     double get(const std::string& name, std::span<const double> idx) override;
@@ -108,6 +110,7 @@ private:
         bool executable_seen = false;  // DEF only before the first executable block
         int passes_left = 0;           // L.. P n: further passes
         int call_line = 0;
+        int file = 0;  // Path::files index of prog
     };
 
     // ---- execution (interp.cpp) ----------------------------------------------------------
@@ -164,6 +167,7 @@ private:
 
     std::vector<Context> stack_;
     std::map<const Program*, std::unique_ptr<ProgramInfo>> infos_;
+    SourceFiles files_;
     std::deque<Program> loaded_;  // subprograms read from the search path
     std::map<std::string, const Program*> loaded_by_name_;
     std::size_t executed_ = 0;

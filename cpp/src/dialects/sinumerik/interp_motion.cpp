@@ -59,6 +59,7 @@ Motion Interp::motion_(MotionKind kind, const Vec3& end) const {
     m.abc = abc_;
     m.feed = kind == MotionKind::rapid ? std::numeric_limits<double>::quiet_NaN() : feed_;
     m.line = line_;
+    m.file = stack_.empty() ? 0 : stack_.back().file;
     m.tool = tool_;
     m.tool_offset = tool_offset_;
     m.tool_axis = tool_axis_;

@@ -21,10 +21,11 @@ namespace toolcomp::heidenhain {
 // `name.h` when the name has no suffix), in order; no other place is searched, and with an
 // empty search path every CALL PGM fails with "not found". The called program runs inline:
 // Q parameters and modal state are shared, radius compensation is cancelled by the call
-// (TNC), and its moves carry the line numbers of the called file (the Path has no file
-// column: a line from a called program refers to that file).
+// (TNC), and its moves carry the line numbers of the called file and its index (Motion::file)
+// in `files` (optional: the main program first, then each called file as first entered).
 void interpret(const Program& program, const ToolTable* tools, const ControlProfile& profile, MotionSink& sink,
                std::vector<Diagnostic>& diagnostics, const std::function<void(std::size_t)>& progress = {},
-               std::size_t progress_every = 1 << 16, const std::vector<std::string>& search_path = {});
+               std::size_t progress_every = 1 << 16, const std::vector<std::string>& search_path = {},
+               std::vector<std::string>* files = nullptr);
 
 }  // namespace toolcomp::heidenhain

@@ -41,7 +41,10 @@ struct InterpretOptions {
     int max_call_depth = 16;                    // program levels (main program included)
 };
 
+// `files` (optional) receives the main program's name and each subprogram file's, in the
+// order first entered: Motion::file indexes it.
 void interpret(const Program& program, const ToolTable* tools, const ControlProfile& profile,
-               const InterpretOptions& options, MotionSink& sink, std::vector<Diagnostic>& diagnostics);
+               const InterpretOptions& options, MotionSink& sink, std::vector<Diagnostic>& diagnostics,
+               std::vector<std::string>* files = nullptr);
 
 }  // namespace toolcomp::sinumerik
