@@ -223,12 +223,14 @@ def test_forward_call_and_a_definition_the_flow_must_not_reach():
 
 
 @pytest.mark.parametrize("text, code, message, line", [
-    ("G21\no300 call\nG0 X1\nM2\n", "unknown_o_word", "EOF in file:<string> seeking o-word: o<300> from line: 2", 4),
-    ("G21\no1 endwhile\nM2\n", "o_word_structure", "o1 endwhile does not close an open o1 structure", 2),
-    ("G21\no1 return\nM2\n", "return_outside_sub", "not in a subroutine definition: 'o1 return'", 2),
+    ("G21\no300 call\nG0 X1\nM2\n", "unknown_o_word", "EOF in file:<string> seeking o-word: o<300> from line: 2", 2),
+    ("G21\no1 endwhile\nM2\n", "o_word_structure", "2: undefined O-word label: 'o1 endwhile'", 2),
+    ("G21\no1 while [1]\no1 endif\nM2\n", "o_word_structure",
+     "3: no matching label: '#1' (found 'while' in line 2): 'o1 endif'", 3),
+    ("G21\n  o1 return\nM2\n", "return_outside_sub", "2: not in a subroutine definition: '  o1 return'", 2),
     ("G21\no1 while [0]\nG0 X1\nM2\n", "o_word_structure", "File ended with no percent sign or program end", 4),
-    ("G21\no6 repeat [2]\no6 break\no6 endrepeat\nM2\n", "o_word_structure",
-     "no matching while/do label: 'o6 break' (found 'repeat' in line 2)", 3),
+    ("G21\no6 repeat [2]\n  o6 break\no6 endrepeat\nM2\n", "o_word_structure",
+     "3: no matching while/do label: '  o6 break' (found 'repeat' in line 2)", 3),
     ("G21\n#0=1\nM2\n", "parameter_out_of_range", "Parameter number out of range", 2),
     ("G21\nG0 X#5602\nM2\n", "parameter_out_of_range", "Parameter number out of range", 2),
     ("G21\n#5400=3\nM2\n", "read_only_parameter", "Parameter is readonly", 2),
@@ -246,7 +248,7 @@ def test_recursion_stops_at_linuxcncs_nine_levels():
     text = "G21\no<rec> sub\no<rec> call\no<rec> endsub\no<rec> call\nM2\n"
     with pytest.raises(tc.ProgramError, match="Too many subroutine levels") as e:
         run(text)
-    assert e.value.code == "call_depth" and e.value.line == 3
+    assert e.value.code == "call_depth" and e.value.line == 5  # LinuxCNC: the outermost call
     deeper = tc.ControlProfile("linuxcnc")
     deeper.call_depth_limit = 50
     with pytest.raises(tc.ProgramError, match="Too many subroutine levels"):

@@ -48,6 +48,7 @@ struct Statement {
     std::int32_t value = -1;   // assign value, condition, repeat count, return value
     std::int32_t loop = 0;     // Fanuc DO / END identifier
     std::vector<std::int32_t> args;  // o_call arguments
+    std::string text;          // LinuxCNC O-word: the source line (its messages quote it)
 };
 
 // A token of a conversational block (Heidenhain Klartext): a keyword or address with an

@@ -43,18 +43,28 @@ FlowInfo scan_flow(const Program& prog) {
         if (b.statement_count == 0) continue;
         const Statement* s = control_statement(prog, b);
         if (!s) continue;
+        // LinuxCNC's words: "<line>: <what>: '<the source line>'".
         auto error = [&](const std::string& m) { f.errors.emplace(k, m); };
+        auto quoted = [&](const std::string& what) { return std::to_string(b.line) + ": " + what + ": '" + s->text + "'"; };
         auto close = [&](Stmt opener, const char* what) {
-            if (stack.empty() || stack.back().label != s->label || stack.back().kind != opener) {
-                error(o_name(s->label) + " " + what + " does not close an open " + o_name(s->label) + " structure");
-                return static_cast<Open*>(nullptr);
+            (void)what;
+            if (!stack.empty() && stack.back().label == s->label && stack.back().kind == opener) return &stack.back();
+            Open* same = innermost(s->label, false);
+            if (same) {
+                static constexpr const char* kNames[] = {"", "sub", "", "", "", "if", "", "", "", "while", "", "do", "repeat"};
+                const auto kind = static_cast<std::size_t>(same->kind);
+                const char* found = kind < std::size(kNames) ? kNames[kind] : "";
+                error(std::to_string(b.line) + ": no matching label: '#" + s->label + "' (found '" + found + "' in line " +
+                      std::to_string(prog.blocks()[same->block].line) + "): '" + s->text + "'");
+            } else {
+                error(quoted("undefined O-word label"));
             }
-            return &stack.back();
+            return static_cast<Open*>(nullptr);
         };
         switch (s->kind) {
             case Stmt::o_sub:
                 if (!stack.empty()) {
-                    error("Subroutine " + o_name(s->label) + " defined inside another structure");
+                    error("Nested subroutine definition");
                     break;
                 }
                 f.subs.emplace(s->label, k);
@@ -105,14 +115,13 @@ FlowInfo scan_flow(const Program& prog) {
                 if (Open* o = innermost(s->label, true))
                     f.links[k].loop = o->block;
                 else
-                    error(o_name(s->label) + (s->kind == Stmt::o_break ? " break" : " continue") +
-                          " is not inside an " + o_name(s->label) + " loop");
+                    error(quoted("undefined O-word label"));
                 break;
             case Stmt::o_return:
                 if (Open* o = innermost(s->label, false); o && o->kind == Stmt::o_sub)
                     f.links[k].loop = o->block;
                 else if (!stack.empty() && stack.front().kind == Stmt::o_sub)
-                    error("Return " + o_name(s->label) + " inside subroutine " + o_name(stack.front().label));
+                    f.links[k].loop = stack.front().block;  // LinuxCNC returns even with the wrong label
                 break;  // outside a sub definition: a return from the called file, checked when run
             case Stmt::program_number:
                 f.programs.emplace(std::stol(s->label), k);

@@ -82,6 +82,23 @@ void Interp::run() {
     Frame top;
     top.at = &main_;
     frames_.push_back(top);
+    try {
+        run_blocks();
+    } catch (const Error& e) {
+        // LinuxCNC unwinds the calls before it reports: an error at any depth is reported at
+        // the main program's line of the outermost call.
+        if (prog_.dialect != Dialect::linuxcnc || frames_.size() < 2) throw;
+        const SourcePos at{frames_[1].call_line, 0};
+        switch (e.kind()) {
+            case ErrorKind::parse: throw ParseError(e.code(), e.what(), at);
+            case ErrorKind::compensation: throw CompensationError(e.code(), e.what(), at);
+            case ErrorKind::tool_table: throw ToolTableError(e.code(), e.what(), at);
+            default: throw ProgramError(e.code(), e.what(), at);
+        }
+    }
+}
+
+void Interp::run_blocks() {
     std::size_t read = 0;
     const bool fanuc = prog_.dialect == Dialect::fanuc;
     for (;;) {
@@ -107,6 +124,7 @@ void Interp::run() {
                 control(*s, k);
                 continue;
             }
+        if (block.statement_count) declare_named(block);
         const std::span<const Word> words = syntax_ ? block_words(block) : p.words(block);
         if (fanuc) {
             bool g65 = false;

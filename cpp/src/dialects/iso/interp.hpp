@@ -60,6 +60,7 @@ struct Frame {
     std::size_t entry = 0;      // first block of the body (M98 / G65 L repeats)
     std::size_t sub_block = FlowInfo::npos;  // LinuxCNC: the sub block of the running subroutine
     long repeats_left = 0;      // M98 / G65 L: passes still to run after this one
+    int call_line = 0;          // line of the calling block (in the caller's file)
     std::map<std::size_t, long> repeat_counts;  // o-repeat block -> passes left
     const Program& prog() const { return *at->prog; }
 };
@@ -97,6 +98,8 @@ private:
     // is left out); the block's own words when nothing is computed.
     std::span<const Word> block_words(const Block& b);
     void assignments(const Block& b);  // #n = ... of the block, all read first, then set
+    void declare_named(const Block& b);
+    void run_blocks();
     void set_param(double number, double v, int column);
     std::string substitute(const std::string& text);  // DEBUG / PRINT messages: #n, #<name> values
     void call_sub(const Statement& s);  // LinuxCNC o-call

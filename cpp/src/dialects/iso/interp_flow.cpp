@@ -86,6 +86,13 @@ void Interp::assignments(const Block& b) {
     }
 }
 
+void Interp::declare_named(const Block& b) {
+    // LinuxCNC declares a named parameter (value 0) as it reads its assignment, before the
+    // words of the line are evaluated: "#<b> = 4 G1 X#<b>" moves to X0.
+    for (const Statement& s : frames_.back().prog().statements(b))
+        if (s.kind == Stmt::assign && !s.label.empty() && !params_.named(s.label)) params_.set_named(s.label, 0);
+}
+
 void Interp::push_frame(Frame f) {
     if (frames_.size() > profile_.call_depth_limit)
         fail("call_depth", prog_.dialect == Dialect::linuxcnc
@@ -125,24 +132,22 @@ void Interp::call_sub(const Statement& s) {
     // The sub: a file <label>.ngc on the search path (LinuxCNC looks there first), else a
     // definition in the running file, else one in the main program.
     const std::string name = s.label.front() == '<' ? s.label.substr(1, s.label.size() - 2) : s.label;
+    // A subroutine name names a file in a search directory, never a path out of it.
+    if (name.find_first_of("/\\") != std::string::npos || name.find("..") != std::string::npos)
+        fail("bad_o_word", "Subroutine name o<" + name + "> cannot name a file: '/', '\\' and '..' are not allowed",
+             s.column);
     const LoadedProgram* where = load(name + ".ngc");
-    if (where && !where->flow.subs.count(s.label)) {
-        line_ = where->prog->last_line;
-        file_ = where->file;
+    if (where && !where->flow.subs.count(s.label))
         fail("unknown_o_word", "EOF in file:" + where->prog->name + " seeking o-word: o<" + name + "> from line: 0");
-    }
     if (!where) where = frames_.back().at;
     auto found = where->flow.subs.find(s.label);
     if (found == where->flow.subs.end() && where != &main_) {
         where = &main_;
         found = where->flow.subs.find(s.label);
     }
-    if (found == where->flow.subs.end()) {
-        const int from = line_;
-        line_ = frames_.back().prog().last_line;
+    if (found == where->flow.subs.end())
         fail("unknown_o_word", "EOF in file:" + frames_.back().prog().name + " seeking o-word: o<" + name +
-                                   "> from line: " + std::to_string(from));
-    }
+                                   "> from line: " + std::to_string(line_));
     const std::size_t sub = found->second;
     if (where->flow.at(sub).partner == npos) {
         line_ = where->prog->last_line;
@@ -153,6 +158,7 @@ void Interp::call_sub(const Statement& s) {
     recorded_subs_.insert({where, sub});
     Frame f;
     f.kind = Frame::o_call;
+    f.call_line = line_;
     f.at = where;
     f.pc = f.entry = sub + 1;
     f.sub_block = sub;
@@ -163,8 +169,7 @@ void Interp::call_sub(const Statement& s) {
 
 void Interp::return_from_sub(const Statement& s) {
     if (frames_.size() < 2 || frames_.back().kind != Frame::o_call)
-        fail("return_outside_sub", "not in a subroutine definition: 'o" + s.label +
-                                       (s.kind == Stmt::o_return ? " return'" : " endsub'"));
+        fail("return_outside_sub", std::to_string(line_) + ": not in a subroutine definition: '" + s.text + "'");
     const bool has_value = s.value >= 0;
     const double v = has_value ? eval(s.value, s.column) : 0.0;
     frames_.pop_back();
@@ -233,9 +238,7 @@ void Interp::control(const Statement& s, std::size_t k) {
             } else if (!condition(s.value, s.column)) {
                 if (links.partner == npos) unclosed();
                 f.pc = links.partner + 1;
-            } else if (links.partner == npos) {
-                missing("endwhile");
-            }
+            }  // a while without endwhile that runs goes on (LinuxCNC: no error)
             break;
         case Stmt::o_endwhile:
             if (links.partner == npos) missing("while");
@@ -269,9 +272,8 @@ void Interp::control(const Statement& s, std::size_t k) {
             if (l.partner == npos) missing("loop end");
             const Stmt lk = control_statement(f.prog(), f.prog().blocks()[loop])->kind;
             if (lk == Stmt::o_repeat)  // LinuxCNC: break and continue belong to while and do loops only
-                fail("o_word_structure", "no matching while/do label: 'o" + s.label +
-                                             (s.kind == Stmt::o_break ? " break'" : " continue'") + " (found 'repeat' in line " +
-                                             std::to_string(f.prog().blocks()[loop].line) + ")");
+                fail("o_word_structure", std::to_string(line_) + ": no matching while/do label: '" + s.text +
+                                             "' (found 'repeat' in line " + std::to_string(f.prog().blocks()[loop].line) + ")");
             if (s.kind == Stmt::o_break) {
                 f.pc = l.partner + 1;
             } else {
@@ -366,6 +368,7 @@ void Interp::call_program(Frame::Kind kind, const WordSlot& p_word, const WordSl
              p_word.column);
     Frame f;
     f.kind = kind;
+    f.call_line = line_;
     f.at = lp;
     auto start = lp->flow.programs.find(number);
     f.pc = f.entry = start == lp->flow.programs.end() ? 0 : start->second + 1;

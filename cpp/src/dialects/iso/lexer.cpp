@@ -57,25 +57,31 @@ std::optional<double> LineLexer::constant_value(const expr::Expr& e) const {
     }
 }
 
-LineLexer::LineLexer(std::string_view line, int line_no, Program& prog) : raw_(line), line_(line_no), prog_(prog) {
+LineLexer::LineLexer(std::string_view line, int line_no, Program& prog, LineBuffers& b)
+    : s_(b.text), shifts_(b.shifts), raw_(line), line_(line_no), prog_(prog) {
     // LinuxCNC's reading: blanks dropped outside comments; comment texts kept as written.
-    s_.reserve(line.size());
-    cols_.reserve(line.size());
-    comment_.reserve(line.size());
-    auto keep = [&](std::size_t k, bool in_comment) {
-        s_.push_back(line[k]);
-        cols_.push_back(static_cast<int>(k) + 1);
-        comment_.push_back(in_comment);
-    };
-    for (std::size_t k = 0; k < line.size(); ++k) {
+    // Where blanks were dropped, `shifts_` records how far the source columns move on.
+    s_.clear();
+    shifts_.clear();
+    std::size_t k = 0;
+    while (k < line.size()) {
         const char c = line[k];
         if (c == '(') {
-            for (; k < line.size() && line[k] != ')'; ++k) keep(k, true);
-            if (k < line.size()) keep(k, true);
+            const std::size_t close = line.find(')', k);
+            const std::size_t end = close == std::string_view::npos ? line.size() : close + 1;
+            s_.append(line.substr(k, end - k));
+            k = end;
         } else if (c == ';') {
-            for (; k < line.size(); ++k) keep(k, true);
-        } else if (!is_blank(c)) {
-            keep(k, false);
+            s_.append(line.substr(k));
+            k = line.size();
+        } else if (is_blank(c)) {
+            std::size_t run = k;
+            while (run < line.size() && is_blank(line[run])) ++run;
+            shifts_.push_back({s_.size(), static_cast<int>(run)});
+            k = run;
+        } else {
+            s_.push_back(c);
+            ++k;
         }
     }
     std::size_t last = line.size();
@@ -177,7 +183,7 @@ double LineLexer::number() {
     std::string text;
     int points = 0;
     bool digits = false;
-    while (i_ < s_.size() && !comment_[i_]) {
+    while (i_ < s_.size()) {
         const char c = s_[i_];
         if (c >= '0' && c <= '9') {
             digits = true;
@@ -209,6 +215,7 @@ Program parse(std::string_view text, Dialect dialect, std::string name, bool str
     std::size_t pos = 0;
     int line_no = 0;
     bool seen_content = false, percent_open = false;
+    LineBuffers buffers;
     while (pos <= text.size()) {
         std::size_t nl = text.find('\n', pos);
         if (nl == std::string_view::npos) nl = text.size();
@@ -236,7 +243,7 @@ Program parse(std::string_view text, Dialect dialect, std::string name, bool str
             // LinuxCNC reads at most 252 characters a line (a CR of a CRLF end counts).
             if (dialect == Dialect::linuxcnc && line.size() > 252)
                 throw ParseError("line_too_long", "Command too long", {line_no, 253});
-            LineLexer(line, line_no, prog).run();
+            LineLexer(line, line_no, prog, buffers).run();
         } catch (const ParseError& e) {
             if (strict) throw;
             prog.drop_last_block();

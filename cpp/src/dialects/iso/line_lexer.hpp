@@ -15,15 +15,28 @@
 
 namespace toolcomp::iso {
 
+// The normalised text of a line and its maps, reused from line to line (no allocation per
+// line on million-block programs).
+struct LineBuffers {
+    std::string text;
+    std::vector<std::pair<std::size_t, int>> shifts;
+};
+
 class LineLexer {
 public:
-    LineLexer(std::string_view line, int line_no, Program& prog);
+    LineLexer(std::string_view line, int line_no, Program& prog, LineBuffers& buffers);
     void run();
 
 private:
     // ---- words (lexer.cpp) ----------------------------------------------------------------
     int col() const { return col_at(i_); }
-    int col_at(std::size_t i) const { return i < cols_.size() ? cols_[i] : end_col_; }
+    int col_at(std::size_t i) const {
+        if (i >= s_.size()) return end_col_;
+        int shift = static_cast<int>(i);  // 0-based source position of s_[i]
+        for (const auto& [at, to] : shifts_)
+            if (at <= i) shift = to + static_cast<int>(i - at);
+        return shift + 1;
+    }
     [[noreturn]] void fail(const char* code, const std::string& msg) const { fail_at(code, msg, i_); }
     [[noreturn]] void fail_at(const char* code, const std::string& msg, std::size_t i) const;
     bool at_end() const { return i_ >= s_.size(); }
@@ -47,11 +60,11 @@ private:
     bool keyword(std::string_view k);  // consumes k (upper case) when the text continues with it
     void rest_is_comments();       // after an O-word or a GOTO: only comments may follow
 
-    std::string s_;               // the line as LinuxCNC reads it (comment texts kept as written)
-    std::vector<int> cols_;       // 1-based source column of each character of s_
-    std::vector<bool> comment_;   // s_[i] belongs to a comment
+    std::string& s_;  // the line as LinuxCNC reads it (comment texts kept as written)
+    // (i, p): from s_[i] on, characters come from source position p + (offset past i)
+    std::vector<std::pair<std::size_t, int>>& shifts_;
+    std::string_view raw_;  // the source line
     int end_col_ = 1;
-    std::string_view raw_;
     std::size_t i_ = 0;
     int line_;
     Program& prog_;

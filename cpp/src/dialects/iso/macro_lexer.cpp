@@ -20,7 +20,7 @@ const expr::Syntax& LineLexer::syntax() const {
 }
 
 std::int32_t LineLexer::expression(bool value_only) {
-    if (at_end() || comment_[i_]) fail("bad_expression", "Expression expected");
+    if (at_end() || s_[i_] == '(' || s_[i_] == ';') fail("bad_expression", "Expression expected");
     std::size_t pos = i_;
     try {
         expr::Expr e = value_only ? expr::parse_value(s_, pos, syntax()) : expr::parse(s_, pos, syntax());
@@ -34,7 +34,7 @@ std::int32_t LineLexer::expression(bool value_only) {
 bool LineLexer::keyword(std::string_view k) {
     if (s_.size() - i_ < k.size()) return false;
     for (std::size_t j = 0; j < k.size(); ++j)
-        if (comment_[i_ + j] || std::toupper(static_cast<unsigned char>(s_[i_ + j])) != k[j]) return false;
+        if (std::toupper(static_cast<unsigned char>(s_[i_ + j])) != k[j]) return false;
     i_ += k.size();
     return true;
 }
@@ -82,7 +82,7 @@ void LineLexer::o_word() {
     if (prog_.dialect == Dialect::fanuc) {
         // A Fanuc program number: O and up to 4 (8 on later controls) digits.
         std::string n;
-        while (!at_end() && !comment_[i_] && digit(s_[i_])) n.push_back(s_[i_++]);
+        while (!at_end() && digit(s_[i_])) n.push_back(s_[i_++]);
         if (n.empty() || n.size() > 8) fail_at("bad_program_number", "Program number expected after O", i_ - 1);
         st.kind = Stmt::program_number;
         st.label = std::to_string(std::stol(n));
@@ -102,7 +102,7 @@ void LineLexer::o_word() {
         if (st.label.size() == 2) fail_at("bad_o_word", "O-word name is empty", open);
     } else {
         std::string n;
-        while (!at_end() && !comment_[i_] && digit(s_[i_])) n.push_back(s_[i_++]);
+        while (!at_end() && digit(s_[i_])) n.push_back(s_[i_++]);
         if (n.empty()) fail("bad_o_word", "O-word number or <name> expected");
         std::size_t z = n.find_first_not_of('0');
         st.label = z == std::string::npos ? "0" : n.substr(z);
@@ -127,6 +127,7 @@ void LineLexer::o_word() {
         }
     if (!found) fail("unknown_control_command", "Unknown control command in o word");
     st.kind = found->kind;
+    st.text = std::string(raw_.substr(0, raw_.find_last_not_of("\r") + 1));
     auto bracket = [&](bool required) {
         if (!at_end() && s_[i_] == '[') return expression(true);
         if (required) {
@@ -166,7 +167,7 @@ bool LineLexer::fanuc_statement() {
     };
     auto loop_number = [&] {
         std::string n;
-        while (!at_end() && !comment_[i_] && digit(s_[i_])) n.push_back(s_[i_++]);
+        while (!at_end() && digit(s_[i_])) n.push_back(s_[i_++]);
         if (n.empty() || n.size() > 3) fail("bad_macro_statement", "Loop identification number expected");
         return static_cast<std::int32_t>(std::stol(n));
     };
