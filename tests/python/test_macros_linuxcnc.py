@@ -235,6 +235,7 @@ def test_forward_call_and_a_definition_the_flow_must_not_reach():
     ("G21\nG0 X#5602\nM2\n", "parameter_out_of_range", "Parameter number out of range", 2),
     ("G21\n#5400=3\nM2\n", "read_only_parameter", "Parameter is readonly", 2),
     ("G21\nG0 X#5061\nM2\n", "probe_parameter_unset", "Probe result #5061 read", 2),
+    ("G21\n#<_x>=1\nM2\n", "read_only_parameter", "Cannot assign to read-only parameter #<_x>", 2),
 ])
 def test_errors_with_their_lines(text, code, message, line):
     with pytest.raises(tc.Error) as e:

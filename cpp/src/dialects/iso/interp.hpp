@@ -114,6 +114,7 @@ private:
     void goto_sequence(double n, int column);
     // System parameters (read from the interpreter's state), or nullptr / NaN when n is storage.
     bool system_param(int n, double& v) const;
+    static bool predefined(const std::string& name);  // LinuxCNC's read-only #<_x>, #<_value>, ...
 
     // ---- units and coordinates -----------------------------------------------------------
     double scale() const { return st_.inch ? kMmPerInch : 1.0; }

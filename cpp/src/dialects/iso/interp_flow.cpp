@@ -79,6 +79,8 @@ void Interp::assignments(const Block& b) {
         sets.push_back({number, s.label.empty() ? nullptr : &s.label, eval(s.value, s.column), s.column});
     }
     for (const Set& s : sets) {
+        if (s.name && predefined(*s.name))
+            fail("read_only_parameter", "Cannot assign to read-only parameter #<" + *s.name + ">", s.column);
         if (s.name)
             params_.set_named(*s.name, s.value);
         else
@@ -90,7 +92,8 @@ void Interp::declare_named(const Block& b) {
     // LinuxCNC declares a named parameter (value 0) as it reads its assignment, before the
     // words of the line are evaluated: "#<b> = 4 G1 X#<b>" moves to X0.
     for (const Statement& s : frames_.back().prog().statements(b))
-        if (s.kind == Stmt::assign && !s.label.empty() && !params_.named(s.label)) params_.set_named(s.label, 0);
+        if (s.kind == Stmt::assign && !s.label.empty() && !predefined(s.label) && !params_.named(s.label))
+            params_.set_named(s.label, 0);
 }
 
 void Interp::push_frame(Frame f) {

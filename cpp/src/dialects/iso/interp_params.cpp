@@ -105,6 +105,15 @@ void Interp::set_param(double number, double v, int column) {
     params_.set(n, v);
 }
 
+bool Interp::predefined(const std::string& name) {
+    static const char* const kNames[] = {"_value", "_value_returned", "_call_level", "_metric", "_imperial",
+                                         "_absolute", "_incremental", "_current_tool", "_selected_tool",
+                                         "_feed", "_rpm", "_x", "_y", "_z", "_a", "_b", "_c"};
+    for (const char* n : kNames)
+        if (name == n) return true;
+    return false;
+}
+
 double Interp::get(const std::string& name, std::span<const double>) {
     // LinuxCNC's predefined named parameters (read only) first, then the program's.
     const bool inch = st_.inch;

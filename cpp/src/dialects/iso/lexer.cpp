@@ -3,6 +3,8 @@
 #include "line_lexer.hpp"
 #include "toolcomp/program/text.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -14,6 +16,13 @@ namespace toolcomp::iso {
 namespace {
 
 bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
+
+// 1 for the characters that end a run of ordinary ones: blanks, '(' and ';'.
+constexpr auto kCharClass = [] {
+    std::array<std::uint8_t, 256> t{};
+    for (unsigned char c : {' ', '\t', '\r', '\f', '\v', '(', ';'}) t[c] = 1;
+    return t;
+}();
 
 // Letters that are address words in ISO G-code (LinuxCNC's set for a machine with axes
 // XYZABC; O, # and [ belong to the statements of programs that compute).
@@ -58,32 +67,36 @@ std::optional<double> LineLexer::constant_value(const expr::Expr& e) const {
 }
 
 LineLexer::LineLexer(std::string_view line, int line_no, Program& prog, LineBuffers& b)
-    : s_(b.text), shifts_(b.shifts), raw_(line), line_(line_no), prog_(prog) {
+    : s_(b.text), shifts_(b.shifts), raw_(line), line_(line_no), prog_(prog),
+      macros_(prog.dialect == Dialect::linuxcnc || prog.dialect == Dialect::fanuc) {
     // LinuxCNC's reading: blanks dropped outside comments; comment texts kept as written.
     // Where blanks were dropped, `shifts_` records how far the source columns move on.
-    s_.clear();
     shifts_.clear();
-    std::size_t k = 0;
-    while (k < line.size()) {
+    const std::size_t n = line.size();
+    s_.resize(n);  // the buffer keeps its capacity from line to line
+    char* out = s_.data();
+    std::size_t o = 0, k = 0;
+    while (k < n) {
         const char c = line[k];
-        if (c == '(') {
+        if (kCharClass[static_cast<unsigned char>(c)] == 0) {
+            out[o++] = c;
+            ++k;
+        } else if (c == '(') {
             const std::size_t close = line.find(')', k);
-            const std::size_t end = close == std::string_view::npos ? line.size() : close + 1;
-            s_.append(line.substr(k, end - k));
+            const std::size_t end = close == std::string_view::npos ? n : close + 1;
+            std::copy(line.data() + k, line.data() + end, out + o);
+            o += end - k;
             k = end;
         } else if (c == ';') {
-            s_.append(line.substr(k));
-            k = line.size();
-        } else if (is_blank(c)) {
-            std::size_t run = k;
-            while (run < line.size() && is_blank(line[run])) ++run;
-            shifts_.push_back({s_.size(), static_cast<int>(run)});
-            k = run;
+            std::copy(line.data() + k, line.data() + n, out + o);
+            o += n - k;
+            k = n;
         } else {
-            s_.push_back(c);
-            ++k;
+            while (k < n && is_blank(line[k])) ++k;
+            shifts_.push_back({o, static_cast<int>(k)});
         }
     }
+    s_.resize(o);
     std::size_t last = line.size();
     while (last > 0 && is_blank(line[last - 1])) --last;
     end_col_ = static_cast<int>(last) + 1;
@@ -110,7 +123,7 @@ void LineLexer::run() {
             prog_.add_comment({s_.substr(i_ + 1), col()});
             break;
         }
-        const char u = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+        const char u = c >= 'a' && c <= 'z' ? static_cast<char>(c - 32) : c;
         if (macros()) {
             if (u == 'O' && first_word_) {
                 o_word();
@@ -180,7 +193,7 @@ double LineLexer::number() {
         if (s_[i_] == '-') negative = !negative;
         ++i_;
     }
-    std::string text;
+    const std::size_t first = i_;  // the line has no blanks here: the number is one run
     int points = 0;
     bool digits = false;
     while (i_ < s_.size()) {
@@ -192,17 +205,17 @@ double LineLexer::number() {
         } else {
             break;
         }
-        text.push_back(c);
         ++i_;
     }
+    const std::string_view text(s_.data() + first, i_ - first);
     if (text.empty()) fail_at("bad_number_format", "No characters found in reading real value", start);
-    if (points > 1) fail_at("bad_number_format", "bad number format (trailing characters) parsing '" + text + "'", start);
-    if (!digits) fail_at("bad_number_format", "bad number format (conversion failed) parsing '" + text + "'", start);
-    if (text.front() == '.') text.insert(text.begin(), '0');
+    if (points > 1)
+        fail_at("bad_number_format", "bad number format (trailing characters) parsing '" + std::string(text) + "'", start);
+    if (!digits) fail_at("bad_number_format", "bad number format (conversion failed) parsing '" + std::string(text) + "'", start);
     double v = 0;
     auto r = std::from_chars(text.data(), text.data() + text.size(), v);
     if (r.ec != std::errc() || !std::isfinite(v))
-        fail_at("bad_number_format", "bad number format (conversion failed) parsing '" + text + "'", start);
+        fail_at("bad_number_format", "bad number format (conversion failed) parsing '" + std::string(text) + "'", start);
     return negative ? -v : v;
 }
 

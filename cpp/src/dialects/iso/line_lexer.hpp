@@ -32,10 +32,13 @@ private:
     int col() const { return col_at(i_); }
     int col_at(std::size_t i) const {
         if (i >= s_.size()) return end_col_;
-        int shift = static_cast<int>(i);  // 0-based source position of s_[i]
-        for (const auto& [at, to] : shifts_)
-            if (at <= i) shift = to + static_cast<int>(i - at);
-        return shift + 1;
+        // The shift in force at i: the last one at or before i (words are read left to
+        // right, so the search goes on from where the previous one stopped).
+        if (cursor_ > 0 && shifts_[cursor_ - 1].first > i) cursor_ = 0;
+        while (cursor_ < shifts_.size() && shifts_[cursor_].first <= i) ++cursor_;
+        if (cursor_ == 0) return static_cast<int>(i) + 1;
+        const auto& [at, to] = shifts_[cursor_ - 1];
+        return to + static_cast<int>(i - at) + 1;
     }
     [[noreturn]] void fail(const char* code, const std::string& msg) const { fail_at(code, msg, i_); }
     [[noreturn]] void fail_at(const char* code, const std::string& msg, std::size_t i) const;
@@ -49,7 +52,7 @@ private:
     std::optional<double> constant_value(const expr::Expr& e) const;
 
     // ---- statements (macro_lexer.cpp) ----------------------------------------------------
-    bool macros() const;  // this dialect computes (LinuxCNC, Fanuc)
+    bool macros() const { return macros_; }  // this dialect computes (LinuxCNC, Fanuc)
     const expr::Syntax& syntax() const;
     // Compiles the expression at i_ (a LinuxCNC value when `value_only`: number, '#',
     // '[...]' or function; else a whole Fanuc expression).
@@ -64,11 +67,13 @@ private:
     // (i, p): from s_[i] on, characters come from source position p + (offset past i)
     std::vector<std::pair<std::size_t, int>>& shifts_;
     std::string_view raw_;  // the source line
+    mutable std::size_t cursor_ = 0;  // col_at: shifts_ entries at or before the last position asked
     int end_col_ = 1;
     std::size_t i_ = 0;
     int line_;
     Program& prog_;
     bool first_word_ = true;
+    bool macros_ = false;
 };
 
 }  // namespace toolcomp::iso

@@ -13,8 +13,6 @@ namespace {
 bool digit(char c) { return c >= '0' && c <= '9'; }
 }  // namespace
 
-bool LineLexer::macros() const { return prog_.dialect == Dialect::linuxcnc || prog_.dialect == Dialect::fanuc; }
-
 const expr::Syntax& LineLexer::syntax() const {
     return prog_.dialect == Dialect::fanuc ? expr::fanuc_syntax() : expr::linuxcnc_syntax();
 }
