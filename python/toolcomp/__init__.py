@@ -44,7 +44,7 @@ __all__ = [
     "CompensationError", "ControlProfile", "CuttingEdge", "Diagnostic", "EntryStyle", "Error", "ExitStyle",
     "GougeReaction", "LengthAxes", "Machine", "NonPlaneReaction", "OutsideCorner", "ParseError", "Path",
     "Program", "ProgramError", "RadiusRules", "Result", "TipConvention", "Tool", "ToolTable",
-    "ToolTableError", "compensate_3d", "run", "run_many", "sinumerik", "__version__",
+    "ToolTableError", "compensate_3d", "params", "run", "run_many", "sinumerik", "__version__",
 ]
 
 _sys.modules[__name__ + ".sinumerik"] = sinumerik  # type: ignore[assignment]  # `import toolcomp.sinumerik`
@@ -129,3 +129,4 @@ ToolTable.diff = _table_diff
 
 
 from .batch import run_many  # noqa: E402  (needs run above)
+from . import params  # noqa: E402  (LinuxCNC .var parameter files)

@@ -177,12 +177,15 @@ def _progress_bar(program, stream=None):
     return tqdm(total=len(program), unit="block", unit_scale=True, file=stream, leave=False)
 
 
-def execute(program_file, tools_file=None, dialect=None, units_table=None, search_path=()) -> Outcome:
+def execute(program_file, tools_file=None, dialect=None, units_table=None, search_path=(),
+            parameters=None) -> Outcome:
     """Read the program and tool table and run it with ``strict=False``; every problem
     becomes a diagnostic record. Raises UsageError for unreadable inputs."""
     _check_readable(program_file, "program")
     if tools_file is not None:
         _check_readable(tools_file, "tool table")
+    if parameters is not None:
+        _check_readable(parameters, "parameter file")
     tc = _engine()
     dialect = dialect or SUFFIX_DIALECTS.get(os.path.splitext(program_file)[1].lower())
     out = Outcome(program_file, dialect)
@@ -212,6 +215,12 @@ def execute(program_file, tools_file=None, dialect=None, units_table=None, searc
     run_kwargs = {} if tools is None else {"tools": tools}
     if search_path:
         run_kwargs["search_path"] = list(search_path)
+    if parameters is not None:
+        try:
+            run_kwargs["parameters"] = tc.params.read_var(parameters)
+        except tc.Error as exc:
+            out.records.append(Record.of(exc, parameters, "error"))
+            return out
     if source is program_file:
         run_kwargs.update(kwargs)
     bar = _progress_bar(out.program)
@@ -367,7 +376,7 @@ def write_csv(path, filename):
 # ---------------------------------------------------------------------------------------
 
 def cmd_run(args) -> int:
-    out = execute(args.program, args.tools, args.dialect, args.units_table, args.search_path)
+    out = execute(args.program, args.tools, args.dialect, args.units_table, args.search_path, args.parameters)
     summary = summarize(out)
     print(format_summary(summary))
     if args.csv:
@@ -392,7 +401,7 @@ def cmd_check(args) -> int:
     # Unreadable files are usage errors: check them all before running any.
     for p in args.programs:
         _check_readable(p, "program")
-    outcomes = [execute(p, args.tools, args.dialect, args.units_table, args.search_path) for p in args.programs]
+    outcomes = [execute(p, args.tools, args.dialect, args.units_table, args.search_path, args.parameters) for p in args.programs]
     if args.format == "json":
         doc = [{"program": o.program_file, "ok": not o.has_errors,
                 "diagnostics": [r.as_dict() for r in o.records]} for o in outcomes]
@@ -405,7 +414,7 @@ def cmd_check(args) -> int:
 
 
 def cmd_export(args) -> int:
-    out = execute(args.program, args.tools, args.dialect, args.units_table, args.search_path)
+    out = execute(args.program, args.tools, args.dialect, args.units_table, args.search_path, args.parameters)
     if out.has_errors or out.result is None:
         # A program the control refuses has no compensated path to export.
         for r in out.records:
@@ -451,7 +460,10 @@ def build_parser() -> argparse.ArgumentParser:
                         help="units of the tool table's lengths (default: the table's own)")
         sp.add_argument("--search-path", metavar="DIR", action="append", default=[], dest="search_path",
                         help="directory where called programs are looked for (Heidenhain CALL PGM, "
-                             "Sinumerik L10 / named subprograms); repeatable, searched in order")
+                             "Sinumerik L10 / named subprograms, LinuxCNC o<name> call, Fanuc M98/G65); "
+                             "repeatable, searched in order")
+        sp.add_argument("--parameters", metavar="FILE.var",
+                        help="LinuxCNC parameter file: the numbered parameters the program starts from")
 
     r = sub.add_parser("run", help="run a program and print a summary of its paths",
                        description="Run a program (errors do not stop the report: the path "

@@ -250,3 +250,19 @@ def test_search_path_finds_sinumerik_subprograms(tmp_path):
     out = toolcomp("run", main, "--search-path", subs, "--json", js)
     assert out.returncode == 0, out.stdout + out.stderr
     assert json.loads(js.read_text())["segments"]["nominal"] == 3
+
+
+def test_parameters_from_a_var_file(tmp_path):
+    # #31 comes from the .var file: the program moves to X #31 * 2 = 5, and an undefined
+    # parameter file is a usage error.
+    var = tmp_path / "sim.var"
+    var.write_text("31\t2.500000\n")
+    main = tmp_path / "p.ngc"
+    main.write_text("G21 G0 X[#31*2]\nM2\n")
+    table = tmp_path / "s.csv"
+    out = toolcomp("run", main, "--parameters", var, "--csv", table)
+    assert out.returncode == 0, out.stdout + out.stderr
+    rows = list(csv.DictReader(table.open()))
+    assert len(rows) == 1 and float(rows[0]["end_x"]) == 5.0
+    out = toolcomp("run", main, "--parameters", tmp_path / "missing.var")
+    assert out.returncode == 2
