@@ -1,7 +1,6 @@
 #include "toolcomp/run.hpp"
 
-#include <fstream>
-#include <sstream>
+#include <algorithm>
 
 #include "toolcomp/compensation/stages.hpp"
 #include "toolcomp/dialects/heidenhain/interpreter.hpp"
@@ -43,6 +42,36 @@ private:
     MotionSink& b_;
 };
 
+// Passes moves on to a Path until it holds `limit` segments; the move beyond stops the run
+// with "memory_limit" at its line. After that, moves are dropped (a lenient run still
+// flushes the compensation stages into it).
+class SegmentLimit : public MotionSink {
+public:
+    SegmentLimit(MotionSink& out, std::size_t limit, const char* what) : out_(out), limit_(limit), what_(what) {}
+    void push(const Motion& m) override {
+        if (tripped_) return;
+        if (count_ == limit_) {
+            tripped_ = true;
+            throw ProgramError("memory_limit", std::string("The ") + what_ + " path would hold more than " +
+                                                   std::to_string(limit_) + " segments (max_segments)",
+                               {m.line, 0});
+        }
+        ++count_;
+        out_.push(m);
+    }
+    void control(const ControlEvent& e) override {
+        if (!tripped_) out_.control(e);
+    }
+    void finish() override { out_.finish(); }
+
+private:
+    MotionSink& out_;
+    std::size_t limit_;
+    const char* what_;
+    std::size_t count_ = 0;
+    bool tripped_ = false;
+};
+
 sinumerik::InterpretOptions sinumerik_options(const RunOptions& o, const ControlProfile& p) {
     sinumerik::InterpretOptions s;
     s.lengths.tool_length_const = p.tool_length_const;
@@ -57,18 +86,17 @@ sinumerik::InterpretOptions sinumerik_options(const RunOptions& o, const Control
 }
 }  // namespace
 
-Program parse_program(std::string_view text, Dialect dialect, std::string name, bool strict) {
+Program parse_program(std::string_view text, Dialect dialect, std::string name, bool strict,
+                      std::size_t max_line_length) {
+    // Sinumerik and Heidenhain end a line with a lone CR too; ISO dialects only with LF.
+    check_line_lengths(text, max_line_length, dialect == Dialect::sinumerik || dialect == Dialect::heidenhain);
     if (dialect == Dialect::heidenhain) return heidenhain::parse(text, std::move(name), strict);
     if (dialect == Dialect::sinumerik) return sinumerik::parse(text, std::move(name), strict);
     if (!is_iso(dialect)) dialect_not_supported(dialect);
     return iso::parse(text, dialect, std::move(name), strict);
 }
 
-Program read_program(const std::string& path, std::optional<Dialect> dialect, bool strict) {
-    std::ifstream f(path, std::ios::binary);
-    if (!f) throw ParseError("file_not_found", "Cannot open program file '" + path + "'");
-    std::ostringstream ss;
-    ss << f.rdbuf();
+Program read_program(const std::string& path, std::optional<Dialect> dialect, bool strict, const ReadLimits& limits) {
     Dialect d;
     if (dialect) {
         d = *dialect;
@@ -78,7 +106,8 @@ Program read_program(const std::string& path, std::optional<Dialect> dialect, bo
         throw ParseError("unknown_dialect",
                          "Cannot tell the dialect of '" + path + "' from its suffix; pass dialect=");
     }
-    return parse_program(ss.str(), d, path, strict);
+    const std::string text = read_program_text(path, limits.max_bytes);
+    return parse_program(text, d, path, strict, limits.max_line_length);
 }
 
 bool Result::ok() const {
@@ -96,11 +125,13 @@ Result run(const Program& program, const ToolTable* tools, const RunOptions& opt
     }
     // One segment per block is the common case (CAM output): reserving it up front avoids the
     // copies and the doubled capacity of growing columns (peak memory).
-    res.nominal.reserve(program.size());
-    res.path.reserve(program.size());
+    res.nominal.reserve(std::min(program.size(), options.max_segments));
+    res.path.reserve(std::min(program.size(), options.max_segments));
     ControlProfile profile = options.profile ? *options.profile : profile_for(program.dialect);
-    CompensationChain chain(profile, res.path, res.diagnostics);
-    Tee tee(res.nominal, chain);
+    SegmentLimit nominal(res.nominal, options.max_segments, "programmed");
+    SegmentLimit compensated(res.path, options.max_segments, "compensated");
+    CompensationChain chain(profile, compensated, res.diagnostics);
+    Tee tee(nominal, chain);
     iso::InterpretOptions iopts;
     iopts.block_delete = options.block_delete;
     iopts.progress = options.progress;

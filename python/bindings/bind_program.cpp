@@ -12,25 +12,34 @@ void bind_program(py::module_& m) {
         "A parsed part program (blocks of words) in one dialect; create it with Program.read or Program.parse.")
         .def_static(
             "read",
-            [](const py::object& path_like, std::optional<std::string> dialect, bool strict) {
+            [](const py::object& path_like, std::optional<std::string> dialect, bool strict, std::uint64_t max_bytes,
+               std::size_t max_line_length) {
                 std::string path = py::module_::import("os").attr("fspath")(path_like).cast<std::string>();
                 std::optional<Dialect> d;
                 if (dialect) d = dialect_from_name(*dialect);
                 py::gil_scoped_release nogil;
-                return std::make_shared<Program>(read_program(path, d, strict));
+                return std::make_shared<Program>(read_program(path, d, strict, {max_bytes, max_line_length}));
             },
-            py::arg("path"), py::arg("dialect") = py::none(), py::arg("strict") = true,
+            py::arg("path"), py::arg("dialect") = py::none(), py::arg("strict") = true, py::kw_only(),
+            py::arg("max_bytes") = kDefaultMaxProgramBytes, py::arg("max_line_length") = kDefaultMaxLineLength,
             "Read a part program; the dialect comes from the suffix unless given. strict=False keeps the "
-            "blocks before a syntax error and raises it when a run reaches that line.")
+            "blocks before a syntax error and raises it when a run reaches that line. Only a regular file of at "
+            "most max_bytes bytes (default 2 GiB) is read, its size checked before reading (ParseError "
+            "'not_a_regular_file' for a FIFO, device or directory; 'input_too_large'); a line longer than "
+            "max_line_length bytes (default 1 MiB) raises ParseError 'line_too_long' with its line, whatever "
+            "strict is.")
         .def_static(
             "parse",
-            [](const std::string& text, const std::string& dialect, std::string name, bool strict) {
+            [](const std::string& text, const std::string& dialect, std::string name, bool strict,
+               std::size_t max_line_length) {
                 Dialect d = dialect_from_name(dialect);
                 py::gil_scoped_release nogil;
-                return std::make_shared<Program>(parse_program(text, d, std::move(name), strict));
+                return std::make_shared<Program>(parse_program(text, d, std::move(name), strict, max_line_length));
             },
             py::arg("text"), py::arg("dialect") = "linuxcnc", py::arg("name") = "<string>", py::arg("strict") = true,
-            "Parse program text in the given dialect.")
+            py::kw_only(), py::arg("max_line_length") = kDefaultMaxLineLength,
+            "Parse program text in the given dialect. A line longer than max_line_length bytes (default 1 MiB) "
+            "raises ParseError 'line_too_long' with its line, whatever strict is.")
         .def_readonly("name", &Program::name, "file name, or \"<string>\" (or the name given to parse)")
         .def_property_readonly("dialect", [](const Program& p) { return std::string(dialect_name(p.dialect)); },
                                "dialect name: 'linuxcnc', 'fanuc', 'sinumerik', 'heidenhain' or 'rockwell'")

@@ -234,8 +234,9 @@ void bind_run(py::module_& m) {
         "run",
         [](const Program& program, const ToolTable* tools, bool strict, bool block_delete,
            std::optional<ControlProfile> profile, py::object progress, std::size_t progress_every,
-           std::vector<std::string> search_path, std::map<int, double> parameters) {
+           std::vector<std::string> search_path, std::map<int, double> parameters, std::size_t max_segments) {
             RunOptions o;
+            o.max_segments = max_segments;
             o.parameters = std::move(parameters);
             o.strict = strict;
             o.block_delete = block_delete;
@@ -253,10 +254,13 @@ void bind_run(py::module_& m) {
         py::arg("program"), py::arg("tools") = nullptr, py::arg("strict") = true, py::arg("block_delete") = false,
         py::arg("profile") = py::none(), py::arg("progress") = py::none(), py::arg("progress_every") = 1 << 16,
         py::arg("search_path") = std::vector<std::string>{}, py::arg("parameters") = std::map<int, double>{},
+        py::arg("max_segments") = kDefaultMaxSegments,
         "Interpret a Program with an optional ToolTable and apply tool compensation; returns a Result. strict=True "
         "raises the first error, strict=False returns the path up to it; block_delete skips '/' blocks; profile "
         "overrides the dialect's ControlProfile; progress(blocks_read) is called every progress_every blocks; "
         "search_path lists the directories where called programs and subprogram files are looked up; parameters "
-        "gives numbered parameters their start values ({number: value}, e.g. a LinuxCNC .var file). "
+        "gives numbered parameters their start values ({number: value}, e.g. a LinuxCNC .var file); a run "
+        "whose programmed or compensated path would hold more than max_segments segments stops with "
+        "ProgramError 'memory_limit' at the line of the block that crossed it. "
         "The GIL is released while the program runs.");
 }

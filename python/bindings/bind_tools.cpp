@@ -153,16 +153,19 @@ void bind_tools(py::module_& m) {
              py::arg("units") = "mm")
         .def_static(
             "read",
-            [](const std::filesystem::path& path, std::optional<std::string> format, const std::string& units) {
+            [](const std::filesystem::path& path, std::optional<std::string> format, const std::string& units,
+               std::uint64_t max_bytes) {
                 const auto f = format_arg(format);
                 const LengthUnit u = length_unit_from_string(units);
                 py::gil_scoped_release nogil;
-                return read_tool_table_file(path.string(), f, u);
+                return read_tool_table_file(path.string(), f, u, max_bytes);
             },
-            py::arg("path"), py::arg("format") = py::none(), py::arg("units") = "mm",
+            py::arg("path"), py::arg("format") = py::none(), py::arg("units") = "mm", py::kw_only(),
+            py::arg("max_bytes") = kDefaultMaxTableBytes,
             "Read a table; format ('linuxcnc'/'tbl', 'csv', 'json', 'heidenhain'/'t') from the suffix unless "
             "given; units ('mm'/'inch') of the file's lengths (a JSON file's \"units\" or a TOOL.T's "
-            "BEGIN line wins).")
+            "BEGIN line wins). Only a regular file of at most max_bytes bytes (default 256 MiB) is read "
+            "(ToolTableError 'not_a_regular_file', 'input_too_large').")
         .def_static(
             "parse",
             [](const std::string& text, const std::string& format, const std::string& units) {

@@ -51,7 +51,8 @@ _sys.modules[__name__ + ".sinumerik"] = sinumerik  # type: ignore[assignment]  #
 
 
 def run(program, tools=None, *, dialect=None, strict=True, block_delete=False, profile=None,
-        units="mm", progress=None, progress_every=65536, search_path=(), parameters=None):
+        units="mm", progress=None, progress_every=65536, search_path=(), parameters=None,
+        max_segments=20_000_000, max_bytes=2**31, max_line_length=2**20):
     """Interpret ``program`` and apply tool compensation.
 
     ``program`` is a :class:`Program` or a path to a program file (dialect from the suffix
@@ -72,11 +73,21 @@ def run(program, tools=None, *, dialect=None, strict=True, block_delete=False, p
     start values: a ``{number: value}`` dict, or the path of a LinuxCNC ``.var`` file (read
     with :func:`toolcomp.params.read_var`); ``result.parameters`` holds the values at the
     end. The GIL is released while the program runs.
+
+    Limits (each raises a :class:`Error` subclass with a stable ``code``): a program file
+    larger than ``max_bytes`` is refused before it is read (``input_too_large``, as is a
+    called program file over 2 GiB; a FIFO, device or directory: ``not_a_regular_file``), a
+    line longer than ``max_line_length`` bytes is refused with its line (``line_too_long``),
+    and a run whose programmed or compensated path would hold more than ``max_segments``
+    segments (about 120 bytes each) stops at the block that crossed it (``memory_limit``;
+    with ``strict=False`` the path up to it is returned). ``ControlProfile.block_limit`` and
+    ``call_depth_limit`` bound executed blocks and nested calls.
     """
     if isinstance(program, (str, _os.PathLike)):
         # Read leniently: a syntax error is raised (or reported) when the run reaches its
         # line, as the control does, and never after M2/M30.
-        program = Program.read(_os.fspath(program), dialect, strict=False)
+        program = Program.read(_os.fspath(program), dialect, strict=False, max_bytes=max_bytes,
+                               max_line_length=max_line_length)
     if isinstance(tools, (str, _os.PathLike)):
         tools = ToolTable.read(_os.fspath(tools), units=units)
     if isinstance(search_path, (str, bytes, _os.PathLike)):
@@ -89,7 +100,7 @@ def run(program, tools=None, *, dialect=None, strict=True, block_delete=False, p
     parameters = {int(k): float(v) for k, v in (parameters or {}).items()}
     return _core.run(program, tools, strict=strict, block_delete=block_delete, profile=profile,
                      progress=progress, progress_every=progress_every, search_path=search_path,
-                     parameters=parameters)
+                     parameters=parameters, max_segments=max_segments)
 
 
 def _result_plot(self, ax=None, **kwargs):

@@ -28,6 +28,7 @@ SUFFIX_DIALECTS = {".ngc": "linuxcnc", ".nc": "fanuc", ".tap": "fanuc",
                    ".mpf": "sinumerik", ".spf": "sinumerik", ".h": "heidenhain"}
 ERROR_SEVERITIES = ("error", "fatal")
 INCH = 25.4
+MAX_COUNTED_BYTES = 2**31  # Program.read's default max_bytes
 
 
 class UsageError(Exception):
@@ -257,9 +258,23 @@ def _block_count(program, program_file):
                 return int(get(program))
             except (AttributeError, TypeError):
                 pass
-    # No program object (it did not parse) or no count: lines with content.
-    with open(program_file, encoding="utf-8", errors="replace") as f:
-        return sum(1 for line in f if line.strip())
+    # No program object (it could not be read) or no count: lines with content, read in
+    # chunks (a file refused as too large or with a huge line is never held whole); 0 for
+    # what is no regular file or over the engine's default size limit.
+    try:
+        if not os.path.isfile(program_file) or os.path.getsize(program_file) > MAX_COUNTED_BYTES:
+            return 0
+        count, content = 0, False
+        with open(program_file, "rb") as f:
+            for chunk in iter(lambda: f.read(1 << 20), b""):
+                *ended, last = chunk.split(b"\n")
+                for line in ended:
+                    count += content or bool(line.strip())
+                    content = False
+                content = content or bool(last.strip())
+        return count + content
+    except OSError:
+        return 0
 
 
 def summarize(out: Outcome) -> dict:

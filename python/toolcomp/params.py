@@ -43,9 +43,19 @@ def _parse(text: str, path: str) -> list[tuple[int | None, str]]:
     return rows
 
 
-def read_var(path) -> dict[int, float]:
-    """The parameters of a ``.var`` file as ``{number: value}`` (unreadable lines skipped)."""
+MAX_VAR_BYTES = 64 * 2**20  # a full LinuxCNC .var file (5601 parameters) is about 100 KB
+
+
+def read_var(path, max_bytes=MAX_VAR_BYTES) -> dict[int, float]:
+    """The parameters of a ``.var`` file as ``{number: value}`` (unreadable lines skipped).
+    Only a regular file of at most ``max_bytes`` bytes is read: ParseError
+    ``not_a_regular_file`` or ``input_too_large`` otherwise."""
     path = os.fspath(path)
+    if os.path.exists(path) and not os.path.isfile(path):
+        raise ParseError(f"Cannot read parameter file '{path}': not a regular file", "not_a_regular_file")
+    if os.path.isfile(path) and os.path.getsize(path) > max_bytes:
+        raise ParseError(f"Cannot read parameter file '{path}': it is {os.path.getsize(path)} bytes, more than "
+                         f"the limit of {max_bytes} bytes (max_bytes)", "input_too_large")
     with open(path, encoding="utf-8", errors="replace", newline="") as f:
         text = f.read()
     out = {}

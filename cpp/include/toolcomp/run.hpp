@@ -11,6 +11,7 @@
 #include "toolcomp/compensation/profile.hpp"
 #include "toolcomp/path.hpp"
 #include "toolcomp/program/diagnostic.hpp"
+#include "toolcomp/program/input_limits.hpp"
 #include "toolcomp/program/program.hpp"
 
 namespace toolcomp {
@@ -18,10 +19,26 @@ namespace toolcomp {
 class ToolTable;
 
 // Parse program text in the given dialect. strict: throws ParseError at the first syntax
-// error; otherwise the error is kept in the Program and raised when a run reaches it.
-Program parse_program(std::string_view text, Dialect dialect, std::string name = "<string>", bool strict = true);
-// Read a program file; the dialect comes from the suffix when not given.
-Program read_program(const std::string& path, std::optional<Dialect> dialect = std::nullopt, bool strict = true);
+// error; otherwise the error is kept in the Program and raised when a run reaches it. A line
+// longer than `max_line_length` bytes throws ParseError("line_too_long") whatever `strict`
+// is, before the dialect's front end sees the text.
+Program parse_program(std::string_view text, Dialect dialect, std::string name = "<string>", bool strict = true,
+                      std::size_t max_line_length = kDefaultMaxLineLength);
+
+// Limits on reading a program file (see input_limits.hpp).
+struct ReadLimits {
+    std::uint64_t max_bytes = kDefaultMaxProgramBytes;  // larger files: ParseError("input_too_large")
+    std::size_t max_line_length = kDefaultMaxLineLength;
+};
+// Read a program file; the dialect comes from the suffix when not given. Only a regular file
+// is read ("not_a_regular_file" otherwise), and its size is checked before it is read.
+Program read_program(const std::string& path, std::optional<Dialect> dialect = std::nullopt, bool strict = true,
+                     const ReadLimits& limits = {});
+
+// Segments each of the two Paths of a run may hold by default. A segment takes about 120
+// bytes of a Path (more when rotary axes, surface normals or tool axes vary), so the two
+// Paths of a run stay within about 5 GB.
+inline constexpr std::size_t kDefaultMaxSegments = 20'000'000;
 
 struct RunOptions {
     bool strict = true;         // raise at the first error; else return the path up to it
@@ -38,6 +55,9 @@ struct RunOptions {
     std::vector<std::string> search_path;
     // Numbered parameters the run starts from (LinuxCNC, Fanuc): a .var file's values.
     std::map<int, double> parameters;
+    // Segments the programmed path and the compensated path may each hold: the segment
+    // beyond it stops the run with ProgramError("memory_limit") at its block's line.
+    std::size_t max_segments = kDefaultMaxSegments;
 };
 
 struct Result {

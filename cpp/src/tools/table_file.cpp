@@ -9,6 +9,7 @@
 // mid-save leaves at most a stale lock file and a stale temporary file, both of which the
 // next writer reuses. Reading opens the table read-only and takes no lock.
 #include "toolcomp/program/diagnostic.hpp"
+#include "toolcomp/program/input_limits.hpp"
 #include "toolcomp/tools/tool_table.hpp"
 
 #include <cerrno>
@@ -28,24 +29,13 @@ namespace {
     throw ToolTableError("table_file_error", what + " '" + path + "': " + std::strerror(err));
 }
 
-std::string read_all(const std::string& path) {
-    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-    if (fd < 0) fail("cannot open tool table", path, errno);
-    std::string out;
-    char buf[1 << 16];
-    for (;;) {
-        const ssize_t n = ::read(fd, buf, sizeof buf);
-        if (n < 0) {
-            if (errno == EINTR) continue;
-            const int err = errno;
-            ::close(fd);
-            fail("cannot read tool table", path, err);
-        }
-        if (n == 0) break;
-        out.append(buf, static_cast<std::size_t>(n));
-    }
-    ::close(fd);
-    return out;
+std::string read_all(const std::string& path, std::uint64_t max_bytes) {
+    FileText f = read_file_limited(path, max_bytes);
+    if (f.status == FileText::ok) return std::move(f.text);
+    const bool io = f.status == FileText::cannot_open || f.status == FileText::cannot_read;
+    throw ToolTableError(io ? "table_file_error" : read_error_code(f),
+                         std::string(f.status == FileText::cannot_open ? "cannot open" : "cannot read") +
+                             " tool table '" + path + "': " + read_error_text(f, max_bytes));
 }
 
 void write_all(int fd, const std::string& data, const std::string& path) {
@@ -102,9 +92,10 @@ private:
 
 }  // namespace
 
-ToolTable read_tool_table_file(const std::string& path, std::optional<TableFormat> format, LengthUnit units) {
+ToolTable read_tool_table_file(const std::string& path, std::optional<TableFormat> format, LengthUnit units,
+                               std::uint64_t max_bytes) {
     const TableFormat f = format ? *format : table_format_from_path(path);
-    const std::string text = read_all(path);
+    const std::string text = read_all(path, max_bytes);
     return read_tool_table(text, f, units);
 }
 

@@ -8,6 +8,7 @@
 // canonical spelling (keeping its word/key order where possible), a removed tool's line or
 // object disappears, a new tool is appended. Writing another format, or changing `units`,
 // writes the canonical form of that format.
+#include "toolcomp/program/input_limits.hpp"
 #include "toolcomp/tools/table_format.hpp"
 #include "toolcomp/tools/tool.hpp"
 #include "toolcomp/tools/units.hpp"
@@ -78,9 +79,10 @@ ToolTable read_tool_table(std::string_view text, TableFormat format, LengthUnit 
 // Format a table (see the lossless contract above).
 std::string write_tool_table(const ToolTable& table, TableFormat format);
 
-// The format is taken from the suffix when not given.
+// The format is taken from the suffix when not given. Only a regular file of at most
+// `max_bytes` is read: ToolTableError "not_a_regular_file" / "input_too_large" otherwise.
 ToolTable read_tool_table_file(const std::string& path, std::optional<TableFormat> format = std::nullopt,
-                               LengthUnit units = LengthUnit::mm);
+                               LengthUnit units = LengthUnit::mm, std::uint64_t max_bytes = kDefaultMaxTableBytes);
 // Writes a temporary file in the same directory (".<name>.tmp"), fsyncs it and renames it
 // over `path`, so the file on disk is always the complete old or the complete new table,
 // even if the process dies (it keeps the old file's permissions). Writers hold an exclusive

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "interp.hpp"
+#include "toolcomp/program/input_limits.hpp"
 #include "toolcomp/program/int_value.hpp"
 #include "qparams.hpp"
 #include "toolcomp/dialects/heidenhain/lexer.hpp"
@@ -501,11 +502,19 @@ void Interp::call_program(Tokens t, int depth) {
     lookahead_ = 0;
     auto& sub = called_[file];
     if (!sub) {
-        std::ifstream f(file, std::ios::binary);
-        if (!f) fail("call_pgm_not_found", "CALL PGM " + text + ": cannot read " + file, t[0].column);
-        std::ostringstream ss;
-        ss << f.rdbuf();
-        sub = std::make_shared<const Program>(parse(ss.str(), file, /*strict=*/false));
+        FileText f = read_file_limited(file, kDefaultMaxProgramBytes);
+        if (f.status == FileText::cannot_open || f.status == FileText::cannot_read)
+            fail("call_pgm_not_found", "CALL PGM " + text + ": cannot read " + file, t[0].column);
+        if (f.status != FileText::ok)
+            fail(read_error_code(f), "CALL PGM " + text + ": cannot read " + file + ": " +
+                                         read_error_text(f, kDefaultMaxProgramBytes),
+                 t[0].column);
+        try {
+            check_line_lengths(f.text, kDefaultMaxLineLength, true);
+        } catch (const ParseError& e) {
+            fail(e.code().c_str(), "CALL PGM " + text + ": " + file + ": " + e.what(), t[0].column);
+        }
+        sub = std::make_shared<const Program>(parse(f.text, file, /*strict=*/false));
     }
     if (sub->inch != prog_.inch)
         fail("call_pgm_units", "CALL PGM " + text + ": the called program is in " + (sub->inch ? "INCH" : "MM") +

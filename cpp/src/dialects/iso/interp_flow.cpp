@@ -8,6 +8,7 @@
 
 #include "interp.hpp"
 #include "toolcomp/dialects/iso/lexer.hpp"
+#include "toolcomp/program/input_limits.hpp"
 
 namespace toolcomp::iso {
 
@@ -111,11 +112,17 @@ const LoadedProgram* Interp::load(const std::string& file_name) {
         const std::filesystem::path path = std::filesystem::path(dir) / file_name;
         std::error_code ec;
         if (!std::filesystem::is_regular_file(path, ec)) continue;
-        std::ifstream in(path, std::ios::binary);
-        std::ostringstream text;
-        text << in.rdbuf();
-        if (!in && !in.eof()) continue;
-        loaded_programs_.push_back(parse(text.str(), prog_.dialect, path.string(), true));
+        FileText text = read_file_limited(path.string(), kDefaultMaxProgramBytes);
+        if (text.status == FileText::cannot_open || text.status == FileText::cannot_read) continue;
+        if (text.status != FileText::ok)
+            fail(read_error_code(text),
+                 "Cannot read " + path.string() + ": " + read_error_text(text, kDefaultMaxProgramBytes));
+        try {
+            check_line_lengths(text.text, kDefaultMaxLineLength, false);
+        } catch (const ParseError& e) {
+            fail(e.code().c_str(), path.string() + ": " + e.what());
+        }
+        loaded_programs_.push_back(parse(text.text, prog_.dialect, path.string(), true));
         LoadedProgram lp;
         lp.prog = &loaded_programs_.back();
         lp.flow = scan_flow(*lp.prog);

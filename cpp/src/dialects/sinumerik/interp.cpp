@@ -9,6 +9,7 @@
 
 #include "interp.hpp"
 #include "toolcomp/dialects/sinumerik/lexer.hpp"
+#include "toolcomp/program/input_limits.hpp"
 
 namespace toolcomp::sinumerik {
 
@@ -292,10 +293,17 @@ void Interp::call(const std::string& name, int passes, int column) {
             fail("14011", "14011 Program " + name + " not existing or will be edited" +
                               (opts_.search_path.empty() ? " (no search path given)" : " (not on the search path)"),
                  column);
-        std::ifstream f(found, std::ios::binary);
-        std::ostringstream ss;
-        ss << f.rdbuf();
-        loaded_.push_back(parse(ss.str(), found, false));
+        FileText f = read_file_limited(found, kDefaultMaxProgramBytes);
+        if (f.status != FileText::ok)
+            fail(read_error_code(f), "Program " + name + ": cannot read " + found + ": " +
+                                         read_error_text(f, kDefaultMaxProgramBytes),
+                 column);
+        try {
+            check_line_lengths(f.text, kDefaultMaxLineLength, true);
+        } catch (const ParseError& e) {
+            fail(e.code(), "Program " + name + ": " + found + ": " + e.what(), column);
+        }
+        loaded_.push_back(parse(f.text, found, false));
         p = &loaded_.back();
         loaded_by_name_[name] = p;
     }
