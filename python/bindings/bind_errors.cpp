@@ -38,10 +38,12 @@ const char* class_name(ErrorKind k) {
 void bind_errors(py::module_& m) {
     py::class_<Diagnostic>(m, "Diagnostic",
                             "A message from the engine: stable code, severity, text and source position.")
-        .def(py::init([](std::string code, const std::string& severity, std::string message, int line, int column) {
-                 return Diagnostic{std::move(code), severity_from(severity), std::move(message), {line, column}};
+        .def(py::init([](std::string code, const std::string& severity, std::string message, int line, int column,
+                         std::string file) {
+                 return Diagnostic{std::move(code), severity_from(severity), std::move(message), {line, column, std::move(file)}};
              }),
-             py::arg("code"), py::arg("severity"), py::arg("message"), py::arg("line") = 0, py::arg("column") = 0)
+             py::arg("code"), py::arg("severity"), py::arg("message"), py::arg("line") = 0, py::arg("column") = 0,
+             py::arg("file") = std::string())
         .def_readonly("code", &Diagnostic::code,
                       "stable machine-readable code, snake_case (e.g. 'arc_end_off_circle')")
         .def_property_readonly("severity", [](const Diagnostic& d) { return severity_name(d.severity); },
@@ -52,6 +54,9 @@ void bind_errors(py::module_& m) {
                                "source line, 1-based; 0 when not tied to a line")
         .def_property_readonly("column", [](const Diagnostic& d) { return d.pos.column; },
                                "source column, 1-based; 0 for the whole line")
+        .def_property_readonly(
+            "file", [](const Diagnostic& d) -> py::object { return d.pos.file.empty() ? py::none() : py::object(text(d.pos.file)); },
+            "the called program or subprogram file the line is in; None for the main program")
         .def("__repr__", [](const Diagnostic& d) {
             return "Diagnostic(code='" + d.code + "', severity='" + severity_name(d.severity) + "', message=" +
                    py::repr(text(d.message)).cast<std::string>() + ", line=" + std::to_string(d.pos.line) +
@@ -59,7 +64,7 @@ void bind_errors(py::module_& m) {
         })
         .def("__eq__", [](const Diagnostic& a, const Diagnostic& b) {
             return a.code == b.code && a.severity == b.severity && a.message == b.message &&
-                   a.pos.line == b.pos.line && a.pos.column == b.pos.column;
+                   a.pos.line == b.pos.line && a.pos.column == b.pos.column && a.pos.file == b.pos.file;
         });
 
     py::register_exception_translator([](std::exception_ptr p) {
@@ -67,7 +72,8 @@ void bind_errors(py::module_& m) {
             if (p) std::rethrow_exception(p);
         } catch (const Error& e) {
             py::object cls = py::module_::import("toolcomp._errors").attr(class_name(e.kind()));
-            py::object exc = cls(text(e.what()), e.code(), e.line(), e.column());
+            py::object exc = e.file().empty() ? cls(text(e.what()), e.code(), e.line(), e.column())
+                                              : cls(text(e.what()), e.code(), e.line(), e.column(), text(e.file()));
             PyErr_SetObject(cls.ptr(), exc.ptr());
         }
     });

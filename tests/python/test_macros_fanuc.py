@@ -165,3 +165,22 @@ def test_m99_in_the_main_program_repeats_it_until_the_block_limit():
 def test_last_g_code_of_a_modal_group_wins():
     res = run("G21 G0 G1 X5 F100\nM30\n")
     assert res.path.kind.tolist() == [tc.LINE]
+
+
+def test_an_error_in_a_subprogram_file_names_that_file(tmp_path):
+    # Fanuc reports the block of the subprogram: line 3 of O2000.nc (#1 is vacant there, so
+    # #2=1/#1 divides by zero).
+    (tmp_path / "O2000.nc").write_text("O2000\nG91 G1 X5 F100\n#2=1/#1\nM99\n")
+    main = tmp_path / "main.nc"
+    main.write_text("G21 G0 X0\nM98 P2000\nM30\n")
+    with pytest.raises(tc.ProgramError) as e:
+        tc.run(tc.Program.read(str(main)), search_path=[str(tmp_path)])
+    assert (e.value.code, e.value.line, e.value.file) == ("math_error", 3, str(tmp_path / "O2000.nc"))
+    assert f"line 3 of {tmp_path / 'O2000.nc'}" in str(e.value)
+    res = tc.run(tc.Program.read(str(main)), search_path=[str(tmp_path)], strict=False)
+    d = res.diagnostics[-1]
+    assert (d.code, d.line, d.file) == ("math_error", 3, str(tmp_path / "O2000.nc"))
+    assert ends(res) == [[0, 0, 0], [5, 0, 0]]
+    with pytest.raises(tc.ProgramError) as e:
+        run("G21\n#1=1/0\nM30\n")
+    assert e.value.file is None  # the main program

@@ -344,3 +344,14 @@ def test_unrolled_loop_gives_the_same_path():
         f"G1 X{i * step:.10f} Y{math.sin(math.radians(i * 30)) * 10:.10f}\n" for i in range(n)) + "M2\n"
     ref = run(unrolled)
     np.testing.assert_allclose(loop.path.end, ref.path.end, atol=1e-9)
+
+
+def test_a_syntax_error_in_a_subroutine_file_is_reported_at_the_call(tmp_path):
+    # LinuxCNC reports errors inside calls at the main program's line of the outermost call.
+    (tmp_path / "bad.ngc").write_text("o<bad> sub\nG1 X1..2\no<bad> endsub\n")
+    main = tmp_path / "main.ngc"
+    main.write_text("G21\nG0 X0\no<bad> call\nM2\n")
+    with pytest.raises(tc.ParseError) as e:
+        tc.run(tc.Program.read(str(main)), search_path=[str(tmp_path)])
+    assert (e.value.line, e.value.file) == (3, None)
+    assert str(e.value).startswith("bad number format (trailing characters) parsing '1..2'")

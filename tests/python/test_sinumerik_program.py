@@ -482,3 +482,12 @@ def test_machine_data_from_the_profile():
     np.testing.assert_allclose(res.nominal.tool_offset[0], [0, 0, 100.5], atol=1e-12)
     res = run("T1 M6\nG18 G0 X0\nM30\n", tools=tools)
     np.testing.assert_allclose(res.nominal.tool_offset[0], [0, 99.5, 0], atol=1e-12)
+
+
+def test_an_error_in_a_subprogram_file_names_that_file(tmp_path):
+    # L20.SPF line 2 divides by zero (R1 is 0): the alarm comes with that file and line.
+    (tmp_path / "L20.SPF").write_text("G0 X1\nR2=1/R1\nM17\n")
+    prog = tc.Program.parse("G0 X0\nL20\nM30\n", dialect="sinumerik")
+    with pytest.raises(tc.ProgramError) as e:
+        tc.run(prog, search_path=[str(tmp_path)])
+    assert e.value.line == 2 and pathlib.Path(e.value.file).name == "L20.SPF"

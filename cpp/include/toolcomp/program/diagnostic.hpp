@@ -15,6 +15,7 @@ enum class Severity { info = 0, warning = 1, error = 2 };
 struct SourcePos {
     int line = 0;    // 1-based; 0 = not tied to a source line
     int column = 0;  // 1-based; 0 = whole line
+    std::string file;  // the called program or subprogram file the line is in; "" = the main program
 };
 
 struct Diagnostic {
@@ -37,6 +38,7 @@ public:
     SourcePos pos() const noexcept { return pos_; }
     int line() const noexcept { return pos_.line; }
     int column() const noexcept { return pos_.column; }
+    const std::string& file() const noexcept { return pos_.file; }
     Diagnostic diagnostic() const { return {code_, Severity::error, what(), pos_}; }
 
 private:

@@ -21,7 +21,7 @@ Interp::Interp(const Program& prog, const ToolTable* tools, const ControlProfile
     : prog_(prog), search_path_(std::move(search_path)), tools_(tools), profile_(profile), sink_(sink), diags_(diags), unit_(prog.inch ? kMmPerInch : 1.0) {}
 
 void Interp::fail(const char* code, const std::string& msg, int column) const {
-    throw ProgramError(code, msg, {line_, column});
+    throw ProgramError(code, msg, {line_, column, file_ > 0 ? files_.names()[static_cast<std::size_t>(file_)] : std::string()});
 }
 
 const Token* Interp::find(Tokens t, std::string_view key) const {

@@ -61,11 +61,11 @@ void Interp::set_units(bool inch) {
 }
 
 void Interp::fail(const char* code, const std::string& msg, int column) const {
-    throw ProgramError(code, msg, {line_, column});
+    throw ProgramError(code, msg, {line_, column, file_name()});
 }
 
 void Interp::info(const char* code, const std::string& msg, int column) {
-    diags_.push_back({code, Severity::info, msg, {line_, column}});
+    diags_.push_back({code, Severity::info, msg, {line_, column, file_name()}});
 }
 
 void Interp::count_block(int column) {
@@ -87,8 +87,9 @@ void Interp::run() {
     } catch (const Error& e) {
         // LinuxCNC unwinds the calls before it reports: an error at any depth is reported at
         // the main program's line of the outermost call.
-        if (prog_.dialect != Dialect::linuxcnc || frames_.size() < 2) throw;
-        const SourcePos at{frames_[1].call_line, 0};
+        // (A file that cannot be read or parsed fails at the call itself.)
+        if (prog_.dialect != Dialect::linuxcnc || (frames_.size() < 2 && e.file().empty())) throw;
+        const SourcePos at{frames_.size() >= 2 ? frames_[1].call_line : line_, 0};
         switch (e.kind()) {
             case ErrorKind::parse: throw ParseError(e.code(), e.what(), at);
             case ErrorKind::compensation: throw CompensationError(e.code(), e.what(), at);

@@ -81,6 +81,8 @@ private:
     bool execute(const BlockWords& bw);  // false after M2/M30
     void check_words(const BlockWords& bw, int motion_to_be);
     [[noreturn]] void fail(const char* code, const std::string& msg, int column = 0) const;
+    // The file of the running block for messages: "" for the main program.
+    std::string file_name() const { return file_ > 0 ? files_[static_cast<std::size_t>(file_)] : std::string(); }
     void info(const char* code, const std::string& msg, int column = 0);
     // One more block executed (every block read, and every repeat of a canned cycle after
     // its first): beyond ControlProfile::block_limit the run stops with "block_limit"

@@ -122,7 +122,11 @@ const LoadedProgram* Interp::load(const std::string& file_name) {
         } catch (const ParseError& e) {
             fail(e.code().c_str(), path.string() + ": " + e.what());
         }
-        loaded_programs_.push_back(parse(text.text, prog_.dialect, path.string(), true));
+        try {
+            loaded_programs_.push_back(parse(text.text, prog_.dialect, path.string(), true));
+        } catch (const ParseError& e) {  // a syntax error in the called file: its line there
+            throw ParseError(e.code(), e.what(), {e.line(), e.column(), path.string()});
+        }
         LoadedProgram lp;
         lp.prog = &loaded_programs_.back();
         lp.flow = scan_flow(*lp.prog);

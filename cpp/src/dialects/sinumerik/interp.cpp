@@ -46,7 +46,8 @@ Interp::Interp(const Program& prog, const ToolTable* tools, const ControlProfile
 }
 
 void Interp::fail(const std::string& code, const std::string& msg, int column) const {
-    throw ProgramError(code, msg, {line_, column});
+    const int f = stack_.empty() ? 0 : stack_.back().file;
+    throw ProgramError(code, msg, {line_, column, f > 0 ? files_.names()[static_cast<std::size_t>(f)] : std::string()});
 }
 
 void Interp::info(const char* code, const std::string& msg, int column) {
