@@ -3,7 +3,9 @@
 Measures parse and run of generated CAM-like programs (lines and arcs, G17, tool length
 offset) through the Python API, LinuxCNC's rs274 on the same program when it is installed,
 and tc.compensate_3d on CAM points. Sizes: TOOLCOMP_BENCH_BLOCKS (default 1,000,000),
-TOOLCOMP_BENCH_POINTS (default 10,000,000).
+TOOLCOMP_BENCH_POINTS (default 10,000,000); TOOLCOMP_BENCH_LINEAR (default 10: a program ten
+times as long, to see that time grows linearly; 0 or 1 to skip). Also a 1M-block Heidenhain
+L/CR program and a LinuxCNC program that computes the same contour in an o-while loop.
 """
 import os
 import resource
@@ -36,6 +38,45 @@ def generate(n_blocks, comp):
         out.append("G40 G1 X-10 Y-10")
     out.append("M2")
     return "\n".join(out) + "\n", rows * 6
+
+
+def generate_heidenhain(n_blocks):
+    """The same contour in Klartext: L and CR blocks, RR with a tool of R1 (1 mm)."""
+    out = ["BEGIN PGM BENCH MM", "TOOL DEF 1 L+0 R+1", "TOOL CALL 1 Z S1000", "L X+0 Y+0 Z+5 R0 FMAX",
+           "L Z-1 F600", "L X+0 Y+0 RR F600"]
+    y = 0.0
+    rows = n_blocks // 6
+    for _ in range(rows):
+        out.append("L X+100 Y%+.3f" % y)
+        out.append("L X+100 Y%+.3f" % (y + 2))
+        out.append("L X+95 Y%+.3f" % (y + 2))
+        out.append("CR X+95 Y%+.3f R+2.5 DR+" % (y + 7))
+        out.append("L X+5 Y%+.3f" % (y + 7))
+        out.append("CR X+5 Y%+.3f R+3.5 DR-" % y)
+        y += 0.001
+    out += ["L X-10 Y-10 R0", "END PGM BENCH MM"]
+    return "".join(f"{i} {b}\n" for i, b in enumerate(out)), rows * 6
+
+
+def generate_loops(n_blocks):
+    """A LinuxCNC program that computes the same contour in an o-while loop (parameters,
+    expressions, 7 statements a pass): what computing costs per executed block."""
+    rows = n_blocks // 6
+    return (f"G21 G17 G90 G94 G40 G49\nT1 M6\nG43 H1\nG0 X0 Y0 Z5\nG1 Z-1 F600\nG42.1 D2\n"
+            f"#1=0\n#2=0\no1 while [#1 LT {rows}]\n"
+            f"  G1 X100 Y#2\n  G1 X100 Y[#2+2]\n  G1 X95 Y[#2+2]\n  G3 X95 Y[#2+7] I0 J2.5\n"
+            f"  G1 X5 Y[#2+7]\n  G2 X5 Y#2 I0 J-3.5\n  #2=[#2+0.001]\n  #1=[#1+1]\no1 endwhile\n"
+            f"G40 G1 X-10 Y-10\nM2\n"), rows * 6
+
+
+def path_bytes(p):
+    """Bytes of the numpy columns of a Path (stride-0 columns count once)."""
+    total = 0
+    for name in ("kind", "start", "end", "center", "abc", "line", "file", "tool", "feed", "side", "generated",
+                 "tool_offset", "plane", "turns", "normal", "tool_axis"):
+        a = getattr(p, name)
+        total += a.nbytes if all(st != 0 for st in a.strides) else a.itemsize * (a.shape[1] if a.ndim > 1 else 1)
+    return total
 
 
 def best_of(fn, repeat=3):
@@ -73,7 +114,8 @@ def bench_program(n, comp, tools):
           f"{t_parse / blocks * 1e9:5.0f} ns/block")
     print(f"  toolcomp run   : {t_run:7.3f} s  {blocks / t_run / 1e6:6.2f} M blocks/s  "
           f"{t_run / blocks * 1e9:5.0f} ns/block  ({len(res.path):,} segments, {compensated:,} compensated)")
-    print(f"  toolcomp total : {t_parse + t_run:7.3f} s  peak RSS so far {rss:.0f} MB")
+    print(f"  toolcomp total : {t_parse + t_run:7.3f} s  peak RSS so far {rss:.0f} MB; the two Paths' "
+          f"columns {(path_bytes(res.path) + path_bytes(res.nominal)) / 2**20:.0f} MB")
     if shutil.which("rs274"):
         t_rs = rs274_seconds(text)
         print(f"  LinuxCNC rs274 : {t_rs:7.3f} s  {blocks / t_rs / 1e6:6.2f} M blocks/s  (output to /dev/null)")
@@ -81,6 +123,30 @@ def bench_program(n, comp, tools):
     else:
         print("  LinuxCNC rs274 : not installed (make oracle installs it)")
     del res, prog
+
+
+def bench_other(label, text, blocks, dialect, tools):
+    """toolcomp only (no rs274 counterpart): parse and run, ns per block."""
+    print(f"program {label}: {blocks:,} motion blocks, {len(text) / 1e6:.1f} MB")
+    t_parse, prog = best_of(lambda: tc.Program.parse(text, dialect=dialect), repeat=2)
+    t_run, res = best_of(lambda: tc.run(prog, tools=tools), repeat=2)
+    print(f"  toolcomp parse : {t_parse:7.3f} s  {t_parse / blocks * 1e9:5.0f} ns/block")
+    print(f"  toolcomp run   : {t_run:7.3f} s  {blocks / t_run / 1e6:6.2f} M blocks/s  "
+          f"{t_run / blocks * 1e9:5.0f} ns/block  ({len(res.path):,} segments, "
+          f"{int((res.path.side != 0).sum()):,} compensated)")
+    del res, prog
+
+
+def bench_linear(n, factor, tools):
+    """Time of a program `factor` times as long, against the 1x program (no compensation)."""
+    def seconds(blocks):
+        text, _ = generate(blocks, False)
+        t_parse, prog = best_of(lambda: tc.Program.parse(text), repeat=1)
+        t_run, _ = best_of(lambda: tc.run(prog, tools=tools), repeat=1)
+        return t_parse + t_run
+    small, big = seconds(n), seconds(n * factor)
+    print(f"linearity      : {n * factor:,} blocks take {big / small:.1f} x the time of {n:,} "
+          f"({small:.2f} s, {big:.2f} s)")
 
 
 def bench_batch(n, tools):
@@ -105,7 +171,12 @@ def main():
     tools = tc.ToolTable.parse("T1 P1 Z50 D6\n", "linuxcnc")
     bench_program(n, True, tools)
     bench_program(n, False, tools)
+    bench_other("Heidenhain L/CR with RR", *generate_heidenhain(n), "heidenhain", None)
+    bench_other("LinuxCNC o-while loop with G42.1", *generate_loops(n), "linuxcnc", tools)
     bench_batch(n, tools)
+    factor = int(os.environ.get("TOOLCOMP_BENCH_LINEAR", "10"))
+    if factor > 1:
+        bench_linear(n, factor, tools)
 
     # 3D compensation of CAM points (one core).
     import numpy as np
