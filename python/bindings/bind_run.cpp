@@ -112,7 +112,12 @@ void bind_run(py::module_& m) {
         .def_readwrite("lookahead", &RadiusRules::lookahead,
                        "plane moves looked at when an element turns out unreachable (LinuxCNC: 1)")
         .def_readwrite("gouge", &RadiusRules::gouge,
-                       "GougeReaction: what happens when the tool cannot reach part of the contour");
+                       "GougeReaction: what happens when the tool cannot reach part of the contour")
+        .def_readwrite("overcut_neighbours", &RadiusRules::overcut_neighbours,
+                       "programmed elements before and after each compensated one whose contour its tool "
+                       "centre is checked against (warning 'comp_overcut'); 0 = no check")
+        .def_readwrite("overcut_tolerance", &RadiusRules::overcut_tolerance,
+                       "mm the tool centre may come closer to that contour than the radius without a warning");
 
     py::enum_<TipConvention>(m, "TipConvention", "Numbering of lathe tool tip directions (orientation 0..9).")
         .value("linuxcnc", TipConvention::linuxcnc,

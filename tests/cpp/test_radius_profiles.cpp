@@ -103,9 +103,13 @@ TEST_CASE("Blocks without plane motion: limit and reaction by profile") {
     for (std::size_t i = 0; i < fanuc.path.size(); ++i)
         perpendicular = perpendicular || (end_of(fanuc.path, i) - Vec3(20, 5, 0)).norm() < 1e-9;
     CHECK(perpendicular);
-    REQUIRE(fanuc.diagnostics.size() == 1);
+    // The warning of the look-ahead limit, then the overcut watch's: the perpendicular end
+    // (20,5) lies on the contour of line 8 (x = 20), 5 mm into the part.
+    REQUIRE(fanuc.diagnostics.size() >= 2);
     CHECK(fanuc.diagnostics[0].code == "comp_overcut");
     CHECK(fanuc.diagnostics[0].pos.line == 7);
+    CHECK(fanuc.diagnostics[1].code == "comp_overcut");
+    CHECK(fanuc.diagnostics[1].message.find("0.000000 mm from the programmed contour of line 8") != std::string::npos);
     f.radius.non_plane_reaction = NonPlaneReaction::error;
     CHECK_THROWS_WITH(run_with(text, f), "Too many blocks without motion in the compensation plane");
 }
@@ -140,8 +144,14 @@ TEST_CASE("An unreachable step: error, skip with look-ahead, or report") {
     // Report: the path is kept as computed (the step runs backwards) with a warning.
     p.radius.gouge = GougeReaction::report;
     auto rep = run_with(text, p);
-    REQUIRE(rep.diagnostics.size() == 1);
+    // The reaction's warning, then the overcut watch's: the corner arc about (30,0) and the
+    // reversed step both reach (35,0), 2 mm from line 6's contour y = -2 (r = 5).
+    REQUIRE(rep.diagnostics.size() >= 2);
     CHECK(rep.diagnostics[0].code == "comp_gouge");
+    for (std::size_t i = 1; i < rep.diagnostics.size(); ++i) {
+        CHECK(rep.diagnostics[i].code == "comp_overcut");
+        CHECK(rep.diagnostics[i].message.find("2.000000 mm from the programmed contour of line 6") != std::string::npos);
+    }
     CHECK(rep.diagnostics[0].message.find("line 5") != std::string::npos);
     bool reversed = false;
     for (std::size_t i = 0; i < rep.path.size(); ++i)

@@ -7,7 +7,9 @@ circles. Every run either raises a tc.Error with a code and a line, or returns a
 * is continuous: each segment starts where the one before it ended (1e-9 mm, relative to
   the coordinates' magnitude where they are large), and
 * keeps the tool centre at least r - eps from the programmed contour (Shapely distances to
-  the contour as generated here, not as toolcomp read it).
+  the contour as generated here, not as toolcomp read it), or else reports it: a warning
+  "comp_overcut" on the line of the segment that comes too close (LinuxCNC cuts such paths
+  without an error, and toolcomp keeps its path, see the tests at the end).
 
 Contours that come back within 2r of themselves away from a corner (a loop, a spiral) are
 not generated: no control checks for such an interference, so it says nothing about the
@@ -214,21 +216,24 @@ def check_continuous(path):
 
 
 def check_clearance(path, contour, r, allowance=0.0):
+    """None when the tool centre keeps r - eps from the contour, else (distance, line) of the
+    worst sample."""
     on = np.flatnonzero(path.side != 0)
     if on.size < 2:
-        return
+        return None
     pts, seg = path.sample(1e-4)
     keep = np.isin(seg, on[1:])  # without the entry move, which comes in from outside
     if not keep.any():
-        return
+        return None
     mag = magnitude(pts[keep][:, :2])
     sagitta = max([chords(e, 1e-8)[1] for e in contour if e[0] == "arc"], default=0.0)
     eps = 1e-6 + 1e-12 * mag + sagitta + allowance
     geom = shapely.union_all([LineString(elem_points(e)) for e in contour])
     dist = shapely.distance(geom, shapely.points(pts[keep][:, :2]))
     worst = int(np.argmin(dist))
-    assert dist[worst] >= r - eps, (f"tool centre {dist[worst]:.9g} mm from the contour, radius {r} "
-                                    f"(segment {seg[keep][worst]}, line {path.line[seg[keep][worst]]})")
+    if dist[worst] >= r - eps:
+        return None
+    return float(dist[worst]), int(path.line[seg[keep][worst]])
 
 
 def tangents(e):
@@ -242,38 +247,12 @@ def tangents(e):
     return rot(p - c), rot(q - c)
 
 
-def near_reversal(contour, tolerance):
-    """Whether two consecutive elements turn within `tolerance` of a reversal: LinuxCNC takes
-    an inside corner there as an outside one (corner_tolerance, 0.05 rad) and goes round the
-    tip, coming up to r(1 - cos tolerance) closer to the neighbouring elements."""
-    for a, b in zip(contour, contour[1:]):
-        turn = turn_between(a, b)
-        if math.pi - abs(turn) < tolerance + 1e-6:
-            return True
-    return False
-
-
-def short_for_inside_corner(contour, r, side):
-    """An inside corner whose pull-back r·tan(turn/2) is longer than one of its elements: the
-    tool cannot reach that element. toolcomp does not always report it (finding, see
-    test_inside_corner_into_a_tiny_element_then_tangent), so such contours are left out."""
-    s = 1 if side == "G41" else -1
-    for a, b in zip(contour, contour[1:]):
-        turn = turn_between(a, b)
-        if turn * s > 0:
-            back = r * math.tan(min(abs(turn), math.pi - 1e-9) / 2)
-            if min(elem_length(a), elem_length(b)) < back + 1e-6:
-                return True
-    return False
-
-
 def in_domain(contour, r, side):
-    # Corners within corner_tolerance (0.05 rad) of a reversal: LinuxCNC takes an inside one
-    # as an outside one and goes round the tip (see near_reversal); left out here and kept
-    # as findings below.
+    # Corners within corner_tolerance (0.05 rad) of a reversal and inside
+    # corners onto elements shorter than their pull-back are in the
+    # domain: their paths may cut into the contour, and then must report it (comp_overcut).
     return not (tool_outside_full_circle(contour, side) or interferes(contour, r)
-                or wraps_round_short_elements(contour, r) or near_reversal(contour, 0.05)
-                or short_for_inside_corner(contour, r, side))
+                or wraps_round_short_elements(contour, r))
 
 
 def run_case(org, heading, elems, r, side, domain=None):
@@ -295,7 +274,14 @@ def run_case(org, heading, elems, r, side, domain=None):
     # the next element starts where the last ended, up to r(1 - cos 0.05) off its equidistant.
     tol = rules.radius.corner_tolerance
     near = any(0 < abs(turn_between(a, b)) < tol + 1e-6 for a, b in zip(contour, contour[1:]))
-    check_clearance(res.path, contour, r, r * (1 - math.cos(tol)) if near else 0.0)
+    close = check_clearance(res.path, contour, r, r * (1 - math.cos(tol)) if near else 0.0)
+    overcut = [d for d in res.diagnostics if d.code == "comp_overcut"]
+    if close is not None:  # the third outcome: a path that cuts into the contour, reported
+        dist, line = close
+        assert any(d.line == line and d.severity == "warning" for d in overcut), (
+            f"tool centre {dist:.9g} mm from the contour, radius {r} (line {line}), no comp_overcut "
+            f"warning there: {[(d.line, d.message) for d in overcut]}")
+    return res
 
 
 @ROBUST
@@ -317,20 +303,60 @@ def test_compensated_contours_are_finite_continuous_and_clear(org, heading, elem
     run_case(org, heading, elems, r, side, domain=assume)
 
 
-@pytest.mark.xfail(strict=True, reason="an inside corner into an element shorter than the corner's pull-back, "
-                                       "followed by a tangent joint (or G40), leaves that element's equidistant "
-                                       "reversed without a gouge error: the tool centre comes 0.27 mm from the "
-                                       "contour with r = 0.5 (the reversal is checked only at inside corners)")
+# Findings of the property test above. LinuxCNC (its gcode module, through the same
+# programs as tests/programs/comp/overcut_*.ngc written with G41.1/G42.1 D1) cuts both
+# without an error; toolcomp keeps LinuxCNC's path and warns "comp_overcut".
+
+def overcuts(res):
+    return [(d.line, d.severity, d.message) for d in res.diagnostics if d.code == "comp_overcut"]
+
+
 def test_inside_corner_into_a_tiny_element_then_tangent():
-    # Lead-in 10 mm along +X, G41 r = 0.5, a left turn of 1 rad onto a 1e-6 mm line, a
-    # tangent 1e-6 mm line, G40. The tool cannot reach the tiny lines: an error is expected,
-    # or a path that keeps 0.5 mm from the contour.
-    run_case((0.0, 0.0), 0.0, [("line", 1.0, 1e-6), ("line", 0.0, 1e-6)], 0.5, "G41")
+    # Lead-in 10 mm along +X (line 7), G41 r = 0.5, a left turn of 1 rad onto a 1e-6 mm line
+    # (line 8), a tangent 1e-6 mm line (line 9), G40. The pull-back r·tan(1/2) = 0.273 mm is
+    # longer than line 8, so its equidistant runs backwards, down towards line 7.
+    res = run_case((0.0, 0.0), 0.0, [("line", 1.0, 1e-6), ("line", 0.0, 1e-6)], 0.5, "G41")
+    # LinuxCNC's moves of lines 7, 8 and 9 (gcode module, full precision).
+    lcnc = [(7, 9.726848755116002, 0.49999999999999994), (8, 9.579265047929896, 0.27015199445417354),
+            (9, 9.579265588232202, 0.2701528359251584)]
+    p = res.path
+    for line, x, y in lcnc:
+        (i,) = np.flatnonzero(p.line == line)
+        assert p.end[i][:2] == pytest.approx([x, y], abs=1e-9)
+    # By hand: the moves of lines 8 and 9 end 0.270152 mm above line 7 (y = 0, x in [0, 10]),
+    # their nearest point to it: 0.229848 mm into the part.
+    got = overcuts(res)
+    assert [(line, sev) for line, sev, _ in got] == [(8, "warning"), (9, "warning")]
+    for _, _, msg in got:
+        assert "0.270152 mm from the programmed contour of line 7" in msg
+        assert "tool radius 0.500000 mm" in msg and "0.229848 mm into the part" in msg
 
 
-@pytest.mark.xfail(strict=True, reason="LinuxCNC's concave-corner tolerance: an inside corner within "
-                                       "corner_tolerance (0.05 rad) of a reversal is taken as an outside corner "
-                                       "and the tool goes round the tip; before a full circle the tool centre "
-                                       "comes 0.0026 mm from the contour with r = 0.5")
 def test_nearly_reversed_inside_corner_before_a_circle():
-    run_case((0.0, 0.0), 0.0, [("circle", -(math.pi - 1e-3), 1.0, -1.0)], 0.5, "G42")
+    # G42 r = 0.5: the lead-in along +X (line 7), then a CW full circle of radius 1 (line 8)
+    # turning right by pi - 1e-3: an inside corner within corner_tolerance (0.05 rad) of a
+    # reversal, which LinuxCNC takes as an outside corner: a transition arc of radius r about
+    # the programmed corner (10, 0), CCW from (10, -0.5) round the tip to (9.9995, 0.5).
+    res = run_case((0.0, 0.0), 0.0, [("circle", -(math.pi - 1e-3), 1.0, -1.0)], 0.5, "G42")
+    p = res.path
+    i, j = np.flatnonzero(p.line == 8)
+    assert (int(p.kind[i]), int(p.kind[j])) == (int(tc.ARC_CCW), int(tc.ARC_CW))
+    assert p.end[i][:2] == pytest.approx([9.999500000083334, 0.49999975000002084], abs=1e-9)  # LinuxCNC
+    assert p.center[i][:2] == pytest.approx([10.0, 0.0], abs=1e-9)
+    assert p.center[j][:2] == pytest.approx([9.999000000166667, 0.9999995000000417], abs=1e-9)
+    # By hand: the transition arc (centre (10, 0), radius 0.5) and the programmed circle
+    # (centre c = (10 - 1e-3·cos(1e-3), 1 - 5e-7), radius 1) have centres d = 1.0000005 apart,
+    # within 1 - 0.5 < d < 1 + 0.5: they cross, at a = (0.25 - 1 + d²) / 2d = 0.125 along the
+    # line of centres and h = sqrt(0.25 - a²) = 0.484 across it, i.e. near (10.484, 0.125),
+    # at +14.5 degrees about (10, 0): inside the arc's CCW sweep from -90 to +90 degrees.
+    c = np.array([10 - 1e-3 * math.cos(1e-3), 1 - 0.5e-6])
+    d = float(np.hypot(*(c - [10.0, 0.0])))
+    a = (0.25 - 1 + d * d) / (2 * d)
+    h = math.sqrt(0.25 - a * a)
+    u = (c - [10.0, 0.0]) / d
+    crossings = [np.array([10.0, 0.0]) + a * u + s * h * np.array([u[1], -u[0]]) for s in (1, -1)]
+    assert any(x[0] > 10 for x in crossings)  # on the +X side, which the CCW arc sweeps
+    got = overcuts(res)
+    assert [(line, sev) for line, sev, _ in got] == [(8, "warning")]
+    assert "0.000000 mm from the programmed contour of line 8" in got[0][2]
+    assert "0.500000 mm into the part" in got[0][2]

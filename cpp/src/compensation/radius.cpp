@@ -38,6 +38,7 @@ void RadiusCompensation::entry_line(const Motion& m) {
     h.end = with_plane(m.end, e);
     // The reversal check of an entry move compares with its normal (LinuxCNC): never fails.
     hold(h, u(alpha), 0);
+    queue_.back().approach = true;
     current_ = h.end;
     program_ = m.end;
 }
@@ -69,6 +70,7 @@ void RadiusCompensation::entry_arc(const Motion& m) {
         s.turns = 0;
         s.generated = true;
         hold(s, Vec2::Zero(), 0);
+        queue_.back().approach = true;
         endpoint_ = c;
         endpoint_valid_ = true;
     }
@@ -76,6 +78,7 @@ void RadiusCompensation::entry_arc(const Motion& m) {
     h.end = with_plane(m.end, e);
     h.center = with_plane(m.center, cn);
     hold(h, Vec2::Zero(), find_turn(c, cn, turn, e));
+    queue_.back().approach = true;
     current_ = h.end;
     program_ = m.end;
 }
@@ -98,6 +101,7 @@ void RadiusCompensation::rescale(double new_unit) {
     };
     for (auto& h : queue_) conv(h.m);
     for (auto& w : window_) conv(w.m);
+    overcut_.scale(f);
     program_ *= f;
     current_ *= f;
     endpoint_ *= f;
@@ -139,6 +143,7 @@ void RadiusCompensation::push(const Motion& m) {
         queue_.back().m.radius = m.radius;
         flush();
         release(0);
+        overcut_.report(diags_, unit_, /*all=*/true);
         active_ = false;
         arc_not_allowed_ = true;
         exit_pending_ = false;
@@ -151,6 +156,7 @@ void RadiusCompensation::push(const Motion& m) {
     }
     if (!active_) {
         plane_ = m.plane;
+        overcut_.configure(profile_.radius.overcut_neighbours, profile_.radius.overcut_tolerance / unit_);
         side_ = m.radius.side;
         r_ = m.radius.radius;
         arc_not_allowed_ = false;
@@ -214,6 +220,7 @@ void RadiusCompensation::turn_off(int line, bool cancel) {
     move_end_and_flush(plane2(current_), line);
     flush();
     release(0);
+    overcut_.report(diags_, unit_, /*all=*/true);
     active_ = false;
     arc_not_allowed_ = cancel && profile_.radius.exit_must_be_straight;  // after G40 the next move must be straight
     exit_pending_ = true;
@@ -271,6 +278,7 @@ void RadiusCompensation::control(const ControlEvent& e) {
                 active_ = false;
             }
             release(0);
+            overcut_.report(diags_, unit_, /*all=*/true);
             break;
     }
     out_.control(e);
@@ -283,6 +291,7 @@ void RadiusCompensation::finish() {
     }
     flush();
     release(0);
+    overcut_.report(diags_, unit_, /*all=*/true);
     out_.finish();
 }
 

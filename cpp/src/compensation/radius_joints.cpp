@@ -206,6 +206,7 @@ void RadiusCompensation::next_line(const Motion& m) {
         return;
     }
     non_plane_run_ = 0;
+    watch_programmed(Element2::line(P, p), m.line);
     double theta = ang(C - P), alpha = ang(p - P), beta, gamma;
     if (side_ > 0) {
         if (theta < alpha) theta += 2 * kPi;
@@ -235,6 +236,7 @@ void RadiusCompensation::next_line(const Motion& m) {
     } else if (!concave && beta > small) {
         outside_corner(m, P, next, beta, /*check_held=*/true);
     } else if (!concave) {  // tangent: the new move starts where the last one ended
+        overcut_.tangent_slack(r_ * (1 - std::cos(beta)));
         flush();
         endpoint_ = C;
         endpoint_valid_ = true;
@@ -278,6 +280,7 @@ void RadiusCompensation::next_arc(const Motion& m) {
     const bool ccw = turn > 0;
     const double rho0 = (centre - p).norm();
     non_plane_run_ = 0;
+    watch_programmed(Element2::arc(P, p, centre, ccw ? 1 : -1, m.turns), m.line);
     double theta = ang(C - P);
     theta = side_ > 0 ? theta - kHalfPi : theta + kHalfPi;  // end direction of the previous element
     double delta = ang(centre - P);
@@ -355,6 +358,7 @@ void RadiusCompensation::next_arc(const Motion& m) {
     } else if (beta > small) {
         outside_corner(m, P, next, beta, /*check_held=*/false);
     } else {  // tangent
+        overcut_.tangent_slack(r_ * (1 - std::cos(beta)));
         flush();
         endpoint_ = C;
         endpoint_valid_ = true;

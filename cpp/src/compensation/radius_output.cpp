@@ -23,8 +23,21 @@ Vec3 start_after(const Vec3& end, const Vec3& end_offset, const Motion& m) { ret
 
 void RadiusCompensation::hold(Motion m, const Vec2& dir, double sweep) { queue_.push_back({std::move(m), dir, sweep}); }
 
+// The overcut watch sees the programmed plane elements under compensation (not the entry
+// move: the contour starts at its end) and the tool-centre moves as they leave the stage.
+void RadiusCompensation::watch_programmed(const Element2& e, int line) { overcut_.programmed(e, line); }
+
+void RadiusCompensation::watch_released(const Emitted& e) {
+    const Motion& m = e.m;
+    if (e.approach || m.radius.side == 0) return;
+    const Vec2 s = plane2(m.start), x = plane2(m.end);
+    const Element2 el = m.is_arc() ? Element2::arc(s, x, plane2(m.center), m.kind == MotionKind::arc_ccw ? 1 : -1, m.turns)
+                                   : Element2::line(s, x);
+    if (el.length() > tol::length) overcut_.compensated(el, m.line, m.radius.radius);
+}
+
 void RadiusCompensation::emit(const Held& h) {
-    Emitted e{h.m, h.dir, h.sweep, false};
+    Emitted e{h.m, h.dir, h.sweep, false, h.approach};
     if (have_last_) e.m.start = start_after(last_, last_off_, e.m);
     if (e.m.is_arc()) e.m.center[axes(e.m.plane).c] = e.m.start[axes(e.m.plane).c];
     e.in_plane = !e.m.generated && (plane2(e.m.end) - plane2(e.m.start)).norm() > tol::length;
@@ -46,6 +59,7 @@ void RadiusCompensation::release(std::size_t keep) {
     while (n < window_.size() && in_plane > keep) in_plane -= window_[n++].in_plane;
     if (keep == 0) n = window_.size();
     for (std::size_t i = 0; i < n; ++i) {
+        watch_released(window_[i]);
         Motion m = window_[i].m;
         const TipVector tip = tip_vector(m.radius.orientation, profile_.radius.tip_convention);
         const double r = m.radius.radius;
@@ -67,6 +81,7 @@ void RadiusCompensation::release(std::size_t keep) {
         out_.push(m);
     }
     window_.erase(window_.begin(), window_.begin() + static_cast<std::ptrdiff_t>(n));
+    overcut_.report(diags_, unit_, /*all=*/false);
 }
 
 void RadiusCompensation::passthrough(const Motion& m) {

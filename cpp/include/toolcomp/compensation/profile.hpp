@@ -135,6 +135,12 @@ struct RadiusRules {
     // Plane moves looked at when an element turns out unreachable (LinuxCNC: 1).
     int lookahead = 1;
     GougeReaction gouge = GougeReaction::error;
+    // Overcut watch (no control has one): a compensated element whose tool centre comes
+    // closer than r - overcut_tolerance (mm) to the programmed contour of the
+    // `overcut_neighbours` programmed elements before and after it gets a warning
+    // "comp_overcut" (LinuxCNC cuts such paths without an error). 0 switches it off.
+    int overcut_neighbours = 3;
+    double overcut_tolerance = 1e-6;
     NonPlaneReaction non_plane_reaction = NonPlaneReaction::error;
     // Heidenhain APPR/DEP readings the manuals leave open (spec §8): R of CT/LCT is the
     // contour radius (tool arc R - r) or the tool-centre radius; LCT tangency in tool-centre

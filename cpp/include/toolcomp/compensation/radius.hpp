@@ -17,6 +17,7 @@
 #include <optional>
 #include <vector>
 
+#include "toolcomp/compensation/overcut.hpp"
 #include "toolcomp/compensation/profile.hpp"
 #include "toolcomp/geometry/element.hpp"
 #include "toolcomp/motion/motion.hpp"
@@ -38,6 +39,7 @@ private:
         Motion m;            // end/centre in machine naming (X Y Z), nose-centre path
         Vec2 dir;            // straights: the direction the reversal check compares against
         double sweep = 0;    // arcs: programmed sweep (0 = never checked: corner and entry arcs)
+        bool approach = false;  // the entry move (comes from off the contour: no overcut check)
     };
     // An emitted move kept for the look-ahead before it leaves the stage.
     struct Emitted {
@@ -45,6 +47,7 @@ private:
         Vec2 dir;
         double sweep = 0;
         bool in_plane = false;  // a programmed move with plane motion (not a corner fill)
+        bool approach = false;
     };
 
     // joints and entry (radius.cpp, radius_joints.cpp)
@@ -78,6 +81,8 @@ private:
     void release(std::size_t keep_plane_moves);
     void passthrough(const Motion& m);
     void warn(const char* code, const std::string& msg, int line);
+    void watch_programmed(const Element2& e, int line);
+    void watch_released(const Emitted& e);
 
     Vec2 plane2(const Vec3& v) const { return in_plane(v, plane_); }
     Vec3 with_plane(Vec3 v, const Vec2& ab) const;
@@ -118,6 +123,7 @@ private:
     std::int8_t exit_orientation_ = 0;
     bool exit_when_behind_ = false;  // KONT: the cancel move decides between the two exits
     int exit_line_ = 0;
+    OvercutWatch overcut_;          // tool centre against the neighbouring programmed contour
     std::vector<Emitted> window_;   // emitted, not yet released (look-ahead for bottlenecks)
     bool have_last_ = false;
     Vec3 last_ = Vec3::Zero();      // end of the last emitted move (nose centre)

@@ -1,0 +1,62 @@
+#pragma once
+// Local overcut watch of the radius stage: every compensated element (tool-centre path)
+// against the programmed contour of its neighbours, the `neighbours` programmed elements
+// before and after it. Where the tool centre comes closer to that contour than the radius
+// (less the tolerance), the path cuts into the part: one warning per compensated element,
+// with its smallest distance. Cheap: each element meets at most 2·neighbours + 2 others.
+#include <cstddef>
+#include <deque>
+#include <vector>
+
+#include "toolcomp/geometry/element.hpp"
+#include "toolcomp/program/diagnostic.hpp"
+
+namespace toolcomp {
+
+// Smallest distance between two elements (line segments or arcs, as they are swept).
+double element_distance(const Element2& a, const Element2& b);
+
+class OvercutWatch {
+public:
+    // `tolerance` in program units; `neighbours` 0 switches the watch off.
+    void configure(int neighbours, double tolerance) {
+        neighbours_ = neighbours;
+        tolerance_ = tolerance;
+    }
+    // A programmed plane element under compensation (in contour order).
+    void programmed(const Element2& e, int line);
+    // The joint before the last programmed element was taken as tangent although it turns:
+    // the control's tangent rule moves the tool up to `slack` closer to both its elements.
+    void tangent_slack(double slack);
+    // A tool-centre element of radius r, of source line `line` (in path order).
+    void compensated(const Element2& e, int line, double r);
+    // Warnings for the elements whose neighbours have all been seen; `all`: compensation
+    // ends, report every pending one and forget the contour. `mm` = mm per program unit.
+    void report(std::vector<Diagnostic>& out, double mm, bool all);
+    void scale(double f);
+
+private:
+    struct Prog {
+        Element2 e;
+        int line;
+        double slack;
+    };
+    struct Comp {
+        Element2 e;
+        int line;
+        double r;
+        std::size_t seen;  // programmed elements counted when it arrived
+        double worst;      // smallest distance - (r - allowance) so far
+        double dist;       // the distance there
+        int near_line;     // and the programmed element's line
+    };
+    void check(Comp& c, const Prog& p) const;
+
+    int neighbours_ = 0;
+    double tolerance_ = 0;
+    std::deque<Prog> prog_;
+    std::deque<Comp> comp_;
+    std::size_t count_ = 0;
+};
+
+}  // namespace toolcomp
