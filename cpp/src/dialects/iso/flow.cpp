@@ -7,7 +7,6 @@ namespace toolcomp::iso {
 namespace {
 bool is_control(Stmt k) { return k != Stmt::assign && k != Stmt::if_then; }
 
-std::string o_name(const std::string& label) { return "o" + label; }
 }  // namespace
 
 const Statement* control_statement(const Program& prog, const Block& b) {
@@ -46,8 +45,7 @@ FlowInfo scan_flow(const Program& prog) {
         // LinuxCNC's words: "<line>: <what>: '<the source line>'".
         auto error = [&](const std::string& m) { f.errors.emplace(k, m); };
         auto quoted = [&](const std::string& what) { return std::to_string(b.line) + ": " + what + ": '" + s->text + "'"; };
-        auto close = [&](Stmt opener, const char* what) {
-            (void)what;
+        auto close = [&](Stmt opener) {
             if (!stack.empty() && stack.back().label == s->label && stack.back().kind == opener) return &stack.back();
             Open* same = innermost(s->label, false);
             if (same) {
@@ -87,13 +85,13 @@ FlowInfo scan_flow(const Program& prog) {
                 }
                 break;
             case Stmt::o_elseif: case Stmt::o_else:
-                if (Open* o = close(Stmt::o_if, s->kind == Stmt::o_else ? "else" : "elseif")) {
+                if (Open* o = close(Stmt::o_if)) {
                     f.links[o->branches.back()].partner = k;
                     o->branches.push_back(k);
                 }
                 break;
             case Stmt::o_endif:
-                if (Open* o = close(Stmt::o_if, "endif")) {
+                if (Open* o = close(Stmt::o_if)) {
                     f.links[o->branches.back()].partner = k;
                     for (std::size_t br : o->branches) f.links[br].endif = k;
                     stack.pop_back();
@@ -102,8 +100,7 @@ FlowInfo scan_flow(const Program& prog) {
             case Stmt::o_endwhile: case Stmt::o_endrepeat: case Stmt::o_endsub: {
                 const Stmt opener = s->kind == Stmt::o_endwhile ? Stmt::o_while
                                   : s->kind == Stmt::o_endrepeat ? Stmt::o_repeat : Stmt::o_sub;
-                const char* what = s->kind == Stmt::o_endwhile ? "endwhile" : s->kind == Stmt::o_endrepeat ? "endrepeat" : "endsub";
-                if (Open* o = close(opener, what)) {
+                if (Open* o = close(opener)) {
                     f.links[o->block].partner = k;
                     f.links[k].partner = o->block;
                     if (opener == Stmt::o_sub) f.links[k].loop = o->block;

@@ -137,17 +137,7 @@ double Interp::get(const std::string& name, std::span<const double>) {
     fail("named_parameter_undefined", "Named parameter #<" + name + "> not defined");
 }
 
-bool Interp::exists(const std::string& name) {
-    if (params_.named(name)) return true;
-    double v;
-    try {
-        v = get(name, {});
-    } catch (const ProgramError&) {
-        return false;
-    }
-    (void)v;
-    return true;
-}
+bool Interp::exists(const std::string& name) { return params_.named(name) || predefined(name); }
 
 std::string Interp::substitute(const std::string& text) {
     // (DEBUG, ...) and (PRINT, ...): #n and #<name> become their values.
