@@ -7,6 +7,19 @@
 
 namespace toolcomp {
 
+// Runs `interp` and hands what `report` takes from it to `*out` (when given) whether the run
+// ends or throws: the files of a run that stopped at an error still name its moves.
+template <class Interp, class Out, class Report>
+void run_reporting(Interp& interp, Out* out, Report report) {
+    try {
+        interp.run();
+    } catch (...) {
+        if (out) *out = report(interp);
+        throw;
+    }
+    if (out) *out = report(interp);
+}
+
 class SourceFiles {
 public:
     int index(const std::string& name) {

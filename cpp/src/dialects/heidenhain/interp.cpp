@@ -533,13 +533,7 @@ void interpret(const Program& program, const ToolTable* tools, const ControlProf
                std::vector<std::string>* files) {
     Interp interp(program, tools, profile, sink, diagnostics, search_path);
     if (progress) interp.on_progress(progress, progress_every);
-    try {
-        interp.run();
-    } catch (...) {
-        if (files) *files = interp.files();
-        throw;
-    }
-    if (files) *files = interp.files();
+    run_reporting(interp, files, [](const Interp& i) { return i.files(); });
 }
 
 }  // namespace toolcomp::heidenhain

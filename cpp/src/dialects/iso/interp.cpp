@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "interp.hpp"
+#include "toolcomp/program/source_files.hpp"
 #include "toolcomp/tools/tool_table.hpp"
 
 namespace toolcomp::iso {
@@ -395,13 +396,7 @@ void interpret(const Program& program, const ToolTable* tools, const ControlProf
                const InterpretOptions& options, MotionSink& sink, std::vector<Diagnostic>& diagnostics,
                InterpretOutput* output) {
     Interp interp(program, tools, profile, options, sink, diagnostics);
-    try {
-        interp.run();
-    } catch (...) {
-        if (output) *output = interp.output();
-        throw;
-    }
-    if (output) *output = interp.output();
+    run_reporting(interp, output, [](const Interp& i) { return i.output(); });
 }
 
 }  // namespace toolcomp::iso

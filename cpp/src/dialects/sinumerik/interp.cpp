@@ -335,13 +335,7 @@ void interpret(const Program& program, const ToolTable* tools, const ControlProf
                const InterpretOptions& options, MotionSink& sink, std::vector<Diagnostic>& diagnostics,
                std::vector<std::string>* files) {
     Interp interp(program, tools, profile, options, sink, diagnostics);
-    try {
-        interp.run();
-    } catch (...) {
-        if (files) *files = interp.files();
-        throw;
-    }
-    if (files) *files = interp.files();
+    run_reporting(interp, files, [](const Interp& i) { return i.files(); });
 }
 
 }  // namespace toolcomp::sinumerik
