@@ -57,6 +57,8 @@ import re
 import sys
 from pathlib import Path
 
+from generate_comp import read_table  # the comp generator's reader of the same tools.tbl
+
 ROOT = Path(__file__).resolve().parents[2]
 TOOLS_TABLE = ROOT / "tests" / "programs" / "comp" / "tools.tbl"
 MACROS = ROOT / "tests" / "programs" / "macros"
@@ -704,17 +706,6 @@ def library_text(name: str) -> str:
 
 # =============================================================================================
 # the generator
-
-def read_table(path: Path = TOOLS_TABLE) -> dict:
-    """tool number -> (diameter mm, orientation Q) of a LinuxCNC .tbl file."""
-    tools = {}
-    for line in Path(path).read_text().splitlines():
-        body = line.split(";")[0].split()
-        words = {w[0].upper(): w[1:] for w in body if len(w) > 1}
-        if "T" in words:
-            tools[int(words["T"])] = (float(words.get("D", 0)), int(float(words.get("Q", 0))))
-    return tools
-
 
 def inside_cap(r: float, gaps: list, margin: float = 1.0) -> float:
     """Largest comp radius (mm, with a safety factor) for a closed polygon inscribed in a circle of
