@@ -14,85 +14,125 @@ using namespace radius_math;
 
 namespace {
 
-// Angle of q about the centre from the arc's start, in its direction of travel, in [0, 2π).
-double arc_angle(const Element2& e, const Vec2& q) {
-    double t = std::fmod(e.dir * (ang(q - e.c) - ang(e.p0 - e.c)), 2 * kPi);
-    return t < 0 ? t + 2 * kPi : t;
+// Whether the direction of q from the centre lies within the arc's sweep: cross products
+// against the start and end radius vectors (no angles).
+bool on_arc(const Swept& a, const Vec2& q) {
+    if (a.full) return true;
+    const Vec2 v = q - a.e.c;
+    const double eps = 1e-12 * a.r0 * v.norm();
+    const double from_start = a.e.dir * cross2(a.u, v), to_end = a.e.dir * cross2(v, a.w);
+    // A minor arc: between start and end; a major one: anywhere but strictly inside the
+    // minor arc from its end back to its start.
+    return a.major ? from_start >= -eps || to_end >= -eps : from_start >= -eps && to_end >= -eps;
 }
 
-// Whether the direction of q from the centre lies within the arc's sweep.
-bool on_arc(const Element2& e, const Vec2& q) {
-    const double sweep = e.sweep();
-    return sweep >= 2 * kPi - 1e-12 || arc_angle(e, q) <= sweep + 1e-12;
+// A spiral's radius changes linearly with the angle swept; radius differences at rounding
+// level are left out (they are within the allowance the watch makes for spirals).
+double radius_at(const Swept& a, const Vec2& q) {
+    if (a.sweep == 0 || a.full) return a.r0;
+    double t = std::fmod(a.e.dir * (ang(q - a.e.c) - ang(a.u)), 2 * kPi);
+    if (t < 0) t += 2 * kPi;
+    if (t > a.sweep) t = t - a.sweep < 2 * kPi - t ? a.sweep : 0;  // off the arc: its nearer end
+    return a.r0 + (a.r1 - a.r0) * t / a.sweep;
 }
 
-// An arc whose end lies off its start circle (within the control's spiral tolerance) runs
-// as a spiral: the radius changes linearly with the angle swept.
-double radius_at(const Element2& e, const Vec2& q) {
-    const double r0 = e.radius(), r1 = (e.p1 - e.c).norm(), sweep = e.sweep();
-    if (r0 == r1 || sweep >= 2 * kPi - 1e-12) return r0;
-    double t = arc_angle(e, q);
-    if (t > sweep) t = t - sweep < 2 * kPi - t ? sweep : 0;  // off the arc: its nearer end
-    return r0 + (r1 - r0) * t / sweep;
+double segment_point(const Element2& l, const Vec2& q) {
+    const Vec2 d = l.p1 - l.p0;
+    const double len2 = d.squaredNorm();
+    const double t = len2 > 0 ? std::clamp((q - l.p0).dot(d) / len2, 0.0, 1.0) : 0.0;
+    return (l.p0 + t * d - q).norm();
 }
 
-double point_distance(const Element2& e, const Vec2& q) {
-    if (!e.is_arc) {
-        const Vec2 d = e.p1 - e.p0;
-        const double len2 = d.squaredNorm();
-        const double t = len2 > 0 ? std::clamp((q - e.p0).dot(d) / len2, 0.0, 1.0) : 0.0;
-        return (e.p0 + t * d - q).norm();
-    }
-    const Vec2 v = q - e.c;
-    if (v.norm() > 0 && on_arc(e, q)) return std::fabs(v.norm() - radius_at(e, q));
-    return std::min((q - e.p0).norm(), (q - e.p1).norm());
+double point_distance(const Swept& a, const Vec2& q) {
+    const Element2& e = a.e;
+    if (!e.is_arc) return segment_point(e, q);
+    const double v = (q - e.c).norm();
+    if (v > 0 && on_arc(a, q)) return std::fabs(v - radius_at(a, q));
+    return std::sqrt(std::min((q - e.p0).squaredNorm(), (q - e.p1).squaredNorm()));
 }
 
-bool on_element(const Element2& e, const Vec2& q) {
-    if (e.is_arc) return on_arc(e, q);
-    const Vec2 d = e.p1 - e.p0;
-    const double t = (q - e.p0).dot(d);
+bool on_element(const Swept& a, const Vec2& q) {
+    if (a.e.is_arc) return on_arc(a, q);
+    const Vec2 d = a.e.p1 - a.e.p0;
+    const double t = (q - a.e.p0).dot(d);
     return t >= 0 && t <= d.squaredNorm();
 }
 
 // Points of arc `a` where its normal runs along `dir` (either way).
-void normal_points(const Element2& a, const Vec2& dir, const Element2& other, double& d) {
-    if (dir.norm() == 0) return;
-    const Vec2 n = dir.normalized();
+void normal_points(const Swept& a, const Vec2& dir, const Swept& other, double& d) {
+    const double n2 = dir.squaredNorm();
+    if (n2 == 0) return;
+    const Vec2 n = dir / std::sqrt(n2);
     for (double s : {-1.0, 1.0}) {
-        const Vec2 towards = a.c + s * n;
-        if (on_arc(a, towards)) d = std::min(d, point_distance(other, a.c + s * radius_at(a, towards) * n));
+        const Vec2 towards = a.e.c + s * n;
+        if (on_arc(a, towards)) d = std::min(d, point_distance(other, a.e.c + s * radius_at(a, towards) * n));
     }
+}
+
+
+double beyond_line(const Element2& l, const Element2& o) {
+    const Vec2 d = l.p1 - l.p0;
+    const double len = d.norm();
+    if (len == 0) return 0;
+    const double s0 = cross2(d, o.p0 - l.p0) / len, s1 = cross2(d, o.p1 - l.p0) / len;
+    return s0 * s1 > 0 ? std::min(std::fabs(s0), std::fabs(s1)) : 0.0;
 }
 
 }  // namespace
 
+double distance_lower_bound(const Swept& a, const Swept& b) {
+    const auto rmin = [](const Swept& s) { return std::min(s.r0, s.r1); };
+    const auto rmax = [](const Swept& s) { return std::max(s.r0, s.r1); };
+    if (!a.e.is_arc && !b.e.is_arc) return std::max(beyond_line(a.e, b.e), beyond_line(b.e, a.e));
+    if (a.e.is_arc && b.e.is_arc) {
+        const double D = (a.e.c - b.e.c).norm();
+        return std::max({D - rmax(a) - rmax(b), rmin(a) - D - rmax(b), rmin(b) - D - rmax(a)});
+    }
+    const Swept& arc = a.e.is_arc ? a : b;
+    const Element2& line = a.e.is_arc ? b.e : a.e;
+    const double far = std::sqrt(std::max((line.p0 - arc.e.c).squaredNorm(), (line.p1 - arc.e.c).squaredNorm()));
+    return std::max(segment_point(line, arc.e.c) - rmax(arc), rmin(arc) - far);
+}
+
+Swept::Swept(const Element2& el) : e(el) {
+    if (!e.is_arc) return;
+    u = e.p0 - e.c;
+    w = e.p1 - e.c;
+    r0 = u.norm();
+    r1 = w.norm();
+    spiral = std::fabs(r1 - r0);
+    // Element2::sweep's classification without its atan2 (taken only for true spirals): a
+    // whole circle when the end comes back to within 1e-12 rad of the start.
+    const double turn = e.dir * cross2(u, w), along = u.dot(w);
+    full = e.turns > 0 || (along > 0 && std::fabs(turn) <= 1e-12 * along);
+    major = !full && turn < 0;
+    if (spiral > 1e-9 * (1 + r0)) sweep = e.sweep();
+}
+
 // The smallest distance is at an end point of one element, at a crossing, or between two
 // interior points on a common normal: a line's normal through an arc's centre, or the line
 // through two arcs' centres.
-double element_distance(const Element2& a, const Element2& b) {
-    double d = std::min({point_distance(b, a.p0), point_distance(b, a.p1), point_distance(a, b.p0),
-                         point_distance(a, b.p1)});
-    for (const Vec2& x : intersect(a, b))
+double element_distance(const Swept& a, const Swept& b) {
+    double d = std::min({point_distance(b, a.e.p0), point_distance(b, a.e.p1), point_distance(a, b.e.p0),
+                         point_distance(a, b.e.p1)});
+    for (const Vec2& x : intersect(a.e, b.e))
         if (on_element(a, x) && on_element(b, x)) return 0;
-    if (a.is_arc && b.is_arc) {
-        normal_points(a, b.c - a.c, b, d);
-        normal_points(b, b.c - a.c, a, d);
-    } else if (a.is_arc != b.is_arc) {
-        const Element2& arc = a.is_arc ? a : b;
-        const Element2& line = a.is_arc ? b : a;
-        normal_points(arc, left_normal(line.p1 - line.p0), line, d);
+    if (a.e.is_arc && b.e.is_arc) {
+        normal_points(a, b.e.c - a.e.c, b, d);
+        normal_points(b, b.e.c - a.e.c, a, d);
+    } else if (a.e.is_arc != b.e.is_arc) {
+        const Swept& arc = a.e.is_arc ? a : b;
+        const Swept& line = a.e.is_arc ? b : a;
+        normal_points(arc, left_normal(line.e.p1 - line.e.p0), line, d);
     }
     return d;
 }
 
-// An arc whose end radius differs from its start radius is only known to within that
-// difference (the control's spiral tolerance): it is allowed on both sides.
-static double spiral(const Element2& e) { return e.is_arc ? std::fabs((e.p1 - e.c).norm() - e.radius()) : 0.0; }
-
 void OvercutWatch::check(Comp& c, const Prog& p) const {
+    const double closest = c.r - tolerance_ - p.slack - p.e.spiral - c.e.spiral;
+    if (distance_lower_bound(c.e, p.e) >= closest) return;  // cannot come closer: no warning from it
     const double d = element_distance(c.e, p.e);
-    const double margin = d - (c.r - tolerance_ - p.slack - spiral(p.e) - spiral(c.e));
+    const double margin = d - closest;
     if (margin < c.worst) {
         c.worst = margin;
         c.dist = d;
@@ -102,7 +142,7 @@ void OvercutWatch::check(Comp& c, const Prog& p) const {
 
 void OvercutWatch::programmed(const Element2& e, int line) {
     if (neighbours_ <= 0) return;
-    prog_.push_back({e, line, 0.0});
+    prog_.push_back({Swept(e), line, 0.0});
     ++count_;
     for (auto& c : comp_) check(c, prog_.back());
     while (prog_.size() > static_cast<std::size_t>(neighbours_) + 2) prog_.pop_front();
@@ -115,7 +155,7 @@ void OvercutWatch::tangent_slack(double slack) {
 
 void OvercutWatch::compensated(const Element2& e, int line, double r) {
     if (neighbours_ <= 0 || prog_.empty()) return;
-    Comp c{e, line, r, count_, std::numeric_limits<double>::infinity(), 0, 0};
+    Comp c{Swept(e), line, r, count_, std::numeric_limits<double>::infinity(), 0, 0};
     for (const auto& p : prog_) check(c, p);
     comp_.push_back(c);
 }
@@ -140,10 +180,12 @@ void OvercutWatch::report(std::vector<Diagnostic>& out, double mm, bool all) {
 }
 
 void OvercutWatch::scale(double f) {
-    auto conv = [f](Element2& e) {
+    auto conv = [f](Swept& s) {
+        Element2 e = s.e;
         e.p0 *= f;
         e.p1 *= f;
         e.c *= f;
+        s = Swept(e);
     };
     for (auto& p : prog_) {
         conv(p.e);

@@ -60,8 +60,8 @@ JointKind classify_joint(const Vec2& t1, const Vec2& t2, int side, double tangen
     return side * theta < 0 ? JointKind::outside : JointKind::inside;
 }
 
-std::vector<Vec2> intersect(const Element2& a, const Element2& b) {
-    std::vector<Vec2> out;
+Crossings intersect(const Element2& a, const Element2& b) {
+    Crossings out;
     if (!a.is_arc && !b.is_arc) {
         Vec2 d1 = a.p1 - a.p0, d2 = b.p1 - b.p0;
         double den = cross2(d1, d2);

@@ -13,8 +13,26 @@
 
 namespace toolcomp {
 
-// Smallest distance between two elements (line segments or arcs, as they are swept).
-double element_distance(const Element2& a, const Element2& b);
+// An element with what the distance tests ask of it worked out once: an arc's start and end
+// radius vectors and radii, its sweep, whether it is a whole circle or more than a half.
+struct Swept {
+    Element2 e;
+    Vec2 u = Vec2::Zero(), w = Vec2::Zero();
+    double r0 = 0, r1 = 0, spiral = 0;  // spiral: |r1 - r0|
+    double sweep = 0;                   // worked out for spirals only (else 0)
+    bool full = false, major = false;
+    explicit Swept(const Element2& e);
+};
+
+// Smallest distance between two elements (line segments or arcs, as they are swept). An arc
+// whose end radius differs from its start radius (a spiral) is taken within that difference.
+double element_distance(const Swept& a, const Swept& b);
+inline double element_distance(const Element2& a, const Element2& b) { return element_distance(Swept(a), Swept(b)); }
+// A cheap lower bound of that distance (<= 0 when nothing is known), without angles: the
+// other element beyond a line's supporting line, a segment outside or inside an arc's
+// circle, two arcs' circles apart or one within the other (an arc lies within the ring of
+// its start and end radii). Most pairs the watch meets are settled by it.
+double distance_lower_bound(const Swept& a, const Swept& b);
 
 class OvercutWatch {
 public:
@@ -37,12 +55,12 @@ public:
 
 private:
     struct Prog {
-        Element2 e;
+        Swept e;
         int line;
         double slack;
     };
     struct Comp {
-        Element2 e;
+        Swept e;
         int line;
         double r;
         std::size_t seen;  // programmed elements counted when it arrived

@@ -3,6 +3,7 @@
 //
 // Vocabulary of spec §0.2/§1: unit tangent t, left normal nL(t) = (-t_b, t_a), side s = +1
 // left (G41/RL) and -1 right (G42/RR), arc direction d = +1 CCW and -1 CW.
+#include <cstddef>
 #include <optional>
 #include <vector>
 
@@ -43,7 +44,19 @@ enum class JointKind { tangent, outside, inside, reversal };
 // (offsets overlap), |θ| ≈ π reversal. `tangent_tol` and `reversal_tol` in radians.
 JointKind classify_joint(const Vec2& t1, const Vec2& t2, int side, double tangent_tol, double reversal_tol);
 
+// Up to two points, without a heap allocation (intersections are taken on every joint).
+struct Crossings {
+    Vec2 p[2];
+    int n = 0;
+    void push_back(const Vec2& v) { p[n++] = v; }
+    bool empty() const { return n == 0; }
+    std::size_t size() const { return static_cast<std::size_t>(n); }
+    const Vec2& operator[](std::size_t i) const { return p[i]; }
+    const Vec2* begin() const { return p; }
+    const Vec2* end() const { return p + n; }
+};
+
 // Intersections of the supporting line / full circle of two elements (0, 1 or 2 points).
-std::vector<Vec2> intersect(const Element2& a, const Element2& b);
+Crossings intersect(const Element2& a, const Element2& b);
 
 }  // namespace toolcomp
