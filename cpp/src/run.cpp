@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "pipeline.hpp"
+
 #include "toolcomp/compensation/stages.hpp"
 #include "toolcomp/dialects/heidenhain/interpreter.hpp"
 #include "toolcomp/dialects/heidenhain/lexer.hpp"
@@ -116,6 +118,38 @@ bool Result::ok() const {
     return true;
 }
 
+void run_pipeline(const Program& program, const ToolTable* tools, const RunOptions& options,
+                  const ControlProfile& profile, MotionSink& nominal, MotionSink& compensated,
+                  std::vector<Diagnostic>& diagnostics, iso::InterpretOutput& out, const PipelineHooks& hooks) {
+    CompensationChain chain(profile, compensated, diagnostics);
+    Tee tee(nominal, chain);
+    iso::InterpretOptions iopts;
+    iopts.block_delete = options.block_delete;
+    iopts.progress = options.progress;
+    iopts.progress_every = options.progress_every ? options.progress_every : 1;
+    iopts.search_path = options.search_path;
+    iopts.parameters = options.parameters;
+    iopts.next_piece = hooks.next_piece;
+    iopts.file_opened = hooks.file_opened;
+    out.files.push_back(program.name);
+    try {
+        if (program.dialect == Dialect::heidenhain)
+            heidenhain::interpret(program, tools, profile, tee, diagnostics, iopts.progress, iopts.progress_every,
+                                  options.search_path, &out.files);
+        else if (program.dialect == Dialect::sinumerik)
+            sinumerik::interpret(program, tools, profile, sinumerik_options(options, profile), tee, diagnostics,
+                                 &out.files);
+        else if (is_iso(program.dialect))
+            iso::interpret(program, tools, profile, iopts, tee, diagnostics, &out);
+        else
+            dialect_not_supported(program.dialect);
+    } catch (const Error& e) {
+        if (options.strict) throw;
+        tee.finish();
+        diagnostics.push_back(e.diagnostic());
+    }
+}
+
 Result run(const Program& program, const ToolTable* tools, const RunOptions& options) {
     Result res;
     res.blocks = program.size();
@@ -130,32 +164,8 @@ Result run(const Program& program, const ToolTable* tools, const RunOptions& opt
     ControlProfile profile = options.profile ? *options.profile : profile_for(program.dialect);
     SegmentLimit nominal(res.nominal, options.max_segments, "programmed");
     SegmentLimit compensated(res.path, options.max_segments, "compensated");
-    CompensationChain chain(profile, compensated, res.diagnostics);
-    Tee tee(nominal, chain);
-    iso::InterpretOptions iopts;
-    iopts.block_delete = options.block_delete;
-    iopts.progress = options.progress;
-    iopts.progress_every = options.progress_every ? options.progress_every : 1;
-    iopts.search_path = options.search_path;
-    iopts.parameters = options.parameters;
     iso::InterpretOutput out;
-    out.files.push_back(program.name);
-    try {
-        if (program.dialect == Dialect::heidenhain)
-            heidenhain::interpret(program, tools, profile, tee, res.diagnostics, iopts.progress, iopts.progress_every,
-                                  options.search_path, &out.files);
-        else if (program.dialect == Dialect::sinumerik)
-            sinumerik::interpret(program, tools, profile, sinumerik_options(options, profile), tee, res.diagnostics,
-                                 &out.files);
-        else if (is_iso(program.dialect))
-            iso::interpret(program, tools, profile, iopts, tee, res.diagnostics, &out);
-        else
-            dialect_not_supported(program.dialect);
-    } catch (const Error& e) {
-        if (options.strict) throw;
-        tee.finish();
-        res.diagnostics.push_back(e.diagnostic());
-    }
+    run_pipeline(program, tools, options, profile, nominal, compensated, res.diagnostics, out);
     res.nominal.files = out.files;
     res.path.files = std::move(out.files);
     res.parameters = std::move(out.parameters);

@@ -18,5 +18,6 @@ PYBIND11_MODULE(_core, m) {
     bind_program(m);
     bind_path(m);
     bind_run(m);
+    bind_stream(m);
     bind_sinumerik(m);
 }

@@ -27,6 +27,7 @@ from ._core import (
     NonPlaneReaction,
     OutsideCorner,
     Path,
+    PathStream,
     Program,
     RadiusRules,
     Result,
@@ -42,9 +43,9 @@ from ._errors import CompensationError, Error, ParseError, ProgramError, ToolTab
 __all__ = [
     "ARC_CCW", "ARC_CW", "LINE", "RAPID",
     "CompensationError", "ControlProfile", "CuttingEdge", "Diagnostic", "EntryStyle", "Error", "ExitStyle",
-    "GougeReaction", "LengthAxes", "Machine", "NonPlaneReaction", "OutsideCorner", "ParseError", "Path",
+    "GougeReaction", "LengthAxes", "Machine", "NonPlaneReaction", "OutsideCorner", "ParseError", "Path", "PathStream",
     "Program", "ProgramError", "RadiusRules", "Result", "TipConvention", "Tool", "ToolTable",
-    "ToolTableError", "compensate_3d", "params", "run", "run_many", "sinumerik", "__version__",
+    "ToolTableError", "compensate_3d", "iter_run", "params", "run", "run_many", "sinumerik", "__version__",
 ]
 
 _sys.modules[__name__ + ".sinumerik"] = sinumerik  # type: ignore[assignment]  # `import toolcomp.sinumerik`
@@ -88,6 +89,14 @@ def run(program, tools=None, *, dialect=None, strict=True, block_delete=False, p
         # line, as the control does, and never after M2/M30.
         program = Program.read(_os.fspath(program), dialect, strict=False, max_bytes=max_bytes,
                                max_line_length=max_line_length)
+    tools, search_path, parameters = _run_inputs(tools, units, search_path, parameters)
+    return _core.run(program, tools, strict=strict, block_delete=block_delete, profile=profile,
+                     progress=progress, progress_every=progress_every, search_path=search_path,
+                     parameters=parameters, max_segments=max_segments)
+
+
+def _run_inputs(tools, units, search_path, parameters):
+    """run()'s and iter_run()'s tools, search path and parameters as the engine takes them."""
     if isinstance(tools, (str, _os.PathLike)):
         tools = ToolTable.read(_os.fspath(tools), units=units)
     if isinstance(search_path, (str, bytes, _os.PathLike)):
@@ -98,9 +107,36 @@ def run(program, tools=None, *, dialect=None, strict=True, block_delete=False, p
 
         parameters = read_var(parameters)
     parameters = {int(k): float(v) for k, v in (parameters or {}).items()}
-    return _core.run(program, tools, strict=strict, block_delete=block_delete, profile=profile,
-                     progress=progress, progress_every=progress_every, search_path=search_path,
-                     parameters=parameters, max_segments=max_segments)
+    return tools, search_path, parameters
+
+
+def iter_run(program, tools=None, *, chunk=1_000_000, dialect=None, strict=True, block_delete=False,
+             profile=None, units="mm", search_path=(), parameters=None, max_bytes=2**31,
+             max_line_length=2**20, piece_bytes=4 << 20):
+    """Run ``program`` like :func:`run` and yield its compensated path in chunks of ``chunk``
+    segments (:class:`Path` objects; the last may be shorter). The chunks joined are the
+    ``path`` that :func:`run` returns, segment for segment: the compensation look-ahead runs
+    on across chunk boundaries. The programmed path is not kept.
+
+    Memory: the run goes on in a thread of its own, at most one chunk ahead of the loop. A
+    LinuxCNC or Fanuc program file without control flow (no O-words, GOTO, loops, program
+    numbers or M99: CAM output) is read ``piece_bytes`` at a time, so memory does not grow
+    with its length; other programs (and Heidenhain, Sinumerik) are read whole, up to
+    ``max_bytes``, their path still streamed. ``max_segments`` does not apply.
+
+    Errors: with ``strict=True`` the run's error is raised by the loop after the chunk that
+    holds the segments before it; with ``strict=False`` it ends the stream and is in
+    ``stream.diagnostics``. The returned :class:`PathStream` also gives ``blocks`` and
+    ``files`` once it has ended; ``close()`` (or leaving a ``with`` block) stops the run."""
+    if chunk < 1:
+        raise ValueError("chunk must be at least 1")
+    tools, search_path, parameters = _run_inputs(tools, units, search_path, parameters)
+    if isinstance(program, (str, _os.PathLike)):
+        return _core.iter_run_file(_os.fspath(program), dialect, tools, strict=strict, block_delete=block_delete,
+                                   profile=profile, search_path=search_path, parameters=parameters, chunk=chunk,
+                                   piece_bytes=piece_bytes, max_bytes=max_bytes, max_line_length=max_line_length)
+    return _core.iter_run_program(program, tools, strict=strict, block_delete=block_delete, profile=profile,
+                                  search_path=search_path, parameters=parameters, chunk=chunk)
 
 
 def _result_plot(self, ax=None, **kwargs):

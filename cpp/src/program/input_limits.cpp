@@ -62,19 +62,37 @@ std::size_t line_ends_before(std::string_view text, std::size_t pos, bool cr_end
 
 }  // namespace
 
-FileText read_file_limited(const std::string& path, std::uint64_t max_bytes) {
-    // stat() first: opening a FIFO for reading would block until a writer comes.
+namespace {
+// Opens a regular file for reading: its descriptor, or -1 with `r` saying why. stat() first:
+// opening a FIFO for reading would block until a writer comes.
+int open_regular(const std::string& path, FileText& r, std::uint64_t& size) {
     struct stat st {};
-    if (::stat(path.c_str(), &st) != 0) return failed(FileText::cannot_open, std::strerror(errno));
-    if (!S_ISREG(st.st_mode)) return failed(FileText::not_regular, file_kind(st.st_mode));
+    if (::stat(path.c_str(), &st) != 0) return r = failed(FileText::cannot_open, std::strerror(errno)), -1;
+    if (!S_ISREG(st.st_mode)) return r = failed(FileText::not_regular, file_kind(st.st_mode)), -1;
     const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
-    if (fd < 0) return failed(FileText::cannot_open, std::strerror(errno));
+    if (fd < 0) return r = failed(FileText::cannot_open, std::strerror(errno)), -1;
     // The file opened may not be the one stat() saw (replaced in between): check it again.
     if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
         ::close(fd);
-        return failed(FileText::not_regular, file_kind(st.st_mode));
+        return r = failed(FileText::not_regular, file_kind(st.st_mode)), -1;
     }
-    const auto size = static_cast<std::uint64_t>(st.st_size);
+    size = static_cast<std::uint64_t>(st.st_size);
+    return fd;
+}
+
+[[noreturn]] void throw_read_error(const FileText& f, const std::string& path, std::uint64_t max_bytes,
+                                   const std::string& what) {
+    const std::string where = what + " '" + path + "'";
+    if (f.status == FileText::cannot_open) throw ParseError("file_not_found", "Cannot open " + where);
+    throw ParseError(read_error_code(f), "Cannot read " + where + ": " + read_error_text(f, max_bytes));
+}
+}  // namespace
+
+FileText read_file_limited(const std::string& path, std::uint64_t max_bytes) {
+    FileText status;
+    std::uint64_t size = 0;
+    const int fd = open_regular(path, status, size);
+    if (fd < 0) return status;
     if (size > max_bytes) {
         ::close(fd);
         return failed(FileText::too_large, "", size);
@@ -142,12 +160,18 @@ std::string read_error_text(const FileText& f, std::uint64_t max_bytes) {
 std::string read_program_text(const std::string& path, std::uint64_t max_bytes, const std::string& what) {
     FileText f = read_file_limited(path, max_bytes);
     if (f.status == FileText::ok) return std::move(f.text);
-    const std::string where = what + " '" + path + "'";
-    if (f.status == FileText::cannot_open) throw ParseError("file_not_found", "Cannot open " + where);
-    throw ParseError(read_error_code(f), "Cannot read " + where + ": " + read_error_text(f, max_bytes));
+    throw_read_error(f, path, max_bytes, what);
 }
 
-void check_line_lengths(std::string_view text, std::size_t max_line_length, bool cr_ends_line) {
+int open_program_file(const std::string& path, const std::string& what) {
+    FileText f;
+    std::uint64_t size = 0;
+    const int fd = open_regular(path, f, size);
+    if (fd < 0) throw_read_error(f, path, 0, what);
+    return fd;
+}
+
+void check_line_lengths(std::string_view text, std::size_t max_line_length, bool cr_ends_line, std::size_t first_line) {
     if (text.size() <= max_line_length) return;
     const char* b = text.data();
     const std::size_t n = text.size();
@@ -158,12 +182,12 @@ void check_line_lengths(std::string_view text, std::size_t max_line_length, bool
         std::size_t content_end = end;  // CRs right before the "\n" belong to the line end
         while (content_end > pos && b[content_end - 1] == '\r') --content_end;
         if (content_end - pos > max_line_length) {
-            if (!cr_ends_line) too_long(line_ends_before(text, pos, false) + 1, content_end - pos, max_line_length);
+            if (!cr_ends_line) too_long(line_ends_before(text, pos, false) + first_line, content_end - pos, max_line_length);
             std::size_t start = pos, sub = 0;
             for (std::size_t i = pos; i <= content_end; ++i) {
                 if (i < content_end && b[i] != '\r') continue;
                 if (i - start > max_line_length)
-                    too_long(line_ends_before(text, pos, true) + 1 + sub, i - start, max_line_length);
+                    too_long(line_ends_before(text, pos, true) + first_line + sub, i - start, max_line_length);
                 ++sub;
                 start = i + 1;
             }

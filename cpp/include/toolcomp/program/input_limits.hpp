@@ -44,10 +44,15 @@ std::string byte_count_text(std::uint64_t n);
 // the limit). `what` names the file in the message ("program file").
 std::string read_program_text(const std::string& path, std::uint64_t max_bytes, const std::string& what = "program file");
 
+// Opens a program file to be read bit by bit (no size limit): its file descriptor, or the
+// ParseError of read_program_text ("file_not_found", "not_a_regular_file").
+int open_program_file(const std::string& path, const std::string& what = "program file");
+
 // Throws ParseError("line_too_long") with the 1-based line number of the first line longer
 // than `max_line_length` bytes (line end not counted). Lines end with "\n"; with
 // `cr_ends_line` also with a lone "\r" ("\r\n" and "\r\r\n" are one line end), as the
-// Sinumerik and Heidenhain front ends read them.
-void check_line_lengths(std::string_view text, std::size_t max_line_length, bool cr_ends_line);
+// Sinumerik and Heidenhain front ends read them. `first_line`: the number of text's first
+// line (a piece of a longer text).
+void check_line_lengths(std::string_view text, std::size_t max_line_length, bool cr_ends_line, std::size_t first_line = 1);
 
 }  // namespace toolcomp

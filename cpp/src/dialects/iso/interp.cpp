@@ -80,6 +80,7 @@ void Interp::run() {
     main_.prog = &prog_;
     main_.flow = scan_flow(prog_);
     files_.push_back(prog_.name);
+    if (opts_.file_opened) opts_.file_opened(prog_.name);
     Frame top;
     top.at = &main_;
     frames_.push_back(top);
@@ -107,7 +108,14 @@ void Interp::run_blocks() {
         Frame& f = frames_.back();
         const Program& p = f.prog();
         if (f.pc >= p.size()) {
-            if (frames_.size() == 1) break;
+            if (frames_.size() == 1) {
+                const Program* next = opts_.next_piece && !p.syntax_error ? opts_.next_piece() : nullptr;
+                if (!next) break;
+                main_.prog = next;
+                main_.flow = scan_flow(*next);
+                f.pc = 0;
+                continue;
+            }
             line_ = p.last_line;
             file_ = f.at->file;
             if (const auto& e = p.syntax_error) throw ParseError(e->code, e->message, e->pos);
@@ -167,13 +175,14 @@ void Interp::run_blocks() {
     sink_.finish();
     line_ = 0;
     file_ = 0;
-    if (const auto& e = prog_.syntax_error) throw ParseError(e->code, e->message, e->pos);
+    const Program& last = *main_.prog;  // the whole program, or its last piece
+    if (const auto& e = last.syntax_error) throw ParseError(e->code, e->message, e->pos);
     if (prog_.dialect == Dialect::linuxcnc) {
         // LinuxCNC refuses a file that simply stops: it must end with M2/M30 or '%'.
-        line_ = prog_.last_line;
-        if (prog_.percent_open && !prog_.percent_closed)
+        line_ = last.last_line;
+        if (last.percent_open && !last.percent_closed)
             fail("no_program_end", "File ended with no percent sign");
-        if (!prog_.percent_open) fail("no_program_end", "File ended with no percent sign or program end");
+        if (!last.percent_open) fail("no_program_end", "File ended with no percent sign or program end");
     }
 }
 

@@ -132,6 +132,7 @@ const LoadedProgram* Interp::load(const std::string& file_name) {
         lp.flow = scan_flow(*lp.prog);
         lp.file = static_cast<int>(files_.size());
         files_.push_back(path.string());
+        if (opts_.file_opened) opts_.file_opened(files_.back());
         loaded_.push_back(std::move(lp));
         by_file_[file_name] = &loaded_.back();
         return &loaded_.back();

@@ -220,51 +220,52 @@ double LineLexer::number() {
 }
 
 Program parse(std::string_view text, Dialect dialect, std::string name, bool strict) {
-    text = skip_bom(text);
+    return PieceParser(dialect, std::move(name), strict).parse(text);
+}
+
+Program PieceParser::parse(std::string_view text) {
+    if (first_) text = skip_bom(text);
+    first_ = false;
     Program prog;
-    prog.name = std::move(name);
-    prog.dialect = dialect;
+    prog.name = name_;
+    prog.dialect = dialect_;
     prog.reserve(text.size() / 24 + 1, text.size() / 6 + 1);
-    std::size_t pos = 0;
-    int line_no = 0;
-    bool seen_content = false, percent_open = false;
     LineBuffers buffers;
-    while (pos <= text.size()) {
+    for (std::size_t pos = 0; pos < text.size() && !done_;) {
         std::size_t nl = text.find('\n', pos);
         if (nl == std::string_view::npos) nl = text.size();
         std::string_view line = text.substr(pos, nl - pos);
-        ++line_no;
+        ++line_no_;
         pos = nl + 1;
-        if (blank_line(line)) {
-            if (nl == text.size()) break;
-            continue;
-        }
+        if (blank_line(line)) continue;
         if (trimmed(line) == "%") {
             // "%" on the first non-blank line opens the program; the next one closes it.
-            prog.last_line = line_no;
-            if (percent_open) {
-                prog.percent_closed = true;
+            last_line_ = line_no_;
+            if (percent_open_) {
+                percent_closed_ = done_ = true;
                 break;
             }
-            if (!seen_content) percent_open = prog.percent_open = true;
-            seen_content = true;
+            if (!seen_content_) percent_open_ = true;
+            seen_content_ = true;
             continue;
         }
-        seen_content = true;
-        prog.last_line = line_no;
+        seen_content_ = true;
+        last_line_ = line_no_;
         try {
             // LinuxCNC reads at most 252 characters a line (a CR of a CRLF end counts).
-            if (dialect == Dialect::linuxcnc && line.size() > 252)
-                throw ParseError("line_too_long", "Command too long", {line_no, 253});
-            LineLexer(line, line_no, prog, buffers).run();
+            if (dialect_ == Dialect::linuxcnc && line.size() > 252)
+                throw ParseError("line_too_long", "Command too long", {line_no_, 253});
+            LineLexer(line, line_no_, prog, buffers).run();
         } catch (const ParseError& e) {
-            if (strict) throw;
+            if (strict_) throw;
             prog.drop_last_block();
             prog.syntax_error = e.diagnostic();
-            break;
+            done_ = true;
         }
-        if (nl == text.size()) break;
     }
+    prog.last_line = last_line_;
+    prog.percent_open = percent_open_;
+    prog.percent_closed = percent_closed_;
     return prog;
 }
 

@@ -29,6 +29,12 @@ struct InterpretOptions {
     // (LinuxCNC o<name> call: name.ngc; Fanuc M98/G65 P1000: O1000.nc, O1000, 1000.nc).
     std::vector<std::string> search_path;
     ParameterValues parameters;  // start values
+    // A main program read in pieces (streaming): called when the blocks of the piece run out,
+    // it returns the next piece, or nullptr at the end of the file. The piece stays valid
+    // until the next call. Control structures (O-words, GOTO targets) must lie within a piece.
+    std::function<const Program*()> next_piece;
+    // Told the name of every file moves may come from, as it is opened (main program first).
+    std::function<void(const std::string&)> file_opened;
 };
 
 // What a run leaves besides its moves.

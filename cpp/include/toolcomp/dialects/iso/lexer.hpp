@@ -16,4 +16,30 @@ namespace toolcomp::iso {
 // Otherwise the blocks before it are kept and the error is stored in Program::syntax_error.
 Program parse(std::string_view text, Dialect dialect, std::string name = "<string>", bool strict = true);
 
+// Whether `text` may hold control flow that reaches beyond a block: O-words, Fanuc program
+// numbers, GOTO, WHILE DO (all written with a letter O outside a comment) or an M99 (which
+// runs a main program again from its top). Conservative: "yes" may be wrong, "no" is not.
+// A streamed run reads a program without them piece by piece, and one with them whole.
+bool may_steer(std::string_view text);
+
+// The same for a text read piece by piece (a file too large to hold): each piece is whole
+// lines and becomes a Program of its own. Line numbers, the "%" delimiters and the last line
+// with content carry over: every piece's Program holds the figures of the text so far.
+class PieceParser {
+public:
+    PieceParser(Dialect dialect, std::string name, bool strict) : dialect_(dialect), name_(std::move(name)), strict_(strict) {}
+    Program parse(std::string_view piece);
+    // The closing "%" or (lenient) a syntax error was met: later text is not part of the program.
+    bool done() const { return done_; }
+    int lines() const { return line_no_; }  // lines read so far
+
+private:
+    Dialect dialect_;
+    std::string name_;
+    bool strict_;
+    bool first_ = true, done_ = false;
+    int line_no_ = 0, last_line_ = 0;
+    bool seen_content_ = false, percent_open_ = false, percent_closed_ = false;
+};
+
 }  // namespace toolcomp::iso

@@ -1,0 +1,27 @@
+#pragma once
+// The pipeline of a run, without the Result around it: interpreter -> Motion stream -> the
+// programmed path (`nominal`) and the compensation stages -> the compensated path. run()
+// collects both into Paths; a PathStream hands the compensated one over in chunks.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "toolcomp/dialects/iso/interpreter.hpp"
+#include "toolcomp/run.hpp"
+
+namespace toolcomp {
+
+// What a streamed run adds (ISO dialects): the main program in pieces, and the files as
+// they are opened.
+struct PipelineHooks {
+    std::function<const Program*()> next_piece;
+    std::function<void(const std::string&)> file_opened;
+};
+
+// With options.strict an Error propagates; otherwise it ends the run as a diagnostic, after
+// the compensation stages are flushed. `out` gets the files and the parameters at the end.
+void run_pipeline(const Program& program, const ToolTable* tools, const RunOptions& options,
+                  const ControlProfile& profile, MotionSink& nominal, MotionSink& compensated,
+                  std::vector<Diagnostic>& diagnostics, iso::InterpretOutput& out, const PipelineHooks& hooks = {});
+
+}  // namespace toolcomp

@@ -1,0 +1,34 @@
+#pragma once
+// A program file read a piece at a time: whole lines, about `piece_bytes` each, so a file of
+// any size is read in bounded memory. Lines longer than `max_line_length` are refused with
+// their line number (ParseError "line_too_long"), as when a file is read whole.
+#include <cstddef>
+#include <string>
+#include <string_view>
+
+namespace toolcomp {
+
+class FilePieces {
+public:
+    FilePieces(const std::string& path, std::size_t piece_bytes, std::size_t max_line_length);
+    ~FilePieces();
+    FilePieces(const FilePieces&) = delete;
+    FilePieces& operator=(const FilePieces&) = delete;
+
+    // The next piece (whole lines; the file's last line may lack its newline), empty at the
+    // end of the file. Valid until the next call.
+    std::string_view next();
+    // Back to the start of the file.
+    void rewind();
+
+private:
+    std::string path_;
+    int fd_ = -1;
+    std::size_t piece_bytes_, max_line_length_;
+    std::string buf_;       // the piece handed out, then the start of the next one
+    std::size_t carry_ = 0; // bytes after the piece handed out (a line not yet complete)
+    std::size_t lines_ = 0; // line ends before the piece handed out
+    bool eof_ = false;
+};
+
+}  // namespace toolcomp

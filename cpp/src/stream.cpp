@@ -1,0 +1,197 @@
+#include "toolcomp/stream.hpp"
+
+#include <unistd.h>
+
+#include <utility>
+
+#include "pipeline.hpp"
+#include "program/file_pieces.hpp"
+#include "toolcomp/dialects/iso/lexer.hpp"
+
+namespace toolcomp {
+
+namespace {
+bool is_iso(Dialect d) { return d == Dialect::linuxcnc || d == Dialect::fanuc || d == Dialect::rockwell; }
+
+class NullSink : public MotionSink {
+public:
+    void push(const Motion&) override {}
+};
+
+Dialect dialect_of(const std::string& path, std::optional<Dialect> given) {
+    if (given) return *given;
+    if (auto s = dialect_from_suffix(path)) return *s;
+    throw ParseError("unknown_dialect", "Cannot tell the dialect of '" + path + "' from its suffix; pass dialect=");
+}
+}  // namespace
+
+// The end of the compensated pipeline: fills a Path and hands it over every `chunk` segments.
+class PathStream::Chunker : public MotionSink {
+public:
+    Chunker(PathStream& s, const std::vector<std::string>& files) : s_(s), files_(files) { fresh(); }
+    void push(const Motion& m) override {
+        cur_.push(m);
+        if (cur_.size() >= s_.options_.chunk) hand_over();
+    }
+    void flush() {
+        if (cur_.size()) hand_over();
+    }
+
+private:
+    void fresh() {
+        cur_ = Path();
+        cur_.reserve(s_.options_.chunk);
+    }
+    void hand_over() {
+        cur_.files = files_;
+        s_.deliver(std::move(cur_));
+        fresh();
+    }
+    PathStream& s_;
+    const std::vector<std::string>& files_;
+    Path cur_;
+};
+
+PathStream::PathStream(std::string path, std::optional<Dialect> dialect, std::optional<ToolTable> tools,
+                       StreamOptions options)
+    : path_(std::move(path)), tools_(std::move(tools)), options_(std::move(options)) {
+    if (options_.chunk == 0) throw ProgramError("bad_chunk", "A stream's chunk must hold at least one segment");
+    dialect_ = dialect_of(path_, dialect);
+    ::close(open_program_file(path_));  // a missing or unreadable file fails here, not in the stream
+    start();
+}
+
+PathStream::PathStream(std::shared_ptr<const Program> program, std::optional<ToolTable> tools, StreamOptions options)
+    : program_(std::move(program)), tools_(std::move(tools)), options_(std::move(options)) {
+    if (options_.chunk == 0) throw ProgramError("bad_chunk", "A stream's chunk must hold at least one segment");
+    start();
+}
+
+PathStream::~PathStream() { close(); }
+
+void PathStream::start() {
+    thread_ = std::thread([this] { produce(); });
+}
+
+void PathStream::close() {
+    {
+        std::lock_guard<std::mutex> lk(mu_);
+        cancelled_ = true;
+        ready_.clear();
+    }
+    cv_.notify_all();
+    if (thread_.joinable()) thread_.join();
+}
+
+void PathStream::deliver(Path&& p) {
+    std::unique_lock<std::mutex> lk(mu_);
+    cv_.wait(lk, [this] { return ready_.empty() || cancelled_; });
+    if (cancelled_) throw Cancelled{};
+    ready_.push_back(std::move(p));
+    cv_.notify_all();
+}
+
+std::optional<Path> PathStream::next() {
+    std::unique_lock<std::mutex> lk(mu_);
+    cv_.wait(lk, [this] { return !ready_.empty() || finished_; });
+    if (!ready_.empty()) {
+        Path p = std::move(ready_.front());
+        ready_.pop_front();
+        cv_.notify_all();
+        return p;
+    }
+    if (error_) std::rethrow_exception(std::exchange(error_, nullptr));
+    return std::nullopt;
+}
+
+void PathStream::produce() {
+    std::vector<std::string> live;  // the files known so far (each chunk carries them)
+    std::vector<Diagnostic> diags;
+    iso::InterpretOutput out;
+    std::size_t blocks = 0;
+    std::exception_ptr error;
+    Chunker chunker(*this, live);
+    NullSink nominal;
+    PipelineHooks hooks;
+    hooks.file_opened = [&live](const std::string& f) { live.push_back(f); };
+    auto cancelled = [this] {
+        std::lock_guard<std::mutex> lk(mu_);
+        return cancelled_;
+    };
+    auto pipeline = [&](const Program& p) {
+        if (!is_iso(p.dialect)) live.push_back(p.name);  // Heidenhain, Sinumerik: the main file only, until the end
+        const ControlProfile profile = options_.run.profile ? *options_.run.profile : profile_for(p.dialect);
+        run_pipeline(p, tools_ ? &*tools_ : nullptr, options_.run, profile, nominal, chunker, diags, out, hooks);
+    };
+    try {
+        if (program_) {
+            blocks = program_->size();
+            pipeline(*program_);
+        } else {
+            bool whole = !is_iso(*dialect_);
+            std::optional<FilePieces> pieces;
+            if (!whole) {
+                pieces.emplace(path_, options_.piece_bytes, options_.read.max_line_length);
+                for (std::string_view t = pieces->next(); !t.empty() && !whole; t = pieces->next()) {
+                    whole = iso::may_steer(t);
+                    if (cancelled()) throw Cancelled{};
+                }
+            }
+            if (whole) {
+                pieces.reset();
+                const Program p = read_program(path_, dialect_, /*strict=*/false, options_.read);
+                blocks = p.size();
+                pipeline(p);
+            } else {
+                // Piece by piece, read leniently as run() reads a file: a syntax error is
+                // raised when the run reaches its line.
+                pieces->rewind();
+                iso::PieceParser parser(*dialect_, path_, /*strict=*/false);
+                Program piece = parser.parse(pieces->next());
+                blocks = piece.size();
+                hooks.next_piece = [&]() -> const Program* {
+                    if (cancelled()) throw Cancelled{};
+                    if (parser.done()) return nullptr;
+                    const std::string_view t = pieces->next();
+                    if (t.empty()) return nullptr;
+                    piece = parser.parse(t);
+                    blocks += piece.size();
+                    return &piece;
+                };
+                pipeline(piece);
+            }
+        }
+    } catch (const Cancelled&) {
+    } catch (...) {
+        error = std::current_exception();
+    }
+    try {
+        if (out.files.size() > live.size()) live = out.files;
+        chunker.flush();  // the last chunk; after an error, the segments before it
+    } catch (const Cancelled&) {
+    }
+    std::lock_guard<std::mutex> lk(mu_);
+    finished_ = true;
+    error_ = error;
+    diagnostics_ = std::move(diags);
+    blocks_ = blocks;
+    files_ = out.files.empty() ? live : out.files;
+    cv_.notify_all();
+}
+
+std::vector<Diagnostic> PathStream::diagnostics() const {
+    std::lock_guard<std::mutex> lk(mu_);
+    return diagnostics_;
+}
+
+std::size_t PathStream::blocks() const {
+    std::lock_guard<std::mutex> lk(mu_);
+    return blocks_;
+}
+
+std::vector<std::string> PathStream::files() const {
+    std::lock_guard<std::mutex> lk(mu_);
+    return files_;
+}
+
+}  // namespace toolcomp

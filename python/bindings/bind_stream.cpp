@@ -1,0 +1,91 @@
+// PathStream: a run's compensated path in chunks (the iterator behind toolcomp.iter_run).
+#include "bindings.hpp"
+
+#include <pybind11/stl.h>
+
+#include "toolcomp/stream.hpp"
+
+using namespace toolcomp;
+
+namespace {
+StreamOptions stream_options(bool strict, bool block_delete, std::optional<ControlProfile> profile,
+                             std::vector<std::string> search_path, std::map<int, double> parameters,
+                             std::size_t chunk, std::size_t piece_bytes, std::uint64_t max_bytes,
+                             std::size_t max_line_length) {
+    StreamOptions o;
+    o.run.strict = strict;
+    o.run.block_delete = block_delete;
+    o.run.profile = std::move(profile);
+    o.run.search_path = std::move(search_path);
+    o.run.parameters = std::move(parameters);
+    o.chunk = chunk;
+    o.piece_bytes = piece_bytes;
+    o.read.max_bytes = max_bytes;
+    o.read.max_line_length = max_line_length;
+    return o;
+}
+
+std::optional<ToolTable> table(const ToolTable* t) { return t ? std::optional<ToolTable>(*t) : std::nullopt; }
+}  // namespace
+
+void bind_stream(py::module_& m) {
+    py::class_<PathStream, std::shared_ptr<PathStream>>(
+        m, "PathStream",
+        "Iterator over a run's compensated path in chunks (Path objects); see toolcomp.iter_run. After the "
+        "last chunk: diagnostics, blocks, files.")
+        .def("__iter__", [](py::object self) { return self; })
+        .def("__next__",
+             [](PathStream& s) {
+                 std::optional<Path> p;
+                 {
+                     py::gil_scoped_release nogil;
+                     p = s.next();
+                 }
+                 if (!p) throw py::stop_iteration();
+                 return std::make_shared<Path>(std::move(*p));
+             })
+        .def("close", [](PathStream& s) {
+            py::gil_scoped_release nogil;
+            s.close();
+        }, "stop the run; chunks not taken are dropped")
+        .def("__enter__", [](py::object self) { return self; })
+        .def("__exit__", [](PathStream& s, py::args) {
+            py::gil_scoped_release nogil;
+            s.close();
+        })
+        .def_property_readonly("diagnostics", &PathStream::diagnostics,
+                               "warnings of the run (and with strict=False its error), once the stream has ended")
+        .def_property_readonly("blocks", &PathStream::blocks, "blocks read, once the stream has ended")
+        .def_property_readonly("files", &PathStream::files,
+                               "the files segments came from (Path.file indexes it), once the stream has ended");
+
+    m.def(
+        "iter_run_file",
+        [](const std::string& path, std::optional<std::string> dialect, const ToolTable* tools, bool strict,
+           bool block_delete, std::optional<ControlProfile> profile, std::vector<std::string> search_path,
+           std::map<int, double> parameters, std::size_t chunk, std::size_t piece_bytes, std::uint64_t max_bytes,
+           std::size_t max_line_length) {
+            std::optional<Dialect> d;
+            if (dialect) d = dialect_from_name(*dialect);
+            return std::make_shared<PathStream>(path, d, table(tools),
+                                                stream_options(strict, block_delete, std::move(profile),
+                                                               std::move(search_path), std::move(parameters), chunk,
+                                                               piece_bytes, max_bytes, max_line_length));
+        },
+        py::arg("path"), py::arg("dialect"), py::arg("tools"), py::arg("strict"), py::arg("block_delete"),
+        py::arg("profile"), py::arg("search_path"), py::arg("parameters"), py::arg("chunk"), py::arg("piece_bytes"),
+        py::arg("max_bytes"), py::arg("max_line_length"), "A PathStream over a program file (see toolcomp.iter_run).");
+    m.def(
+        "iter_run_program",
+        [](std::shared_ptr<Program> program, const ToolTable* tools, bool strict, bool block_delete,
+           std::optional<ControlProfile> profile, std::vector<std::string> search_path,
+           std::map<int, double> parameters, std::size_t chunk) {
+            return std::make_shared<PathStream>(std::shared_ptr<const Program>(std::move(program)), table(tools),
+                                                stream_options(strict, block_delete, std::move(profile),
+                                                               std::move(search_path), std::move(parameters), chunk,
+                                                               4 << 20, kDefaultMaxProgramBytes, kDefaultMaxLineLength));
+        },
+        py::arg("program"), py::arg("tools"), py::arg("strict"), py::arg("block_delete"), py::arg("profile"),
+        py::arg("search_path"), py::arg("parameters"), py::arg("chunk"),
+        "A PathStream over a parsed Program (see toolcomp.iter_run).");
+}
