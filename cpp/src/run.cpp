@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "pipeline.hpp"
+#include "program/program_source.hpp"
 
 #include "toolcomp/compensation/stages.hpp"
 #include "toolcomp/dialects/heidenhain/interpreter.hpp"
@@ -15,7 +16,6 @@
 namespace toolcomp {
 
 namespace {
-bool is_iso(Dialect d) { return d == Dialect::linuxcnc || d == Dialect::fanuc || d == Dialect::rockwell; }
 
 [[noreturn]] void dialect_not_supported(Dialect d) {
     throw ParseError("dialect_not_supported",
@@ -99,15 +99,7 @@ Program parse_program(std::string_view text, Dialect dialect, std::string name, 
 }
 
 Program read_program(const std::string& path, std::optional<Dialect> dialect, bool strict, const ReadLimits& limits) {
-    Dialect d;
-    if (dialect) {
-        d = *dialect;
-    } else if (auto s = dialect_from_suffix(path)) {
-        d = *s;
-    } else {
-        throw ParseError("unknown_dialect",
-                         "Cannot tell the dialect of '" + path + "' from its suffix; pass dialect=");
-    }
+    const Dialect d = dialect_of_file(path, dialect);
     const std::string text = read_program_text(path, limits.max_bytes);
     return parse_program(text, d, path, strict, limits.max_line_length);
 }
@@ -150,7 +142,10 @@ void run_pipeline(const Program& program, const ToolTable* tools, const RunOptio
     }
 }
 
-Result run(const Program& program, const ToolTable* tools, const RunOptions& options) {
+namespace {
+// `expected`: blocks the program is thought to have (the Paths are reserved for as many).
+Result run_main(const Program& program, const ToolTable* tools, const RunOptions& options,
+                const PipelineHooks& hooks, std::size_t expected) {
     Result res;
     res.blocks = program.size();
     if (program.blank) {
@@ -159,16 +154,31 @@ Result run(const Program& program, const ToolTable* tools, const RunOptions& opt
     }
     // One segment per block is the common case (CAM output): reserving it up front avoids the
     // copies and the doubled capacity of growing columns (peak memory).
-    res.nominal.reserve(std::min(program.size(), options.max_segments));
-    res.path.reserve(std::min(program.size(), options.max_segments));
+    res.nominal.reserve(std::min(expected, options.max_segments));
+    res.path.reserve(std::min(expected, options.max_segments));
     ControlProfile profile = options.profile ? *options.profile : profile_for(program.dialect);
     SegmentLimit nominal(res.nominal, options.max_segments, "programmed");
     SegmentLimit compensated(res.path, options.max_segments, "compensated");
     iso::InterpretOutput out;
-    run_pipeline(program, tools, options, profile, nominal, compensated, res.diagnostics, out);
+    run_pipeline(program, tools, options, profile, nominal, compensated, res.diagnostics, out, hooks);
     res.nominal.files = out.files;
     res.path.files = std::move(out.files);
     res.parameters = std::move(out.parameters);
+    return res;
+}
+}  // namespace
+
+Result run(const Program& program, const ToolTable* tools, const RunOptions& options) {
+    return run_main(program, tools, options, {}, program.size());
+}
+
+Result run_file(const std::string& path, std::optional<Dialect> dialect, const ToolTable* tools,
+                const RunOptions& options, const ReadLimits& limits) {
+    ProgramSource src(path, dialect_of_file(path, dialect), limits, kPieceBytes, /*limit_pieces=*/true);
+    PipelineHooks hooks;
+    hooks.next_piece = src.next_piece();
+    Result res = run_main(src.first(), tools, options, hooks, src.estimated_blocks());
+    res.blocks = src.blocks();
     return res;
 }
 

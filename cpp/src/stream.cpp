@@ -5,24 +5,17 @@
 #include <utility>
 
 #include "pipeline.hpp"
-#include "program/file_pieces.hpp"
-#include "toolcomp/dialects/iso/lexer.hpp"
+#include "program/program_source.hpp"
 
 namespace toolcomp {
 
 namespace {
-bool is_iso(Dialect d) { return d == Dialect::linuxcnc || d == Dialect::fanuc || d == Dialect::rockwell; }
 
 class NullSink : public MotionSink {
 public:
     void push(const Motion&) override {}
 };
 
-Dialect dialect_of(const std::string& path, std::optional<Dialect> given) {
-    if (given) return *given;
-    if (auto s = dialect_from_suffix(path)) return *s;
-    throw ParseError("unknown_dialect", "Cannot tell the dialect of '" + path + "' from its suffix; pass dialect=");
-}
 }  // namespace
 
 // The end of the compensated pipeline: fills a Path and hands it over every `chunk` segments.
@@ -56,7 +49,7 @@ PathStream::PathStream(std::string path, std::optional<Dialect> dialect, std::op
                        StreamOptions options)
     : path_(std::move(path)), tools_(std::move(tools)), options_(std::move(options)) {
     if (options_.chunk == 0) throw ProgramError("bad_chunk", "A stream's chunk must hold at least one segment");
-    dialect_ = dialect_of(path_, dialect);
+    dialect_ = dialect_of_file(path_, dialect);
     ::close(open_program_file(path_));  // a missing or unreadable file fails here, not in the stream
     start();
 }
@@ -128,38 +121,17 @@ void PathStream::produce() {
             blocks = program_->size();
             pipeline(*program_);
         } else {
-            bool whole = !is_iso(*dialect_);
-            std::optional<FilePieces> pieces;
-            if (!whole) {
-                pieces.emplace(path_, options_.piece_bytes, options_.read.max_line_length);
-                for (std::string_view t = pieces->next(); !t.empty() && !whole; t = pieces->next()) {
-                    whole = iso::may_steer(t);
-                    if (cancelled()) throw Cancelled{};
-                }
+            ProgramSource src(path_, *dialect_, options_.read, options_.piece_bytes, /*limit_pieces=*/false, [&] {
+                if (cancelled()) throw Cancelled{};
+            });
+            hooks.next_piece = src.next_piece();
+            try {
+                pipeline(src.first());
+            } catch (...) {
+                blocks = src.blocks();
+                throw;
             }
-            if (whole) {
-                pieces.reset();
-                const Program p = read_program(path_, dialect_, /*strict=*/false, options_.read);
-                blocks = p.size();
-                pipeline(p);
-            } else {
-                // Piece by piece, read leniently as run() reads a file: a syntax error is
-                // raised when the run reaches its line.
-                pieces->rewind();
-                iso::PieceParser parser(*dialect_, path_, /*strict=*/false);
-                Program piece = parser.parse(pieces->next());
-                blocks = piece.size();
-                hooks.next_piece = [&]() -> const Program* {
-                    if (cancelled()) throw Cancelled{};
-                    if (parser.done()) return nullptr;
-                    const std::string_view t = pieces->next();
-                    if (t.empty()) return nullptr;
-                    piece = parser.parse(t);
-                    blocks += piece.size();
-                    return &piece;
-                };
-                pipeline(piece);
-            }
+            blocks = src.blocks();
         }
     } catch (const Cancelled&) {
     } catch (...) {

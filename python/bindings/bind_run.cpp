@@ -10,6 +10,28 @@
 
 using namespace toolcomp;
 
+namespace {
+// `progress` is held by the caller's frame for the whole run.
+RunOptions run_options(bool strict, bool block_delete, std::optional<ControlProfile> profile, py::object& progress,
+                       std::size_t progress_every, std::vector<std::string> search_path,
+                       std::map<int, double> parameters, std::size_t max_segments) {
+    RunOptions o;
+    o.max_segments = max_segments;
+    o.parameters = std::move(parameters);
+    o.strict = strict;
+    o.block_delete = block_delete;
+    o.profile = std::move(profile);
+    o.progress_every = progress_every;
+    o.search_path = std::move(search_path);
+    if (!progress.is_none())
+        o.progress = [&progress](std::size_t n) {
+            py::gil_scoped_acquire gil;
+            progress(n);  // a Python exception (Ctrl-C) stops the run
+        };
+    return o;
+}
+}  // namespace
+
 void bind_run(py::module_& m) {
     py::enum_<LengthAxes>(m, "LengthAxes", "Which axes a tool length offset (G43 H) acts on.")
         .value("all", LengthAxes::all, "the tool's whole offset vector (LinuxCNC: X..W from the tool table)")
@@ -240,19 +262,8 @@ void bind_run(py::module_& m) {
         [](const Program& program, const ToolTable* tools, bool strict, bool block_delete,
            std::optional<ControlProfile> profile, py::object progress, std::size_t progress_every,
            std::vector<std::string> search_path, std::map<int, double> parameters, std::size_t max_segments) {
-            RunOptions o;
-            o.max_segments = max_segments;
-            o.parameters = std::move(parameters);
-            o.strict = strict;
-            o.block_delete = block_delete;
-            o.profile = std::move(profile);
-            o.progress_every = progress_every;
-            o.search_path = std::move(search_path);
-            if (!progress.is_none())
-                o.progress = [&progress](std::size_t n) {
-                    py::gil_scoped_acquire gil;
-                    progress(n);  // a Python exception (Ctrl-C) stops the run
-                };
+            RunOptions o = run_options(strict, block_delete, std::move(profile), progress, progress_every,
+                                       std::move(search_path), std::move(parameters), max_segments);
             py::gil_scoped_release nogil;
             return std::make_shared<Result>(run(program, tools, o));
         },
@@ -268,4 +279,22 @@ void bind_run(py::module_& m) {
         "whose programmed or compensated path would hold more than max_segments segments stops with "
         "ProgramError 'memory_limit' at the line of the block that crossed it. "
         "The GIL is released while the program runs.");
+    m.def(
+        "run_file",
+        [](const std::string& path, std::optional<std::string> dialect, const ToolTable* tools, bool strict,
+           bool block_delete, std::optional<ControlProfile> profile, py::object progress, std::size_t progress_every,
+           std::vector<std::string> search_path, std::map<int, double> parameters, std::size_t max_segments,
+           std::uint64_t max_bytes, std::size_t max_line_length) {
+            RunOptions o = run_options(strict, block_delete, std::move(profile), progress, progress_every,
+                                       std::move(search_path), std::move(parameters), max_segments);
+            std::optional<Dialect> d;
+            if (dialect) d = dialect_from_name(*dialect);
+            py::gil_scoped_release nogil;
+            return std::make_shared<Result>(run_file(path, d, tools, o, ReadLimits{max_bytes, max_line_length}));
+        },
+        py::arg("path"), py::arg("dialect"), py::arg("tools"), py::arg("strict"), py::arg("block_delete"),
+        py::arg("profile"), py::arg("progress"), py::arg("progress_every"), py::arg("search_path"),
+        py::arg("parameters"), py::arg("max_segments"), py::arg("max_bytes"), py::arg("max_line_length"),
+        "run() on a program file, read leniently; a LinuxCNC / Fanuc file without control flow is read and "
+        "parsed a piece at a time as it runs (see toolcomp.run).");
 }

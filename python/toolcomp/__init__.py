@@ -84,12 +84,15 @@ def run(program, tools=None, *, dialect=None, strict=True, block_delete=False, p
     with ``strict=False`` the path up to it is returned). ``ControlProfile.block_limit`` and
     ``call_depth_limit`` bound executed blocks and nested calls.
     """
+    tools, search_path, parameters = _run_inputs(tools, units, search_path, parameters)
     if isinstance(program, (str, _os.PathLike)):
         # Read leniently: a syntax error is raised (or reported) when the run reaches its
-        # line, as the control does, and never after M2/M30.
-        program = Program.read(_os.fspath(program), dialect, strict=False, max_bytes=max_bytes,
-                               max_line_length=max_line_length)
-    tools, search_path, parameters = _run_inputs(tools, units, search_path, parameters)
+        # line, as the control does, and never after M2/M30. A LinuxCNC / Fanuc file without
+        # control flow is read piece by piece as it runs.
+        return _core.run_file(_os.fspath(program), dialect, tools, strict=strict, block_delete=block_delete,
+                              profile=profile, progress=progress, progress_every=progress_every,
+                              search_path=search_path, parameters=parameters, max_segments=max_segments,
+                              max_bytes=max_bytes, max_line_length=max_line_length)
     return _core.run(program, tools, strict=strict, block_delete=block_delete, profile=profile,
                      progress=progress, progress_every=progress_every, search_path=search_path,
                      parameters=parameters, max_segments=max_segments)

@@ -301,6 +301,11 @@ def iter_run_program(program: Program, tools: Optional[ToolTable], *, strict: bo
                      profile: Optional[ControlProfile], search_path: Sequence[str],
                      parameters: Mapping[int, float], chunk: int) -> PathStream: ...
 
+def run_file(path: str, dialect: Optional[str], tools: Optional[ToolTable], *, strict: bool, block_delete: bool,
+             profile: Optional[ControlProfile], progress: Optional[Callable[[int], None]], progress_every: int,
+             search_path: Sequence[str], parameters: Mapping[int, float], max_segments: int, max_bytes: int,
+             max_line_length: int) -> Result: ...
+
 _Plane = Union[int, str]  # 17, 18, 19 or "G17", "G18", "G19"
 _EdgeMap = dict[Tuple[int, int], "sinumerik.Edge"]
 

@@ -72,4 +72,14 @@ struct Result {
 
 Result run(const Program& program, const ToolTable* tools, const RunOptions& options = {});
 
+// Text read at a time from a program file read piece by piece.
+inline constexpr std::size_t kPieceBytes = std::size_t{4} << 20;
+
+// Reads and runs a program file (dialect from the suffix unless given), read leniently (a
+// syntax error is raised when the run reaches its line). A LinuxCNC / Fanuc file in which
+// nothing steers across blocks (no O-words, GOTO, loops, program numbers, M99: CAM output) is
+// read and parsed a piece at a time as it runs, so only the Paths grow with its length.
+Result run_file(const std::string& path, std::optional<Dialect> dialect, const ToolTable* tools,
+                const RunOptions& options = {}, const ReadLimits& limits = {});
+
 }  // namespace toolcomp

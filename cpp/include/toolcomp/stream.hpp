@@ -28,7 +28,7 @@ namespace toolcomp {
 struct StreamOptions {
     RunOptions run;                     // max_segments does not apply: a stream has no total
     std::size_t chunk = 1'000'000;      // segments per chunk (the last may hold fewer)
-    std::size_t piece_bytes = 4 << 20;  // text read at a time
+    std::size_t piece_bytes = kPieceBytes;  // text read at a time
     ReadLimits read;                    // max_bytes: for a program read whole
 };
 

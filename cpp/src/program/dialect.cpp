@@ -50,4 +50,11 @@ std::optional<Dialect> dialect_from_suffix(std::string_view path) {
     return std::nullopt;
 }
 
+Dialect dialect_of_file(std::string_view path, std::optional<Dialect> given) {
+    if (given) return *given;
+    if (auto s = dialect_from_suffix(path)) return *s;
+    throw ParseError("unknown_dialect",
+                     "Cannot tell the dialect of '" + std::string(path) + "' from its suffix; pass dialect=");
+}
+
 }  // namespace toolcomp

@@ -163,11 +163,12 @@ std::string read_program_text(const std::string& path, std::uint64_t max_bytes, 
     throw_read_error(f, path, max_bytes, what);
 }
 
-int open_program_file(const std::string& path, const std::string& what) {
+int open_program_file(const std::string& path, const std::string& what, std::uint64_t* size) {
     FileText f;
-    std::uint64_t size = 0;
-    const int fd = open_regular(path, f, size);
+    std::uint64_t bytes = 0;
+    const int fd = open_regular(path, f, bytes);
     if (fd < 0) throw_read_error(f, path, 0, what);
+    if (size) *size = bytes;
     return fd;
 }
 

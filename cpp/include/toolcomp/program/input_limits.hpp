@@ -46,7 +46,8 @@ std::string read_program_text(const std::string& path, std::uint64_t max_bytes, 
 
 // Opens a program file to be read bit by bit (no size limit): its file descriptor, or the
 // ParseError of read_program_text ("file_not_found", "not_a_regular_file").
-int open_program_file(const std::string& path, const std::string& what = "program file");
+// `size` (when given) receives the file's size.
+int open_program_file(const std::string& path, const std::string& what = "program file", std::uint64_t* size = nullptr);
 
 // Throws ParseError("line_too_long") with the 1-based line number of the first line longer
 // than `max_line_length` bytes (line end not counted). Lines end with "\n"; with

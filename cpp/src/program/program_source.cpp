@@ -1,0 +1,56 @@
+#include "program_source.hpp"
+
+#include <unistd.h>
+
+#include "toolcomp/program/input_limits.hpp"
+
+namespace toolcomp {
+
+ProgramSource::ProgramSource(const std::string& path, Dialect dialect, const ReadLimits& limits,
+                             std::size_t piece_bytes, bool limit_pieces, std::function<void()> check)
+    : check_(std::move(check)) {
+    std::uint64_t size = 0;
+    ::close(open_program_file(path, "program file", &size));
+    if (limit_pieces && size > limits.max_bytes)
+        throw ParseError("input_too_large", "Cannot read program file '" + path + "': it is " + byte_count_text(size) +
+                                                ", more than the limit of " + byte_count_text(limits.max_bytes) +
+                                                " (max_bytes)");
+    bool whole = !is_iso(dialect);
+    if (!whole) {
+        pieces_.emplace(path, piece_bytes, limits.max_line_length);
+        for (std::string_view t = pieces_->next(); !t.empty() && !whole; t = pieces_->next()) {
+            whole = iso::may_steer(t);
+            if (check_) check_();
+        }
+    }
+    if (whole) {
+        // Read leniently, as run() reads a file: a syntax error is raised when the run
+        // reaches its line, and never after M2/M30.
+        pieces_.reset();
+        current_ = read_program(path, dialect, /*strict=*/false, limits);
+        blocks_ = estimate_ = current_.size();
+        return;
+    }
+    pieces_->rewind();
+    parser_.emplace(dialect, path, /*strict=*/false);
+    const std::string_view t = pieces_->next();
+    current_ = parser_->parse(t);
+    blocks_ = current_.size();
+    estimate_ = t.empty() ? 0 : static_cast<std::size_t>(static_cast<double>(blocks_) * static_cast<double>(size) /
+                                                         static_cast<double>(t.size()));
+}
+
+std::function<const Program*()> ProgramSource::next_piece() {
+    if (!parser_) return {};
+    return [this]() -> const Program* {
+        if (check_) check_();
+        if (parser_->done()) return nullptr;
+        const std::string_view t = pieces_->next();
+        if (t.empty()) return nullptr;
+        current_ = parser_->parse(t);
+        blocks_ += current_.size();
+        return &current_;
+    };
+}
+
+}  // namespace toolcomp

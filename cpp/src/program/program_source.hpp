@@ -1,0 +1,39 @@
+#pragma once
+// The main program of a run from a file: read and parsed whole, or, for a LinuxCNC / Fanuc
+// file in which nothing steers across blocks (iso::may_steer), piece by piece: then memory
+// for the program stays that of one piece (about `piece_bytes` of text) whatever its length.
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "file_pieces.hpp"
+#include "toolcomp/dialects/iso/lexer.hpp"
+#include "toolcomp/run.hpp"
+
+namespace toolcomp {
+
+class ProgramSource {
+public:
+    // A file larger than `limits.max_bytes` is refused before it is read (ParseError
+    // "input_too_large") when it would be read whole, and with `limit_pieces` also when it is
+    // read piece by piece. `check` is called before each piece (it may throw to stop).
+    ProgramSource(const std::string& path, Dialect dialect, const ReadLimits& limits, std::size_t piece_bytes,
+                  bool limit_pieces, std::function<void()> check = {});
+    // The whole program, or its first piece.
+    const Program& first() const { return current_; }
+    // For the interpreter (iso::InterpretOptions::next_piece); empty when read whole.
+    std::function<const Program*()> next_piece();
+    std::size_t blocks() const { return blocks_; }  // blocks read so far
+    // Blocks the whole file may hold, from the size of the file and the first piece.
+    std::size_t estimated_blocks() const { return estimate_; }
+
+private:
+    std::optional<FilePieces> pieces_;
+    std::optional<iso::PieceParser> parser_;
+    Program current_;
+    std::size_t blocks_ = 0, estimate_ = 0;
+    std::function<void()> check_;
+};
+
+}  // namespace toolcomp
