@@ -4,7 +4,10 @@ Measures parse and run of generated CAM-like programs (lines and arcs, G17, tool
 offset) through the Python API, LinuxCNC's rs274 on the same program when it is installed,
 and tc.compensate_3d on CAM points. Sizes: TOOLCOMP_BENCH_BLOCKS (default 1,000,000),
 TOOLCOMP_BENCH_POINTS (default 10,000,000); TOOLCOMP_BENCH_LINEAR (default 10: a program ten
-times as long, to see that time grows linearly; 0 or 1 to skip). Also a 1M-block Heidenhain
+times as long, to see that time grows linearly; 0 or 1 to skip); TOOLCOMP_BENCH_STREAM_BLOCKS
+(default 50,000,000: tc.iter_run over a program file of that many blocks, about 0.9 GB, written
+to the temporary directory; 0 to skip). Peak memory of one run and of the stream are measured
+in a fresh interpreter each. Also a 1M-block Heidenhain
 L/CR program and a LinuxCNC program that computes the same contour in an o-while loop.
 """
 import os
@@ -69,6 +72,82 @@ def generate_loops(n_blocks):
             f"G40 G1 X-10 Y-10\nM2\n"), rows * 6
 
 
+def write_program(path, n_blocks):
+    """generate(n_blocks, comp=True) written straight to a file, for programs too large to hold."""
+    rows = n_blocks // 6
+    with open(path, "w", buffering=1 << 22) as f:
+        f.write("G21 G17 G90 G94 G40 G49\nT1 M6\nG43 H1\nG0 X0 Y0 Z5\nG1 Z-1 F600\nG42.1 D2\n")
+        buf = []
+        for i in range(rows):
+            y = i * 0.001
+            buf.append("G1 X100 Y%.3f\nG1 X100 Y%.3f\nG1 X95 Y%.3f\nG3 X95 Y%.3f I0 J2.5\nG1 X5 Y%.3f\n"
+                       "G2 X5 Y%.3f I0 J-3.5\n" % (y, y + 2, y + 2, y + 7, y + 7, y))
+            if len(buf) == 10000:
+                f.write("".join(buf))
+                buf.clear()
+        f.write("".join(buf) + "G40 G1 X-10 Y-10\nM2\n")
+    return rows * 6
+
+
+# Run in a fresh interpreter so that its peak RSS is that of one run: tc.run on a file (both
+# Paths kept) or tc.iter_run over it (chunks dropped as they come).
+_CHILD = r"""
+import json, resource, sys, time
+sys.path.insert(0, sys.argv[1])
+import toolcomp as tc
+from run_bench import path_bytes
+tools = tc.ToolTable.parse("T1 P1 Z50 D6\n", "linuxcnc")
+base = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+t = time.perf_counter()
+if sys.argv[3] == "run":
+    res = tc.run(sys.argv[2], tools)
+    segments, blocks, columns = len(res.path), res.blocks, path_bytes(res.path) + path_bytes(res.nominal)
+else:
+    stream = tc.iter_run(sys.argv[2], tools, chunk=1_000_000)
+    segments = sum(len(c) for c in stream)
+    blocks, columns = stream.blocks, 0
+seconds = time.perf_counter() - t
+print(json.dumps(dict(seconds=seconds, segments=segments, blocks=blocks, columns=columns, base=base,
+                      peak=resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024)))
+"""
+
+
+def child(path, mode):
+    import json
+
+    out = subprocess.run([sys.executable, "-c", _CHILD, os.path.dirname(os.path.abspath(__file__)), path, mode],
+                         check=True, capture_output=True, text=True)
+    return json.loads(out.stdout)
+
+
+def bench_memory(n):
+    """Peak RSS of one tc.run on the G42 program file against its Paths' columns."""
+    with tempfile.TemporaryDirectory() as d:
+        path = os.path.join(d, "g42.ngc")
+        write_program(path, n)
+        r = child(path, "run")
+    cols = r["columns"] / 2**20
+    target = 1.5 * cols + 64
+    print(f"memory         : tc.run(file) of {r['blocks']:,} blocks: peak RSS {r['peak']:.0f} MB "
+          f"(interpreter and numpy {r['base']:.0f} MB) for {cols:.0f} MB of Path columns; "
+          f"target 1.5 x columns + 64 MB = {target:.0f} MB ({r['peak'] / target:.2f} of it); "
+          f"{r['seconds']:.2f} s, {r['seconds'] / r['blocks'] * 1e9:.0f} ns/block read + parse + run")
+
+
+def bench_stream(n):
+    """tc.iter_run over a file of n blocks (chunks of 1M segments): time and peak RSS."""
+    with tempfile.TemporaryDirectory() as d:
+        path = os.path.join(d, "stream.ngc")
+        t = time.perf_counter()
+        write_program(path, n)
+        size = os.path.getsize(path)
+        gen = time.perf_counter() - t
+        r = child(path, "stream")
+    print(f"streaming      : tc.iter_run over {r['blocks']:,} blocks ({size / 2**30:.2f} GiB file, written in "
+          f"{gen:.0f} s): {r['segments']:,} segments in {r['seconds']:.1f} s, "
+          f"{r['seconds'] / r['blocks'] * 1e9:.0f} ns/block, peak RSS {r['peak']:.0f} MB")
+
+
 def path_bytes(p):
     """Bytes of the numpy columns of a Path (stride-0 columns count once)."""
     total = 0
@@ -81,7 +160,9 @@ def path_bytes(p):
 
 def best_of(fn, repeat=3):
     best = float("inf")
+    value = None
     for _ in range(repeat):
+        value = None  # the last result goes before the next run starts (peak memory)
         t = time.perf_counter()
         value = fn()
         best = min(best, time.perf_counter() - t)
@@ -174,9 +255,13 @@ def main():
     bench_other("Heidenhain L/CR with RR", *generate_heidenhain(n), "heidenhain", None)
     bench_other("LinuxCNC o-while loop with G42.1", *generate_loops(n), "linuxcnc", tools)
     bench_batch(n, tools)
+    bench_memory(n)
     factor = int(os.environ.get("TOOLCOMP_BENCH_LINEAR", "10"))
     if factor > 1:
         bench_linear(n, factor, tools)
+    streamed = int(os.environ.get("TOOLCOMP_BENCH_STREAM_BLOCKS", "50000000"))
+    if streamed > 0:
+        bench_stream(streamed)
 
     # 3D compensation of CAM points (one core).
     import numpy as np

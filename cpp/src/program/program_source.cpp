@@ -38,17 +38,32 @@ ProgramSource::ProgramSource(const std::string& path, Dialect dialect, const Rea
     blocks_ = current_.size();
     estimate_ = t.empty() ? 0 : static_cast<std::size_t>(static_cast<double>(blocks_) * static_cast<double>(size) /
                                                          static_cast<double>(t.size()));
+    read_ahead();
+}
+
+ProgramSource::~ProgramSource() {
+    if (ahead_.valid()) ahead_.wait();
+}
+
+// The next piece is read and parsed on the other core while the run works through this one.
+void ProgramSource::read_ahead() {
+    ahead_ = std::async(std::launch::async, [this]() -> std::optional<Program> {
+        if (parser_->done()) return std::nullopt;
+        const std::string_view t = pieces_->next();
+        if (t.empty()) return std::nullopt;
+        return parser_->parse(t);
+    });
 }
 
 std::function<const Program*()> ProgramSource::next_piece() {
     if (!parser_) return {};
     return [this]() -> const Program* {
         if (check_) check_();
-        if (parser_->done()) return nullptr;
-        const std::string_view t = pieces_->next();
-        if (t.empty()) return nullptr;
-        current_ = parser_->parse(t);
+        std::optional<Program> next = ahead_.get();  // a read error of the piece comes out here
+        if (!next) return nullptr;
+        current_ = std::move(*next);
         blocks_ += current_.size();
+        read_ahead();
         return &current_;
     };
 }

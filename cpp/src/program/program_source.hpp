@@ -1,9 +1,12 @@
 #pragma once
 // The main program of a run from a file: read and parsed whole, or, for a LinuxCNC / Fanuc
 // file in which nothing steers across blocks (iso::may_steer), piece by piece: then memory
-// for the program stays that of one piece (about `piece_bytes` of text) whatever its length.
+// for the program stays that of two pieces (about `piece_bytes` of text each: the next one is
+// read and parsed in another thread while the run works through the current one) whatever
+// its length.
 #include <cstdint>
 #include <functional>
+#include <future>
 #include <optional>
 #include <string>
 
@@ -20,6 +23,9 @@ public:
     // read piece by piece. `check` is called before each piece (it may throw to stop).
     ProgramSource(const std::string& path, Dialect dialect, const ReadLimits& limits, std::size_t piece_bytes,
                   bool limit_pieces, std::function<void()> check = {});
+    ~ProgramSource();
+    ProgramSource(const ProgramSource&) = delete;
+    ProgramSource& operator=(const ProgramSource&) = delete;
     // The whole program, or its first piece.
     const Program& first() const { return current_; }
     // For the interpreter (iso::InterpretOptions::next_piece); empty when read whole.
@@ -29,11 +35,14 @@ public:
     std::size_t estimated_blocks() const { return estimate_; }
 
 private:
+    void read_ahead();
+
     std::optional<FilePieces> pieces_;
     std::optional<iso::PieceParser> parser_;
     Program current_;
     std::size_t blocks_ = 0, estimate_ = 0;
     std::function<void()> check_;
+    std::future<std::optional<Program>> ahead_;  // the next piece, read and parsed meanwhile
 };
 
 }  // namespace toolcomp
