@@ -72,11 +72,11 @@ def generate_loops(n_blocks):
             f"G40 G1 X-10 Y-10\nM2\n"), rows * 6
 
 
-def write_program(path, n_blocks):
-    """generate(n_blocks, comp=True) written straight to a file, for programs too large to hold."""
+def write_program(path, n_blocks, comp=True):
+    """generate(n_blocks, comp) written straight to a file, for programs too large to hold."""
     rows = n_blocks // 6
     with open(path, "w", buffering=1 << 22) as f:
-        f.write("G21 G17 G90 G94 G40 G49\nT1 M6\nG43 H1\nG0 X0 Y0 Z5\nG1 Z-1 F600\nG42.1 D2\n")
+        f.write("G21 G17 G90 G94 G40 G49\nT1 M6\nG43 H1\nG0 X0 Y0 Z5\nG1 Z-1 F600\n" + ("G42.1 D2\n" if comp else ""))
         buf = []
         for i in range(rows):
             y = i * 0.001
@@ -85,19 +85,26 @@ def write_program(path, n_blocks):
             if len(buf) == 10000:
                 f.write("".join(buf))
                 buf.clear()
-        f.write("".join(buf) + "G40 G1 X-10 Y-10\nM2\n")
+        f.write("".join(buf) + ("G40 G1 X-10 Y-10\n" if comp else "") + "M2\n")
     return rows * 6
 
 
 # Run in a fresh interpreter so that its peak RSS is that of one run: tc.run on a file (both
-# Paths kept) or tc.iter_run over it (chunks dropped as they come).
+# Paths kept) or tc.iter_run over it (chunks dropped as they come). The peak is the kernel's
+# VmHWM of the child's own address space (getrusage's ru_maxrss would carry the parent's
+# over the exec).
 _CHILD = r"""
-import json, resource, sys, time
+import json, sys, time
 sys.path.insert(0, sys.argv[1])
 import toolcomp as tc
 from run_bench import path_bytes
+
+def hwm():
+    with open("/proc/self/status") as f:
+        return next(int(l.split()[1]) for l in f if l.startswith("VmHWM")) / 1024
+
 tools = tc.ToolTable.parse("T1 P1 Z50 D6\n", "linuxcnc")
-base = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024
+base = hwm()
 t = time.perf_counter()
 if sys.argv[3] == "run":
     res = tc.run(sys.argv[2], tools)
@@ -108,7 +115,7 @@ else:
     blocks, columns = stream.blocks, 0
 seconds = time.perf_counter() - t
 print(json.dumps(dict(seconds=seconds, segments=segments, blocks=blocks, columns=columns, base=base,
-                      peak=resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024)))
+                      peak=hwm())))
 """
 
 
@@ -195,7 +202,7 @@ def bench_program(n, comp, tools):
           f"{t_parse / blocks * 1e9:5.0f} ns/block")
     print(f"  toolcomp run   : {t_run:7.3f} s  {blocks / t_run / 1e6:6.2f} M blocks/s  "
           f"{t_run / blocks * 1e9:5.0f} ns/block  ({len(res.path):,} segments, {compensated:,} compensated)")
-    print(f"  toolcomp total : {t_parse + t_run:7.3f} s  peak RSS so far {rss:.0f} MB; the two Paths' "
+    print(f"  toolcomp total : {t_parse + t_run:7.3f} s  peak RSS of the bench so far {rss:.0f} MB; the two Paths' "
           f"columns {(path_bytes(res.path) + path_bytes(res.nominal)) / 2**20:.0f} MB")
     if shutil.which("rs274"):
         t_rs = rs274_seconds(text)
@@ -219,15 +226,18 @@ def bench_other(label, text, blocks, dialect, tools):
 
 
 def bench_linear(n, factor, tools):
-    """Time of a program `factor` times as long, against the 1x program (no compensation)."""
-    def seconds(blocks):
-        text, _ = generate(blocks, False)
-        t_parse, prog = best_of(lambda: tc.Program.parse(text), repeat=1)
-        t_run, _ = best_of(lambda: tc.run(prog, tools=tools), repeat=1)
-        return t_parse + t_run
-    small, big = seconds(n), seconds(n * factor)
+    """Time of tc.run on a program file `factor` times as long, against the 1x file (no
+    compensation; the file is read piece by piece as it runs)."""
+    def seconds(blocks, d):
+        path = os.path.join(d, f"lin{blocks}.ngc")
+        write_program(path, blocks, comp=False)
+        t, _ = best_of(lambda: tc.run(path, tools), repeat=2 if blocks == n else 1)
+        os.unlink(path)
+        return t
+    with tempfile.TemporaryDirectory() as d:
+        small, big = seconds(n, d), seconds(n * factor, d)
     print(f"linearity      : {n * factor:,} blocks take {big / small:.1f} x the time of {n:,} "
-          f"({small:.2f} s, {big:.2f} s)")
+          f"({small:.2f} s, {big:.2f} s; tc.run on files, no compensation)")
 
 
 def bench_batch(n, tools):
