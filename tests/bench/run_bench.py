@@ -231,7 +231,7 @@ def bench_linear(n, factor, tools):
     def seconds(blocks, d):
         path = os.path.join(d, f"lin{blocks}.ngc")
         write_program(path, blocks, comp=False)
-        t, _ = best_of(lambda: tc.run(path, tools), repeat=2 if blocks == n else 1)
+        t, _ = best_of(lambda: tc.run(path, tools), repeat=2)
         os.unlink(path)
         return t
     with tempfile.TemporaryDirectory() as d:

@@ -314,3 +314,13 @@ def test_the_command_line_reports_a_too_large_program_without_reading_it(tmp_pat
                        capture_output=True, text=True, timeout=300)
     assert p.returncode in (1, 2), p.stderr
     assert "input_too_large" in p.stdout + p.stderr
+
+
+def test_a_lenient_run_keeps_the_block_before_a_line_too_long():
+    # LinuxCNC refuses a line of more than 252 characters (line 4); the blocks before it run:
+    # the rapid of line 2 and the feed move of line 3 (2 segments, ending at Z-1).
+    text = "G21 G90 G17\nG0 X0 Y0 Z5\nG1 Z-1 F100\nG1 X10 (" + "c" * 300 + ")\nM2\n"
+    res = tc.run(tc.Program.parse(text, strict=False), strict=False)
+    assert list(res.path.line) == [2, 3]
+    assert res.path.end[-1].tolist() == [0, 0, -1]
+    assert [(d.code, d.line) for d in res.diagnostics] == [("line_too_long", 4)]

@@ -253,7 +253,7 @@ Program parse(std::string_view text, std::string name, bool strict) {
                 check_path_words(prog.tokens(prog.blocks().back()), line_no);
             } catch (const ParseError& e) {
                 if (strict) throw;
-                prog.drop_last_block();
+                if (prog.size() && prog.blocks().back().line == line_no) prog.drop_last_block();  // if begun
                 prog.syntax_error = e.diagnostic();
                 break;
             }

@@ -258,7 +258,9 @@ Program PieceParser::parse(std::string_view text) {
             LineLexer(line, line_no_, prog, buffers).run();
         } catch (const ParseError& e) {
             if (strict_) throw;
-            prog.drop_last_block();
+            // The block of the failing line, if it was begun (a line refused for its length
+            // never is: the block before it stays).
+            if (prog.size() && prog.blocks().back().line == line_no_) prog.drop_last_block();
             prog.syntax_error = e.diagnostic();
             done_ = true;
         }
