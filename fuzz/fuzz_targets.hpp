@@ -7,7 +7,9 @@
 // (another exception, a sanitizer report, a crash, a hang) is a bug.
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 
@@ -40,15 +42,56 @@ Outcome ok_or_error(F&& f) {
 
 // ---- front ends -------------------------------------------------------------------------
 
-// ISO word-address front end. First byte: dialect (% 3: linuxcnc, fanuc, rockwell) and
-// strict (/ 3 even) or lenient parsing; the rest is the program text.
+// A text read in pieces of whole lines (at least `piece` bytes each, as a streamed run reads a
+// file) must give the blocks and the syntax error of the text parsed whole (both leniently);
+// a difference is a bug (std::logic_error).
+inline void same_in_pieces(std::string_view text, Dialect d, std::size_t piece) {
+    const Program whole = iso::parse(text, d, "<fuzz>", /*strict=*/false);
+    iso::PieceParser parser(d, "<fuzz>", /*strict=*/false);
+    std::size_t block = 0;
+    Program last;
+    for (std::size_t pos = 0; pos < text.size() && !parser.done();) {
+        std::size_t end = text.find('\n', std::min(text.size(), pos + piece - 1));
+        end = end == std::string_view::npos ? text.size() : end + 1;
+        last = parser.parse(text.substr(pos, end - pos));
+        pos = end;
+        for (std::size_t i = 0; i < last.size(); ++i, ++block) {
+            if (block >= whole.size()) throw std::logic_error("pieces: more blocks than the whole text");
+            const Block& a = whole.blocks()[block];
+            const Block& b = last.blocks()[i];
+            if (a.line != b.line || a.word_count != b.word_count || a.comment_count != b.comment_count ||
+                a.statement_count != b.statement_count || a.block_delete != b.block_delete)
+                throw std::logic_error("pieces: block " + std::to_string(block) + " differs");
+            const auto wa = whole.words(a), wb = last.words(b);
+            for (std::size_t k = 0; k < wa.size(); ++k)
+                if (wa[k].letter != wb[k].letter || std::memcmp(&wa[k].value, &wb[k].value, sizeof(double)) != 0 ||
+                    wa[k].column != wb[k].column || (wa[k].expr < 0) != (wb[k].expr < 0))
+                    throw std::logic_error("pieces: a word of block " + std::to_string(block) + " differs");
+        }
+    }
+    if (block != whole.size()) throw std::logic_error("pieces: fewer blocks than the whole text");
+    const auto& ea = whole.syntax_error;
+    const auto& eb = last.syntax_error;
+    if (ea.has_value() != eb.has_value() || (ea && (ea->code != eb->code || ea->pos.line != eb->pos.line ||
+                                                    ea->pos.column != eb->pos.column)))
+        throw std::logic_error("pieces: the syntax error differs");
+    if (!text.empty() && (whole.last_line != last.last_line || whole.percent_open != last.percent_open ||
+                          whole.percent_closed != last.percent_closed))
+        throw std::logic_error("pieces: the end of the text differs");
+}
+
+// ISO word-address front end. First byte: dialect (% 3: linuxcnc, fanuc, rockwell), strict
+// (/ 3 even) or lenient parsing, and (/ 6) the size of the pieces the text is also read in;
+// the rest is the program text.
 inline Outcome iso_parse(const std::uint8_t* data, std::size_t size) {
     if (size < 1) return Outcome::ok;
     static constexpr Dialect dialects[] = {Dialect::linuxcnc, Dialect::fanuc, Dialect::rockwell};
     const Dialect d = dialects[data[0] % 3];
     const bool strict = (data[0] / 3) % 2 == 0;
     const std::string_view text = as_text(data + 1, size - 1);
-    return ok_or_error([&] { (void)iso::parse(text, d, "<fuzz>", strict); });
+    const Outcome o = ok_or_error([&] { (void)iso::parse(text, d, "<fuzz>", strict); });
+    same_in_pieces(text, d, 1 + data[0] / 6);
+    return o;
 }
 
 // Heidenhain conversational front end; the last byte's low bit parses leniently.

@@ -76,7 +76,30 @@ TEST_CASE("element distance: exact against dense sampling of random lines, arcs 
         const double bound = distance_lower_bound(Swept(a), Swept(b));
         CHECK(bound <= exact + spiral + 1e-9);
         CHECK(bound <= sampled + 1e-9);
+        // Stopping at a partial bound still gives a lower bound.
+        CHECK(distance_lower_bound(Swept(a), Swept(b), 0.5 * exact) <= exact + spiral + 1e-9);
     }
+}
+
+TEST_CASE("element distance: arcs about an end of a segment (corner arcs), against sampling") {
+    std::mt19937 rng(1202);
+    std::uniform_real_distribution<double> pos(-5, 5), unit(0, 1);
+    int settled = 0;
+    for (int k = 0; k < 400; ++k) {
+        const Element2 seg = Element2::line(Vec2(pos(rng), pos(rng)), Vec2(pos(rng), pos(rng)));
+        const Vec2 c = (unit(rng) < 0.5 ? seg.p0 : seg.p1) + 1e-3 * (unit(rng) - 0.5) * Vec2(1, 1);
+        const double r = 0.5 + 2 * unit(rng), a0 = 2 * kPi * unit(rng), sweep = kPi * unit(rng);
+        const int dir = unit(rng) < 0.5 ? 1 : -1;
+        const Element2 arc = Element2::arc(c + r * Vec2(std::cos(a0), std::sin(a0)),
+                                           c + r * Vec2(std::cos(a0 + dir * sweep), std::sin(a0 + dir * sweep)), c, dir);
+        const double sampled = sampled_distance(arc, seg, 2000);
+        const double bound = distance_lower_bound(Swept(arc), Swept(seg));
+        INFO("case " << k << ": bound " << bound << ", sampled " << sampled);
+        CHECK(bound <= sampled + 1e-9);
+        CHECK(bound <= element_distance(arc, seg) + 1e-9);
+        settled += bound > r - 2e-3;
+    }
+    CHECK(settled > 50);  // the arcs that turn away from the segment are settled by the bound
 }
 
 TEST_CASE("element distance: hand-calculated cases") {

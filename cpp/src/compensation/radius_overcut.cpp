@@ -70,20 +70,22 @@ void normal_points(const Swept& a, const Vec2& dir, const Swept& other, double& 
 }
 
 
-double beyond_line(const Element2& l, const Element2& o) {
-    const Vec2 d = l.p1 - l.p0;
-    const double len = d.norm();
-    if (len == 0) return 0;
-    const double s0 = cross2(d, o.p0 - l.p0) / len, s1 = cross2(d, o.p1 - l.p0) / len;
-    return s0 * s1 > 0 ? std::min(std::fabs(s0), std::fabs(s1)) : 0.0;
+double beyond_line(const Swept& l, const Element2& o) {
+    if (l.len == 0) return 0;
+    const Vec2 d = l.e.p1 - l.e.p0;
+    const double s0 = cross2(d, o.p0 - l.e.p0), s1 = cross2(d, o.p1 - l.e.p0);
+    return s0 * s1 > 0 ? std::min(std::fabs(s0), std::fabs(s1)) / l.len : 0.0;
 }
 
 }  // namespace
 
-double distance_lower_bound(const Swept& a, const Swept& b) {
+double distance_lower_bound(const Swept& a, const Swept& b, double enough) {
     const auto rmin = [](const Swept& s) { return std::min(s.r0, s.r1); };
     const auto rmax = [](const Swept& s) { return std::max(s.r0, s.r1); };
-    if (!a.e.is_arc && !b.e.is_arc) return std::max(beyond_line(a.e, b.e), beyond_line(b.e, a.e));
+    if (!a.e.is_arc && !b.e.is_arc) {
+        const double first = beyond_line(a, b.e);
+        return first >= enough ? first : std::max(first, beyond_line(b, a.e));
+    }
     if (a.e.is_arc && b.e.is_arc) {
         const double D = (a.e.c - b.e.c).norm();
         return std::max({D - rmax(a) - rmax(b), rmin(a) - D - rmax(b), rmin(b) - D - rmax(a)});
@@ -91,11 +93,29 @@ double distance_lower_bound(const Swept& a, const Swept& b) {
     const Swept& arc = a.e.is_arc ? a : b;
     const Element2& line = a.e.is_arc ? b.e : a.e;
     const double far = std::sqrt(std::max((line.p0 - arc.e.c).squaredNorm(), (line.p1 - arc.e.c).squaredNorm()));
-    return std::max(segment_point(line, arc.e.c) - rmax(arc), rmin(arc) - far);
+    double bound = segment_point(line, arc.e.c) - rmax(arc);
+    if (bound >= enough) return bound;
+    bound = std::max(bound, rmin(arc) - far);
+    if (bound >= enough) return bound;
+    // An arc about an end E of the segment (a corner arc about its programmed corner) that
+    // turns away from the segment: seen along the segment from E, every direction of the arc
+    // points backwards, so E is the nearest point of the segment to every point of the arc
+    // moved by E - centre. The largest component along the segment is at an end of the arc,
+    // or where the arc points along it.
+    for (int end = 0; end < 2; ++end) {
+        const Vec2& E = end ? line.p1 : line.p0;
+        const Vec2 along = (end ? line.p0 : line.p1) - E;
+        if (arc.u.dot(along) <= 0 && arc.w.dot(along) <= 0 && !on_arc(arc, arc.e.c + along))
+            bound = std::max(bound, rmin(arc) - (arc.e.c - E).norm());
+    }
+    return bound;
 }
 
 Swept::Swept(const Element2& el) : e(el) {
-    if (!e.is_arc) return;
+    if (!e.is_arc) {
+        len = (e.p1 - e.p0).norm();
+        return;
+    }
     u = e.p0 - e.c;
     w = e.p1 - e.c;
     r0 = u.norm();
@@ -130,7 +150,7 @@ double element_distance(const Swept& a, const Swept& b) {
 
 void OvercutWatch::check(Comp& c, const Prog& p) const {
     const double closest = c.r - tolerance_ - p.slack - p.e.spiral - c.e.spiral;
-    if (distance_lower_bound(c.e, p.e) >= closest) return;  // cannot come closer: no warning from it
+    if (distance_lower_bound(c.e, p.e, closest) >= closest) return;  // cannot come closer: no warning from it
     const double d = element_distance(c.e, p.e);
     const double margin = d - closest;
     if (margin < c.worst) {

@@ -4,6 +4,7 @@
 // before and after it. Where the tool centre comes closer to that contour than the radius
 // (less the tolerance), the path cuts into the part: one warning per compensated element,
 // with its smallest distance. Cheap: each element meets at most 2·neighbours + 2 others.
+#include <cmath>
 #include <cstddef>
 #include <deque>
 #include <vector>
@@ -20,6 +21,7 @@ struct Swept {
     Vec2 u = Vec2::Zero(), w = Vec2::Zero();
     double r0 = 0, r1 = 0, spiral = 0;  // spiral: |r1 - r0|
     double sweep = 0;                   // worked out for spirals only (else 0)
+    double len = 0;                     // a line's length
     bool full = false, major = false;
     explicit Swept(const Element2& e);
 };
@@ -31,8 +33,9 @@ inline double element_distance(const Element2& a, const Element2& b) { return el
 // A cheap lower bound of that distance (<= 0 when nothing is known), without angles: the
 // other element beyond a line's supporting line, a segment outside or inside an arc's
 // circle, two arcs' circles apart or one within the other (an arc lies within the ring of
-// its start and end radii). Most pairs the watch meets are settled by it.
-double distance_lower_bound(const Swept& a, const Swept& b);
+// its start and end radii), an arc about an end of a segment turning away from it. Most
+// pairs the watch meets are settled by it. It stops at the first partial bound >= `enough`.
+double distance_lower_bound(const Swept& a, const Swept& b, double enough = INFINITY);
 
 class OvercutWatch {
 public:
