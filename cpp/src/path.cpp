@@ -33,23 +33,30 @@ void Path::reserve(std::size_t n) {
 }
 
 void Path::push(const Motion& m) {
-    kind.push_back(static_cast<std::uint8_t>(m.kind));
-    put3(start, m.start * m.unit);
-    put3(end, m.end * m.unit);
-    put3(center, m.center * m.unit);
-    abc.push(m.abc[0], m.abc[1], m.abc[2]);
-    put3(tool_offset, m.tool_offset * m.unit);
+    // Everything is read from the Motion first and the byte columns are written last: a byte
+    // store may alias anything, so after one the compiler reloads what it had in registers.
+    const double u = m.unit;
     const Vec3 n = m.surface.active() ? Vec3(m.surface.normal.normalized()) : m.surface.normal;
+    const auto k = static_cast<std::uint8_t>(m.kind);
+    const auto pl = static_cast<std::uint8_t>(m.plane);
+    const std::int8_t sd = m.radius.side;
+    const std::uint8_t gen = m.generated ? 1 : 0;
+    put3(start, m.start * u);
+    put3(end, m.end * u);
+    put3(center, m.center * u);
+    put3(tool_offset, m.tool_offset * u);
+    abc.push(m.abc[0], m.abc[1], m.abc[2]);
     normal.push(n.x(), n.y(), n.z());
     tool_axis.push(m.tool_axis.x(), m.tool_axis.y(), m.tool_axis.z());
     line.push_back(m.line);
     tool.push_back(m.tool);
     turns.push_back(m.turns);
     feed.push_back(m.feed);
-    side.push_back(m.radius.side);
-    plane.push_back(static_cast<std::uint8_t>(m.plane));
-    generated.push_back(m.generated ? 1 : 0);
     file.push(m.file);
+    kind.push_back(k);
+    side.push_back(sd);
+    plane.push_back(pl);
+    generated.push_back(gen);
 }
 
 Motion Path::segment(std::size_t i) const {

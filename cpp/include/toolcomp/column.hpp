@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstring>
 #include <new>
 #include <type_traits>
 #include <vector>
@@ -39,7 +40,7 @@ using Column = std::vector<T, ColumnAllocator<T>>;
 
 // K values per row that are usually the same on every row (rotary axes, surface normals,
 // tool axis, the file a segment comes from): nothing is stored while every row equals
-// `fill`; the first row that differs (bit for bit, so NaN equals NaN) writes out the rows
+// `fill`; the first row that differs (bit for bit, except that NaN equals NaN) writes out the rows
 // before it and from then on every row is stored. 72 of the Path's 192 bytes per segment on
 // ordinary programs.
 template <class T, int K>
@@ -59,18 +60,11 @@ public:
     }
     void reserve(std::size_t rows) { reserve_ = rows; }
     void push(const T* row) {
-        if (uniform()) {
-            bool same_row = true;
-            for (int k = 0; k < K; ++k) same_row = same_row && same(row[k], fill_[k]);
-            if (same_row) {
-                ++n_;
-                return;
-            }
-            data_.reserve(K * std::max(reserve_, n_ + 1));
-            for (std::size_t i = 0; i < n_; ++i) data_.insert(data_.end(), fill_, fill_ + K);
+        if (uniform() && std::memcmp(row, fill_, sizeof fill_) == 0) {  // the common case, inline
+            ++n_;
+            return;
         }
-        data_.insert(data_.end(), row, row + K);
-        ++n_;
+        push_stored(row);
     }
     void push(T x, T y, T z) requires(K == 3) {
         const T v[3] = {x, y, z};
@@ -84,6 +78,20 @@ private:
             return a == b ? (a != 0 || std::signbit(a) == std::signbit(b)) : (a != a && b != b);
         else
             return a == b;
+    }
+    [[gnu::noinline]] void push_stored(const T* row) {
+        if (uniform()) {
+            bool same_row = true;  // also a NaN of another sign or payload
+            for (int k = 0; k < K; ++k) same_row = same_row && same(row[k], fill_[k]);
+            if (same_row) {
+                ++n_;
+                return;
+            }
+            data_.reserve(K * std::max(reserve_, n_ + 1));
+            for (std::size_t i = 0; i < n_; ++i) data_.insert(data_.end(), fill_, fill_ + K);
+        }
+        data_.insert(data_.end(), row, row + K);
+        ++n_;
     }
     T fill_[K];
     std::size_t n_ = 0, reserve_ = 0;
