@@ -1,4 +1,5 @@
 #include "toolcomp/dialects/heidenhain/lexer.hpp"
+#include "toolcomp/program/decimal.hpp"
 #include "toolcomp/program/text.hpp"
 #include "words.hpp"
 
@@ -152,9 +153,7 @@ private:
         if (!num.empty()) {
             if (num.front() == '.') num.insert(num.begin(), '0');
             double v = 0;
-            auto r = std::from_chars(num.data(), num.data() + num.size(), v);
-            if (r.ec != std::errc() || r.ptr != num.data() + num.size())
-                fail("bad_number_format", "Bad number '" + num + "'", t.column);
+            if (!parse_decimal(num, v)) fail("bad_number_format", "Bad number '" + num + "'", t.column);
             t.value = sign * v;
             t.has_value = true;
         } else if (have_sign) {

@@ -1,4 +1,5 @@
 #include "toolcomp/dialects/iso/lexer.hpp"
+#include "toolcomp/program/decimal.hpp"
 
 #include "line_lexer.hpp"
 #include "toolcomp/program/text.hpp"
@@ -213,8 +214,7 @@ double LineLexer::number() {
         fail_at("bad_number_format", "bad number format (trailing characters) parsing '" + std::string(text) + "'", start);
     if (!digits) fail_at("bad_number_format", "bad number format (conversion failed) parsing '" + std::string(text) + "'", start);
     double v = 0;
-    auto r = std::from_chars(text.data(), text.data() + text.size(), v);
-    if (r.ec != std::errc() || !std::isfinite(v))
+    if (!parse_decimal(text, v) || !std::isfinite(v))
         fail_at("bad_number_format", "bad number format (conversion failed) parsing '" + std::string(text) + "'", start);
     return negative ? -v : v;
 }

@@ -1,0 +1,40 @@
+#pragma once
+// Decimal text (digits with at most one point; no sign, no exponent) to double, rounded as
+// std::from_chars rounds it (to the nearest double). Up to 15 digits take the exact fast
+// path: the digits as an integer (below 2^53, so exact) divided by an exact power of ten is
+// one correctly rounded division. Longer numbers go to from_chars.
+#include <charconv>
+#include <cstdint>
+#include <string_view>
+#include <system_error>
+
+namespace toolcomp {
+
+// False when the text is not such a number (or from_chars refuses it).
+inline bool parse_decimal(std::string_view s, double& out) {
+    static constexpr double kPow10[16] = {1e0, 1e1, 1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                          1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
+    std::uint64_t m = 0;
+    int digits = 0, frac = -1;
+    for (const char c : s) {
+        if (c == '.') {
+            if (frac >= 0) return false;
+            frac = 0;
+        } else if (c >= '0' && c <= '9') {
+            if (++digits > 15) break;
+            m = m * 10 + static_cast<std::uint64_t>(c - '0');
+            if (frac >= 0) ++frac;
+        } else {
+            return false;
+        }
+    }
+    if (digits == 0) return false;
+    if (digits <= 15) {
+        out = frac > 0 ? static_cast<double>(m) / kPow10[frac] : static_cast<double>(m);
+        return true;
+    }
+    const auto r = std::from_chars(s.data(), s.data() + s.size(), out);
+    return r.ec == std::errc() && r.ptr == s.data() + s.size();
+}
+
+}  // namespace toolcomp
