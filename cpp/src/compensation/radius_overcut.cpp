@@ -165,7 +165,8 @@ void OvercutWatch::programmed(const Element2& e, int line) {
     prog_.push_back({Swept(e), line, 0.0});
     ++count_;
     for (auto& c : comp_) check(c, prog_.back());
-    while (prog_.size() > static_cast<std::size_t>(neighbours_) + 2) prog_.pop_front();
+    if (prog_.size() > static_cast<std::size_t>(neighbours_) + 2)
+        prog_.erase(prog_.begin(), prog_.end() - (neighbours_ + 2));
 }
 
 void OvercutWatch::tangent_slack(double slack) {
@@ -181,8 +182,9 @@ void OvercutWatch::compensated(const Element2& e, int line, double r) {
 }
 
 void OvercutWatch::report(std::vector<Diagnostic>& out, double mm, bool all) {
-    while (!comp_.empty() && (all || count_ - comp_.front().seen >= static_cast<std::size_t>(neighbours_))) {
-        const Comp& c = comp_.front();
+    std::size_t done = 0;
+    for (; done < comp_.size() && (all || count_ - comp_[done].seen >= static_cast<std::size_t>(neighbours_)); ++done) {
+        const Comp& c = comp_[done];
         if (c.worst < 0) {
             char buf[256];
             std::snprintf(buf, sizeof buf,
@@ -191,8 +193,8 @@ void OvercutWatch::report(std::vector<Diagnostic>& out, double mm, bool all) {
                           c.dist * mm, c.near_line, c.r * mm, (c.r - c.dist) * mm);
             out.push_back({"comp_overcut", Severity::warning, buf, {c.line, 0}});
         }
-        comp_.pop_front();
     }
+    comp_.erase(comp_.begin(), comp_.begin() + static_cast<std::ptrdiff_t>(done));
     if (all) {
         prog_.clear();
         count_ = 0;

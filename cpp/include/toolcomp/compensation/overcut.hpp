@@ -6,7 +6,6 @@
 // with its smallest distance. Cheap: each element meets at most 2·neighbours + 2 others.
 #include <cmath>
 #include <cstddef>
-#include <deque>
 #include <vector>
 
 #include "toolcomp/geometry/element.hpp"
@@ -75,8 +74,9 @@ private:
 
     int neighbours_ = 0;
     double tolerance_ = 0;
-    std::deque<Prog> prog_;
-    std::deque<Comp> comp_;
+    // A few elements each: vectors erased at the front (no allocation once they have grown).
+    std::vector<Prog> prog_;
+    std::vector<Comp> comp_;
     std::size_t count_ = 0;
 };
 
