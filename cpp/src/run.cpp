@@ -177,9 +177,13 @@ Result run_file(const std::string& path, std::optional<Dialect> dialect, const T
     ProgramSource src(path, dialect_of_file(path, dialect), limits, kPieceBytes, /*limit_pieces=*/true);
     PipelineHooks hooks;
     hooks.next_piece = src.next_piece();
-    Result res = run_main(src.first(), tools, options, hooks, src.estimated_blocks());
-    res.blocks = src.blocks();
-    return res;
+    try {
+        Result res = run_main(src.first(), tools, options, hooks, src.estimated_blocks());
+        res.blocks = src.blocks();
+        return res;
+    } catch (const ProgramSource::InputError& e) {
+        std::rethrow_exception(e.error);
+    }
 }
 
 }  // namespace toolcomp

@@ -134,6 +134,8 @@ void PathStream::produce() {
             blocks = src.blocks();
         }
     } catch (const Cancelled&) {
+    } catch (const ProgramSource::InputError& e) {
+        error = e.error;
     } catch (...) {
         error = std::current_exception();
     }

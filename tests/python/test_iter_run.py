@@ -151,6 +151,18 @@ def test_line_limits_in_later_pieces(tmp_path):
     with pytest.raises(tc.ParseError) as w:
         tc.run(f, TOOLS, max_line_length=1000)
     assert (w.value.code, w.value.line) == ("line_too_long", 31)
+    # Whatever strict says, as when the file is read whole: the run stops with the error.
+    with pytest.raises(tc.ParseError) as w:
+        tc.run(f, TOOLS, max_line_length=1000, strict=False)
+    assert (w.value.code, w.value.line) == ("line_too_long", 31)
+    with pytest.raises(tc.ParseError) as w:
+        list(tc.iter_run(f, TOOLS, piece_bytes=100, max_line_length=1000, strict=False))
+    assert (w.value.code, w.value.line) == ("line_too_long", 31)
+    # A program read whole (one that steers) stops the same way, before it runs.
+    steer = write(tmp_path, "long_o.ngc", "\n".join(text[:3] + ["o1 if [1]", "o1 endif"] + text[3:]) + "\n")
+    with pytest.raises(tc.ParseError) as w:
+        tc.run(steer, TOOLS, max_line_length=1000, strict=False)
+    assert (w.value.code, w.value.line) == ("line_too_long", 33)
 
 
 def test_missing_file_and_bad_chunk_fail_at_once(tmp_path):

@@ -59,7 +59,12 @@ std::function<const Program*()> ProgramSource::next_piece() {
     if (!parser_) return {};
     return [this]() -> const Program* {
         if (check_) check_();
-        std::optional<Program> next = ahead_.get();  // a read error of the piece comes out here
+        std::optional<Program> next;
+        try {
+            next = ahead_.get();  // a read error of the piece comes out here
+        } catch (const Error&) {
+            throw InputError{std::current_exception()};
+        }
         if (!next) return nullptr;
         current_ = std::move(*next);
         blocks_ += current_.size();

@@ -5,6 +5,7 @@
 // read and parsed in another thread while the run works through the current one) whatever
 // its length.
 #include <cstdint>
+#include <exception>
 #include <functional>
 #include <future>
 #include <optional>
@@ -18,6 +19,13 @@ namespace toolcomp {
 
 class ProgramSource {
 public:
+    // A piece that cannot be read (a line too long, a read error) stops the run whatever
+    // RunOptions::strict says, as it does when the file is read whole before the run: it is
+    // thrown past the pipeline's lenient handling as this, and `error` is rethrown above it.
+    struct InputError {
+        std::exception_ptr error;
+    };
+
     // A file larger than `limits.max_bytes` is refused before it is read (ParseError
     // "input_too_large") when it would be read whole, and with `limit_pieces` also when it is
     // read piece by piece. `check` is called before each piece (it may throw to stop).
