@@ -74,6 +74,14 @@ private:
     bool tripped_ = false;
 };
 
+// The compensation stages know a move's file by its index only (Motion::file): the name,
+// for a position that has none yet. Index 0 is the main program ("").
+bool name_file(SourcePos& pos, const std::vector<std::string>& files) {
+    if (!pos.file.empty() || pos.file_index <= 0 || static_cast<std::size_t>(pos.file_index) >= files.size()) return false;
+    pos.file = files[static_cast<std::size_t>(pos.file_index)];
+    return true;
+}
+
 sinumerik::InterpretOptions sinumerik_options(const RunOptions& o, const ControlProfile& p) {
     sinumerik::InterpretOptions s;
     s.lengths.tool_length_const = p.tool_length_const;
@@ -136,10 +144,15 @@ void run_pipeline(const Program& program, const ToolTable* tools, const RunOptio
         else
             dialect_not_supported(program.dialect);
     } catch (const Error& e) {
-        if (options.strict) throw;
+        if (options.strict) {
+            SourcePos at = e.pos();
+            if (name_file(at, out.files)) throw_at(e, at);
+            throw;
+        }
         tee.finish();
         diagnostics.push_back(e.diagnostic());
     }
+    for (Diagnostic& d : diagnostics) name_file(d.pos, out.files);
 }
 
 namespace {

@@ -184,3 +184,19 @@ def test_an_error_in_a_subprogram_file_names_that_file(tmp_path):
     with pytest.raises(tc.ProgramError) as e:
         run("G21\n#1=1/0\nM30\n")
     assert e.value.file is None  # the main program
+
+
+def test_a_compensation_error_in_a_subprogram_file_names_that_file(tmp_path):
+    # G41 with r = 5 (D10) onto a CCW arc of R2 in O3000.nc: the tool does not fit inside
+    # it. Fanuc's alarm comes at the arc's block: line 3 of O3000.nc.
+    (tmp_path / "O3000.nc").write_text("O3000\nG1 X20 Y0\nG3 X24 Y0 R2\nG1 X40\nM99\n")
+    main = tmp_path / "main.nc"
+    main.write_text("G21 G90 G40 G17\nT1 M6\nG0 X-10 Y-10\nG41 D1 G1 X0 Y0 F100\nM98 P3000\nG40 G0 X50 Y-10\nM30\n")
+    tools = tc.ToolTable.parse("T1 P1 D10\n", "linuxcnc")
+    sub = str(tmp_path / "O3000.nc")
+    with pytest.raises(tc.CompensationError) as e:
+        tc.run(str(main), tools, search_path=[str(tmp_path)])
+    assert (e.value.code, e.value.line, e.value.file) == ("comp_arc_too_small", 3, sub)
+    assert f"line 3 of {sub}" in str(e.value)
+    res = tc.run(str(main), tools, search_path=[str(tmp_path)], strict=False)
+    assert [(d.code, d.line, d.file) for d in res.diagnostics] == [("comp_arc_too_small", 3, sub)]

@@ -355,3 +355,16 @@ def test_a_syntax_error_in_a_subroutine_file_is_reported_at_the_call(tmp_path):
         tc.run(tc.Program.read(str(main)), search_path=[str(tmp_path)])
     assert (e.value.line, e.value.file) == (3, None)
     assert str(e.value).startswith("bad number format (trailing characters) parsing '1..2'")
+
+
+def test_compensation_warnings_in_a_subroutine_file_name_that_file(tmp_path):
+    # The inside corner onto a 2 mm step (r = 5) cuts into the contour: LinuxCNC cuts it,
+    # toolcomp warns at the step's block, line 4 of cut.ngc. The gouge error that follows is
+    # LinuxCNC's, at the main program's line of the call (3).
+    (tmp_path / "cut.ngc").write_text("o<cut> sub\nG1 X0 Y0 F100\nX30\nY-2\nX60\no<cut> endsub\nM2\n")
+    main = tmp_path / "main.ngc"
+    main.write_text("G21 G0 X-10 Y5\nG41.1 D10\no<cut> call\nG40 G0 X70 Y10\nM2\n")
+    res = tc.run(str(main), search_path=[str(tmp_path)], strict=False)
+    cut = str(tmp_path / "cut.ngc")
+    assert [(d.code, d.line, d.file) for d in res.diagnostics] == [
+        ("comp_overcut", 4, cut), ("comp_overcut", 4, cut), ("comp_gouge", 3, None)]

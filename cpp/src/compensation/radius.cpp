@@ -20,7 +20,23 @@ Vec3 RadiusCompensation::with_plane(Vec3 v, const Vec2& ab) const {
 }
 
 void RadiusCompensation::fail(const char* code, const std::string& msg, int line) const {
-    throw CompensationError(code, msg, {line, 0});
+    throw CompensationError(code, msg, {line, 0, {}, file_of(line)});
+}
+
+int RadiusCompensation::file_of(int line) const {
+    int file = -1;
+    auto seen = [&](int l, int f) {
+        if (l != line) return true;
+        if (file >= 0 && file != f) return false;
+        file = f;
+        return true;
+    };
+    if (!seen(in_line_, in_file_)) return -1;
+    for (const auto& h : queue_)
+        if (!seen(h.m.line, h.m.file)) return -1;
+    for (const auto& e : window_)
+        if (!seen(e.m.line, e.m.file)) return -1;
+    return file;
 }
 
 // ---- entry --------------------------------------------------------------------------------
@@ -111,6 +127,8 @@ void RadiusCompensation::rescale(double new_unit) {
 }
 
 void RadiusCompensation::push(const Motion& m) {
+    in_line_ = m.line;
+    in_file_ = m.file;
     rescale(m.unit);
     checks_ = m.radius.checks;
     lookahead_ = m.radius.lookahead;

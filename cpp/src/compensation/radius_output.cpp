@@ -12,7 +12,7 @@ namespace toolcomp {
 using namespace radius_math;
 
 void RadiusCompensation::warn(const char* code, const std::string& msg, int line) {
-    diags_.push_back({code, Severity::warning, msg, {line, 0}});
+    diags_.push_back({code, Severity::warning, msg, {line, 0, {}, file_of(line)}});
 }
 
 namespace {
@@ -33,7 +33,7 @@ void RadiusCompensation::watch_released(const Emitted& e) {
     const Vec2 s = plane2(m.start), x = plane2(m.end);
     const Element2 el = m.is_arc() ? Element2::arc(s, x, plane2(m.center), m.kind == MotionKind::arc_ccw ? 1 : -1, m.turns)
                                    : Element2::line(s, x);
-    if (el.length() > tol::length) overcut_.compensated(el, m.line, m.radius.radius);
+    if (el.length() > tol::length) overcut_.compensated(el, m.line, m.file, m.radius.radius);
 }
 
 void RadiusCompensation::emit(const Held& h) {

@@ -174,9 +174,9 @@ void OvercutWatch::tangent_slack(double slack) {
     for (std::size_t i = n >= 2 ? n - 2 : 0; i < n; ++i) prog_[i].slack = std::max(prog_[i].slack, slack);
 }
 
-void OvercutWatch::compensated(const Element2& e, int line, double r) {
+void OvercutWatch::compensated(const Element2& e, int line, int file, double r) {
     if (neighbours_ <= 0 || prog_.empty()) return;
-    Comp c{Swept(e), line, r, count_, std::numeric_limits<double>::infinity(), 0, 0};
+    Comp c{Swept(e), line, file, r, count_, std::numeric_limits<double>::infinity(), 0, 0};
     for (const auto& p : prog_) check(c, p);
     comp_.push_back(c);
 }
@@ -191,7 +191,7 @@ void OvercutWatch::report(std::vector<Diagnostic>& out, double mm, bool all) {
                           "Overcut: the tool centre comes %.6f mm from the programmed contour of line %d, "
                           "closer than the tool radius %.6f mm (%.6f mm into the part)",
                           c.dist * mm, c.near_line, c.r * mm, (c.r - c.dist) * mm);
-            out.push_back({"comp_overcut", Severity::warning, buf, {c.line, 0}});
+            out.push_back({"comp_overcut", Severity::warning, buf, {c.line, 0, {}, c.file}});
         }
     }
     comp_.erase(comp_.begin(), comp_.begin() + static_cast<std::ptrdiff_t>(done));

@@ -48,8 +48,9 @@ public:
     // The joint before the last programmed element was taken as tangent although it turns:
     // the control's tangent rule moves the tool up to `slack` closer to both its elements.
     void tangent_slack(double slack);
-    // A tool-centre element of radius r, of source line `line` (in path order).
-    void compensated(const Element2& e, int line, double r);
+    // A tool-centre element of radius r, of source line `line` of file `file` (Motion::file),
+    // in path order.
+    void compensated(const Element2& e, int line, int file, double r);
     // Warnings for the elements whose neighbours have all been seen; `all`: compensation
     // ends, report every pending one and forget the contour. `mm` = mm per program unit.
     void report(std::vector<Diagnostic>& out, double mm, bool all);
@@ -64,6 +65,7 @@ private:
     struct Comp {
         Swept e;
         int line;
+        int file;
         double r;
         std::size_t seen;  // programmed elements counted when it arrived
         double worst;      // smallest distance - (r - allowance) so far

@@ -16,6 +16,9 @@ struct SourcePos {
     int line = 0;    // 1-based; 0 = not tied to a source line
     int column = 0;  // 1-based; 0 = whole line
     std::string file;  // the called program or subprogram file the line is in; "" = the main program
+    // Set by stages that know only the file's index (Motion::file) and not its name: the run
+    // puts the name of files[file_index] in `file` (-1: not known).
+    int file_index = -1;
 };
 
 struct Diagnostic {
@@ -63,5 +66,8 @@ struct ToolTableError : Error {
     ToolTableError(std::string code, const std::string& msg, SourcePos pos = {})
         : Error(ErrorKind::tool_table, std::move(code), msg, pos) {}
 };
+
+// Throws an error of e's kind, code and message at `pos`.
+[[noreturn]] void throw_at(const Error& e, const SourcePos& pos);
 
 }  // namespace toolcomp

@@ -91,13 +91,7 @@ void Interp::run() {
         // the main program's line of the outermost call.
         // (A file that cannot be read or parsed fails at the call itself.)
         if (prog_.dialect != Dialect::linuxcnc || (frames_.size() < 2 && e.file().empty())) throw;
-        const SourcePos at{frames_.size() >= 2 ? frames_[1].call_line : line_, 0};
-        switch (e.kind()) {
-            case ErrorKind::parse: throw ParseError(e.code(), e.what(), at);
-            case ErrorKind::compensation: throw CompensationError(e.code(), e.what(), at);
-            case ErrorKind::tool_table: throw ToolTableError(e.code(), e.what(), at);
-            default: throw ProgramError(e.code(), e.what(), at);
-        }
+        throw_at(e, SourcePos{frames_.size() >= 2 ? frames_[1].call_line : line_, 0});
     }
 }
 
