@@ -48,7 +48,6 @@ private:
 PathStream::PathStream(std::string path, std::optional<Dialect> dialect, std::optional<ToolTable> tools,
                        StreamOptions options)
     : path_(std::move(path)), tools_(std::move(tools)), options_(std::move(options)) {
-    if (options_.chunk == 0) throw ProgramError("bad_chunk", "A stream's chunk must hold at least one segment");
     dialect_ = dialect_of_file(path_, dialect);
     ::close(open_program_file(path_));  // a missing or unreadable file fails here, not in the stream
     start();
@@ -56,13 +55,13 @@ PathStream::PathStream(std::string path, std::optional<Dialect> dialect, std::op
 
 PathStream::PathStream(std::shared_ptr<const Program> program, std::optional<ToolTable> tools, StreamOptions options)
     : program_(std::move(program)), tools_(std::move(tools)), options_(std::move(options)) {
-    if (options_.chunk == 0) throw ProgramError("bad_chunk", "A stream's chunk must hold at least one segment");
     start();
 }
 
 PathStream::~PathStream() { close(); }
 
 void PathStream::start() {
+    if (options_.chunk == 0) throw ProgramError("bad_chunk", "A stream's chunk must hold at least one segment");
     thread_ = std::thread([this] { produce(); });
 }
 
