@@ -33,7 +33,7 @@ void RadiusCompensation::watch_released(const Emitted& e) {
     const Vec2 s = plane2(m.start), x = plane2(m.end);
     const Element2 el = m.is_arc() ? Element2::arc(s, x, plane2(m.center), m.kind == MotionKind::arc_ccw ? 1 : -1, m.turns)
                                    : Element2::line(s, x);
-    if (el.length() > tol::length) overcut_.compensated(el, m.line, m.file, m.radius.radius);
+    overcut_.compensated(el, m.line, m.file, m.radius.radius);
 }
 
 void RadiusCompensation::emit(const Held& h) {

@@ -175,7 +175,7 @@ void OvercutWatch::tangent_slack(double slack) {
 }
 
 void OvercutWatch::compensated(const Element2& e, int line, int file, double r) {
-    if (neighbours_ <= 0 || prog_.empty()) return;
+    if (neighbours_ <= 0 || prog_.empty() || e.length() <= tol::length) return;
     Comp c{Swept(e), line, file, r, count_, std::numeric_limits<double>::infinity(), 0, 0};
     for (const auto& p : prog_) check(c, p);
     comp_.push_back(c);

@@ -49,7 +49,7 @@ public:
     // the control's tangent rule moves the tool up to `slack` closer to both its elements.
     void tangent_slack(double slack);
     // A tool-centre element of radius r, of source line `line` of file `file` (Motion::file),
-    // in path order.
+    // in path order (elements of no length are left out).
     void compensated(const Element2& e, int line, int file, double r);
     // Warnings for the elements whose neighbours have all been seen; `all`: compensation
     // ends, report every pending one and forget the contour. `mm` = mm per program unit.

@@ -17,7 +17,7 @@
 #include <optional>
 #include <vector>
 
-#include "toolcomp/compensation/overcut.hpp"
+#include "toolcomp/compensation/background_watch.hpp"
 #include "toolcomp/compensation/profile.hpp"
 #include "toolcomp/geometry/element.hpp"
 #include "toolcomp/motion/motion.hpp"
@@ -32,6 +32,9 @@ public:
     void push(const Motion& m) override;
     void control(const ControlEvent& e) override;
     void finish() override;
+    // The overcut watch's warnings so far into the diagnostics (finish() does it; after an
+    // error, the run does).
+    void settle() { overcut_.settle(diags_); }
 
 private:
     // A move held back until the next plane move settles its end point.
@@ -127,7 +130,7 @@ private:
     bool exit_when_behind_ = false;  // KONT: the cancel move decides between the two exits
     int exit_line_ = 0;
     int in_line_ = 0, in_file_ = 0;  // the move being pushed
-    OvercutWatch overcut_;          // tool centre against the neighbouring programmed contour
+    BackgroundWatch overcut_;       // tool centre against the neighbouring programmed contour
     std::vector<Emitted> window_;   // emitted, not yet released (look-ahead for bottlenecks)
     bool have_last_ = false;
     Vec3 last_ = Vec3::Zero();      // end of the last emitted move (nose centre)

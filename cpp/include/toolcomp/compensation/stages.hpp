@@ -22,6 +22,7 @@ public:
     void push(const Motion& m) override { radius_.push(m); }
     void control(const ControlEvent& e) override { radius_.control(e); }
     void finish() override { radius_.finish(); }
+    void settle() { radius_.settle(); }
 
 private:
     SurfaceCompensation surface_;  // after the radius stage
