@@ -112,6 +112,8 @@ double distance_lower_bound(const Swept& a, const Swept& b, double enough) {
 }
 
 Swept::Swept(const Element2& el) : e(el) {
+    lo = e.p0.cwiseMin(e.p1);
+    hi = e.p0.cwiseMax(e.p1);
     if (!e.is_arc) {
         len = (e.p1 - e.p0).norm();
         return;
@@ -127,6 +129,14 @@ Swept::Swept(const Element2& el) : e(el) {
     full = e.turns > 0 || (along > 0 && std::fabs(turn) <= 1e-12 * along);
     major = !full && turn < 0;
     if (spiral > 1e-9 * (1 + r0)) sweep = e.sweep();
+    // The points where the arc runs along an axis, where it passes them (a spiral: those of
+    // its larger radius, all four: it is within the ring of its start and end radii).
+    const double rm = std::max(r0, r1);
+    for (const Vec2 d : {Vec2(1, 0), Vec2(-1, 0), Vec2(0, 1), Vec2(0, -1)}) {
+        if (sweep == 0 && !on_arc(*this, e.c + d)) continue;
+        lo = lo.cwiseMin(e.c + rm * d);
+        hi = hi.cwiseMax(e.c + rm * d);
+    }
 }
 
 // The smallest distance is at an end point of one element, at a crossing, or between two
@@ -150,6 +160,7 @@ double element_distance(const Swept& a, const Swept& b) {
 
 void OvercutWatch::check(Comp& c, const Prog& p) const {
     const double closest = c.r - tolerance_ - p.slack - p.e.spiral - c.e.spiral;
+    if (closest <= 0 || box_gap2(c.e, p.e) >= closest * closest) return;  // apart: no warning from it
     if (distance_lower_bound(c.e, p.e, closest) >= closest) return;  // cannot come closer: no warning from it
     const double d = element_distance(c.e, p.e);
     const double margin = d - closest;
@@ -162,11 +173,13 @@ void OvercutWatch::check(Comp& c, const Prog& p) const {
 
 void OvercutWatch::programmed(const Element2& e, int line) {
     if (neighbours_ <= 0) return;
+    // The last neighbours + 2 are kept: the ones before them are dropped in bulk now and then
+    // (not one at a time from the front of the vector).
+    const std::size_t keep = static_cast<std::size_t>(neighbours_) + 2;
+    if (prog_.size() >= keep + 32) prog_.erase(prog_.begin(), prog_.end() - static_cast<std::ptrdiff_t>(keep - 1));
     prog_.push_back({Swept(e), line, 0.0});
     ++count_;
-    for (auto& c : comp_) check(c, prog_.back());
-    if (prog_.size() > static_cast<std::size_t>(neighbours_) + 2)
-        prog_.erase(prog_.begin(), prog_.end() - (neighbours_ + 2));
+    for (std::size_t i = comp_head_; i < comp_.size(); ++i) check(comp_[i], prog_.back());
 }
 
 void OvercutWatch::tangent_slack(double slack) {
@@ -176,13 +189,14 @@ void OvercutWatch::tangent_slack(double slack) {
 
 void OvercutWatch::compensated(const Element2& e, int line, int file, double r) {
     if (neighbours_ <= 0 || prog_.empty() || e.length() <= tol::length) return;
-    Comp c{Swept(e), line, file, r, count_, std::numeric_limits<double>::infinity(), 0, 0};
-    for (const auto& p : prog_) check(c, p);
-    comp_.push_back(c);
+    comp_.push_back({Swept(e), line, file, r, count_, std::numeric_limits<double>::infinity(), 0, 0});
+    Comp& c = comp_.back();
+    const std::size_t keep = static_cast<std::size_t>(neighbours_) + 2;
+    for (std::size_t i = prog_.size() > keep ? prog_.size() - keep : 0; i < prog_.size(); ++i) check(c, prog_[i]);
 }
 
 void OvercutWatch::report(std::vector<Diagnostic>& out, double mm, bool all) {
-    std::size_t done = 0;
+    std::size_t done = comp_head_;
     for (; done < comp_.size() && (all || count_ - comp_[done].seen >= static_cast<std::size_t>(neighbours_)); ++done) {
         const Comp& c = comp_[done];
         if (c.worst < 0) {
@@ -194,7 +208,11 @@ void OvercutWatch::report(std::vector<Diagnostic>& out, double mm, bool all) {
             out.push_back({"comp_overcut", Severity::warning, buf, {c.line, 0, {}, c.file}});
         }
     }
-    comp_.erase(comp_.begin(), comp_.begin() + static_cast<std::ptrdiff_t>(done));
+    comp_head_ = done;
+    if (comp_head_ == comp_.size() || comp_head_ >= 32) {
+        comp_.erase(comp_.begin(), comp_.begin() + static_cast<std::ptrdiff_t>(comp_head_));
+        comp_head_ = 0;
+    }
     if (all) {
         prog_.clear();
         count_ = 0;
@@ -213,7 +231,7 @@ void OvercutWatch::scale(double f) {
         conv(p.e);
         p.slack *= f;
     }
-    for (auto& c : comp_) {
+    for (auto& c : comp_) {  // reported ones too: harmless
         conv(c.e);
         c.r *= f;
         c.worst *= f;

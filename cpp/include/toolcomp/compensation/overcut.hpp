@@ -4,6 +4,7 @@
 // before and after it. Where the tool centre comes closer to that contour than the radius
 // (less the tolerance), the path cuts into the part: one warning per compensated element,
 // with its smallest distance. Cheap: each element meets at most 2·neighbours + 2 others.
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <vector>
@@ -22,8 +23,16 @@ struct Swept {
     double sweep = 0;                   // worked out for spirals only (else 0)
     double len = 0;                     // a line's length
     bool full = false, major = false;
+    Vec2 lo = Vec2::Zero(), hi = Vec2::Zero();  // a box around it (an arc's: exact for circular arcs)
     explicit Swept(const Element2& e);
 };
+
+// The gap between two elements' boxes, squared: no point of one comes closer to the other.
+inline double box_gap2(const Swept& a, const Swept& b) {
+    const double dx = std::max({0.0, a.lo.x() - b.hi.x(), b.lo.x() - a.hi.x()});
+    const double dy = std::max({0.0, a.lo.y() - b.hi.y(), b.lo.y() - a.hi.y()});
+    return dx * dx + dy * dy;
+}
 
 // Smallest distance between two elements (line segments or arcs, as they are swept). An arc
 // whose end radius differs from its start radius (a spiral) is taken within that difference.
@@ -76,9 +85,12 @@ private:
 
     int neighbours_ = 0;
     double tolerance_ = 0;
-    // A few elements each: vectors erased at the front (no allocation once they have grown).
+    // A few elements each (no allocation once they have grown). prog_: the last neighbours + 2
+    // are the contour watched, those before them wait to be dropped; comp_: from comp_head_
+    // on, the elements not yet reported.
     std::vector<Prog> prog_;
     std::vector<Comp> comp_;
+    std::size_t comp_head_ = 0;
     std::size_t count_ = 0;
 };
 
