@@ -133,3 +133,28 @@ TEST_CASE("distance lower bound: the cases it settles") {
           Approx(5));
     CHECK(distance_lower_bound(Swept(Element2::line({0, 0}, {2, 2})), Swept(Element2::line({0, 2}, {2, 0}))) <= 0);
 }
+
+TEST_CASE("element box: holds every point of the element, and is no larger for circular arcs") {
+    std::mt19937 rng(4242);
+    const int n = 4000;
+    for (int k = 0; k < 500; ++k) {
+        const Element2 e = random_element(rng);
+        const Swept s(e);
+        Vec2 lo = Vec2::Constant(INFINITY), hi = Vec2::Constant(-INFINITY);
+        for (const Vec2& p : samples(e, n)) {
+            lo = lo.cwiseMin(p);
+            hi = hi.cwiseMax(p);
+        }
+        INFO("case " << k << (e.is_arc ? " arc" : " line") << ", spiral " << spiral_of(e));
+        CHECK((s.lo.array() <= lo.array() + 1e-9).all());
+        CHECK((s.hi.array() >= hi.array() - 1e-9).all());
+        if (spiral_of(e) == 0) {  // circular: the sampled box comes within the sample spacing of it
+            const double spacing = e.length() / n + 1e-9;
+            CHECK(((lo - s.lo).array() <= spacing).all());
+            CHECK(((s.hi - hi).array() <= spacing).all());
+        }
+        // Two boxes' gap is a lower bound of the elements' distance.
+        const Element2 f = random_element(rng);
+        CHECK(std::sqrt(box_gap2(s, Swept(f))) <= sampled_distance(e, f, 600) + 1e-9);
+    }
+}
