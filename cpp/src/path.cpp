@@ -20,8 +20,8 @@ Vec3 get3(const Vec3Column& v, std::size_t i) { return {v(i, 0), v(i, 1), v(i, 2
 
 void Path::reserve(std::size_t n) {
     kind.reserve(n);
-    for (auto* v : {&start, &end, &center, &tool_offset}) v->reserve(3 * n);
-    for (auto* v : {&abc, &normal, &tool_axis}) v->reserve(n);
+    for (auto* v : {&start, &end, &center}) v->reserve(3 * n);
+    for (auto* v : {&tool_offset, &abc, &normal, &tool_axis}) v->reserve(n);
     file.reserve(n);
     line.reserve(n);
     tool.reserve(n);
@@ -44,34 +44,35 @@ void Path::push(const Motion& m) {
     put3(start, m.start * u);
     put3(end, m.end * u);
     put3(center, m.center * u);
-    put3(tool_offset, m.tool_offset * u);
+    const Vec3 off = m.tool_offset * u;
+    tool_offset.push(off.x(), off.y(), off.z());
     abc.push(m.abc[0], m.abc[1], m.abc[2]);
     normal.push(n.x(), n.y(), n.z());
     tool_axis.push(m.tool_axis.x(), m.tool_axis.y(), m.tool_axis.z());
     line.push_back(m.line);
-    tool.push_back(m.tool);
-    turns.push_back(m.turns);
+    tool.push(m.tool);
+    turns.push(m.turns);
     feed.push_back(m.feed);
     file.push(m.file);
     kind.push_back(k);
     side.push_back(sd);
-    plane.push_back(pl);
+    plane.push(pl);
     generated.push_back(gen);
 }
 
 Motion Path::segment(std::size_t i) const {
     Motion m;
     m.kind = static_cast<MotionKind>(kind[i]);
-    m.plane = static_cast<Plane>(plane[i]);
+    m.plane = static_cast<Plane>(plane(i));
     m.start = get3(start, i);
     m.end = get3(end, i);
     m.center = get3(center, i);
-    m.turns = turns[i];
+    m.turns = turns(i);
     m.abc = {abc(i, 0), abc(i, 1), abc(i, 2)};
     m.feed = feed[i];
     m.line = line[i];
     m.file = file(i);
-    m.tool = tool[i];
+    m.tool = tool(i);
     m.tool_offset = get3(tool_offset, i);
     m.surface.normal = get3(normal, i);
     m.tool_axis = get3(tool_axis, i);

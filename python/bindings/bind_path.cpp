@@ -60,6 +60,11 @@ auto column3(Vec3Column Path::*member) {
 }
 
 template <class T>
+auto column1(UniformColumn<T, 1> Path::*member) {
+    return [member](py::object self) { return view1(self, self.cast<const Path&>().*member); };
+}
+
+template <class T>
 auto column(Column<T> Path::*member, std::size_t width) {
     return [member, width](py::object self) {
         const Path& p = self.cast<const Path&>();
@@ -87,12 +92,12 @@ void bind_path(py::module_& m) {
         .def_property_readonly("line", column(&Path::line, 1),
                                "source line of the block, int32 (N,), 1-based; an inserted corner piece carries "
                                "the line of the block after the corner")
-        .def_property_readonly("file", [](py::object self) { return view1(self, self.cast<const Path&>().file); },
+        .def_property_readonly("file", column1(&Path::file),
                                "file of the block, int32 (N,): index into `files` (0 = the main program)")
         .def_readonly("files", &Path::files,
                       "names of the files segments come from: the main program, then each called program or "
                       "subprogram file in the order the run entered it")
-        .def_property_readonly("tool", column(&Path::tool, 1), "number of the tool in the spindle, int32 (N,)")
+        .def_property_readonly("tool", column1(&Path::tool), "number of the tool in the spindle, int32 (N,)")
         .def_property_readonly("feed", column(&Path::feed, 1), "feed rate, float64 (N,), mm/min; NaN for rapids")
         .def_property_readonly("side", column(&Path::side, 1),
                                "cutter radius compensation, int8 (N,): +1 left (G41/RL), -1 right (G42/RR), 0 off")
@@ -103,11 +108,11 @@ void bind_path(py::module_& m) {
                                },
                                "bool (N,): True where a compensation stage inserted the segment (corner arcs, "
                                "extension blocks)")
-        .def_property_readonly("tool_offset", column(&Path::tool_offset, 3),
+        .def_property_readonly("tool_offset", column3(&Path::tool_offset),
                                "active tool length offset, float64 (N, 3), mm (X Y Z)")
-        .def_property_readonly("plane", column(&Path::plane, 1),
+        .def_property_readonly("plane", column1(&Path::plane),
                                "working plane of each segment: 0 XY (G17), 1 ZX (G18), 2 YZ (G19)")
-        .def_property_readonly("turns", column(&Path::turns, 1), "arcs: extra full turns (LinuxCNC P word - 1)")
+        .def_property_readonly("turns", column1(&Path::turns), "arcs: extra full turns (LinuxCNC P word - 1)")
         .def_property_readonly("normal", column3(&Path::normal),
                                "surface normal of 3D-compensated segments (Heidenhain LN), unit length; NaN elsewhere")
         .def_property_readonly("tool_axis", column3(&Path::tool_axis), "unit tool axis (tip towards the spindle)")

@@ -1,6 +1,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 #include "toolcomp/column.hpp"
@@ -28,6 +29,23 @@ TEST_CASE("Vec3Column stores nothing while every row equals the fill, then every
 TEST_CASE("Vec3Column tells -0.0 from 0.0 (bit for bit)") {
     Vec3Column c(0, 0, 1);
     c.push(-0.0, 0, 1);
+    c.push(0, 0, 1);
     CHECK_FALSE(c.uniform());
     CHECK(std::signbit(c(0, 0)));
+    CHECK_FALSE(std::signbit(c(1, 0)));
+}
+
+TEST_CASE("UniformColumn: the first row is the fill") {
+    toolcomp::UniformColumn<std::int32_t, 1> tool;  // constructed with 0
+    CHECK(tool.fill()[0] == 0);
+    for (int i = 0; i < 5; ++i) tool.push(7);
+    CHECK(tool.uniform());
+    CHECK(tool.size() == 5);
+    CHECK(tool(4) == 7);
+    tool.push(3);
+    REQUIRE_FALSE(tool.uniform());
+    CHECK(tool.size() == 6);
+    CHECK(tool.data()[0] == 7);
+    CHECK(tool.data()[4] == 7);
+    CHECK(tool.data()[5] == 3);
 }

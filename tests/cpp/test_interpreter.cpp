@@ -72,14 +72,14 @@ TEST_CASE("arcs: IJK and R in G17, G18, G19; helix; full circle with turns") {
     CHECK(p.kind[2] == 2);
     CHECK(std::fabs(p.center[6]) < 1e-9);
     CHECK(std::fabs(p.center[7]) < 1e-9);
-    CHECK(p.turns[3] == 2);
+    CHECK(p.turns(3) == 2);
     CHECK(end_of(p, 3).z() == Approx(-2));
-    CHECK(p.plane[5] == 1);
+    CHECK(p.plane(5) == 1);
     CHECK(p.center[3 * 5 + 0] == Approx(0).margin(1e-12));
     CHECK(p.center[3 * 5 + 2] == Approx(0).margin(1e-12));
     // G19 R-10 from (Y10,Z0) to (Y0,Z-10), clockwise seen from +X, more than 180 degrees: the
     // centre is the one of the two candidates ((0,0) and (10,-10)) that gives the long arc.
-    CHECK(p.plane[7] == 2);
+    CHECK(p.plane(7) == 2);
     CHECK(p.center[3 * 7 + 1] == Approx(10));
     CHECK(p.center[3 * 7 + 2] == Approx(-10));
 }

@@ -18,14 +18,16 @@ class Path : public MotionSink {
 
 public:
     Column<std::uint8_t> kind;
-    Column<double> start, end, center, tool_offset;  // 3 per segment
-    Vec3Column abc{0, 0, 0};                          // degrees
-    Vec3Column normal{kNaN, kNaN, kNaN};              // unit surface normal (3D compensation)
+    Column<double> start, end, center;    // 3 per segment
+    Vec3Column tool_offset{0, 0, 0};
+    Vec3Column abc{0, 0, 0};              // degrees
+    Vec3Column normal{kNaN, kNaN, kNaN};  // unit surface normal (3D compensation)
     Vec3Column tool_axis{0, 0, 1};
-    Column<std::int32_t> line, tool, turns;
+    Column<std::int32_t> line;
+    UniformColumn<std::int32_t, 1> tool, turns;
     Column<double> feed;
     Column<std::int8_t> side;
-    Column<std::uint8_t> plane;
+    UniformColumn<std::uint8_t, 1> plane;
     Column<std::uint8_t> generated;  // bool as byte
     UniformColumn<std::int32_t, 1> file;  // index into `files` of the file the block is in
     // The files segments come from: the main program first, then each called program or

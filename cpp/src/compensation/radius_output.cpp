@@ -37,14 +37,14 @@ void RadiusCompensation::watch_released(const Emitted& e) {
 }
 
 void RadiusCompensation::emit(const Held& h) {
-    Emitted e{h.m, h.dir, h.sweep, false, h.approach};
+    window_.push_back({h.m, h.dir, h.sweep, false, h.approach});  // made in place: no second copy
+    Emitted& e = window_.back();
     if (have_last_) e.m.start = start_after(last_, last_off_, e.m);
     if (e.m.is_arc()) e.m.center[axes(e.m.plane).c] = e.m.start[axes(e.m.plane).c];
     e.in_plane = !e.m.generated && (plane2(e.m.end) - plane2(e.m.start)).norm() > tol::length;
     last_ = e.m.end;
     last_off_ = e.m.tool_offset;
     have_last_ = true;
-    window_.push_back(std::move(e));
     release(gouge_ == GougeReaction::skip || lookahead_ > 0 ? static_cast<std::size_t>(std::max(0, lookahead() - 1))
                                                                    : 0);
 }
@@ -60,7 +60,7 @@ void RadiusCompensation::release(std::size_t keep) {
     if (keep == 0) n = window_.size();
     for (std::size_t i = 0; i < n; ++i) {
         watch_released(window_[i]);
-        Motion m = window_[i].m;
+        Motion& m = window_[i].m;  // changed in place: it leaves the window below
         const TipVector tip = tip_vector(m.radius.orientation, profile_.radius.tip_convention);
         const double r = m.radius.radius;
         if (m.plane == Plane::zx && r > 0 && (tip.x || tip.z)) {

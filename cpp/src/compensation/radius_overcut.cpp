@@ -131,12 +131,20 @@ Swept::Swept(const Element2& el) : e(el) {
     if (spiral > 1e-9 * (1 + r0)) sweep = e.sweep();
     // The points where the arc runs along an axis, where it passes them (a spiral: those of
     // its larger radius, all four: it is within the ring of its start and end radii).
-    const double rm = std::max(r0, r1);
-    for (const Vec2 d : {Vec2(1, 0), Vec2(-1, 0), Vec2(0, 1), Vec2(0, -1)}) {
-        if (sweep == 0 && !on_arc(*this, e.c + d)) continue;
-        lo = lo.cwiseMin(e.c + rm * d);
-        hi = hi.cwiseMax(e.c + rm * d);
-    }
+    // on_arc() for the four axis directions d (|d| = 1): the cross products with d are
+    // components of u and w.
+    const double rm = std::max(r0, r1), eps = 1e-12 * r0;
+    const auto passes = [&](double from_start, double to_end) {
+        if (full || sweep != 0) return true;
+        from_start *= e.dir;
+        to_end *= e.dir;
+        return major ? from_start >= -eps || to_end >= -eps : from_start >= -eps && to_end >= -eps;
+    };
+    // cross2(u, d) and cross2(d, w) for d = +x, -x, +y, -y
+    if (passes(-u.y(), w.y())) hi.x() = std::max(hi.x(), e.c.x() + rm);
+    if (passes(u.y(), -w.y())) lo.x() = std::min(lo.x(), e.c.x() - rm);
+    if (passes(u.x(), -w.x())) hi.y() = std::max(hi.y(), e.c.y() + rm);
+    if (passes(-u.x(), w.x())) lo.y() = std::min(lo.y(), e.c.y() - rm);
 }
 
 // The smallest distance is at an end point of one element, at a crossing, or between two
@@ -158,9 +166,13 @@ double element_distance(const Swept& a, const Swept& b) {
     return d;
 }
 
-void OvercutWatch::check(Comp& c, const Prog& p) const {
+inline void OvercutWatch::check(Comp& c, const Prog& p) const {
     const double closest = c.r - tolerance_ - p.slack - p.e.spiral - c.e.spiral;
     if (closest <= 0 || box_gap2(c.e, p.e) >= closest * closest) return;  // apart: no warning from it
+    check_close(c, p, closest);
+}
+
+[[gnu::noinline]] void OvercutWatch::check_close(Comp& c, const Prog& p, double closest) const {
     if (distance_lower_bound(c.e, p.e, closest) >= closest) return;  // cannot come closer: no warning from it
     const double d = element_distance(c.e, p.e);
     const double margin = d - closest;
@@ -188,7 +200,9 @@ void OvercutWatch::tangent_slack(double slack) {
 }
 
 void OvercutWatch::compensated(const Element2& e, int line, int file, double r) {
-    if (neighbours_ <= 0 || prog_.empty() || e.length() <= tol::length) return;
+    // An arc is no shorter than its chord: its length is worked out only for short chords.
+    if (neighbours_ <= 0 || prog_.empty()) return;
+    if ((e.p1 - e.p0).norm() <= tol::length && e.length() <= tol::length) return;
     comp_.push_back({Swept(e), line, file, r, count_, std::numeric_limits<double>::infinity(), 0, 0});
     Comp& c = comp_.back();
     const std::size_t keep = static_cast<std::size_t>(neighbours_) + 2;

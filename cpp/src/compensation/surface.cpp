@@ -5,6 +5,11 @@
 namespace toolcomp {
 
 void SurfaceCompensation::push(const Motion& m) {
+    if (!shifted_ && !m.surface.active()) {  // the common case: nothing to change, no copy
+        last_ = m.end;
+        out_.push(m);
+        return;
+    }
     Motion o = m;
     if (shifted_) o.start = last_;
     shifted_ = false;

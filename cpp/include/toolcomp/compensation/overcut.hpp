@@ -81,7 +81,8 @@ private:
         double dist;       // the distance there
         int near_line;     // and the programmed element's line
     };
-    void check(Comp& c, const Prog& p) const;
+    void check(Comp& c, const Prog& p) const;  // a box test first, then check_close()
+    void check_close(Comp& c, const Prog& p, double closest) const;
 
     int neighbours_ = 0;
     double tolerance_ = 0;
