@@ -53,7 +53,7 @@ public:
         std::copy(v, v + K, fill_);
     }
     std::size_t size() const { return n_; }
-    bool uniform() const { return data_.empty(); }  // every row equals fill()
+    bool uniform() const { return !stored_; }  // every row equals fill()
     const T* fill() const { return fill_; }
     const T* data() const { return data_.data(); }  // rows, when not uniform
     T operator()(std::size_t row, int k = 0) const {
@@ -95,11 +95,13 @@ private:
             }
             data_.reserve(K * std::max(reserve_, n_ + 1));
             for (std::size_t i = 0; i < n_; ++i) data_.insert(data_.end(), fill_, fill_ + K);
+            stored_ = true;
         }
         data_.insert(data_.end(), row, row + K);
         ++n_;
     }
     T fill_[K];
+    bool stored_ = false;  // the rows are in data_
     std::size_t n_ = 0, reserve_ = 0;
     Column<T> data_;
 };

@@ -13,36 +13,15 @@ BackgroundWatch::~BackgroundWatch() {
     thread_.join();
 }
 
-void BackgroundWatch::record(const Call& c) {
-    if (batch_.capacity() == 0) batch_.reserve(kBatch);
-    batch_.push_back(c);
-    if (c.op != Op::report) since_report_ = since_all_ = true;
-    if (batch_.size() >= kBatch) hand_over();
-}
-
 void BackgroundWatch::configure(int neighbours, double tolerance) {
+    if (batch_.capacity() == 0) batch_.reserve(kBatch);
     on_ = neighbours > 0;
-    record({Op::configure, false, neighbours, 0, tolerance, 0, 0, {}});
+    record({Op::configure, false, neighbours, 0, tolerance, 0, {}});
 }
 
-void BackgroundWatch::programmed(const Element2& e, int line) {
-    if (on_) record({Op::programmed, false, line, 0, 0, 0, 0, e});
-}
+void BackgroundWatch::tangent_slack(double slack) { record({Op::tangent_slack, false, 0, 0, slack, 0, {}}); }
 
-void BackgroundWatch::tangent_slack(double slack) { record({Op::tangent_slack, false, 0, 0, slack, 0, 0, {}}); }
-
-void BackgroundWatch::compensated(const Element2& e, int line, int file, double r) {
-    if (on_) record({Op::compensated, false, line, file, r, 0, 0, e});
-}
-
-void BackgroundWatch::report(const std::vector<Diagnostic>& diags, double mm, bool all) {
-    if (!(all ? since_all_ : since_report_)) return;
-    since_report_ = false;
-    if (all) since_all_ = false;
-    record({Op::report, all, 0, 0, mm, 0, diags.size(), {}});
-}
-
-void BackgroundWatch::scale(double f) { record({Op::scale, false, 0, 0, f, 0, 0, {}}); }
+void BackgroundWatch::scale(double f) { record({Op::scale, false, 0, 0, f, 0, {}}); }
 
 void BackgroundWatch::replay(const std::vector<Call>& calls) {
     for (const Call& c : calls) {

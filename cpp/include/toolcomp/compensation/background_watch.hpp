@@ -28,13 +28,22 @@ public:
     BackgroundWatch& operator=(const BackgroundWatch&) = delete;
     ~BackgroundWatch();  // what is not settled is abandoned
 
-    // OvercutWatch's calls, in the stage's order.
+    // OvercutWatch's calls, in the stage's order (the frequent ones inline: a few stores).
     void configure(int neighbours, double tolerance);
-    void programmed(const Element2& e, int line);
+    void programmed(const Element2& e, int line) {
+        if (on_) record({Op::programmed, false, line, 0, 0, 0, e});
+    }
     void tangent_slack(double slack);
-    void compensated(const Element2& e, int line, int file, double r);
+    void compensated(const Element2& e, int line, int file, double r) {
+        if (on_) record({Op::compensated, false, line, file, r, 0, e});
+    }
     // OvercutWatch::report into `diags` at its present end (filled in by settle()).
-    void report(const std::vector<Diagnostic>& diags, double mm, bool all);
+    void report(const std::vector<Diagnostic>& diags, double mm, bool all) {
+        if (!(all ? since_all_ : since_report_)) return;  // it would find nothing new
+        since_report_ = false;
+        if (all) since_all_ = false;
+        record({Op::report, all, 0, 0, mm, diags.size(), {}});
+    }
     void scale(double f);
     // Replays every call made so far and merges the warnings into `diags`, the vector the
     // reports were asked for (only appended to since). The watch goes on afterwards.
@@ -49,11 +58,15 @@ private:
         Op op;
         bool all;
         int line, file;
-        double a, b;
+        double a;
         std::size_t at;  // report: the diagnostics' size then
         Element2 e;
     };
-    void record(const Call& c);
+    void record(const Call& c) {
+        batch_.push_back(c);
+        if (c.op != Op::report) since_report_ = since_all_ = true;
+        if (batch_.size() >= kBatch) hand_over();
+    }
     void hand_over();
     void replay(const std::vector<Call>& calls);
     void work();
