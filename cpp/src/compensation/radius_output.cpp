@@ -21,7 +21,7 @@ namespace {
 Vec3 start_after(const Vec3& end, const Vec3& end_offset, const Motion& m) { return end + end_offset - m.tool_offset; }
 }  // namespace
 
-void RadiusCompensation::hold(Motion m, const Vec2& dir, double sweep) { queue_.push_back({std::move(m), dir, sweep}); }
+void RadiusCompensation::hold(const Motion& m, const Vec2& dir, double sweep) { queue_.emplace_back(m, dir, sweep); }
 
 // The overcut watch sees the programmed plane elements under compensation (not the entry
 // move: the contour starts at its end) and the tool-centre moves as they leave the stage.
@@ -37,7 +37,7 @@ void RadiusCompensation::watch_released(const Emitted& e) {
 }
 
 void RadiusCompensation::emit(const Held& h) {
-    window_.push_back({h.m, h.dir, h.sweep, false, h.approach});  // made in place: no second copy
+    window_.emplace_back(h.m, h.dir, h.sweep, false, h.approach);  // made in place: one copy
     Emitted& e = window_.back();
     if (have_last_) e.m.start = start_after(last_, last_off_, e.m);
     if (e.m.is_arc()) e.m.center[axes(e.m.plane).c] = e.m.start[axes(e.m.plane).c];
