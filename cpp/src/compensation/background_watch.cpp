@@ -1,6 +1,8 @@
 // The overcut watch replayed on its own thread (see background_watch.hpp).
 #include "toolcomp/compensation/background_watch.hpp"
 
+#include <system_error>
+
 namespace toolcomp {
 
 BackgroundWatch::~BackgroundWatch() {
@@ -43,7 +45,18 @@ void BackgroundWatch::replay(const std::vector<Call>& calls) {
 // The full batch goes to the thread (started with the first one); while kQueued batches
 // wait, the stage waits.
 void BackgroundWatch::hand_over() {
-    if (!thread_.joinable()) thread_ = std::thread(&BackgroundWatch::work, this);
+    if (!thread_.joinable() && !inline_) {
+        try {
+            thread_ = std::thread(&BackgroundWatch::work, this);
+        } catch (const std::system_error&) {
+            inline_ = true;  // no thread to be had: the watch runs here, as it would directly
+        }
+    }
+    if (inline_) {
+        replay(batch_);
+        batch_.clear();
+        return;
+    }
     std::vector<Call> next;
     {
         std::unique_lock<std::mutex> lk(mu_);

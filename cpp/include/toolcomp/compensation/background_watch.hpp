@@ -87,7 +87,8 @@ private:
     std::condition_variable cv_;
     std::deque<std::vector<Call>> queued_;
     std::vector<std::vector<Call>> spare_;
-    bool busy_ = false, closing_ = false, abandon_ = false;
+    bool closing_ = false, abandon_ = false;
+    bool inline_ = false;  // no thread could be started: batches are replayed by the stage
     std::exception_ptr error_;
 };
 
