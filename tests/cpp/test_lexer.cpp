@@ -1,6 +1,11 @@
 // The ISO lexer: every syntax rule of the foundation scope, with LinuxCNC's messages.
 #include <catch2/catch.hpp>
 
+#include <charconv>
+#include <cstring>
+#include <random>
+#include <string>
+
 #include "toolcomp/dialects/iso/lexer.hpp"
 
 using namespace toolcomp;
@@ -109,4 +114,24 @@ TEST_CASE("LinuxCNC lines: computed words, statements, the 252-character limit")
     require_error("#1 5\n", "Equal sign missing in parameter setting", 1, 5);
     require_error("G0 X1 (" + std::string(245, 'a') + ")\n", "Command too long", 1, 253);
     CHECK_NOTHROW(P("G0 X1 (" + std::string(244, 'a') + ")\n"));  // 252 characters
+}
+
+TEST_CASE("numbers read as from_chars reads them, bit for bit, with signs and up to 20 digits") {
+    std::mt19937_64 rng(7);
+    for (int k = 0; k < 20000; ++k) {
+        const int n = 1 + static_cast<int>(rng() % 20);
+        std::string digits;
+        for (int i = 0; i < n; ++i) digits.push_back(static_cast<char>('0' + (rng() % 10 < 2 ? 0 : rng() % 10)));
+        const int point = static_cast<int>(rng() % (n + 2));  // n + 1: no point
+        if (point <= n) digits.insert(static_cast<std::size_t>(point), ".");
+        const char* sign = rng() % 3 == 0 ? "-" : rng() % 2 ? "+" : "";
+        const Program p = P("G1 X" + std::string(sign) + digits + " Y1\n");
+        double want = 0;
+        REQUIRE(std::from_chars(digits.data(), digits.data() + digits.size(), want).ec == std::errc());
+        if (*sign == '-') want = -want;
+        const Word& x = p.words(p.blocks()[0])[1];
+        INFO(sign << digits);
+        REQUIRE(x.letter == 'X');
+        REQUIRE(std::memcmp(&x.value, &want, sizeof want) == 0);
+    }
 }

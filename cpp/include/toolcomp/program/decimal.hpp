@@ -10,10 +10,15 @@
 
 namespace toolcomp {
 
-// False when the text is not such a number (or from_chars refuses it).
-inline bool parse_decimal(std::string_view s, double& out) {
+// The number of up to 15 digits `m` with `frac` of them after the point (0..15).
+inline double decimal_value(std::uint64_t m, int frac) {
     static constexpr double kPow10[16] = {1e0, 1e1, 1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
                                           1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15};
+    return frac > 0 ? static_cast<double>(m) / kPow10[frac] : static_cast<double>(m);
+}
+
+// False when the text is not such a number (or from_chars refuses it).
+inline bool parse_decimal(std::string_view s, double& out) {
     std::uint64_t m = 0;
     int digits = 0, frac = -1;
     for (const char c : s) {
@@ -30,7 +35,7 @@ inline bool parse_decimal(std::string_view s, double& out) {
     }
     if (digits == 0) return false;
     if (digits <= 15) {
-        out = frac > 0 ? static_cast<double>(m) / kPow10[frac] : static_cast<double>(m);
+        out = decimal_value(m, frac);
         return true;
     }
     const auto r = std::from_chars(s.data(), s.data() + s.size(), out);

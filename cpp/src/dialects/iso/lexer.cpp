@@ -187,34 +187,41 @@ void LineLexer::word_value(Word& w) {
 }
 
 // A real number: signs, then a run of digits and points. Messages are LinuxCNC's.
+// Up to 15 digits the value is taken in the same pass (parse_decimal's fast path).
 double LineLexer::number() {
+    const char* const s = s_.data();
+    const std::size_t n = s_.size();
+    std::size_t i = i_;
     bool negative = false;
-    const std::size_t start = i_;  // errors point at the number's first character
-    while (i_ < s_.size() && (s_[i_] == '+' || s_[i_] == '-')) {
-        if (s_[i_] == '-') negative = !negative;
-        ++i_;
+    const std::size_t start = i;  // errors point at the number's first character
+    while (i < n && (s[i] == '+' || s[i] == '-')) {
+        if (s[i] == '-') negative = !negative;
+        ++i;
     }
-    const std::size_t first = i_;  // the line has no blanks here: the number is one run
-    int points = 0;
-    bool digits = false;
-    while (i_ < s_.size()) {
-        const char c = s_[i_];
+    const std::size_t first = i;  // the line has no blanks here: the number is one run
+    int points = 0, digits = 0, frac = 0;
+    std::uint64_t m = 0;
+    for (; i < n; ++i) {
+        const char c = s[i];
         if (c >= '0' && c <= '9') {
-            digits = true;
+            if (++digits <= 15) m = m * 10 + static_cast<std::uint64_t>(c - '0');
+            frac += points;  // digits after the point (more than one point fails below)
         } else if (c == '.') {
             ++points;
         } else {
             break;
         }
-        ++i_;
     }
-    const std::string_view text(s_.data() + first, i_ - first);
+    i_ = i;
+    const std::string_view text(s + first, i - first);
     if (text.empty()) fail_at("bad_number_format", "No characters found in reading real value", start);
     if (points > 1)
         fail_at("bad_number_format", "bad number format (trailing characters) parsing '" + std::string(text) + "'", start);
     if (!digits) fail_at("bad_number_format", "bad number format (conversion failed) parsing '" + std::string(text) + "'", start);
     double v = 0;
-    if (!parse_decimal(text, v) || !std::isfinite(v))
+    if (digits <= 15)
+        v = decimal_value(m, frac);
+    else if (!parse_decimal(text, v) || !std::isfinite(v))
         fail_at("bad_number_format", "bad number format (conversion failed) parsing '" + std::string(text) + "'", start);
     return negative ? -v : v;
 }
