@@ -83,6 +83,11 @@ void PathStream::deliver(Path&& p) {
     cv_.notify_all();
 }
 
+bool PathStream::wait_for(std::chrono::milliseconds timeout) {
+    std::unique_lock<std::mutex> lk(mu_);
+    return cv_.wait_for(lk, timeout, [this] { return !ready_.empty() || finished_; });
+}
+
 std::optional<Path> PathStream::next() {
     std::unique_lock<std::mutex> lk(mu_);
     cv_.wait(lk, [this] { return !ready_.empty() || finished_; });

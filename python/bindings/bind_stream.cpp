@@ -1,6 +1,8 @@
 // PathStream: a run's compensated path in chunks (the iterator behind toolcomp.iter_run).
 #include "bindings.hpp"
 
+#include <chrono>
+
 #include <pybind11/stl.h>
 
 #include "toolcomp/stream.hpp"
@@ -36,6 +38,16 @@ void bind_stream(py::module_& m) {
         .def("__iter__", [](py::object self) { return self; })
         .def("__next__",
              [](PathStream& s) {
+                 // Waits in slices, so that Ctrl-C (KeyboardInterrupt) is seen while a chunk is made.
+                 for (;;) {
+                     bool ready;
+                     {
+                         py::gil_scoped_release nogil;
+                         ready = s.wait_for(std::chrono::milliseconds(50));
+                     }
+                     if (ready) break;
+                     if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+                 }
                  std::optional<Path> p;
                  {
                      py::gil_scoped_release nogil;

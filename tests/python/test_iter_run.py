@@ -188,3 +188,27 @@ def test_abandoned_stream_stops_its_run(tmp_path):
     next(it)
     del it  # dropped without close: the destructor stops the run
     assert time.perf_counter() - t < 60
+
+
+def test_ctrl_c_while_a_chunk_is_made_interrupts_the_wait():
+    # A loop of 4M moves in one chunk takes seconds; SIGINT after 0.2 s raises
+    # KeyboardInterrupt from inside next(), before the chunk is taken: the run goes on and
+    # the next call hands over the whole chunk.
+    import signal
+    import threading
+
+    text = ("G21 G90 G0 X0 Y0\n#1=0\no1 while [#1 LT 2000000]\n  G1 X10 Y#1 F100\n  G1 X0\n"
+            "  #1=[#1+1]\no1 endwhile\nM2\n")
+    s = tc.iter_run(tc.Program.parse(text), chunk=5_000_000)
+    timer = threading.Timer(0.2, lambda: os.kill(os.getpid(), signal.SIGINT))
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            next(s)
+        chunk = next(s)
+        assert len(chunk) == 1 + 2 * 2_000_000
+        with pytest.raises(StopIteration):
+            next(s)
+    finally:
+        timer.cancel()
+        s.close()

@@ -8,6 +8,7 @@
 // in it steers across blocks (iso::may_steer: no O-words, GOTO, loops, program numbers, M99):
 // memory stays the same whatever the program's length. A program that has them, and every
 // Heidenhain or Sinumerik program, is read and parsed whole; its path is still streamed.
+#include <chrono>
 #include <condition_variable>
 #include <cstddef>
 #include <deque>
@@ -44,6 +45,8 @@ public:
     // The next chunk; nullopt after the last. Waits for the run. The run's error (strict) is
     // raised after the chunk holding the segments before it.
     std::optional<Path> next();
+    // Waits at most `timeout` for a chunk or the end: true when next() would not wait.
+    bool wait_for(std::chrono::milliseconds timeout);
     // Stops the run (the chunks not taken are dropped).
     void close();
 
