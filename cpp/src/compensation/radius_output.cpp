@@ -37,7 +37,7 @@ void RadiusCompensation::watch_released(const Emitted& e) {
 }
 
 void RadiusCompensation::emit(const Held& h) {
-    window_.emplace_back(h.m, h.dir, h.sweep, false, h.approach);  // made in place: one copy
+    window_.emplace_back(h);  // made in place: one copy
     Emitted& e = window_.back();
     if (have_last_) e.m.start = start_after(last_, last_off_, e.m);
     if (e.m.is_arc()) e.m.center[axes(e.m.plane).c] = e.m.start[axes(e.m.plane).c];

@@ -43,6 +43,7 @@ private:
         Vec2 dir;            // straights: the direction the reversal check compares against
         double sweep = 0;    // arcs: programmed sweep (0 = never checked: corner and entry arcs)
         bool approach = false;  // the entry move (comes from off the contour: no overcut check)
+        Held(const Motion& m_, const Vec2& dir_, double sweep_) : m(m_), dir(dir_), sweep(sweep_) {}
     };
     // An emitted move kept for the look-ahead before it leaves the stage.
     struct Emitted {
@@ -51,6 +52,7 @@ private:
         double sweep = 0;
         bool in_plane = false;  // a programmed move with plane motion (not a corner fill)
         bool approach = false;
+        explicit Emitted(const Held& h) : m(h.m), dir(h.dir), sweep(h.sweep), approach(h.approach) {}
     };
 
     // joints and entry (radius.cpp, radius_joints.cpp)
