@@ -287,6 +287,15 @@ def test_debug_and_print_show_values_msg_does_not():
     assert all(d.severity == "info" for d in res.diagnostics)
 
 
+def test_only_the_last_comment_in_parentheses_of_a_line_speaks():
+    # LinuxCNC keeps one comment per block, each overwriting the one before, and does not
+    # read ';' comments for MSG. rs274 (2.9) on this program prints MESSAGE(" second"),
+    # COMMENT("plain note") and MESSAGE(" par"), nothing for lines 3 and 5.
+    res = run("G21 (MSG, first) (MSG, second)\nG0 X1 (MSG, only) (plain note)\n;MSG, semi\n"
+              "G0 X2 (MSG, par) ;(MSG, semi2)\n(DEBUG, one) (debug, two)\nM2\n")
+    assert [(d.line, d.message) for d in res.diagnostics] == [(1, " second"), (4, " par"), (5, " two")]
+
+
 def test_system_parameters_show_the_interpreter_state():
     res = run("""\
         G21 G10 L2 P1 X5 Y6

@@ -68,6 +68,7 @@ struct Token {
 struct Comment {
     std::string text;  // without the delimiters
     int column = 0;    // 1-based column of the opening delimiter
+    bool semicolon = false;  // from ';' to the end of the line (else in parentheses)
 };
 
 struct Block {

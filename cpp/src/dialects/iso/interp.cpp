@@ -22,13 +22,6 @@ bool axes_are_data(const BlockWords& bw) {
     int lc = bw.g[g_length_comp];
     return uses_axes_group0(bw.g[g_nonmodal]) || lc == 431 || lc == 432;
 }
-
-std::string lower_prefix(const std::string& s, std::size_t n) {
-    std::string r;
-    for (std::size_t i = 0; i < s.size() && i < n; ++i)
-        r.push_back(static_cast<char>(std::tolower(static_cast<unsigned char>(s[i]))));
-    return r;
-}
 }  // namespace
 
 Interp::Interp(const Program& prog, const ToolTable* tools, const ControlProfile& profile,
@@ -145,13 +138,18 @@ void Interp::run_blocks() {
         alarm_text_.clear();
         if (fanuc && block.comment_count) alarm_text_ = p.comments(block)[0].text;
         if (block.statement_count) assignments(block);  // messages show the values after them
-        for (const Comment& c : p.comments(block)) {
-            std::string head = lower_prefix(c.text, 6);
-            if (head.rfind("msg,", 0) == 0)
-                info("message", c.text.substr(c.text.find(',') + 1), c.column);
-            else if (head.rfind("debug,", 0) == 0 || head.rfind("print,", 0) == 0)
-                info("message", substitute(c.text.substr(c.text.find(',') + 1)), c.column);
+        // LinuxCNC keeps one comment per block, the last in parentheses (each overwrites the
+        // one before; a ';' comment is not read for MSG/DEBUG/PRINT): only that one speaks.
+        const auto comments = p.comments(block);
+        const Comment* speaks = nullptr;
+        for (const Comment& c : comments) {
+            if (p.dialect != Dialect::linuxcnc) {
+                message_comment(c);
+            } else if (!c.semicolon) {
+                speaks = &c;
+            }
         }
+        if (speaks) message_comment(*speaks);
         // Fanuc M98 / M99 run after the rest of their block.
         const int sub_m = bw.m[m_subprogram];
         WordSlot p_word, l_word;

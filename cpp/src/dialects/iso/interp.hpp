@@ -104,6 +104,7 @@ private:
     void run_blocks();
     void set_param(double number, double v, int column);
     std::string substitute(const std::string& text);  // DEBUG / PRINT messages: #n, #<name> values
+    void message_comment(const Comment& c);           // (MSG, ...), (DEBUG, ...), (PRINT, ...)
     void call_sub(const Statement& s);  // LinuxCNC o-call
     void return_from_sub(const Statement& s);
     void subprogram(int mcode, const WordSlot& p, const WordSlot& l, int column);  // Fanuc M98 / M99

@@ -139,6 +139,23 @@ double Interp::get(const std::string& name, std::span<const double>) {
 
 bool Interp::exists(const std::string& name) { return params_.named(name) || predefined(name); }
 
+namespace {
+std::string lower_prefix(const std::string& s, std::size_t n) {
+    std::string r;
+    for (std::size_t i = 0; i < s.size() && i < n; ++i)
+        r.push_back(static_cast<char>(std::tolower(static_cast<unsigned char>(s[i]))));
+    return r;
+}
+}  // namespace
+
+void Interp::message_comment(const Comment& c) {
+    const std::string head = lower_prefix(c.text, 6);
+    if (head.rfind("msg,", 0) == 0)
+        info("message", c.text.substr(c.text.find(',') + 1), c.column);
+    else if (head.rfind("debug,", 0) == 0 || head.rfind("print,", 0) == 0)
+        info("message", substitute(c.text.substr(c.text.find(',') + 1)), c.column);
+}
+
 std::string Interp::substitute(const std::string& text) {
     // (DEBUG, ...) and (PRINT, ...): #n and #<name> become their values.
     std::string out;

@@ -121,7 +121,7 @@ void LineLexer::run() {
             continue;
         }
         if (c == ';') {
-            prog_.add_comment({s_.substr(i_ + 1), col()});
+            prog_.add_comment({s_.substr(i_ + 1), col(), true});
             break;
         }
         const char u = c >= 'a' && c <= 'z' ? static_cast<char>(c - 32) : c;

@@ -42,7 +42,7 @@ void LineLexer::rest_is_comments() {
         if (s_[i_] == '(') {
             comment_paren();
         } else if (s_[i_] == ';') {
-            prog_.add_comment({s_.substr(i_ + 1), col()});
+            prog_.add_comment({s_.substr(i_ + 1), col(), true});
             return;
         } else {
             fail("o_word_extra_words", prog_.dialect == Dialect::linuxcnc ? "Unexpected character after O-word"
