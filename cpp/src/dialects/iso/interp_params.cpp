@@ -148,12 +148,15 @@ std::string lower_prefix(const std::string& s, std::size_t n) {
 }
 }  // namespace
 
+// Blanks before the keyword are skipped, as LinuxCNC does ("( MSG, x)" speaks).
 void Interp::message_comment(const Comment& c) {
-    const std::string head = lower_prefix(c.text, 6);
+    const std::size_t from = c.text.find_first_not_of(" \t");
+    if (from == std::string::npos) return;
+    const std::string head = lower_prefix(c.text.substr(from), 6);
     if (head.rfind("msg,", 0) == 0)
-        info("message", c.text.substr(c.text.find(',') + 1), c.column);
+        info("message", c.text.substr(c.text.find(',', from) + 1), c.column);
     else if (head.rfind("debug,", 0) == 0 || head.rfind("print,", 0) == 0)
-        info("message", substitute(c.text.substr(c.text.find(',') + 1)), c.column);
+        info("message", substitute(c.text.substr(c.text.find(',', from) + 1)), c.column);
 }
 
 std::string Interp::substitute(const std::string& text) {
