@@ -50,7 +50,7 @@ public:
     void settle(std::vector<Diagnostic>& diags);
 
     static constexpr std::size_t kBatch = 4096;  // calls handed over at once
-    static constexpr std::size_t kQueued = 32;   // batches waiting at most (the stage waits)
+    static constexpr std::size_t kQueued = 8;    // batches waiting at most (3 MB; then the stage waits)
 
 private:
     enum class Op : std::uint8_t { configure, programmed, tangent_slack, compensated, report, scale };
