@@ -132,41 +132,34 @@ void run_pipeline(const Program& program, const ToolTable* tools, const RunOptio
     iopts.next_piece = hooks.next_piece;
     iopts.file_opened = hooks.file_opened;
     out.files.push_back(program.name);
-    // After an error the overcut watch's warnings up to it are still put in (a stream keeps
-    // them); an error of the watch itself then gives way to the one being raised.
-    auto settle_quietly = [&chain] {
+    try {
+        try {
+            if (program.dialect == Dialect::heidenhain)
+                heidenhain::interpret(program, tools, profile, tee, diagnostics, iopts.progress, iopts.progress_every,
+                                      options.search_path, &out.files);
+            else if (program.dialect == Dialect::sinumerik)
+                sinumerik::interpret(program, tools, profile, sinumerik_options(options, profile), tee, diagnostics,
+                                     &out.files);
+            else if (is_iso(program.dialect))
+                iso::interpret(program, tools, profile, iopts, tee, diagnostics, &out);
+            else
+                dialect_not_supported(program.dialect);
+        } catch (const Error& e) {
+            if (options.strict) {
+                SourcePos at = e.pos();
+                if (name_file(at, out.files)) throw_at(e, at);
+                throw;
+            }
+            tee.finish();
+            diagnostics.push_back(e.diagnostic());
+        }
+    } catch (...) {
+        // The overcut watch's warnings up to the error are still put in (a stream keeps them);
+        // an error of the watch itself gives way to the one being raised.
         try {
             chain.settle();
         } catch (...) {
         }
-    };
-    try {
-        if (program.dialect == Dialect::heidenhain)
-            heidenhain::interpret(program, tools, profile, tee, diagnostics, iopts.progress, iopts.progress_every,
-                                  options.search_path, &out.files);
-        else if (program.dialect == Dialect::sinumerik)
-            sinumerik::interpret(program, tools, profile, sinumerik_options(options, profile), tee, diagnostics,
-                                 &out.files);
-        else if (is_iso(program.dialect))
-            iso::interpret(program, tools, profile, iopts, tee, diagnostics, &out);
-        else
-            dialect_not_supported(program.dialect);
-    } catch (const Error& e) {
-        if (options.strict) {
-            settle_quietly();
-            SourcePos at = e.pos();
-            if (name_file(at, out.files)) throw_at(e, at);
-            throw;
-        }
-        try {
-            tee.finish();
-        } catch (...) {
-            settle_quietly();
-            throw;
-        }
-        diagnostics.push_back(e.diagnostic());
-    } catch (...) {
-        settle_quietly();
         throw;
     }
     for (Diagnostic& d : diagnostics) name_file(d.pos, out.files);

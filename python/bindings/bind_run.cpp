@@ -186,6 +186,9 @@ void bind_run(py::module_& m) {
         .def_readwrite("startup_inch", &ControlProfile::startup_inch,
                        "G20 (inch) active at program start")
         .def_readwrite("block_limit", &ControlProfile::block_limit, "blocks a program may execute (loops count)")
+        .def_readwrite("last_comment_only", &ControlProfile::last_comment_only,
+                       "only the last comment in parentheses of a block is read for MSG/DEBUG/PRINT, ';' "
+                       "comments never (LinuxCNC); False: every comment")
         .def_readwrite("call_depth_limit", &ControlProfile::call_depth_limit,
                        "nested subprogram calls a program may make (LinuxCNC 9, Fanuc 10, default 100)")
         .def_readwrite("length_axes", &ControlProfile::length_axes,

@@ -246,6 +246,7 @@ class ControlProfile:
     startup_inch: bool
     block_limit: int
     call_depth_limit: int
+    last_comment_only: bool
     length_axes: LengthAxes
     length_subtract_word: bool
     radius: RadiusRules

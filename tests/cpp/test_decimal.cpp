@@ -6,16 +6,13 @@
 #include <random>
 #include <string>
 
+#include "random_decimal.hpp"
 #include "toolcomp/program/decimal.hpp"
 
 TEST_CASE("parse_decimal rounds as from_chars does") {
     std::mt19937_64 rng(42);
     for (int k = 0; k < 200000; ++k) {
-        const int n = 1 + static_cast<int>(rng() % 20);
-        std::string s;
-        for (int i = 0; i < n; ++i) s.push_back(static_cast<char>('0' + (rng() % 10 < 2 ? 0 : rng() % 10)));
-        const int point = static_cast<int>(rng() % (n + 2));  // n + 1: no point
-        if (point <= n) s.insert(static_cast<std::size_t>(point), ".");
+        const std::string s = random_decimal(rng);
         double a = -1, b = -2;
         REQUIRE(toolcomp::parse_decimal(s, a));
         const auto r = std::from_chars(s.data(), s.data() + s.size(), b);

@@ -6,6 +6,7 @@
 #include <random>
 #include <string>
 
+#include "random_decimal.hpp"
 #include "toolcomp/dialects/iso/lexer.hpp"
 
 using namespace toolcomp;
@@ -119,11 +120,7 @@ TEST_CASE("LinuxCNC lines: computed words, statements, the 252-character limit")
 TEST_CASE("numbers read as from_chars reads them, bit for bit, with signs and up to 20 digits") {
     std::mt19937_64 rng(7);
     for (int k = 0; k < 20000; ++k) {
-        const int n = 1 + static_cast<int>(rng() % 20);
-        std::string digits;
-        for (int i = 0; i < n; ++i) digits.push_back(static_cast<char>('0' + (rng() % 10 < 2 ? 0 : rng() % 10)));
-        const int point = static_cast<int>(rng() % (n + 2));  // n + 1: no point
-        if (point <= n) digits.insert(static_cast<std::size_t>(point), ".");
+        const std::string digits = random_decimal(rng);
         const char* sign = rng() % 3 == 0 ? "-" : rng() % 2 ? "+" : "";
         const Program p = P("G1 X" + std::string(sign) + digits + " Y1\n");
         double want = 0;

@@ -287,13 +287,25 @@ def test_debug_and_print_show_values_msg_does_not():
     assert all(d.severity == "info" for d in res.diagnostics)
 
 
+COMMENTS = ("G21 (MSG, first) (MSG, second)\nG0 X1 (MSG, only) (plain note)\n;MSG, semi\n"
+            "G0 X2 (MSG, par) ;(MSG, semi2)\n(DEBUG, one) (debug, two)\nM2\n")
+
+
 def test_only_the_last_comment_in_parentheses_of_a_line_speaks():
     # LinuxCNC keeps one comment per block, each overwriting the one before, and does not
     # read ';' comments for MSG. rs274 (2.9) on this program prints MESSAGE(" second"),
-    # COMMENT("plain note") and MESSAGE(" par"), nothing for lines 3 and 5.
-    res = run("G21 (MSG, first) (MSG, second)\nG0 X1 (MSG, only) (plain note)\n;MSG, semi\n"
-              "G0 X2 (MSG, par) ;(MSG, semi2)\n(DEBUG, one) (debug, two)\nM2\n")
+    # COMMENT("plain note"), MESSAGE(" par") and MESSAGE(" two"), nothing for line 3.
+    res = run(COMMENTS)
     assert [(d.line, d.message) for d in res.diagnostics] == [(1, " second"), (4, " par"), (5, " two")]
+
+
+def test_every_comment_speaks_when_the_profile_says_so():
+    every = tc.ControlProfile("linuxcnc")
+    assert every.last_comment_only and not tc.ControlProfile("fanuc").last_comment_only
+    every.last_comment_only = False
+    res = run(COMMENTS, profile=every)
+    assert [(d.line, d.message) for d in res.diagnostics] == [
+        (1, " first"), (1, " second"), (2, " only"), (3, " semi"), (4, " par"), (5, " one"), (5, " two")]
 
 
 def test_system_parameters_show_the_interpreter_state():

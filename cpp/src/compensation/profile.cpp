@@ -11,6 +11,7 @@ ControlProfile profile_for(Dialect d, Machine machine) {
     // Nested subprogram levels: LinuxCNC allows 9 (the 10th call is "Too many subroutine
     // levels"), Fanuc 10 (M98 and G65 together, 0i/30i).
     if (d == Dialect::linuxcnc) p.call_depth_limit = 9;
+    p.last_comment_only = d == Dialect::linuxcnc;
     if (d == Dialect::fanuc) p.call_depth_limit = 10;
     switch (d) {
         case Dialect::fanuc: {

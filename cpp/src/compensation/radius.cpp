@@ -310,7 +310,7 @@ void RadiusCompensation::finish() {
     flush();
     release(0);
     overcut_.report(diags_, unit_, /*all=*/true);
-    overcut_.settle(diags_);
+    settle();
     out_.finish();
 }
 

@@ -129,10 +129,10 @@ Swept::Swept(const Element2& el) : e(el) {
     full = e.turns > 0 || (along > 0 && std::fabs(turn) <= 1e-12 * along);
     major = !full && turn < 0;
     if (spiral > 1e-9 * (1 + r0)) sweep = e.sweep();
-    // The points where the arc runs along an axis, where it passes them (a spiral: those of
-    // its larger radius, all four: it is within the ring of its start and end radii).
-    // on_arc() for the four axis directions d (|d| = 1): the cross products with d are
-    // components of u and w.
+    // The points where the arc runs along an axis, where it passes them (a spiral: all four,
+    // at its larger radius: it lies within the ring of its start and end radii). `passes` is
+    // on_arc() for an axis direction d (|d| = 1): the cross products with d are components
+    // of u and w.
     const double rm = std::max(r0, r1), eps = 1e-12 * r0;
     const auto passes = [&](double from_start, double to_end) {
         if (full || sweep != 0) return true;
@@ -200,8 +200,8 @@ void OvercutWatch::tangent_slack(double slack) {
 }
 
 void OvercutWatch::compensated(const Element2& e, int line, int file, double r) {
-    // An arc is no shorter than its chord: its length is worked out only for short chords.
     if (neighbours_ <= 0 || prog_.empty()) return;
+    // An arc is no shorter than its chord: its length is worked out only for short chords.
     if ((e.p1 - e.p0).norm() <= tol::length && e.length() <= tol::length) return;
     comp_.push_back({Swept(e), line, file, r, count_, std::numeric_limits<double>::infinity(), 0, 0});
     Comp& c = comp_.back();

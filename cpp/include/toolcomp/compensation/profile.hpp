@@ -165,6 +165,10 @@ struct ControlProfile {
     // `call_depth_limit` (recursion without end) stop it the same way.
     std::size_t block_limit = 100'000'000;
     std::size_t call_depth_limit = 100;
+    // Comments read for (MSG, ...), (DEBUG, ...), (PRINT, ...): only the last one in
+    // parentheses of a block, ';' comments never (LinuxCNC keeps one comment per block), or
+    // every comment of the block (false).
+    bool last_comment_only = false;
     // Arc tolerances, in program units ([0] for mm programs, [1] for inch programs), as
     // LinuxCNC 2.9 applies them: an arc given by its centre is refused when its start and
     // end radius differ by more than `arc_spiral_hard_factor`·`arc_spiral_abs`, or by more

@@ -138,18 +138,14 @@ void Interp::run_blocks() {
         alarm_text_.clear();
         if (fanuc && block.comment_count) alarm_text_ = p.comments(block)[0].text;
         if (block.statement_count) assignments(block);  // messages show the values after them
-        // LinuxCNC keeps one comment per block, the last in parentheses (each overwrites the
-        // one before; a ';' comment is not read for MSG/DEBUG/PRINT): only that one speaks.
-        const auto comments = p.comments(block);
-        const Comment* speaks = nullptr;
-        for (const Comment& c : comments) {
-            if (p.dialect != Dialect::linuxcnc) {
-                message_comment(c);
-            } else if (!c.semicolon) {
-                speaks = &c;
-            }
+        if (profile_.last_comment_only) {  // LinuxCNC: the last in parentheses overwrote the others
+            const Comment* last = nullptr;
+            for (const Comment& c : p.comments(block))
+                if (!c.semicolon) last = &c;
+            if (last) message_comment(*last);
+        } else {
+            for (const Comment& c : p.comments(block)) message_comment(c);
         }
-        if (speaks) message_comment(*speaks);
         // Fanuc M98 / M99 run after the rest of their block.
         const int sub_m = bw.m[m_subprogram];
         WordSlot p_word, l_word;
