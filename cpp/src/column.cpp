@@ -10,7 +10,8 @@ namespace toolcomp::detail {
 
 namespace {
 constexpr std::size_t kHuge = std::size_t(2) << 20;  // 2 MB
-constexpr std::size_t kThreshold = std::size_t(4) << 20;
+constexpr std::size_t kThreshold = std::size_t(512) << 10;
+constexpr std::size_t kPage = 4096;
 }  // namespace
 
 // Large columns are mapped from the kernel and unmapped when freed: their memory goes back
@@ -51,6 +52,18 @@ void column_deallocate(void* p, std::size_t bytes) noexcept {
     }
 #endif
     std::free(p);
+}
+
+void column_release_tail(void* p, std::size_t used, std::size_t capacity) noexcept {
+#if defined(__linux__) && defined(MADV_DONTNEED)
+    if (capacity < kThreshold) return;  // on the heap
+    const auto base = reinterpret_cast<std::uintptr_t>(p);
+    const std::uintptr_t from = (base + used + kPage - 1) / kPage * kPage;
+    const std::uintptr_t to = base + (capacity + kHuge - 1) / kHuge * kHuge;  // the mapping's end
+    if (to > from) madvise(reinterpret_cast<void*>(from), to - from, MADV_DONTNEED);
+#else
+    (void)p, (void)used, (void)capacity;
+#endif
 }
 
 }  // namespace toolcomp::detail

@@ -32,6 +32,17 @@ void Path::reserve(std::size_t n) {
     generated.reserve(n);
 }
 
+void Path::release_unused() noexcept {
+    toolcomp::release_unused(kind);
+    for (auto* v : {&start, &end, &center, &feed}) toolcomp::release_unused(*v);
+    for (auto* v : {&tool_offset, &abc, &normal, &tool_axis}) v->release_unused();
+    for (auto* v : {&file, &tool, &turns}) v->release_unused();
+    plane.release_unused();
+    toolcomp::release_unused(line);
+    toolcomp::release_unused(side);
+    toolcomp::release_unused(generated);
+}
+
 void Path::push(const Motion& m) {
     // Everything is read from the Motion first and the byte columns are written last: a byte
     // store may alias anything, so after one the compiler reloads what it had in registers.

@@ -184,6 +184,8 @@ Result run_main(const Program& program, const ToolTable* tools, const RunOptions
     SegmentLimit compensated(res.path, options.max_segments, "compensated");
     iso::InterpretOutput out;
     run_pipeline(program, tools, options, profile, nominal, compensated, res.diagnostics, out, hooks);
+    res.nominal.release_unused();  // what the reservation and the last 2 MB pages left over
+    res.path.release_unused();
     res.nominal.files = out.files;
     res.path.files = std::move(out.files);
     res.parameters = std::move(out.parameters);

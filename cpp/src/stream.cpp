@@ -76,6 +76,7 @@ void PathStream::close() {
 }
 
 void PathStream::deliver(Path&& p) {
+    p.release_unused();  // the last chunk is shorter than its reservation
     std::unique_lock<std::mutex> lk(mu_);
     cv_.wait(lk, [this] { return ready_.empty() || cancelled_; });
     if (cancelled_) throw Cancelled{};

@@ -49,3 +49,49 @@ TEST_CASE("UniformColumn: the first row is the fill") {
     CHECK(tool.data()[4] == 7);
     CHECK(tool.data()[5] == 3);
 }
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#include <unistd.h>
+
+namespace {
+// How many of the pages [p, p + bytes) are in memory.
+std::size_t resident_pages(const void* p, std::size_t bytes) {
+    const std::size_t page = static_cast<std::size_t>(sysconf(_SC_PAGESIZE));
+    std::vector<unsigned char> in((bytes + page - 1) / page);
+    REQUIRE(mincore(const_cast<void*>(p), bytes, in.data()) == 0);
+    std::size_t n = 0;
+    for (unsigned char c : in) n += c & 1;
+    return n;
+}
+}  // namespace
+
+TEST_CASE("Column: release_unused gives back the pages beyond the rows and keeps the rows") {
+    toolcomp::Column<double> c;
+    c.reserve(1 << 20);  // 8 MB mapped
+    for (int i = 0; i < 3 * (1 << 16); ++i) c.push_back(i * 0.5);  // 1.5 MB written
+    const std::size_t page = static_cast<std::size_t>(sysconf(_SC_PAGESIZE));
+    std::fill(c.data() + c.size(), c.data() + c.capacity(), 1.0);  // touch the capacity too
+    const std::size_t used = c.size() * sizeof(double), cap = c.capacity() * sizeof(double);
+    REQUIRE(resident_pages(c.data(), cap) == cap / page);
+    toolcomp::release_unused(c);
+    CHECK(resident_pages(c.data(), used) == used / page);
+    CHECK(resident_pages(reinterpret_cast<const char*>(c.data()) + used, cap - used) == 0);
+    for (int i = 0; i < 3 * (1 << 16); i += 997) REQUIRE(c[i] == i * 0.5);
+    for (int i = 0; i < 1000; ++i) c.push_back(-i);  // grows into the given-back pages
+    CHECK(c[3 * (1 << 16) + 999] == -999.0);
+    CHECK(c[3 * (1 << 16) - 1] == (3 * (1 << 16) - 1) * 0.5);
+}
+
+TEST_CASE("Column: release_unused leaves heap columns and partly used pages alone") {
+    toolcomp::Column<double> small(1000, 2.0);  // on the heap
+    toolcomp::release_unused(small);
+    CHECK(small[999] == 2.0);
+    toolcomp::Column<std::uint8_t> bytes;
+    bytes.reserve(1 << 20);
+    bytes.resize(4097, 7);  // the second page is partly used: it stays
+    toolcomp::release_unused(bytes);
+    CHECK(bytes[4096] == 7);
+    CHECK(resident_pages(bytes.data(), 8192) == 2);
+}
+#endif

@@ -1,10 +1,12 @@
 #pragma once
 // Column: the std::vector the Path's columns and other big result arrays are stored in.
 //
-// Its allocator asks the kernel for transparent huge pages (2 MB) for allocations of 4 MB and
-// more (madvise MADV_HUGEPAGE where the kernel offers it): a million-segment Path touches a
-// few hundred pages instead of tens of thousands, and threads filling their own Paths no
+// Its allocator asks the kernel for transparent huge pages (2 MB) for allocations of 512 kB
+// and more (madvise MADV_HUGEPAGE where the kernel offers it): a million-segment Path touches
+// a few hundred pages instead of tens of thousands, and threads filling their own Paths no
 // longer queue on the process's page-fault lock. Small columns use the ordinary heap.
+// A mapping is whole 2 MB pages; `release_unused` gives back what lies beyond the rows when a
+// column is complete (a 600 kB column keeps 600 kB, not 2 MB).
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -18,6 +20,9 @@ namespace toolcomp {
 namespace detail {
 void* column_allocate(std::size_t bytes);
 void column_deallocate(void* p, std::size_t bytes) noexcept;
+// Returns to the kernel the pages of an allocation of `capacity` bytes at `p` that lie
+// wholly beyond its first `used` bytes (mapped allocations only; heap ones are left).
+void column_release_tail(void* p, std::size_t used, std::size_t capacity) noexcept;
 }  // namespace detail
 
 template <class T>
@@ -37,6 +42,13 @@ struct ColumnAllocator {
 
 template <class T>
 using Column = std::vector<T, ColumnAllocator<T>>;
+
+// Gives back the memory of `c` beyond its rows (the column may still grow: pages given back
+// come back zeroed when written).
+template <class T>
+void release_unused(Column<T>& c) noexcept {
+    if (c.capacity() != 0) detail::column_release_tail(c.data(), c.size() * sizeof(T), c.capacity() * sizeof(T));
+}
 
 // K values per row that are usually the same on every row (rotary axes, surface normals,
 // tool axis, tool, tool length offset, plane, the file a segment comes from): nothing is
@@ -60,6 +72,7 @@ public:
         return uniform() ? fill_[k] : data_[K * row + static_cast<std::size_t>(k)];
     }
     void reserve(std::size_t rows) { reserve_ = rows; }
+    void release_unused() noexcept { toolcomp::release_unused(data_); }
     void push(const T* row) {
         if (uniform() && std::memcmp(row, fill_, sizeof fill_) == 0) {  // the common case, inline
             ++n_;

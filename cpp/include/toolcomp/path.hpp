@@ -36,6 +36,8 @@ public:
 
     std::size_t size() const { return kind.size(); }
     void reserve(std::size_t n);
+    // Gives back the columns' memory beyond the segments (once the Path is complete).
+    void release_unused() noexcept;
     void push(const Motion& m) override;
     // Segment i back as a Motion (for sampling, checks and later stages).
     Motion segment(std::size_t i) const;
