@@ -13,7 +13,9 @@ namespace toolcomp {
 
 FilePieces::FilePieces(const std::string& path, std::size_t piece_bytes, std::size_t max_line_length)
     : path_(path), fd_(open_program_file(path)), piece_bytes_(std::max<std::size_t>(piece_bytes, 1)),
-      max_line_length_(max_line_length) {}
+      max_line_length_(max_line_length), want_(first_piece_bytes()) {}
+
+std::size_t FilePieces::first_piece_bytes() const { return std::min<std::size_t>(piece_bytes_, std::size_t{1} << 16); }
 
 FilePieces::~FilePieces() {
     if (fd_ >= 0) ::close(fd_);
@@ -25,14 +27,17 @@ void FilePieces::rewind() {
     buf_.clear();
     carry_ = lines_ = 0;
     eof_ = false;
+    want_ = first_piece_bytes();
 }
 
 std::string_view FilePieces::next() {
     buf_.erase(0, buf_.size() - carry_);  // the piece handed out last time
     // Read until a piece's worth ending with a newline is there, or the file ends.
-    while (!eof_ && !(buf_.size() >= piece_bytes_ && buf_.rfind('\n') != std::string::npos)) {
+    const std::size_t want = want_;
+    want_ = std::min(2 * want_, piece_bytes_);
+    while (!eof_ && !(buf_.size() >= want && buf_.rfind('\n') != std::string::npos)) {
         const std::size_t have = buf_.size();
-        buf_.resize(have + std::max<std::size_t>(piece_bytes_ > have ? piece_bytes_ - have : 0, 1 << 16));
+        buf_.resize(have + std::max<std::size_t>(want > have ? want - have : 0, 1 << 16));
         const ssize_t n = ::read(fd_, buf_.data() + have, buf_.size() - have);
         buf_.resize(have + static_cast<std::size_t>(std::max<ssize_t>(n, 0)));
         if (n < 0) {

@@ -1,6 +1,8 @@
 #pragma once
 // A program file read a piece at a time: whole lines, about `piece_bytes` each, so a file of
-// any size is read in bounded memory. Lines longer than `max_line_length` are refused with
+// any size is read in bounded memory. The first pieces are smaller (64 kB, then twice the one
+// before): the run starts on the first while the next, parsed in another thread, is still
+// short enough to be ready when the run needs it. Lines longer than `max_line_length` are refused with
 // their line number (ParseError "line_too_long"), as when a file is read whole.
 #include <cstddef>
 #include <string>
@@ -22,9 +24,12 @@ public:
     void rewind();
 
 private:
+    std::size_t first_piece_bytes() const;
+
     std::string path_;
     int fd_ = -1;
     std::size_t piece_bytes_, max_line_length_;
+    std::size_t want_ = 0;  // the size of the next piece (growing to piece_bytes_)
     std::string buf_;       // the piece handed out, then the start of the next one
     std::size_t carry_ = 0; // bytes after the piece handed out (a line not yet complete)
     std::size_t lines_ = 0; // line ends before the piece handed out
