@@ -176,6 +176,18 @@ def best_of(fn, repeat=3):
     return best, value
 
 
+def best_interleaved(fns, rounds=4):
+    """Best time of each of `fns` (name -> callable), run in turn `rounds` times: a slow spell
+    of the machine falls on all of them alike instead of on whichever ran during it."""
+    best = dict.fromkeys(fns, float("inf"))
+    for _ in range(rounds):
+        for name, fn in fns.items():
+            t = time.perf_counter()
+            fn()
+            best[name] = min(best[name], time.perf_counter() - t)
+    return best
+
+
 def rs274_seconds(text):
     with tempfile.TemporaryDirectory() as d:
         with open(os.path.join(d, "big.ngc"), "w") as f:
@@ -235,16 +247,13 @@ def bench_other(label, text, blocks, dialect, tools):
 def bench_linear(n, factor, tools):
     """Time of tc.run on a program file `factor` times as long, against the 1x file (no
     compensation; the file is read piece by piece as it runs)."""
-    def seconds(blocks, d):
-        path = os.path.join(d, f"lin{blocks}.ngc")
-        write_program(path, blocks, comp=False)
-        t, _ = best_of(lambda: tc.run(path, tools), repeat=2)
-        os.unlink(path)
-        return t
     with tempfile.TemporaryDirectory() as d:
-        small, big = seconds(n, d), seconds(n * factor, d)
-    print(f"linearity      : {n * factor:,} blocks take {big / small:.1f} x the time of {n:,} "
-          f"({small:.2f} s, {big:.2f} s; tc.run on files, no compensation)")
+        small, big = os.path.join(d, "small.ngc"), os.path.join(d, "big.ngc")
+        write_program(small, n, comp=False)
+        write_program(big, n * factor, comp=False)
+        t = best_interleaved({"small": lambda: tc.run(small, tools), "big": lambda: tc.run(big, tools)}, rounds=2)
+    print(f"linearity      : {n * factor:,} blocks take {t['big'] / t['small']:.1f} x the time of {n:,} "
+          f"({t['small']:.2f} s, {t['big']:.2f} s; tc.run on files, no compensation; best of 2, in turn)")
 
 
 def bench_batch(n, tools):
@@ -257,23 +266,26 @@ def bench_batch(n, tools):
             with open(p, "w") as f:
                 f.write(text)
             paths.append(p)
-        t_seq, _ = best_of(lambda: [tc.run(p, tools) for p in paths], repeat=2)
+        cores = os.cpu_count() or 1
+        one_by_one = lambda: [tc.run(p, tools) for p in paths]  # noqa: E731
+        fns = {"seq": one_by_one, "many": lambda: tc.run_many(paths, tools, workers=cores)}
         # A single run already puts its overcut watch and the reading of its file on the
         # other core; one by one on one core is the run without a second core to use.
-        t_one = None
-        if hasattr(os, "sched_setaffinity"):
-            allowed = os.sched_getaffinity(0)
-            try:
+        allowed = os.sched_getaffinity(0) if hasattr(os, "sched_setaffinity") else None
+        if allowed:
+            def one_core():
                 os.sched_setaffinity(0, {min(allowed)})
-                t_one, _ = best_of(lambda: [tc.run(p, tools) for p in paths], repeat=2)
-            finally:
-                os.sched_setaffinity(0, allowed)
-        cores = os.cpu_count() or 1
-        t_many, _ = best_of(lambda: tc.run_many(paths, tools, workers=cores), repeat=2)
+                try:
+                    one_by_one()
+                finally:
+                    os.sched_setaffinity(0, allowed)
+            fns["one"] = one_core
+        t = best_interleaved(fns)
+        t_seq, t_many, t_one = t["seq"], t["many"], t.get("one")
     one = f"one by one on 1 core {t_one:.3f} s, " if t_one else ""
     print(f"batch          : 8 programs of {blocks:,} blocks: {one}one by one {t_seq:.3f} s, "
           f"run_many on {cores} threads {t_many:.3f} s: {t_seq / t_many:.2f} x over one by one"
-          + (f", {t_one / t_many:.2f} x over 1 core" if t_one else ""))
+          + (f", {t_one / t_many:.2f} x over 1 core" if t_one else "") + " (best of 4, in turn)")
 
 
 def main():
