@@ -119,9 +119,15 @@ public:
     // Building (front ends): open a block, add its words and comments, close it.
     void begin_block(int line, bool block_delete);
     void add_word(Word w) { words_.push_back(w); ++blocks_.back().word_count; }
-    void add_token(Token t) {
+    void add_token(Token&& t) {
         tokens_.push_back(std::move(t));
         ++blocks_.back().token_count;
+    }
+    // A new empty token of the open block, to be filled in place (a front end that fails
+    // half-way drops the block with it).
+    Token& new_token() {
+        ++blocks_.back().token_count;
+        return tokens_.emplace_back();
     }
     void add_comment(Comment c) {
         comments_.push_back(std::move(c));
@@ -138,9 +144,10 @@ public:
     void drop_last_expression() { exprs_.pop_back(); }
     // Removes the last block (a front end that failed half-way through it).
     void drop_last_block();
-    void reserve(std::size_t blocks, std::size_t words) {
+    void reserve(std::size_t blocks, std::size_t words, std::size_t tokens = 0) {
         blocks_.reserve(blocks);
         words_.reserve(words);
+        tokens_.reserve(tokens);
     }
 
 private:

@@ -1,6 +1,8 @@
 #pragma once
 // Text a front end or table reader receives: a UTF-8 byte order mark (editors on Windows
-// write one) is not part of the first line.
+// write one) is not part of the first line. Letters and digits of a program are ASCII
+// whatever the process's locale (std::isalpha would take the locale's, and Python sets it
+// from the environment: in a Latin-1 locale 'ä' would be a letter).
 #include <string_view>
 
 namespace toolcomp {
@@ -11,5 +13,9 @@ inline std::string_view skip_bom(std::string_view text) {
         text.remove_prefix(3);
     return text;
 }
+
+inline bool ascii_digit(char c) { return c >= '0' && c <= '9'; }
+inline bool ascii_alpha(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
+inline char ascii_upper(char c) { return c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c; }
 
 }  // namespace toolcomp

@@ -58,7 +58,7 @@ struct Kind {
 };
 
 std::optional<Kind> kind_of(const Token& t) {
-    const std::string& k = t.key;
+    const std::string_view k = t.key;  // compared with literals: the length first
     if (k.empty()) return Kind{kNumber, 0};
     static constexpr std::array<std::string_view, 3> axes{"X", "Y", "Z"};
     for (int i = 0; i < 3; ++i)
@@ -83,7 +83,7 @@ std::optional<Kind> kind_of(const Token& t) {
 }
 
 // Words of the TNC that toolcomp does not model: refused by name rather than as unknown.
-const char* unsupported(const std::string& k) {
+const char* unsupported(std::string_view k) {
     if (k == "U" || k == "V" || k == "W" || k == "IU" || k == "IV" || k == "IW")
         return "parallel axes (U, V, W) are not supported by toolcomp";
     if (k == "IA" || k == "IB" || k == "IC") return "incremental rotary axes (IA, IB, IC) are not supported by toolcomp";
@@ -107,7 +107,7 @@ void check_path_words(std::span<const Token> t, int line) {
     for (const Function& g : kFunctions)
         if (t[0].key == g.name) f = &g;
     if (!f) return;
-    const std::string fn = f->first == 2 && t.size() > 1 ? t[0].key + " " + t[1].key : t[0].key;
+    auto fn = [&] { return f->first == 2 && t.size() > 1 ? t[0].key + " " + t[1].key : t[0].key; };  // for messages
     std::array<int, 20> seen{};
     for (std::size_t i = f->first; i < t.size(); ++i) {
         const Token& k = t[i];
@@ -115,10 +115,10 @@ void check_path_words(std::span<const Token> t, int line) {
             throw ParseError("unsupported_word", k.key + ": " + why, {line, k.column});
         const auto kind = kind_of(k);
         if (!kind || !(kind->group & f->groups))
-            throw ParseError("bad_word", "Word " + spelled(k) + " is not allowed in a " + fn + " block", {line, k.column});
+            throw ParseError("bad_word", "Word " + spelled(k) + " is not allowed in a " + fn() + " block", {line, k.column});
         if (kind->slot < 0) continue;
         if (seen[static_cast<std::size_t>(kind->slot)]++)
-            throw ParseError("bad_word", "Word " + spelled(k) + " given twice in one " + fn + " block (or with its " +
+            throw ParseError("bad_word", "Word " + spelled(k) + " given twice in one " + fn() + " block (or with its " +
                                              "absolute / incremental twin)",
                              {line, k.column});
     }
