@@ -63,6 +63,9 @@ struct Token {
     int param = 0;           // a Q parameter in place of the number (X+Q5): its number
     int column = 0;
     std::int32_t expr = -1;  // a computed value: index of its expression (Program::expression)
+
+    // key == k, lengths first (std::string == "literal" calls strlen and memcmp).
+    bool is(std::string_view k) const noexcept { return std::string_view(key) == k; }
 };
 
 struct Comment {

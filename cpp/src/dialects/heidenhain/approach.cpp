@@ -37,8 +37,8 @@ void Interp::approach(Tokens t) {
     int side = 0;
     const Token* r0 = nullptr;
     for (const Token& k : t) {
-        side = k.key == "RL" ? 1 : k.key == "RR" ? -1 : side;
-        if (k.key == "R" && k.has_value && k.value == 0) r0 = &k;
+        side = k.is("RL") ? 1 : k.is("RR") ? -1 : side;
+        if (k.is("R") && k.has_value && k.value == 0) r0 = &k;
     }
     // Compensation already active (spec §2.5.1): the APPR block does not change it and is a
     // connecting element: its path is computed on the contour and compensated like any
@@ -53,7 +53,7 @@ void Interp::approach(Tokens t) {
     }
     // Feed, M functions; RL/RR are taken here, not as a start of compensation by modal_words.
     for (std::size_t i = 2; i < t.size(); ++i)
-        if (t[i].key == "F" && t[i].has_value) feed_ = t[i].value * (prog_.inch ? 2.54 : 1.0);
+        if (t[i].is("F") && t[i].has_value) feed_ = t[i].value * (prog_.inch ? 2.54 : 1.0);
     if (kind == ApproachKind::LCT && feed_ <= 0)
         fail("no_feed", "APPR LCT needs a feed: none programmed up to the approach block", t[0].column);
     Vec3 pa = end_point(t, 2);
@@ -239,14 +239,14 @@ void Interp::departure(Tokens t) {
     if (!pending_) fail("departure_without_contour", "DEP needs a contour element before it", t[0].column);
     int side = 0;
     for (const Token& k : t)
-        if (k.key == "RL" || k.key == "RR") {
-            side = k.key == "RL" ? 1 : -1;
+        if (k.is("RL") || k.is("RR")) {
+            side = k.is("RL") ? 1 : -1;
             if (side_ == 0) fail("dep_starts_comp", "DEP cannot switch radius compensation on", k.column);
             if (side != side_) fail("comp_side_change", profile_.radius.messages.side_change, k.column);
         }
     const bool keep = side != 0;  // RL/RR programmed again: compensation stays on
     for (std::size_t i = 2; i < t.size(); ++i)
-        if (t[i].key == "F" && t[i].has_value) feed_ = t[i].value * (prog_.inch ? 2.54 : 1.0);
+        if (t[i].is("F") && t[i].has_value) feed_ = t[i].value * (prog_.inch ? 2.54 : 1.0);
     Departure d;
     d.kind = kind;
     d.pe = plane2(pos_);

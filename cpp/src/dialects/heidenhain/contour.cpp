@@ -171,8 +171,8 @@ void Interp::put(Motion m) {
 
 void Interp::circle_centre(Tokens t) {
     auto ax = axes(plane_);
-    static const char* names[3] = {"X", "Y", "Z"};
-    static const char* inc[3] = {"IX", "IY", "IZ"};
+    static constexpr std::string_view names[3] = {"X", "Y", "Z"};
+    static constexpr std::string_view inc[3] = {"IX", "IY", "IZ"};
     Vec2 c = plane2(pos_);
     for (const Token& k : t) {
         for (int i : {ax.a, ax.b}) {
@@ -188,7 +188,7 @@ void Interp::circle_centre(Tokens t) {
 namespace {
 int arc_direction(std::span<const Token> t) {
     for (const Token& k : t)
-        if (k.key == "DR" && k.sign_only) return k.value > 0 ? 1 : -1;
+        if (k.is("DR") && k.sign_only) return k.value > 0 ? 1 : -1;
     return 0;
 }
 }  // namespace
@@ -196,9 +196,9 @@ int arc_direction(std::span<const Token> t) {
 // Arc blocks may keep RL/RR but not switch compensation on or off.
 static void check_arc_comp(std::span<const Token> t, int side, const ControlProfile& p, int line) {
     for (const Token& k : t) {
-        if ((k.key == "RL" || k.key == "RR") && side == 0)
+        if ((k.is("RL") || k.is("RR")) && side == 0)
             throw ProgramError("comp_entry_arc", p.radius.messages.entry_arc, {line, k.column});
-        if (k.key == "R" && k.has_value && k.value == 0 && side != 0 && t[0].key != "CR")
+        if (k.is("R") && k.has_value && k.value == 0 && side != 0 && !t[0].is("CR"))
             throw ProgramError("comp_exit_arc", p.radius.messages.exit_arc, {line, k.column});
     }
 }

@@ -1,5 +1,6 @@
 // Klartext block execution: program frame, tools, straight lines, feeds, M functions and
 // radius compensation requests. Arcs, polar moves, RND and CHF are in contour.cpp.
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <filesystem>
@@ -46,12 +47,12 @@ Vec3 Interp::with_plane(Vec3 v, const Vec2& ab) const {
 
 Vec3 Interp::end_point(Tokens t, std::size_t from) const {
     Vec3 e = pos_;
-    static const char* names[3] = {"X", "Y", "Z"};
-    static const char* inc[3] = {"IX", "IY", "IZ"};
+    static constexpr std::string_view names[3] = {"X", "Y", "Z"};
+    static constexpr std::string_view inc[3] = {"IX", "IY", "IZ"};
     for (std::size_t i = from; i < t.size(); ++i) {
         for (int a = 0; a < 3; ++a) {
-            if (t[i].key == names[a] && t[i].has_value) e[a] = t[i].value;
-            if (t[i].key == inc[a] && t[i].has_value) e[a] = pos_[a] + t[i].value;
+            if (t[i].is(names[a]) && t[i].has_value) e[a] = t[i].value;
+            if (t[i].is(inc[a]) && t[i].has_value) e[a] = pos_[a] + t[i].value;
         }
     }
     return e;
@@ -61,8 +62,8 @@ Vec3 Interp::end_point(Tokens t, std::size_t from) const {
 void Interp::modal_words(Tokens t, std::size_t from) {
     for (std::size_t i = from; i < t.size(); ++i) {
         const Token& k = t[i];
-        if (k.key == "RL" || k.key == "RR" || (k.key == "R" && k.has_value && k.value == 0 && t[0].key != "CR")) {
-            const int side = k.key == "RL" ? 1 : k.key == "RR" ? -1 : 0;
+        if (k.is("RL") || k.is("RR") || (k.is("R") && k.has_value && k.value == 0 && !t[0].is("CR"))) {
+            const int side = k.is("RL") ? 1 : k.is("RR") ? -1 : 0;
             if (side != 0 && side_ != 0 && side != side_) fail("comp_side_change", profile_.radius.messages.side_change, k.column);
             if (side == 0 && side_ != 0) {
                 settle_pending();
@@ -74,17 +75,17 @@ void Interp::modal_words(Tokens t, std::size_t from) {
                 lookahead_ = 0;
             }
             side_ = side;
-        } else if (k.key == "R" && k.sign_only) {
-            if (t[0].key != "L") fail("paraxial_not_line", "R+/R- only in L blocks", k.column);
+        } else if (k.is("R") && k.sign_only) {
+            if (!t[0].is("L")) fail("paraxial_not_line", "R+/R- only in L blocks", k.column);
             if (side_ != 0) fail("paraxial_with_comp", "R+/R- cannot be combined with RL/RR", k.column);
             paraxial_ = static_cast<int>(k.value);  // applied by line()
-        } else if (k.key == "F" && k.has_value) {
+        } else if (k.is("F") && k.has_value) {
             feed_ = k.value * (prog_.inch ? 2.54 : 1.0);  // mm/min, or 1/10 inch/min in INCH programs
-        } else if (k.key == "FMAX") {
+        } else if (k.is("FMAX")) {
             rapid_ = true;
-        } else if (k.key == "FAUTO") {
+        } else if (k.is("FAUTO")) {
             fail("unsupported_word", "FAUTO is not supported by toolcomp", k.column);
-        } else if (k.key == "M" && k.has_value) {
+        } else if (k.is("M") && k.has_value) {
             const int m = int_value_truncated(k.value);
             switch (m) {
                 case 97: corner_ = static_cast<std::int8_t>(OutsideCorner::intersection); break;
@@ -172,7 +173,7 @@ void Interp::tool_call(Tokens t) {
         ++i;
     }
     for (; i < t.size(); ++i) {
-        const std::string& k = t[i].key;
+        const std::string_view k = t[i].key;
         if ((k == "X" || k == "Y" || k == "Z") && !t[i].has_value)
             plane_ = k == "Z" ? Plane::xy : k == "Y" ? Plane::zx : Plane::yz;
         else if (k == "F" && t[i].has_value)
@@ -217,9 +218,9 @@ void Interp::line(Tokens t) {
         end += paraxial_ * radius_ * d.normalized();
     }
     for (std::size_t i = 1; i < t.size(); ++i) {
-        if (t[i].key == "A" && t[i].has_value) abc_[0] = t[i].value;
-        if (t[i].key == "B" && t[i].has_value) abc_[1] = t[i].value;
-        if (t[i].key == "C" && t[i].has_value) abc_[2] = t[i].value;
+        if (t[i].is("A") && t[i].has_value) abc_[0] = t[i].value;
+        if (t[i].is("B") && t[i].has_value) abc_[1] = t[i].value;
+        if (t[i].is("C") && t[i].has_value) abc_[2] = t[i].value;
     }
     if (end == pos_) return;
     if (!rapid_ && feed_ <= 0) fail("no_feed", "No feed rate programmed");
@@ -230,8 +231,8 @@ void Interp::line(Tokens t) {
 }
 
 bool Interp::execute(Tokens t) {
-    const std::string& k0 = t[0].key;
-    const std::string k1 = t.size() > 1 ? t[1].key : "";
+    const std::string_view k0 = t[0].key;
+    const std::string_view k1 = t.size() > 1 ? std::string_view(t[1].key) : std::string_view();
     corner_ = -1;
     open_corner_ = false;
     rapid_ = false;
@@ -262,21 +263,23 @@ bool Interp::execute(Tokens t) {
     } else if (k0 == "LN") {
         surface_line(t);
     } else if (k0 == "CYCL")
-        fail("unsupported_block", k0 + (k1.empty() ? "" : " " + k1) + " is not supported by toolcomp yet", t[0].column);
+        fail("unsupported_block", std::string(k0) + (k1.empty() ? "" : " " + std::string(k1)) + " is not supported by toolcomp yet",
+             t[0].column);
     else
-        fail("unknown_block", "Unknown block '" + k0 + "'", t[0].column);
+        fail("unknown_block", "Unknown block '" + std::string(k0) + "'", t[0].column);
     return true;
 }
 
-std::vector<Token> Interp::resolve(Tokens t) const {
-    std::vector<Token> out(t.begin(), t.end());
-    for (Token& k : out)
+Interp::Tokens Interp::resolve(Tokens t, std::vector<Token>& scratch) const {
+    if (std::none_of(t.begin(), t.end(), [](const Token& k) { return k.param > 0; })) return t;
+    scratch.assign(t.begin(), t.end());
+    for (Token& k : scratch)
         if (k.param > 0) {
             auto it = q_.find(k.param);
             k.value = k.value * (it == q_.end() ? 0.0 : it->second);
             k.param = 0;
         }
-    return out;
+    return scratch;
 }
 
 // Runs the blocks with the program's own flow: labels (LBL n), subprogram calls (CALL LBL
@@ -307,7 +310,7 @@ bool Interp::run_blocks(const Program& prog, int depth) {
     std::map<int, std::size_t> labels;
     for (std::size_t i = 0; i < blocks.size(); ++i) {
         auto t = prog.tokens(blocks[i]);
-        if (t.size() >= 2 && t[0].key == "LBL" && t[1].has_value && t[1].value != 0)
+        if (t.size() >= 2 && t[0].is("LBL") && t[1].has_value && t[1].value != 0)
             labels[int_value(t[1].value)] = i;
     }
     auto label = [&](int n, const Token& at) {
@@ -321,6 +324,7 @@ bool Interp::run_blocks(const Program& prog, int depth) {
     };
     std::vector<std::size_t> returns;
     std::map<std::size_t, int> repeats;  // CALL LBL .. REP m blocks: passes left
+    std::vector<Token> scratch;          // a block's tokens with Q parameters replaced
     for (std::size_t pc = 0; pc < blocks.size();) {
         auto raw = prog.tokens(blocks[pc]);
         line_ = blocks[pc].line;
@@ -332,9 +336,8 @@ bool Interp::run_blocks(const Program& prog, int depth) {
             ++pc;
             continue;
         }
-        const std::vector<Token> tok = resolve(raw);
-        Tokens t(tok);
-        const std::string& k0 = t[0].key;
+        const Tokens t = resolve(raw, scratch);
+        const std::string_view k0 = t[0].key;
         if (k0 == "LBL") {
             if (t.size() >= 2 && t[1].has_value && t[1].value == 0 && !returns.empty()) {
                 pc = returns.back();  // end of a subprogram
@@ -344,7 +347,7 @@ bool Interp::run_blocks(const Program& prog, int depth) {
             }
             continue;
         }
-        if (k0 == "CALL" && t.size() >= 3 && t[1].key == "LBL" && t[2].has_value) {
+        if (k0 == "CALL" && t.size() >= 3 && t[1].is("LBL") && t[2].has_value) {
             const std::size_t target = label(int_value(t[2].value), t[2]) + 1;
             if (const Token* rep = find(t, "REP")) {
                 // REP m, or REP followed by the count as a separate number (REP 2/2)
@@ -380,7 +383,7 @@ bool Interp::run_blocks(const Program& prog, int depth) {
             pc = r.jump ? label(*r.jump, t[0]) : pc + 1;
             continue;
         }
-        if (k0 == "CALL" && t.size() >= 2 && t[1].key == "PGM") {
+        if (k0 == "CALL" && t.size() >= 2 && t[1].is("PGM")) {
             call_program(t, depth);
             if (ended_) return false;  // M2/M30 in the called program
             ++pc;

@@ -35,7 +35,9 @@ private:
     std::function<void(std::size_t)> progress_;
     std::size_t progress_every_ = 1 << 16;
     using Tokens = std::span<const Token>;
-    std::vector<Token> resolve(Tokens t) const;  // Q parameters in words replaced by values
+    // The block's tokens with Q parameters in words replaced by values (in `scratch` when
+    // there are any, else `t` itself).
+    Tokens resolve(Tokens t, std::vector<Token>& scratch) const;
     bool execute(Tokens t);  // false at END PGM
     // Runs the blocks of one program (the main program, or one called with CALL PGM at
     // nesting depth `depth`) with its own labels; false when the run ends (M2/M30 seen).

@@ -76,7 +76,7 @@ private:
     // After CALL PGM comes a file name (SUB1, PART.H, TNC:\DIR\SUB.H), not words.
     bool program_name_next() const {
         auto t = prog_.tokens(prog_.blocks().back());
-        return t.size() == 2 && t[0].key == "CALL" && t[1].key == "PGM" && !t[1].has_value;
+        return t.size() == 2 && t[0].is("CALL") && t[1].is("PGM") && !t[1].has_value;
     }
     void program_name() {
         Token t;
@@ -146,7 +146,7 @@ private:
             num.push_back(s_[i_] == ',' ? '.' : s_[i_]);
             ++i_;
         }
-        if ((t.key == "REP" || t.key.empty()) && i_ < s_.size() && s_[i_] == '/')  // REP 2/2: the count of passes left
+        if ((t.is("REP") || t.key.empty()) && i_ < s_.size() && s_[i_] == '/')  // REP 2/2: the count of passes left
             while (i_ < s_.size() && !blank(s_[i_])) ++i_;
         if (i_ < s_.size() && !blank(s_[i_]) && s_[i_] != ';')
             fail("bad_word", "Unexpected character '" + std::string(1, s_[i_]) + "'", col());
@@ -179,12 +179,12 @@ bool is_blank_line(std::string_view l) {
 // BLK FORM 0.1 <axis> X Y Z (minimum corner) and 0.2 X Y Z (maximum), kept as the blank.
 void read_blank(Program& prog, const Block& b) {
     auto t = prog.tokens(b);
-    if (t.size() < 3 || t[0].key != "BLK" || t[1].key != "FORM" || !t[2].has_value) return;
+    if (t.size() < 3 || !t[0].is("BLK") || !t[1].is("FORM") || !t[2].has_value) return;
     Blank bl = prog.blank.value_or(Blank{});
     const bool first = t[2].value < 0.15;
     Vec3& corner = first ? bl.min : bl.max;
     for (std::size_t i = 3; i < t.size(); ++i) {
-        const std::string& k = t[i].key;
+        const std::string_view k = t[i].key;
         int axis = k == "X" || k == "IX" ? 0 : k == "Y" || k == "IY" ? 1 : k == "Z" || k == "IZ" ? 2 : -1;
         if (axis < 0) continue;
         if (!t[i].has_value) {  // the tool axis letter of BLK FORM 0.1
@@ -211,7 +211,7 @@ void check_frame(Program& prog, bool ended, bool strict) {
                   SourcePos{prog.size() ? prog.blocks().front().line : 1, 1});
     } else {
         auto t = prog.tokens(*first);
-        if (t.size() < 2 || t[0].key != "BEGIN" || t[1].key != "PGM")
+        if (t.size() < 2 || !t[0].is("BEGIN") || !t[1].is("PGM"))
             e.emplace("begin_pgm_missing", "The program does not start with BEGIN PGM", SourcePos{first->line, t[0].column});
         else if (!ended)
             e.emplace("end_pgm_missing", "END PGM missing: the program ends without END PGM (cut short?)",
@@ -265,10 +265,10 @@ Program parse(std::string_view text, std::string name, bool strict) {
             const Block& b = prog.blocks().back();
             prog.last_line = line_no;
             auto t = prog.tokens(b);
-            if (t.size() >= 2 && t[0].key == "BEGIN" && t[1].key == "PGM")
-                for (const Token& k : t) prog.inch = prog.inch || k.key == "INCH";
+            if (t.size() >= 2 && t[0].is("BEGIN") && t[1].is("PGM"))
+                for (const Token& k : t) prog.inch = prog.inch || k.is("INCH");
             read_blank(prog, b);
-            if (t.size() >= 2 && t[0].key == "END" && t[1].key == "PGM") {
+            if (t.size() >= 2 && t[0].is("END") && t[1].is("PGM")) {
                 ended = true;
                 break;
             }
