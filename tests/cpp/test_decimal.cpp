@@ -8,6 +8,7 @@
 
 #include "random_decimal.hpp"
 #include "toolcomp/program/decimal.hpp"
+#include "toolcomp/program/expr.hpp"
 
 TEST_CASE("parse_decimal rounds as from_chars does") {
     std::mt19937_64 rng(42);
@@ -32,4 +33,41 @@ TEST_CASE("parse_decimal refuses what is not a plain decimal") {
     CHECK(v == 0.1);
     CHECK(toolcomp::parse_decimal("95.", v));
     CHECK(v == 95);
+}
+
+TEST_CASE("expr::read_number: signs, digits and EX exponents as from_chars reads them, and where it stops") {
+    std::mt19937_64 rng(7);
+    for (int k = 0; k < 100000; ++k) {
+        const char* signs[] = {"", "-", "+"};
+        const std::string sign = signs[rng() % 3];
+        std::string text = sign + random_decimal(rng);
+        std::string expected = sign == "+" ? text.substr(1) : text;  // from_chars takes no '+'
+        const bool ex = rng() % 4 == 0;
+        if (ex) {
+            const std::string e = std::string(rng() % 2 ? "-" : "") + std::to_string(rng() % 30);
+            text += "EX" + e;
+            expected += "e" + e;
+        }
+        text += "*2";  // what follows the number is not read
+        std::size_t pos = 0;
+        double a = -1, b = -2;
+        INFO(text);
+        REQUIRE(toolcomp::expr::read_number(text, pos, a, /*ex_exponent=*/true));
+        CHECK(pos == text.size() - 2);
+        const auto r = std::from_chars(expected.data(), expected.data() + expected.size(), b);
+        REQUIRE(r.ec == std::errc());
+        REQUIRE(std::memcmp(&a, &b, sizeof a) == 0);
+    }
+    std::size_t pos = 0;
+    double v = 0;
+    CHECK_FALSE(toolcomp::expr::read_number("-.", pos, v, true));
+    CHECK_FALSE(toolcomp::expr::read_number("X1", pos, v, true));
+    CHECK(toolcomp::expr::read_number("2EX", pos, v, true));  // EX without digits: not an exponent
+    CHECK((v == 2 && pos == 1));
+    pos = 0;
+    CHECK(toolcomp::expr::read_number("3EX2", pos, v, false));  // exponents off (LinuxCNC)
+    CHECK((v == 3 && pos == 1));
+    pos = 0;
+    CHECK_FALSE(toolcomp::expr::read_number("1EX999", pos, v, true));  // out of range
+    CHECK(pos == 0);
 }

@@ -1,4 +1,6 @@
 #include "toolcomp/program/expr.hpp"
+#include "toolcomp/program/decimal.hpp"
+#include "toolcomp/program/text.hpp"
 
 #include <cctype>
 #include <charconv>
@@ -14,11 +16,11 @@ namespace {
 
 constexpr int kMaxDepth = 200;
 
-bool ident_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_' || c == '$'; }
-bool ident_char(char c) { return ident_start(c) || std::isdigit(static_cast<unsigned char>(c)); }
+bool ident_start(char c) { return ascii_alpha(c) || c == '_' || c == '$'; }
+bool ident_char(char c) { return ident_start(c) || ascii_digit(c); }
 std::string upper(std::string_view s) {
     std::string r(s);
-    for (char& c : r) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    for (char& c : r) c = ascii_upper(c);
     return r;
 }
 
@@ -70,7 +72,7 @@ private:
     bool matches(std::string_view spelling) const {
         if (t_.size() - p_ < spelling.size()) return false;
         for (std::size_t i = 0; i < spelling.size(); ++i)
-            if (std::toupper(static_cast<unsigned char>(t_[p_ + i])) != spelling[i]) return false;
+            if (ascii_upper(t_[p_ + i]) != spelling[i]) return false;
         // (ISO controls read lines without blanks: "[#3LT3]" has the operator LT.)
         if (ident_start(spelling[0]) && !s_.hash_parameters) {
             std::size_t end = p_ + spelling.size();
@@ -132,7 +134,7 @@ private:
     void primary(int depth) {
         char c = t_[p_];
         double v;
-        if (std::isdigit(static_cast<unsigned char>(c)) || c == '.') {
+        if (ascii_digit(c) || c == '.') {
             if (!read_number(t_, p_, v, s_.ex_exponent)) error("Bad number");
             e_.code.push_back(Instr{Op::number, 0, Fn::sin, 0, v});
             return;
@@ -233,7 +235,7 @@ private:
             parameter(depth + 1);
         } else if (c == s_.open) {
             primary(depth + 1);
-        } else if (std::isdigit(static_cast<unsigned char>(c)) || c == '.') {
+        } else if (ascii_digit(c) || c == '.') {
             double v;
             if (!read_number(t_, p_, v, false)) error("Bad number");
             e_.code.push_back(Instr{Op::number, 0, Fn::sin, 0, v});
@@ -251,7 +253,7 @@ private:
         if (p_ >= t_.size()) error("Named parameter not terminated");
         std::string name;
         for (std::size_t i = b; i < p_; ++i)
-            if (t_[i] != ' ' && t_[i] != '\t') name.push_back(static_cast<char>(std::tolower(static_cast<unsigned char>(t_[i]))));
+            if (t_[i] != ' ' && t_[i] != '\t') name.push_back(ascii_lower(t_[i]));
         ++p_;
         if (name.empty()) error("Named parameter with no name");
         return name;
@@ -409,32 +411,36 @@ const Syntax& fanuc_syntax() {
 
 bool read_number(std::string_view t, std::size_t& pos, double& value, bool ex_exponent) {
     std::size_t p = pos;
-    std::string buf;
-    if (p < t.size() && (t[p] == '-' || t[p] == '+')) buf.push_back(t[p++]);
+    bool negative = false;
+    if (p < t.size() && (t[p] == '-' || t[p] == '+')) negative = t[p++] == '-';
+    const std::size_t first = p;
     bool digits = false;
-    while (p < t.size() && std::isdigit(static_cast<unsigned char>(t[p]))) buf.push_back(t[p++]), digits = true;
+    while (p < t.size() && ascii_digit(t[p])) ++p, digits = true;
     if (p < t.size() && t[p] == '.') {
-        buf.push_back(t[p++]);
-        while (p < t.size() && std::isdigit(static_cast<unsigned char>(t[p]))) buf.push_back(t[p++]), digits = true;
+        ++p;
+        while (p < t.size() && ascii_digit(t[p])) ++p, digits = true;
     }
     if (!digits) return false;
-    if (ex_exponent && p + 2 < t.size() + 1 && p + 1 < t.size() && std::toupper(static_cast<unsigned char>(t[p])) == 'E' &&
-        std::toupper(static_cast<unsigned char>(t[p + 1])) == 'X') {
+    const std::string_view mantissa = t.substr(first, p - first);
+    double v = 0;
+    bool read = false;
+    if (ex_exponent && p + 1 < t.size() && ascii_upper(t[p]) == 'E' && ascii_upper(t[p + 1]) == 'X') {
         std::size_t q = p + 2;
-        std::string ex = "e";
-        if (q < t.size() && (t[q] == '-' || t[q] == '+')) ex.push_back(t[q++]);
-        bool ed = false;
-        while (q < t.size() && std::isdigit(static_cast<unsigned char>(t[q]))) ex.push_back(t[q++]), ed = true;
-        if (ed) {
-            buf += ex;
+        std::string buf(mantissa);
+        buf += 'e';
+        if (q < t.size() && (t[q] == '-' || t[q] == '+')) buf.push_back(t[q++]);
+        const std::size_t exp_digits = q;
+        while (q < t.size() && ascii_digit(t[q])) buf.push_back(t[q++]);
+        if (q > exp_digits) {
+            const auto r = std::from_chars(buf.data(), buf.data() + buf.size(), v);
+            if (r.ec != std::errc()) return false;
+            read = true;
             p = q;
         }
     }
-    double v = 0;
-    const char* first = buf.data() + (buf[0] == '+' ? 1 : 0);
-    auto r = std::from_chars(first, buf.data() + buf.size(), v);
-    if (r.ec != std::errc() || !std::isfinite(v)) return false;
-    value = v;
+    if (!read && !parse_decimal(mantissa, v)) return false;  // the digits' value, as from_chars rounds
+    if (!std::isfinite(v)) return false;
+    value = negative ? -v : v;
     pos = p;
     return true;
 }

@@ -17,5 +17,6 @@ inline std::string_view skip_bom(std::string_view text) {
 inline bool ascii_digit(char c) { return c >= '0' && c <= '9'; }
 inline bool ascii_alpha(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
 inline char ascii_upper(char c) { return c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c; }
+inline char ascii_lower(char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c; }
 
 }  // namespace toolcomp

@@ -11,11 +11,22 @@
 namespace toolcomp::sinumerik {
 
 namespace {
+// Every name of the lists below has two letters or more: the address words of a block (X, G,
+// F ...) are passed by with one test.
+template <std::size_t N>
+constexpr bool all_longer_than_one(const std::string_view (&names)[N]) {
+    for (std::string_view n : names)
+        if (n.size() < 2) return false;
+    return true;
+}
+
 bool is_keyword(std::string_view k) {
     static constexpr std::string_view known[] = {
         "NORM", "KONT", "CDON", "CDOF", "CDOF2", "CUT2D", "DIAMON", "DIAMOF", "DIAM90", "TRANS", "ATRANS", "ROT",
         "AROT", "SCALE", "ASCALE", "MIRROR", "AMIRROR", "SUPA", "TCOABS", "RET", "STOPRE", "TRAFOOF",
         "CIP", "CT"};
+    static_assert(all_longer_than_one(known));
+    if (k.size() < 2) return false;
     for (std::string_view x : known)
         if (x == k) return true;
     return false;
@@ -27,6 +38,8 @@ bool is_unsupported(std::string_view k) {
         "TRANSMIT", "TCOFR", "TCOFRZ", "TCOFRY", "TCOFRX", "ASPLINE", "BSPLINE", "CSPLINE", "POLY", "OFFN_AX", "ORIC", "ORID", "CYCLE81",
         "CYCLE82", "CYCLE83", "POCKET3", "POCKET4", "SLOT1", "SLOT2", "CYCLE800", "CYCLE832", "MCALL", "EXTERN",
         "G110", "G111", "G112", "BRISK", "SOFT", "FFWON", "FFWOF"};
+    static_assert(all_longer_than_one(known));
+    if (k.size() < 2) return false;
     for (std::string_view x : known)
         if (x == k) return true;
     return false;
@@ -35,14 +48,14 @@ bool is_unsupported(std::string_view k) {
 
 void Interp::block(std::span<const Token> t) {
     Context& c = stack_.back();
-    if (t[0].key == "DEF") {
+    if (t[0].is("DEF")) {
         if (c.executable_seen)
             fail("14500", "14500 Illegal DEF or PROC instruction in the program (DEF after the first executable block)",
                  t[0].column);
         define(t);
         return;
     }
-    if (t[0].key == "PROC") {
+    if (t[0].is("PROC")) {
         if (c.pc != 1 && c.executable_seen)
             fail("14500", "14500 Illegal DEF or PROC instruction in the program", t[0].column);
         return;
@@ -53,26 +66,27 @@ void Interp::block(std::span<const Token> t) {
     int call_column = 0;
     for (const Token& x : t) {
         const std::string& k = x.key;
-        if (k == "=") {
+        const std::string_view kv = k;  // compared with literals: the length first
+        if (kv == "=") {
             assign(x);
             continue;
         }
-        if (k == "GETTCOR" || k == "SETTCOR" || k == "LENTOAX") {
+        if (kv == "GETTCOR" || kv == "SETTCOR" || kv == "LENTOAX") {
             value_call(x);
             continue;
         }
-        if (k == "MSG") {
+        if (kv == "MSG") {
             std::string m = x.text;
             if (m.size() >= 2 && m.front() == '"' && m.back() == '"') m = m.substr(1, m.size() - 2);
             info("message", m, x.column);
             continue;
         }
-        if (k == "SETAL") {
+        if (kv == "SETAL") {
             const long n = std::lround(eval_text(x.text, x.column));
             fail("setal", "Alarm " + std::to_string(n) + " set by the program (SETAL)", x.column);
         }
-        if (is_unsupported(k) || (k == "G" && (x.value == 110 || x.value == 111 || x.value == 112)))
-            fail("unsupported_word", (k == "G" ? "G" + std::to_string(int_value(x.value)) : k) +
+        if (is_unsupported(k) || (kv == "G" && (x.value == 110 || x.value == 111 || x.value == 112)))
+            fail("unsupported_word", (kv == "G" ? "G" + std::to_string(int_value(x.value)) : k) +
                                          " is not supported by toolcomp", x.column);
         if (x.has_value || x.expr >= 0 || (!x.text.empty() && x.text.front() == '"')) {
             if (k.size() == 1 && k[0] >= 'A' && k[0] <= 'Z') {
@@ -107,9 +121,9 @@ void Interp::block(std::span<const Token> t) {
                 v = Value{true, value_of(x), x.param, x.column};
                 continue;
             }
-            Value* v = k == "CR" ? &b.cr : k == "AR" ? &b.ar : k == "TURN" ? &b.turn : k == "DISC" ? &b.disc
-                     : k == "OFFN" ? &b.offn : k == "RPL" ? &b.rpl : k == "I1" ? &b.i1 : k == "J1" ? &b.j1
-                     : k == "K1" ? &b.k1 : k == "TCARR" ? &b.tcarr : nullptr;
+            Value* v = kv == "CR" ? &b.cr : kv == "AR" ? &b.ar : kv == "TURN" ? &b.turn : kv == "DISC" ? &b.disc
+                     : kv == "OFFN" ? &b.offn : kv == "RPL" ? &b.rpl : kv == "I1" ? &b.i1 : kv == "J1" ? &b.j1
+                     : kv == "K1" ? &b.k1 : kv == "TCARR" ? &b.tcarr : nullptr;
             if (!v) fail("unsupported_word", (x.text.empty() || x.text[0] == '"' ? k + "=" : x.text) + " is not supported by toolcomp", x.column);
             if (v->set) fail("12010", "12010 Address " + k + " programmed too often", x.column);
             *v = Value{true, value_of(x), x.param, x.column};
@@ -119,7 +133,7 @@ void Interp::block(std::span<const Token> t) {
             b.keywords.emplace_back(k, x.column);
             continue;
         }
-        if (k.rfind("GOTO", 0) == 0 || k == "IF" || k == "FOR" || k == "WHILE")
+        if (k.rfind("GOTO", 0) == 0 || kv == "IF" || kv == "FOR" || kv == "WHILE")
             fail("syntax_error", k + " must begin its block", x.column);
         // Anything else names a subprogram (found on the search path, or an error there).
         if (!call_name.empty()) fail("12010", "12010 Two subprogram calls in one block", x.column);

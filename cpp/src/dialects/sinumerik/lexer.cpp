@@ -9,12 +9,12 @@ namespace toolcomp::sinumerik {
 
 namespace {
 
-bool ident_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_' || c == '$'; }
-bool ident_char(char c) { return ident_start(c) || std::isdigit(static_cast<unsigned char>(c)); }
-bool is_digit(char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; }
+bool ident_start(char c) { return ascii_alpha(c) || c == '_' || c == '$'; }
+bool ident_char(char c) { return ident_start(c) || ascii_digit(c); }
+bool is_digit(char c) { return ascii_digit(c); }
 std::string upper(std::string_view s) {
     std::string r(s);
-    for (char& c : r) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    for (char& c : r) c = ascii_upper(c);
     return r;
 }
 
@@ -163,7 +163,7 @@ private:
             prog_.add_token(std::move(t));
             return;
         }
-        if (name == "FOR") {
+        if (std::string_view(name) == "FOR") {
             skip();
             if (i_ >= s_.size() || !ident_start(s_[i_])) error("Loop variable expected after FOR");
             t.key = "FOR";
@@ -182,7 +182,7 @@ private:
             prog_.add_token(std::move(to));
             return;
         }
-        if (name == "DEF") {
+        if (std::string_view(name) == "DEF") {
             skip();
             t.key = "DEF";
             t.text = ident();
@@ -230,7 +230,7 @@ private:
                 return;
             }
         }
-        if (name == "PROC") {
+        if (std::string_view(name) == "PROC") {
             skip();
             t.key = "PROC";
             t.text = ident();
