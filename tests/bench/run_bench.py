@@ -8,7 +8,8 @@ times as long, to see that time grows linearly; 0 or 1 to skip); TOOLCOMP_BENCH_
 (default 50,000,000: tc.iter_run over a program file of that many blocks, about 0.9 GB, written
 to the temporary directory; 0 to skip). Peak memory of one run and of the stream are measured
 in a fresh interpreter each. Also a 1M-block Heidenhain
-L/CR program and a LinuxCNC program that computes the same contour in an o-while loop.
+L/CR program, the same contour for a Sinumerik 840D, and a LinuxCNC program that computes it
+in an o-while loop.
 """
 import os
 import resource
@@ -59,6 +60,24 @@ def generate_heidenhain(n_blocks):
         y += 0.001
     out += ["L X-10 Y-10 R0", "END PGM BENCH MM"]
     return "".join(f"{i} {b}\n" for i, b in enumerate(out)), rows * 6
+
+
+def generate_sinumerik(n_blocks):
+    """The same contour for a Sinumerik 840D: tool data in $TC_DP, G42 with a tool of r = 1 mm."""
+    out = ["$TC_DP1[1,1]=120", "$TC_DP3[1,1]=50", "$TC_DP6[1,1]=1", "T1 D1 M6", "G17 G90 G71",
+           "G0 X0 Y0 Z5", "G1 Z-1 F600", "G42"]
+    y = 0.0
+    rows = n_blocks // 6
+    for _ in range(rows):
+        out.append("G1 X100 Y%.3f" % y)
+        out.append("G1 X100 Y%.3f" % (y + 2))
+        out.append("G1 X95 Y%.3f" % (y + 2))
+        out.append("G3 X95 Y%.3f I0 J2.5" % (y + 7))
+        out.append("G1 X5 Y%.3f" % (y + 7))
+        out.append("G2 X5 Y%.3f I0 J-3.5" % y)
+        y += 0.001
+    out += ["G40 G1 X-10 Y-10", "M30"]
+    return "\n".join(out) + "\n", rows * 6
 
 
 def generate_loops(n_blocks):
@@ -294,6 +313,7 @@ def main():
     bench_program(n, True, tools)
     bench_program(n, False, tools)
     bench_other("Heidenhain L/CR with RR", *generate_heidenhain(n), "heidenhain", None)
+    bench_other("Sinumerik G1/G2/G3 with G42", *generate_sinumerik(n), "sinumerik", None)
     bench_other("LinuxCNC o-while loop with G42.1", *generate_loops(n), "linuxcnc", tools)
     bench_batch(n, tools)
     bench_memory(n)
