@@ -259,7 +259,7 @@ def bench_other(label, text, blocks, dialect, tools):
     print(f"  toolcomp parse : {t_parse:7.3f} s  {t_parse / blocks * 1e9:5.0f} ns/block")
     print(f"  toolcomp run   : {t_run:7.3f} s  {blocks / t_run / 1e6:6.2f} M blocks/s  "
           f"{t_run / blocks * 1e9:5.0f} ns/block  ({len(res.path):,} segments, "
-          f"{int((res.path.side != 0).sum()):,} compensated)")
+          f"{int((res.path.side != 0).sum()):,} compensated, {len(res.diagnostics):,} warnings)")
     del res, prog
 
 
