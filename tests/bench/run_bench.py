@@ -22,62 +22,53 @@ import time
 import toolcomp as tc
 
 
+# Rows of 6 moves: long line, two corners, a CCW semicircle, a line back, a CW semicircle;
+# each row 1 um above the one before. The blocks' Y values are the row's y plus these.
+_ROW_Y = (0, 2, 2, 7, 7, 0)
+_ISO_ROW = ("G1 X100 Y%.3f", "G1 X100 Y%.3f", "G1 X95 Y%.3f", "G3 X95 Y%.3f I0 J2.5", "G1 X5 Y%.3f",
+            "G2 X5 Y%.3f I0 J-3.5")
+_KLARTEXT_ROW = ("L X+100 Y%+.3f", "L X+100 Y%+.3f", "L X+95 Y%+.3f", "CR X+95 Y%+.3f R+2.5 DR+", "L X+5 Y%+.3f",
+                 "CR X+5 Y%+.3f R+3.5 DR-")
+
+
+def contour_rows(n_blocks, row):
+    """The blocks of n_blocks // 6 rows, each of the six formats of `row`."""
+    out = []
+    for i in range(n_blocks // 6):
+        y = i * 0.001
+        out += [f % (y + dy) for f, dy in zip(row, _ROW_Y)]
+    return out
+
+
 def generate(n_blocks, comp):
-    """Rows of 6 moves: long line, two corners, a CCW semicircle, a line back, a CW semicircle;
-    with ``comp``, cutter radius compensation G42 (r = 1 mm) on for all of them."""
+    """The contour rows as a LinuxCNC program; with ``comp``, cutter radius compensation
+    G42 (r = 1 mm) on for all of them."""
     out = ["G21 G17 G90 G94 G40 G49", "T1 M6", "G43 H1", "G0 X0 Y0 Z5", "G1 Z-1 F600"]
     if comp:
         out.append("G42.1 D2")
-    y = 0.0
-    rows = n_blocks // 6
-    for _ in range(rows):
-        out.append("G1 X100 Y%.3f" % y)
-        out.append("G1 X100 Y%.3f" % (y + 2))
-        out.append("G1 X95 Y%.3f" % (y + 2))
-        out.append("G3 X95 Y%.3f I0 J2.5" % (y + 7))
-        out.append("G1 X5 Y%.3f" % (y + 7))
-        out.append("G2 X5 Y%.3f I0 J-3.5" % y)
-        y += 0.001
+    out += contour_rows(n_blocks, _ISO_ROW)
     if comp:
         out.append("G40 G1 X-10 Y-10")
     out.append("M2")
-    return "\n".join(out) + "\n", rows * 6
+    return "\n".join(out) + "\n", n_blocks // 6 * 6
 
 
 def generate_heidenhain(n_blocks):
     """The same contour in Klartext: L and CR blocks, RR with a tool of R1 (1 mm)."""
     out = ["BEGIN PGM BENCH MM", "TOOL DEF 1 L+0 R+1", "TOOL CALL 1 Z S1000", "L X+0 Y+0 Z+5 R0 FMAX",
            "L Z-1 F600", "L X+0 Y+0 RR F600"]
-    y = 0.0
-    rows = n_blocks // 6
-    for _ in range(rows):
-        out.append("L X+100 Y%+.3f" % y)
-        out.append("L X+100 Y%+.3f" % (y + 2))
-        out.append("L X+95 Y%+.3f" % (y + 2))
-        out.append("CR X+95 Y%+.3f R+2.5 DR+" % (y + 7))
-        out.append("L X+5 Y%+.3f" % (y + 7))
-        out.append("CR X+5 Y%+.3f R+3.5 DR-" % y)
-        y += 0.001
+    out += contour_rows(n_blocks, _KLARTEXT_ROW)
     out += ["L X-10 Y-10 R0", "END PGM BENCH MM"]
-    return "".join(f"{i} {b}\n" for i, b in enumerate(out)), rows * 6
+    return "".join(f"{i} {b}\n" for i, b in enumerate(out)), n_blocks // 6 * 6
 
 
 def generate_sinumerik(n_blocks):
     """The same contour for a Sinumerik 840D: tool data in $TC_DP, G42 with a tool of r = 1 mm."""
     out = ["$TC_DP1[1,1]=120", "$TC_DP3[1,1]=50", "$TC_DP6[1,1]=1", "T1 D1 M6", "G17 G90 G71",
            "G0 X0 Y0 Z5", "G1 Z-1 F600", "G42"]
-    y = 0.0
-    rows = n_blocks // 6
-    for _ in range(rows):
-        out.append("G1 X100 Y%.3f" % y)
-        out.append("G1 X100 Y%.3f" % (y + 2))
-        out.append("G1 X95 Y%.3f" % (y + 2))
-        out.append("G3 X95 Y%.3f I0 J2.5" % (y + 7))
-        out.append("G1 X5 Y%.3f" % (y + 7))
-        out.append("G2 X5 Y%.3f I0 J-3.5" % y)
-        y += 0.001
+    out += contour_rows(n_blocks, _ISO_ROW)
     out += ["G40 G1 X-10 Y-10", "M30"]
-    return "\n".join(out) + "\n", rows * 6
+    return "\n".join(out) + "\n", n_blocks // 6 * 6
 
 
 def generate_loops(n_blocks):
