@@ -18,11 +18,6 @@ constexpr int kMaxDepth = 200;
 
 bool ident_start(char c) { return ascii_alpha(c) || c == '_' || c == '$'; }
 bool ident_char(char c) { return ident_start(c) || ascii_digit(c); }
-std::string upper(std::string_view s) {
-    std::string r(s);
-    for (char& c : r) c = ascii_upper(c);
-    return r;
-}
 
 struct FnName {
     std::string_view name;
@@ -152,7 +147,7 @@ private:
         if (!ident_start(c)) error(std::string("Unexpected '") + c + "' in expression");
         std::size_t b = p_;
         while (p_ < t_.size() && ident_char(t_[p_])) ++p_;
-        std::string name = upper(t_.substr(b, p_ - b));
+        std::string name = to_upper_ascii(t_.substr(b, p_ - b));
         if (!s_.hash_parameters && (name == "TRUE" || name == "FALSE")) {
             e_.code.push_back(Instr{Op::number, 0, Fn::sin, 0, name == "TRUE" ? 1.0 : 0.0});
             return;

@@ -1,5 +1,6 @@
 // Heidenhain TOOL.T reader and writer (rules in format_heidenhain.hpp).
 #include "toolcomp/tools/format_heidenhain.hpp"
+#include "toolcomp/program/text.hpp"
 
 #include "number_text.hpp"
 #include "text_lines.hpp"
@@ -76,12 +77,6 @@ std::vector<Word> words_of(std::string_view s, std::size_t first = 0) {
     return out;
 }
 
-std::string upper(std::string_view s) {
-    std::string r(s);
-    for (char& c : r)
-        if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
-    return r;
-}
 
 bool blank_only(std::string_view s) {
     for (char c : s)
@@ -94,7 +89,7 @@ bool blank_only(std::string_view s) {
 enum class Role { other, t, name, doc, l, r, r2, dl, dr, dr2 };
 
 Role role_of(std::string_view title) {
-    const std::string u = upper(title);
+    const std::string u = to_upper_ascii(title);
     if (u == "T") return Role::t;
     if (u == "NAME") return Role::name;
     if (u == "DOC") return Role::doc;
@@ -431,12 +426,12 @@ ToolTable read_heidenhain_table(std::string_view text, LengthUnit units) {
         const std::string first = lines.empty() ? std::string() : lines[0].text;
         const bool bom = first.compare(0, 3, "\xEF\xBB\xBF") == 0;
         const auto w = words_of(first, bom ? 1 : 0);
-        if (w.empty() || upper(w[0].text) != "BEGIN")
+        if (w.empty() || to_upper_ascii(w[0].text) != "BEGIN")
             error("heidenhain_missing_begin", "a TOOL.T file starts with a line like 'BEGIN TOOL .T MM'", 1,
                   w.empty() ? 1 : w[0].column + 1);
         std::size_t name_end = w.size();
         if (w.size() >= 3) {
-            const std::string u = upper(w.back().text);
+            const std::string u = to_upper_ascii(w.back().text);
             if (u == "MM" || u == "INCH") {
                 units = u == "MM" ? LengthUnit::mm : LengthUnit::inch;
                 name_end = w.size() - 1;
@@ -444,7 +439,7 @@ ToolTable read_heidenhain_table(std::string_view text, LengthUnit units) {
         }
         std::string name;
         for (std::size_t i = 1; i < name_end; ++i) name += w[i].text;
-        const std::string un = upper(name);
+        const std::string un = to_upper_ascii(name);
         if (un.size() < 2 || un.compare(un.size() - 2, 2, ".T") != 0)
             error("heidenhain_not_tool_table",
                   "'" + first.substr(bom ? 3 : 0) + "' is not the BEGIN line of a tool table (TOOL .T)", 1,
@@ -461,7 +456,7 @@ ToolTable read_heidenhain_table(std::string_view text, LengthUnit units) {
         std::set<std::string> seen;
         bool have_t = false;
         for (const Word& w : words_of(h)) {
-            const std::string u = upper(w.text);
+            const std::string u = to_upper_ascii(w.text);
             if (u == "[END]") break;
             // Column titles start with a letter; a number means line 2 is already a tool row.
             if (std::isdigit(static_cast<unsigned char>(u[0])) || u[0] == '+' || u[0] == '-' || u[0] == '.')
@@ -493,7 +488,7 @@ ToolTable read_heidenhain_table(std::string_view text, LengthUnit units) {
         const auto w = words_of(s);
         if (ended)
             error("heidenhain_text_after_end", "text after the [END] line", line_no, w.front().column + 1);
-        if (upper(tables::trim(s)) == "[END]") {
+        if (to_upper_ascii(tables::trim(s)) == "[END]") {
             ended = true;
             src->end_line = li;
             continue;

@@ -3,6 +3,7 @@
 // write one) is not part of the first line. Letters and digits of a program are ASCII
 // whatever the process's locale (std::isalpha would take the locale's, and Python sets it
 // from the environment: in a Latin-1 locale 'ä' would be a letter).
+#include <string>
 #include <string_view>
 
 namespace toolcomp {
@@ -18,5 +19,10 @@ inline bool ascii_digit(char c) { return c >= '0' && c <= '9'; }
 inline bool ascii_alpha(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
 inline char ascii_upper(char c) { return c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c; }
 inline char ascii_lower(char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c; }
+inline std::string to_upper_ascii(std::string_view s) {
+    std::string r(s);
+    for (char& c : r) c = ascii_upper(c);
+    return r;
+}
 
 }  // namespace toolcomp

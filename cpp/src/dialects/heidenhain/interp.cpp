@@ -1,6 +1,7 @@
 // Klartext block execution: program frame, tools, straight lines, feeds, M functions and
 // radius compensation requests. Arcs, polar moves, RND and CHF are in contour.cpp.
 #include <algorithm>
+#include "toolcomp/program/text.hpp"
 #include <cctype>
 #include <cmath>
 #include <filesystem>
@@ -412,11 +413,6 @@ bool Interp::run_blocks(const Program& prog, int depth) {
 namespace {
 constexpr int kMaxProgramCallDepth = 100;  // CALL PGM nesting (endless recursion guard)
 
-std::string upper(std::string s) {
-    for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    return s;
-}
-
 // The entry `name` of `dir` (a regular file, or a directory with `directory`), the name
 // compared without regard to case when there is no exact match (TNC file names are
 // case-insensitive). Only `dir` itself is listed.
@@ -427,11 +423,11 @@ std::optional<std::filesystem::path> entry_in(const std::filesystem::path& dir, 
     auto kind_ok = [&](const fs::path& p) { return directory ? fs::is_directory(p, ec) : fs::is_regular_file(p, ec); };
     if (const fs::path exact = dir / name; kind_ok(exact)) return exact;
     if (!fs::is_directory(dir, ec)) return std::nullopt;
-    const std::string want = upper(name);
+    const std::string want = to_upper_ascii(name);
     std::optional<fs::path> found;
     for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
         const std::string n = it->path().filename().string();
-        if (upper(n) == want && kind_ok(it->path()) && (!found || n < found->filename().string()))
+        if (to_upper_ascii(n) == want && kind_ok(it->path()) && (!found || n < found->filename().string()))
             found = it->path();  // several spellings: the first in byte order, for a stable choice
     }
     return found;

@@ -235,13 +235,13 @@ Program parse(std::string_view text, std::string name, bool strict) {
     std::size_t pos = 0;
     int line_no = 0;
     bool ended = false;  // END PGM seen
+    const auto find = [&](char c, std::size_t from, std::size_t to) {  // `to` when not found
+        const void* p = std::memchr(text.data() + from, c, to - from);
+        return p ? static_cast<std::size_t>(static_cast<const char*>(p) - text.data()) : to;
+    };
     while (pos <= text.size()) {
         // A line ends with "\n" (CRs right before it are blanks: "\r\n", "\r\r\n") or with a
         // lone "\r" (old Mac line ends). nl: the last character of the line ending.
-        const auto find = [&](char c, std::size_t from, std::size_t to) {
-            const void* p = std::memchr(text.data() + from, c, to - from);
-            return p ? static_cast<std::size_t>(static_cast<const char*>(p) - text.data()) : to;
-        };
         const std::size_t lf = find('\n', pos, text.size());
         std::size_t nl = find('\r', pos, lf);  // the first CR or LF
         if (nl < text.size() && text[nl] == '\r') {

@@ -11,39 +11,36 @@
 namespace toolcomp::sinumerik {
 
 namespace {
-// Every name of the lists below has two letters or more: the address words of a block (X, G,
-// F ...) are passed by with one test.
+// Words that are keywords, and real 840D words toolcomp does not run (an explicit error
+// rather than a silently different path). Every name has two letters or more.
+constexpr std::string_view kKeywords[] = {
+    "NORM", "KONT", "CDON", "CDOF", "CDOF2", "CUT2D", "DIAMON", "DIAMOF", "DIAM90", "TRANS", "ATRANS", "ROT",
+    "AROT", "SCALE", "ASCALE", "MIRROR", "AMIRROR", "SUPA", "TCOABS", "RET", "STOPRE", "TRAFOOF",
+    "CIP", "CT"};
+constexpr std::string_view kUnsupported[] = {
+    "KONTC", "KONTT", "CUT2DF", "CUT3DC", "CUT3DF", "CUT3DFS", "CUT3DFF", "CUT3DCC", "CUT3DCCD", "TRAORI", "TRACYL",
+    "TRANSMIT", "TCOFR", "TCOFRZ", "TCOFRY", "TCOFRX", "ASPLINE", "BSPLINE", "CSPLINE", "POLY", "OFFN_AX", "ORIC", "ORID", "CYCLE81",
+    "CYCLE82", "CYCLE83", "POCKET3", "POCKET4", "SLOT1", "SLOT2", "CYCLE800", "CYCLE832", "MCALL", "EXTERN",
+    "G110", "G111", "G112", "BRISK", "SOFT", "FFWON", "FFWOF"};
+
 template <std::size_t N>
 constexpr bool all_longer_than_one(const std::string_view (&names)[N]) {
     for (std::string_view n : names)
         if (n.size() < 2) return false;
     return true;
 }
+static_assert(all_longer_than_one(kKeywords) && all_longer_than_one(kUnsupported));
 
-bool is_keyword(std::string_view k) {
-    static constexpr std::string_view known[] = {
-        "NORM", "KONT", "CDON", "CDOF", "CDOF2", "CUT2D", "DIAMON", "DIAMOF", "DIAM90", "TRANS", "ATRANS", "ROT",
-        "AROT", "SCALE", "ASCALE", "MIRROR", "AMIRROR", "SUPA", "TCOABS", "RET", "STOPRE", "TRAFOOF",
-        "CIP", "CT"};
-    static_assert(all_longer_than_one(known));
+// k is one of `names`; the address words of a block (X, G, F ...) are passed by with one test.
+template <std::size_t N>
+bool listed(const std::string_view (&names)[N], std::string_view k) {
     if (k.size() < 2) return false;
-    for (std::string_view x : known)
+    for (std::string_view x : names)
         if (x == k) return true;
     return false;
 }
-// Real 840D words toolcomp does not run: an explicit error rather than a silently different path.
-bool is_unsupported(std::string_view k) {
-    static constexpr std::string_view known[] = {
-        "KONTC", "KONTT", "CUT2DF", "CUT3DC", "CUT3DF", "CUT3DFS", "CUT3DFF", "CUT3DCC", "CUT3DCCD", "TRAORI", "TRACYL",
-        "TRANSMIT", "TCOFR", "TCOFRZ", "TCOFRY", "TCOFRX", "ASPLINE", "BSPLINE", "CSPLINE", "POLY", "OFFN_AX", "ORIC", "ORID", "CYCLE81",
-        "CYCLE82", "CYCLE83", "POCKET3", "POCKET4", "SLOT1", "SLOT2", "CYCLE800", "CYCLE832", "MCALL", "EXTERN",
-        "G110", "G111", "G112", "BRISK", "SOFT", "FFWON", "FFWOF"};
-    static_assert(all_longer_than_one(known));
-    if (k.size() < 2) return false;
-    for (std::string_view x : known)
-        if (x == k) return true;
-    return false;
-}
+bool is_keyword(std::string_view k) { return listed(kKeywords, k); }
+bool is_unsupported(std::string_view k) { return listed(kUnsupported, k); }
 }  // namespace
 
 void Interp::block(std::span<const Token> t) {
@@ -66,27 +63,26 @@ void Interp::block(std::span<const Token> t) {
     int call_column = 0;
     for (const Token& x : t) {
         const std::string& k = x.key;
-        const std::string_view kv = k;  // compared with literals: the length first
-        if (kv == "=") {
+        if (x.is("=")) {
             assign(x);
             continue;
         }
-        if (kv == "GETTCOR" || kv == "SETTCOR" || kv == "LENTOAX") {
+        if (x.is("GETTCOR") || x.is("SETTCOR") || x.is("LENTOAX")) {
             value_call(x);
             continue;
         }
-        if (kv == "MSG") {
+        if (x.is("MSG")) {
             std::string m = x.text;
             if (m.size() >= 2 && m.front() == '"' && m.back() == '"') m = m.substr(1, m.size() - 2);
             info("message", m, x.column);
             continue;
         }
-        if (kv == "SETAL") {
+        if (x.is("SETAL")) {
             const long n = std::lround(eval_text(x.text, x.column));
             fail("setal", "Alarm " + std::to_string(n) + " set by the program (SETAL)", x.column);
         }
-        if (is_unsupported(k) || (kv == "G" && (x.value == 110 || x.value == 111 || x.value == 112)))
-            fail("unsupported_word", (kv == "G" ? "G" + std::to_string(int_value(x.value)) : k) +
+        if (is_unsupported(k) || (x.is("G") && (x.value == 110 || x.value == 111 || x.value == 112)))
+            fail("unsupported_word", (x.is("G") ? "G" + std::to_string(int_value(x.value)) : k) +
                                          " is not supported by toolcomp", x.column);
         if (x.has_value || x.expr >= 0 || (!x.text.empty() && x.text.front() == '"')) {
             if (k.size() == 1 && k[0] >= 'A' && k[0] <= 'Z') {
@@ -121,9 +117,9 @@ void Interp::block(std::span<const Token> t) {
                 v = Value{true, value_of(x), x.param, x.column};
                 continue;
             }
-            Value* v = kv == "CR" ? &b.cr : kv == "AR" ? &b.ar : kv == "TURN" ? &b.turn : kv == "DISC" ? &b.disc
-                     : kv == "OFFN" ? &b.offn : kv == "RPL" ? &b.rpl : kv == "I1" ? &b.i1 : kv == "J1" ? &b.j1
-                     : kv == "K1" ? &b.k1 : kv == "TCARR" ? &b.tcarr : nullptr;
+            Value* v = x.is("CR") ? &b.cr : x.is("AR") ? &b.ar : x.is("TURN") ? &b.turn : x.is("DISC") ? &b.disc
+                     : x.is("OFFN") ? &b.offn : x.is("RPL") ? &b.rpl : x.is("I1") ? &b.i1 : x.is("J1") ? &b.j1
+                     : x.is("K1") ? &b.k1 : x.is("TCARR") ? &b.tcarr : nullptr;
             if (!v) fail("unsupported_word", (x.text.empty() || x.text[0] == '"' ? k + "=" : x.text) + " is not supported by toolcomp", x.column);
             if (v->set) fail("12010", "12010 Address " + k + " programmed too often", x.column);
             *v = Value{true, value_of(x), x.param, x.column};
@@ -133,7 +129,7 @@ void Interp::block(std::span<const Token> t) {
             b.keywords.emplace_back(k, x.column);
             continue;
         }
-        if (k.rfind("GOTO", 0) == 0 || kv == "IF" || kv == "FOR" || kv == "WHILE")
+        if (k.rfind("GOTO", 0) == 0 || x.is("IF") || x.is("FOR") || x.is("WHILE"))
             fail("syntax_error", k + " must begin its block", x.column);
         // Anything else names a subprogram (found on the search path, or an error there).
         if (!call_name.empty()) fail("12010", "12010 Two subprogram calls in one block", x.column);

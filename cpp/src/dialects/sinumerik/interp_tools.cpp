@@ -8,17 +8,11 @@
 
 #include "interp.hpp"
 #include "toolcomp/program/int_value.hpp"
+#include "toolcomp/program/text.hpp"
 #include "toolcomp/tools/format_sinumerik.hpp"
 #include "toolcomp/tools/tool_table.hpp"
 
 namespace toolcomp::sinumerik {
-
-namespace {
-std::string upper(std::string s) {
-    for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    return s;
-}
-}  // namespace
 
 void Interp::select_tool(const BlockData& b) {
     const Value& tv = b['T'];
@@ -27,7 +21,7 @@ void Interp::select_tool(const BlockData& b) {
         const Tool* found = nullptr;
         if (tools_)
             for (const Tool& x : tools_->tools())
-                if (upper(x.name) == upper(b.tool_name)) found = &x;
+                if (to_upper_ascii(x.name) == to_upper_ascii(b.tool_name)) found = &x;
         if (!found) fail("17190", "17190 Illegal T number: no tool named \"" + b.tool_name + "\"", b.tool_name_column);
         t = found->number;
     } else {

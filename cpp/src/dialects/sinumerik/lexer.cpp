@@ -12,11 +12,6 @@ namespace {
 bool ident_start(char c) { return ascii_alpha(c) || c == '_' || c == '$'; }
 bool ident_char(char c) { return ident_start(c) || ascii_digit(c); }
 bool is_digit(char c) { return ascii_digit(c); }
-std::string upper(std::string_view s) {
-    std::string r(s);
-    for (char& c : r) c = ascii_upper(c);
-    return r;
-}
 
 // Names with digits that are keywords, not an address and a number.
 constexpr std::array<std::string_view, 12> kDigitKeywords = {
@@ -72,7 +67,7 @@ public:
             if (j < s_.size() && s_[j] == ':') {
                 Token t;
                 t.key = ":";
-                t.text = upper(s_.substr(i_, j - i_));
+                t.text = to_upper_ascii(s_.substr(i_, j - i_));
                 t.column = col();
                 prog_.add_token(std::move(t));
                 i_ = j + 1;
@@ -98,7 +93,7 @@ private:
     std::string ident() {
         std::size_t b = i_;
         while (i_ < s_.size() && ident_char(s_[i_])) ++i_;
-        return upper(s_.substr(b, i_ - b));
+        return to_upper_ascii(s_.substr(b, i_ - b));
     }
     std::int32_t expression() {
         try {
@@ -159,7 +154,7 @@ private:
             std::size_t b = i_;
             while (i_ < s_.size() && ident_char(s_[i_])) ++i_;
             if (i_ == b) error("Jump label expected after " + name);
-            t.text = upper(s_.substr(b, i_ - b));
+            t.text = to_upper_ascii(s_.substr(b, i_ - b));
             prog_.add_token(std::move(t));
             return;
         }
