@@ -4,6 +4,7 @@
 // the same diagnostics in the same order, whether the run is short (no thread), long (many
 // batches, the stage waiting for the thread) or settled midway and continued.
 #include <catch2/catch.hpp>
+#include <algorithm>
 #include <random>
 #include <string>
 #include <vector>
@@ -25,6 +26,7 @@ void drive(Both& w, std::mt19937& rng, int calls) {
     std::uniform_real_distribution<double> step(-1.5, 1.5), unit(0, 1);
     Vec2 at(0, 0);
     int line = 1;
+    std::size_t settled = 0;
     auto element = [&] {
         const Vec2 to = at + Vec2(step(rng), step(rng));
         Element2 e = unit(rng) < 0.7 ? Element2::line(at, to)
@@ -51,12 +53,16 @@ void drive(Both& w, std::mt19937& rng, int calls) {
             Element2 e = element();
             at -= Vec2(step(rng), step(rng)) * 0.5;  // the tool centre strays off the contour
             const int file = static_cast<int>(unit(rng) * 3);
-            w.direct.compensated(e, line - 1, file, 1.0);
-            w.background.compensated(e, line - 1, file, 1.0);
+            // settled up to three programmed elements before (a stage looking ahead)
+            const std::size_t count = w.background.contour_count(), lag = static_cast<std::size_t>(unit(rng) * 4);
+            settled = std::max(settled, count > lag ? count - lag : 0);
+            w.direct.compensated(e, line - 1, file, 1.0, settled);
+            w.background.compensated(e, line - 1, file, 1.0, settled);
         } else if (u < 0.95) {
             const bool all = unit(rng) < 0.05;
             w.direct.report(w.want, 1.0, all);
             w.background.report(w.got, 1.0, all);
+            if (all) settled = 0;
         } else if (u < 0.951) {
             const double f = unit(rng) < 0.5 ? 25.4 : 1 / 25.4;
             w.direct.scale(f);

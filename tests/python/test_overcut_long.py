@@ -89,3 +89,43 @@ def test_warnings_before_an_error_stay_in_the_stream(tmp_path):
     got = seen(s.diagnostics)
     assert got == seen(lenient.diagnostics)[:len(got)]
     assert len(got) >= len(expected(n)) - 4  # all but the last slot's overcuts
+
+
+
+def keyhole():
+    """A keyhole under G41.1 D2 (r = 1), no inside corner: eight 12.5 mm lines along Y0
+    (lines 4-11), a CCW arc of radius 1.25 about (101, 0.75) from (100, 0) to (100, 1.5)
+    (line 12), nine lines back to X0 rising from Y1.5 by 0.004 per mm, split half a piece
+    off the first ones (lines 13-21). The tool centre runs 1 mm inside, so each line's comes
+    within the radius of the lines across the gap: the neighbours watched decide which
+    warn. Line 10 (X75-87.5, tool centre at Y1) is 0.55 mm from line 14 (Y1.55 at X87.5)."""
+    out = ["G21 G0 X0 Y-5", "G41.1 D2", "G1 X0 Y0 F100"]
+    out += [f"X{12.5 * k}" for k in range(1, 9)]
+    out += ["G3 X100 Y1.5 I1 J0.75"]
+    xs = [93.75 - 12.5 * k for k in range(8)] + [0]
+    out += [f"G1 X{x} Y{1.5 + 0.004 * (100 - x):.4f}" for x in xs]
+    out += ["G40 G0 X0 Y10", "M2"]
+    return "\n".join(out) + "\n"
+
+
+def overcuts(lookahead):
+    p = profile()
+    r = p.radius
+    r.lookahead = lookahead
+    r.gouge = tc.GougeReaction.skip  # only skipping looks ahead (no element here is skipped)
+    p.radius = r
+    res = tc.run(tc.Program.parse(keyhole()), tools=TOOLS, profile=p, strict=False)
+    assert [d.code for d in res.diagnostics if d.code != "comp_overcut"] == []
+    return sorted(x[1:] for x in seen(res.diagnostics) if x[0] == "comp_overcut")
+
+
+@pytest.mark.parametrize("lookahead", [2, 3, 5])
+def test_the_window_does_not_move_with_the_lookahead(lookahead):
+    # The neighbours watched are counted from the element's own place in the contour, not
+    # from where a longer look-ahead releases it. A stage holding its elements two blocks
+    # longer used to see two programmed elements fewer before and two more after: line 9
+    # warned about line 15, six elements on, and line 14 did not about line 11.
+    want = overcuts(1)
+    assert (10, 14) in want
+    assert all(abs(line - near) <= 4 for line, near in want)  # 3 neighbours, +1 for a corner's
+    assert overcuts(lookahead) == want

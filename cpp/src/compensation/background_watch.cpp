@@ -31,7 +31,7 @@ void BackgroundWatch::replay(const std::vector<Call>& calls) {
             case Op::configure: watch_.configure(c.line, c.a); break;
             case Op::programmed: watch_.programmed(c.e, c.line); break;
             case Op::tangent_slack: watch_.tangent_slack(c.a); break;
-            case Op::compensated: watch_.compensated(c.e, c.line, c.file, c.a); break;
+            case Op::compensated: watch_.compensated(c.e, c.line, c.file, c.a, c.at); break;
             case Op::scale: watch_.scale(c.a); break;
             case Op::report:
                 scratch_.clear();

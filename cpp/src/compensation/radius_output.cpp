@@ -33,12 +33,13 @@ void RadiusCompensation::watch_released(const Emitted& e) {
     const Vec2 s = plane2(m.start), x = plane2(m.end);
     const Element2 el = m.is_arc() ? Element2::arc(s, x, plane2(m.center), m.kind == MotionKind::arc_ccw ? 1 : -1, m.turns)
                                    : Element2::line(s, x);
-    overcut_.compensated(el, m.line, m.file, m.radius.radius);
+    overcut_.compensated(el, m.line, m.file, m.radius.radius, e.settled);
 }
 
 void RadiusCompensation::emit(const Held& h) {
     window_.emplace_back(h);  // made in place: one copy
     Emitted& e = window_.back();
+    e.settled = overcut_.contour_count();  // its neighbours are counted from here, not from its release
     if (have_last_) e.m.start = start_after(last_, last_off_, e.m);
     if (e.m.is_arc()) e.m.center[axes(e.m.plane).c] = e.m.start[axes(e.m.plane).c];
     e.in_plane = !e.m.generated && (plane2(e.m.end) - plane2(e.m.start)).norm() > tol::length;

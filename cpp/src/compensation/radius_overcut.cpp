@@ -185,9 +185,10 @@ inline void OvercutWatch::check(Comp& c, const Prog& p) const {
 
 void OvercutWatch::programmed(const Element2& e, int line) {
     if (neighbours_ <= 0) return;
-    // The last neighbours + 2 are kept: the ones before them are dropped in bulk now and then
+    // Kept from neighbours + 2 before the last compensated element's `settled` on (the next
+    // one's window starts there or later): the ones before are dropped in bulk now and then
     // (not one at a time from the front of the vector).
-    const std::size_t keep = static_cast<std::size_t>(neighbours_) + 2;
+    const std::size_t keep = static_cast<std::size_t>(neighbours_) + 2 + std::min(count_ + 1 - settled_, kLag);
     if (prog_.size() >= keep + 32) prog_.erase(prog_.begin(), prog_.end() - static_cast<std::ptrdiff_t>(keep - 1));
     prog_.push_back({Swept(e), line, 0.0});
     ++count_;
@@ -199,14 +200,18 @@ void OvercutWatch::tangent_slack(double slack) {
     for (std::size_t i = n >= 2 ? n - 2 : 0; i < n; ++i) prog_[i].slack = std::max(prog_[i].slack, slack);
 }
 
-void OvercutWatch::compensated(const Element2& e, int line, int file, double r) {
+void OvercutWatch::compensated(const Element2& e, int line, int file, double r, std::size_t settled) {
     if (neighbours_ <= 0 || prog_.empty()) return;
+    settled = std::min(settled, count_);
+    settled_ = settled;
     // An arc is no shorter than its chord: its length is worked out only for short chords.
     if ((e.p1 - e.p0).norm() <= tol::length && e.length() <= tol::length) return;
-    comp_.push_back({Swept(e), line, file, r, count_, std::numeric_limits<double>::infinity(), 0, 0});
+    comp_.push_back({Swept(e), line, file, r, settled, std::numeric_limits<double>::infinity(), 0, 0});
     Comp& c = comp_.back();
-    const std::size_t keep = static_cast<std::size_t>(neighbours_) + 2;
-    for (std::size_t i = prog_.size() > keep ? prog_.size() - keep : 0; i < prog_.size(); ++i) check(c, prog_[i]);
+    // The programmed elements from neighbours + 2 before `settled` on, as far as seen (the
+    // rest are met as they come, up to neighbours after `settled`).
+    const std::size_t before = static_cast<std::size_t>(neighbours_) + 2 + (count_ - settled);
+    for (std::size_t i = prog_.size() > before ? prog_.size() - before : 0; i < prog_.size(); ++i) check(c, prog_[i]);
 }
 
 void OvercutWatch::report(std::vector<Diagnostic>& out, double mm, bool all) {
@@ -229,7 +234,7 @@ void OvercutWatch::report(std::vector<Diagnostic>& out, double mm, bool all) {
     }
     if (all) {
         prog_.clear();
-        count_ = 0;
+        count_ = settled_ = 0;
     }
 }
 

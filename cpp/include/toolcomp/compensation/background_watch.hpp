@@ -31,14 +31,19 @@ public:
     // OvercutWatch's calls, in the stage's order (the frequent ones inline: a few stores).
     void configure(int neighbours, double tolerance);
     void programmed(const Element2& e, int line) {
-        if (on_) record({Op::programmed, false, line, 0, 0, 0, e});
+        if (!on_) return;
+        record({Op::programmed, false, line, 0, 0, 0, e});
+        ++contour_count_;
     }
     void tangent_slack(double slack);
-    void compensated(const Element2& e, int line, int file, double r) {
-        if (on_) record({Op::compensated, false, line, file, r, 0, e});
+    void compensated(const Element2& e, int line, int file, double r, std::size_t settled) {
+        if (on_) record({Op::compensated, false, line, file, r, settled, e});
     }
+    // Programmed elements of the contour so far (OvercutWatch::compensated's `settled`).
+    std::size_t contour_count() const { return contour_count_; }
     // OvercutWatch::report into `diags` at its present end (filled in by settle()).
     void report(const std::vector<Diagnostic>& diags, double mm, bool all) {
+        if (all) contour_count_ = 0;  // the watch forgets the contour
         if (!(all ? since_all_ : since_report_)) return;  // it would find nothing new
         since_report_ = false;
         if (all) since_all_ = false;
@@ -59,7 +64,7 @@ private:
         bool all;
         int line, file;
         double a;
-        std::size_t at;  // report: the diagnostics' size then
+        std::size_t at;  // report: the diagnostics' size then; compensated: settled
         Element2 e;
     };
     void record(const Call& c) {
@@ -76,6 +81,7 @@ private:
     // Calls since the last report / the last report of all: a report without any is left out
     // (it would find nothing).
     bool since_report_ = false, since_all_ = false;
+    std::size_t contour_count_ = 0;  // as the watch will count them
     std::vector<Call> batch_;
     // Replaying side: the worker while it runs, settle() after it has been joined.
     OvercutWatch watch_;

@@ -58,8 +58,11 @@ public:
     // the control's tangent rule moves the tool up to `slack` closer to both its elements.
     void tangent_slack(double slack);
     // A tool-centre element of radius r, of source line `line` of file `file` (Motion::file),
-    // in path order (elements of no length are left out).
-    void compensated(const Element2& e, int line, int file, double r);
+    // in path order (elements of no length are left out). `settled`: the programmed elements
+    // there were when its end was settled (by the next one; a stage that looks further ahead
+    // hands it over later): the programmed elements before and after it are counted from
+    // there, so a longer look-ahead does not shift the window. Non-decreasing.
+    void compensated(const Element2& e, int line, int file, double r, std::size_t settled);
     // Warnings for the elements whose neighbours have all been seen; `all`: compensation
     // ends, report every pending one and forget the contour. `mm` = mm per program unit.
     void report(std::vector<Diagnostic>& out, double mm, bool all);
@@ -86,13 +89,16 @@ private:
 
     int neighbours_ = 0;
     double tolerance_ = 0;
-    // A few elements each (no allocation once they have grown). prog_: the last neighbours + 2
-    // are the contour watched, those before them wait to be dropped; comp_: from comp_head_
-    // on, the elements not yet reported.
+    // A few elements each (no allocation once they have grown). prog_: the contour watched,
+    // from neighbours + 2 before the last `settled` on (at most kLag more: a look-ahead is
+    // below 128 blocks), those before wait to be dropped; comp_: from comp_head_ on, the
+    // elements not yet reported.
     std::vector<Prog> prog_;
     std::vector<Comp> comp_;
     std::size_t comp_head_ = 0;
-    std::size_t count_ = 0;
+    std::size_t count_ = 0;    // programmed elements of the contour
+    std::size_t settled_ = 0;  // the last compensated element's `settled`
+    static constexpr std::size_t kLag = 128;
 };
 
 }  // namespace toolcomp

@@ -52,6 +52,7 @@ private:
         double sweep = 0;
         bool in_plane = false;  // a programmed move with plane motion (not a corner fill)
         bool approach = false;
+        std::size_t settled = 0;  // the overcut watch's programmed elements when it was emitted
         explicit Emitted(const Held& h) : m(h.m), dir(h.dir), sweep(h.sweep), approach(h.approach) {}
     };
 
