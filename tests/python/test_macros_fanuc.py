@@ -200,3 +200,15 @@ def test_a_compensation_error_in_a_subprogram_file_names_that_file(tmp_path):
     assert f"line 3 of {sub}" in str(e.value)
     res = tc.run(str(main), tools, search_path=[str(tmp_path)], strict=False)
     assert [(d.code, d.line, d.file) for d in res.diagnostics] == [("comp_arc_too_small", 3, sub)]
+
+
+def test_a_compensation_error_names_the_file_when_both_files_have_that_line(tmp_path):
+    # The same arc as above, now at line 2 of O3000.nc while the entry move of line 2 of the
+    # main program is still held: the error is the arc's, in O3000.nc.
+    (tmp_path / "O3000.nc").write_text("O3000\nG3 X4 Y0 R2\nG1 X40\nM99\n")
+    main = tmp_path / "main.nc"
+    main.write_text("G21 G90 G40 G17 T1 M6 G0 X-10 Y-10\nG41 D1 G1 X0 Y0 F100\nM98 P3000\nG40 G0 X50 Y-10\nM30\n")
+    tools = tc.ToolTable.parse("T1 P1 D10\n", "linuxcnc")
+    with pytest.raises(tc.CompensationError) as e:
+        tc.run(str(main), tools, search_path=[str(tmp_path)])
+    assert (e.value.code, e.value.line, e.value.file) == ("comp_arc_too_small", 2, str(tmp_path / "O3000.nc"))

@@ -24,6 +24,9 @@ void RadiusCompensation::fail(const char* code, const std::string& msg, int line
 }
 
 int RadiusCompensation::file_of(int line) const {
+    // The stage names the line of the move it is given, or of a move it holds: the move given
+    // decides when it has that line (a called file's line 2 while line 2 of the caller is held).
+    if (line == in_line_) return in_file_;
     int file = -1;
     auto seen = [&](int l, int f) {
         if (l != line) return true;
@@ -31,7 +34,6 @@ int RadiusCompensation::file_of(int line) const {
         file = f;
         return true;
     };
-    if (!seen(in_line_, in_file_)) return -1;
     for (const auto& h : queue_)
         if (!seen(h.m.line, h.m.file)) return -1;
     for (const auto& e : window_)
@@ -245,6 +247,8 @@ void RadiusCompensation::turn_off(int line, bool cancel) {
 }
 
 void RadiusCompensation::control(const ControlEvent& e) {
+    in_line_ = e.line;
+    in_file_ = e.file;
     switch (e.kind) {
         case ControlKind::radius_off: {
             if (active_ && e.direction.squaredNorm() > 0 && !queue_.empty()) {

@@ -72,8 +72,8 @@ private:
     void bridge(const Element2& next, int line);
     void rescale(double new_unit);
     [[noreturn]] void fail(const char* code, const std::string& msg, int line) const;
-    // The file (Motion::file) of the move of `line` the stage holds or is given, -1 when
-    // no such move or moves of several files have that line.
+    // The file (Motion::file) of the move of `line` the stage is given, else of the moves of
+    // that line it holds; -1 when there is none or they are of several files.
     int file_of(int line) const;
 
     // held moves, gouge reactions and output (radius_output.cpp)
@@ -132,7 +132,7 @@ private:
     std::int8_t exit_orientation_ = 0;
     bool exit_when_behind_ = false;  // KONT: the cancel move decides between the two exits
     int exit_line_ = 0;
-    int in_line_ = 0, in_file_ = 0;  // the move being pushed
+    int in_line_ = 0, in_file_ = 0;  // the move or event being handed in
     BackgroundWatch overcut_;       // tool centre against the neighbouring programmed contour
     std::vector<Emitted> window_;   // emitted, not yet released (look-ahead for bottlenecks)
     bool have_last_ = false;

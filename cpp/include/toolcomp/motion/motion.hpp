@@ -82,6 +82,7 @@ struct ControlEvent {
     // radius_off: a direction given in the cancel block (9/Series I/K): the last compensated
     // move ends as if the contour went on in this direction (program units, XYZ); zero = none.
     Vec3 direction = Vec3::Zero();
+    std::int32_t file = 0;  // Motion::file of the block
 };
 
 // A consumer of the stream: compensation stages and the Path collector.

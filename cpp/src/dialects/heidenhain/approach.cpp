@@ -275,7 +275,7 @@ void Interp::departure(Tokens t) {
     }
     sink_.push(*pending_);
     pending_.reset();
-    if (side_ != 0) sink_.control({ControlKind::radius_off, line_});
+    if (side_ != 0) sink_.control({ControlKind::radius_off, line_, Vec3::Zero(), file_});
     side_ = 0;
     lookahead_ = 0;
     emit_pieces(pieces, pn[axes(plane_).c], feed_, feed_, pieces.size());

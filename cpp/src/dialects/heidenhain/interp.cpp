@@ -72,7 +72,7 @@ void Interp::modal_words(Tokens t, std::size_t from) {
                     sink_.push(*pending_);
                     pending_.reset();
                 }
-                sink_.control({ControlKind::radius_off, line_});
+                sink_.control({ControlKind::radius_off, line_, Vec3::Zero(), file_});
                 lookahead_ = 0;
             }
             side_ = side;
@@ -256,7 +256,7 @@ bool Interp::execute(Tokens t) {
     else if (k0 == "STOP") {
         modal_words(t, 1);
         settle_pending();
-        sink_.control({ControlKind::stop, line_});
+        sink_.control({ControlKind::stop, line_, Vec3::Zero(), file_});
     } else if (k0 == "APPR") {
         approach(t);
     } else if (k0 == "DEP") {
@@ -295,7 +295,7 @@ void Interp::run() {
         pending_.reset();
     }
     if (const auto& e = prog_.syntax_error) throw ParseError(e->code, e->message, e->pos);
-    sink_.control({ControlKind::program_end, line_});
+    sink_.control({ControlKind::program_end, line_, Vec3::Zero(), file_});
     sink_.finish();
 }
 
@@ -495,7 +495,7 @@ void Interp::call_program(Tokens t, int depth) {
             sink_.push(*pending_);
             pending_.reset();
         }
-        sink_.control({ControlKind::radius_off, line_});
+        sink_.control({ControlKind::radius_off, line_, Vec3::Zero(), file_});
         side_ = 0;
     }
     lookahead_ = 0;

@@ -380,9 +380,9 @@ bool Interp::execute(const BlockWords& bw) {
     }
     // 21: stop / end
     int stop = bw.m[m_stop];
-    if (stop == 0 || stop == 10 || stop == 600) sink_.control({ControlKind::stop, line_});
+    if (stop == 0 || stop == 10 || stop == 600) sink_.control({ControlKind::stop, line_, Vec3::Zero(), file_});
     if (stop == 20 || stop == 300) {
-        sink_.control({ControlKind::program_end, line_});
+        sink_.control({ControlKind::program_end, line_, Vec3::Zero(), file_});
         radius_ = {};  // M2/M30 end compensation (and reset the other modes)
         return false;
     }

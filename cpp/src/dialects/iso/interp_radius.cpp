@@ -17,7 +17,7 @@ void Interp::radius_comp(const BlockWords& bw, int code) {
             for (int i = 0; i < 3; ++i)
                 if (bw.has(offs[i])) dir[i] = bw[offs[i]].value;
         }
-        if (radius_.side != 0) sink_.control({ControlKind::radius_off, line_, dir});
+        if (radius_.side != 0) sink_.control({ControlKind::radius_off, line_, dir, file_});
         radius_ = {};
         return;
     }

@@ -315,7 +315,7 @@ void Interp::call(const std::string& name, int passes, int column) {
 
 bool Interp::ret() {
     if (stack_.size() == 1) {  // the main program ends with its last block
-        if (!ended_) sink_.control({ControlKind::program_end, line_});
+        if (!ended_) sink_.control({ControlKind::program_end, line_, Vec3::Zero(), file()});
         ended_ = true;
         return false;
     }

@@ -157,6 +157,7 @@ private:
     Motion motion_(MotionKind kind, const Vec3& end) const;
     RadiusRequest radius_request() const;
     bool mirrored() const;  // the frame mirrors the working plane
+    int file() const { return stack_.empty() ? 0 : stack_.back().file; }  // of the block being run
 
     const Program& main_;
     const ToolTable* tools_;

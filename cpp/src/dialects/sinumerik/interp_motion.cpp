@@ -59,7 +59,7 @@ Motion Interp::motion_(MotionKind kind, const Vec3& end) const {
     m.abc = abc_;
     m.feed = kind == MotionKind::rapid ? std::numeric_limits<double>::quiet_NaN() : feed_;
     m.line = line_;
-    m.file = stack_.empty() ? 0 : stack_.back().file;
+    m.file = file();
     m.tool = tool_;
     m.tool_offset = tool_offset_;
     m.tool_axis = tool_axis_;
@@ -241,7 +241,7 @@ void Interp::execute(BlockData& b, int first_column) {
             fail("10753", "10753 TRC selection only possible in a linear block", first_column);
         if (side == 0 && st_.side != 0 && (motion == 2 || motion == 3 || cip || ct || (motion < 0 && st_.motion >= 2)))
             fail("10754", "10754 TRC deselection only possible in a linear block", first_column);
-        if (side == 0 && st_.side != 0) sink_.control({ControlKind::radius_off, line_});
+        if (side == 0 && st_.side != 0) sink_.control({ControlKind::radius_off, line_, Vec3::Zero(), file()});
         st_.side = side;
     }
     // ---- frames and work offsets ---------------------------------------------------------------
@@ -293,10 +293,10 @@ void Interp::execute(BlockData& b, int first_column) {
         if (b.has(l)) fail("unsupported_word", std::string(1, l) + " words are not supported by toolcomp", b[l].column);
     if (b.has('N')) fail("syntax_error", "12080 Syntax error: a block number N must begin the block", b['N'].column);
     // ---- stop, end -----------------------------------------------------------------------------
-    if (stop) sink_.control({ControlKind::stop, line_});
+    if (stop) sink_.control({ControlKind::stop, line_, Vec3::Zero(), file()});
     bool ret_word = b.keyword("RET");
     if (end && stack_.size() == 1) {
-        sink_.control({ControlKind::program_end, line_});
+        sink_.control({ControlKind::program_end, line_, Vec3::Zero(), file()});
         st_.side = 0;
         ended_ = true;
         return;
@@ -304,7 +304,7 @@ void Interp::execute(BlockData& b, int first_column) {
     if (end || sub_end || ret_word) {
         if (stack_.size() == 1) {
             if (sub_end || ret_word) {  // M17 / RET in a main program ends it too
-                sink_.control({ControlKind::program_end, line_});
+                sink_.control({ControlKind::program_end, line_, Vec3::Zero(), file()});
                 ended_ = true;
             }
             return;
