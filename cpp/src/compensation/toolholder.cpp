@@ -2,11 +2,11 @@
 // conventions in toolholder.hpp.
 #include "toolcomp/compensation/toolholder.hpp"
 
-#include <cctype>
 #include <cmath>
 #include <Eigen/Geometry>
 
 #include "toolcomp/program/diagnostic.hpp"
+#include "toolcomp/program/text.hpp"
 
 namespace toolcomp {
 
@@ -59,7 +59,7 @@ void Toolholder::set_text(int n, std::string_view value) {
         case 22: axis2 = std::string(value); break;
         case 34: name = std::string(value); break;
         case 23: {
-            const char k = value.size() == 1 ? static_cast<char>(std::toupper(static_cast<unsigned char>(value[0])))
+            const char k = value.size() == 1 ? ascii_upper(value[0])
                                              : '?';
             check_kinematic_type(k);
             kind = k;

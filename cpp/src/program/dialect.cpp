@@ -1,10 +1,10 @@
 #include "toolcomp/program/dialect.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <string>
 
 #include "toolcomp/program/diagnostic.hpp"
+#include "toolcomp/program/text.hpp"
 
 namespace toolcomp {
 
@@ -29,7 +29,7 @@ std::string_view dialect_name(Dialect d) {
 Dialect dialect_from_name(std::string_view name) {
     std::string lower(name);
     std::transform(lower.begin(), lower.end(), lower.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+                   [](char c) { return ascii_lower(c); });
     for (const auto& e : kDialects)
         if (e.name == lower) return e.d;
     throw ParseError("unknown_dialect",
@@ -42,7 +42,7 @@ std::optional<Dialect> dialect_from_suffix(std::string_view path) {
     if (dot == std::string_view::npos) return std::nullopt;
     std::string ext(path.substr(dot + 1));
     std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+                   [](char c) { return ascii_lower(c); });
     if (ext == "ngc") return Dialect::linuxcnc;
     if (ext == "nc" || ext == "tap") return Dialect::fanuc;
     if (ext == "mpf" || ext == "spf") return Dialect::sinumerik;

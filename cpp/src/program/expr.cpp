@@ -16,9 +16,6 @@ namespace {
 
 constexpr int kMaxDepth = 200;
 
-bool ident_start(char c) { return ascii_alpha(c) || c == '_' || c == '$'; }
-bool ident_char(char c) { return ident_start(c) || ascii_digit(c); }
-
 struct FnName {
     std::string_view name;
     Fn fn;

@@ -1,10 +1,10 @@
 // Heidenhain TOOL.T reader and writer (rules in format_heidenhain.hpp).
 #include "toolcomp/tools/format_heidenhain.hpp"
-#include "toolcomp/program/text.hpp"
 
 #include "number_text.hpp"
 #include "text_lines.hpp"
 #include "toolcomp/program/diagnostic.hpp"
+#include "toolcomp/program/text.hpp"
 
 #include <cctype>
 #include <charconv>
@@ -459,7 +459,7 @@ ToolTable read_heidenhain_table(std::string_view text, LengthUnit units) {
             const std::string u = to_upper_ascii(w.text);
             if (u == "[END]") break;
             // Column titles start with a letter; a number means line 2 is already a tool row.
-            if (std::isdigit(static_cast<unsigned char>(u[0])) || u[0] == '+' || u[0] == '-' || u[0] == '.')
+            if (ascii_digit(u[0]) || u[0] == '+' || u[0] == '-' || u[0] == '.')
                 error("heidenhain_missing_header",
                       "line 2 must be the column titles of the tool table (T NAME L R ...), not a tool row", 2,
                       w.column + 1);

@@ -4,8 +4,8 @@
 #include "number_text.hpp"
 #include "text_lines.hpp"
 #include "toolcomp/program/diagnostic.hpp"
+#include "toolcomp/program/text.hpp"
 
-#include <cctype>
 #include <map>
 #include <string_view>
 
@@ -66,7 +66,7 @@ bool parse_line(TblLine& tl, int line_no, double scale) {
         last_word_end = i;
         const std::string_view word(s.data() + start, i - start);
         const int col = static_cast<int>(start) + 1;
-        const char letter = static_cast<char>(std::toupper(static_cast<unsigned char>(word[0])));
+        const char letter = ascii_upper(word[0]);
         const std::string_view value = word.substr(1);
         if (kWordOrder.find(letter) == std::string_view::npos)
             error("tbl_bad_word", "unknown word '" + std::string(word) + "' in tool table", line_no, col);

@@ -1,6 +1,7 @@
 #include "number_text.hpp"
 
 #include "toolcomp/program/diagnostic.hpp"
+#include "toolcomp/program/text.hpp"
 
 #include <cctype>
 #include <charconv>
@@ -117,15 +118,15 @@ std::string spell_shortest(double model, double mm_per_unit) {
 
 std::string trim(std::string_view s) {
     std::size_t b = 0, e = s.size();
-    while (b < e && std::isspace(static_cast<unsigned char>(s[b]))) ++b;
-    while (e > b && std::isspace(static_cast<unsigned char>(s[e - 1]))) --e;
+    while (b < e && ascii_space(s[b])) ++b;
+    while (e > b && ascii_space(s[e - 1])) --e;
     return std::string(s.substr(b, e - b));
 }
 
 std::string to_lower(std::string_view s) {
     std::string r;
     r.reserve(s.size());
-    for (char c : s) r += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    for (char c : s) r += ascii_lower(c);
     return r;
 }
 

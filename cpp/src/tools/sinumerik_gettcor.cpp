@@ -1,8 +1,9 @@
 // GETTCOR (spec §3.5); conventions and assumptions in sinumerik_gettcor.hpp.
 #include "toolcomp/tools/sinumerik_gettcor.hpp"
 
-#include <cctype>
 #include <string>
+
+#include "toolcomp/program/text.hpp"
 
 namespace toolcomp::sinumerik {
 
@@ -12,8 +13,8 @@ namespace {
 int parse_comp(std::string_view comp, std::string& letters) {
     std::string s;
     for (char ch : comp)
-        if (!std::isspace(static_cast<unsigned char>(ch)))
-            s += static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+        if (!ascii_space(ch))
+            s += ascii_upper(ch);
     const auto colon = s.find(':');
     const std::string head = s.substr(0, colon);
     if (head.empty()) return gettcor_bad_comp;

@@ -1,7 +1,8 @@
 #include "toolcomp/tools/sinumerik_lentoax.hpp"
 
-#include <cctype>
 #include <string>
+
+#include "toolcomp/program/text.hpp"
 
 namespace toolcomp::sinumerik {
 
@@ -9,7 +10,7 @@ namespace {
 bool known_coordinate_system(std::string_view coord) {
     std::string c;
     for (char ch : coord)
-        if (!std::isspace(static_cast<unsigned char>(ch))) c += static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+        if (!ascii_space(ch)) c += ascii_upper(ch);
     for (const char* k : {"M", "MCS", "B", "BCS", "W", "WCS", "K", "KCS", "T", "TCS"})
         if (c == k) return true;
     return false;

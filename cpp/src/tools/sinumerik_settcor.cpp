@@ -1,7 +1,8 @@
 #include "toolcomp/tools/sinumerik_settcor.hpp"
 
-#include <cctype>
 #include <string>
+
+#include "toolcomp/program/text.hpp"
 
 namespace toolcomp::sinumerik {
 
@@ -24,7 +25,7 @@ int settcor(SinumerikEdge& edge, const Vec3& corval, std::string_view comp, int 
     std::string letters;
     std::size_t i = 0;
     for (; i < comp.size() && comp[i] != ':'; ++i) {
-        const char c = static_cast<char>(std::toupper(static_cast<unsigned char>(comp[i])));
+        const char c = ascii_upper(comp[i]);
         if (c == ' ' || c == '\t') continue;
         if (std::string_view("GWESC").find(c) == std::string_view::npos || letters.find(c) != std::string::npos)
             return gettcor_bad_comp;
@@ -35,7 +36,7 @@ int settcor(SinumerikEdge& edge, const Vec3& corval, std::string_view comp, int 
         std::string coord;
         for (std::size_t k = i + 1; k < comp.size(); ++k)
             if (comp[k] != ' ' && comp[k] != '\t')
-                coord.push_back(static_cast<char>(std::toupper(static_cast<unsigned char>(comp[k]))));
+                coord.push_back(ascii_upper(comp[k]));
         if (coord != "W" && coord != "T") return gettcor_bad_coord;
     }
     if (corcomp < 0 || corcomp > 6) return settcor_bad_corcomp;

@@ -1,10 +1,9 @@
 // Reading and writing "$TC_DPn[t,d]=value" initialisation lines (spec §3.1).
-#include <cctype>
-#include "toolcomp/program/text.hpp"
 #include <sstream>
 
 #include "number_text.hpp"
 #include "toolcomp/program/diagnostic.hpp"
+#include "toolcomp/program/text.hpp"
 #include "toolcomp/tools/sinumerik_edge.hpp"
 
 namespace toolcomp::sinumerik {
@@ -35,7 +34,7 @@ struct Cursor {
         blanks();
         if (s.size() - col < w.size()) return false;
         for (std::size_t i = 0; i < w.size(); ++i)
-            if (std::toupper(static_cast<unsigned char>(s[col + i])) != w[i]) return false;
+            if (ascii_upper(s[col + i]) != w[i]) return false;
         col += w.size();
         return true;
     }
@@ -47,7 +46,7 @@ struct Cursor {
     int integer(const char* what, std::size_t& start) {
         blanks();
         start = col;
-        while (col < s.size() && std::isdigit(static_cast<unsigned char>(s[col]))) ++col;
+        while (col < s.size() && ascii_digit(s[col])) ++col;
         int v = 0;
         if (col == start || !tables::parse_integer(s.substr(start, col - start), v)) {
             col = start;
@@ -85,9 +84,9 @@ SinumerikEdgeMap parse_tc_dp(std::string_view text, int max_t, int max_d) {
         if (c.at_end()) continue;
         // Optional block number N<digits>.
         if ((c.s[c.col] == 'N' || c.s[c.col] == 'n') && c.col + 1 < c.s.size() &&
-            std::isdigit(static_cast<unsigned char>(c.s[c.col + 1]))) {
+            ascii_digit(c.s[c.col + 1])) {
             ++c.col;
-            while (c.col < c.s.size() && std::isdigit(static_cast<unsigned char>(c.s[c.col]))) ++c.col;
+            while (c.col < c.s.size() && ascii_digit(c.s[c.col])) ++c.col;
             if (c.at_end()) continue;
         }
         if (is_end_word(c.s.substr(c.col))) continue;

@@ -1,15 +1,15 @@
 #include "toolcomp/tools/table_format.hpp"
 
 #include "toolcomp/program/diagnostic.hpp"
+#include "toolcomp/program/text.hpp"
 
-#include <cctype>
 
 namespace toolcomp {
 
 namespace {
 std::string lower(std::string_view s) {
     std::string r;
-    for (char c : s) r += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    for (char c : s) r += ascii_lower(c);
     return r;
 }
 }  // namespace

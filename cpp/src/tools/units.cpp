@@ -1,8 +1,8 @@
 #include "toolcomp/tools/units.hpp"
 
 #include "toolcomp/program/diagnostic.hpp"
+#include "toolcomp/program/text.hpp"
 
-#include <cctype>
 
 namespace toolcomp {
 
@@ -12,7 +12,7 @@ std::string_view to_string(LengthUnit u) { return u == LengthUnit::inch ? "inch"
 
 LengthUnit length_unit_from_string(std::string_view s) {
     std::string low;
-    for (char c : s) low += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    for (char c : s) low += ascii_lower(c);
     if (low == "mm") return LengthUnit::mm;
     if (low == "inch" || low == "in") return LengthUnit::inch;
     throw ToolTableError("table_bad_units", "unknown length unit '" + std::string(s) + "' (use \"mm\" or \"inch\")");

@@ -1,8 +1,9 @@
 #pragma once
 // Text a front end or table reader receives: a UTF-8 byte order mark (editors on Windows
-// write one) is not part of the first line. Letters and digits of a program are ASCII
-// whatever the process's locale (std::isalpha would take the locale's, and Python sets it
-// from the environment: in a Latin-1 locale 'ä' would be a letter).
+// write one) is not part of the first line. Letters, digits and blanks of programs and
+// tables are ASCII whatever the process's locale: std::isalpha & co. take the locale's, and
+// Python sets it from the environment (in a Latin-1 locale the bytes of a UTF-8 'é' are
+// letters). The readers use these instead (tests/python/test_locale.py).
 #include <string>
 #include <string_view>
 
@@ -17,8 +18,12 @@ inline std::string_view skip_bom(std::string_view text) {
 
 inline bool ascii_digit(char c) { return c >= '0' && c <= '9'; }
 inline bool ascii_alpha(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
+inline bool ascii_space(char c) { return c == ' ' || (c >= '\t' && c <= '\r'); }  // the C locale's isspace
 inline char ascii_upper(char c) { return c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c; }
 inline char ascii_lower(char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c; }
+// A name in an expression or a Sinumerik program: a letter, '_' or '$', then those or digits.
+inline bool ident_start(char c) { return ascii_alpha(c) || c == '_' || c == '$'; }
+inline bool ident_char(char c) { return ident_start(c) || ascii_digit(c); }
 inline std::string to_upper_ascii(std::string_view s) {
     std::string r(s);
     for (char& c : r) c = ascii_upper(c);

@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "toolcomp/program/text.hpp"
+
 namespace toolcomp::heidenhain {
 
 namespace {
@@ -36,8 +38,8 @@ public:
     std::string word() {
         skip();
         std::string w;
-        while (i_ < s_.size() && std::isalpha(static_cast<unsigned char>(s_[i_])))
-            w.push_back(static_cast<char>(std::toupper(static_cast<unsigned char>(s_[i_++]))));
+        while (i_ < s_.size() && ascii_alpha(s_[i_]))
+            w.push_back(ascii_upper(s_[i_++]));
         return w;
     }
     bool eat(char c) {
@@ -51,7 +53,7 @@ public:
     int integer() {
         skip();
         std::size_t st = i_;
-        while (i_ < s_.size() && std::isdigit(static_cast<unsigned char>(s_[i_]))) ++i_;
+        while (i_ < s_.size() && ascii_digit(s_[i_])) ++i_;
         if (st == i_) throw std::invalid_argument("number expected");
         if (i_ - st > 6) throw std::invalid_argument("number " + std::string(s_.substr(st, i_ - st)) + " out of range");
         return std::stoi(std::string(s_.substr(st, i_ - st)));
@@ -61,7 +63,7 @@ public:
     int q_number() {
         skip();
         std::size_t st = i_;
-        while (i_ < s_.size() && std::isdigit(static_cast<unsigned char>(s_[i_]))) ++i_;
+        while (i_ < s_.size() && ascii_digit(s_[i_])) ++i_;
         if (st == i_) throw std::invalid_argument("Q parameter number expected");
         if (i_ - st > 5)
             throw std::invalid_argument("Q parameter number Q" + std::string(s_.substr(st, i_ - st)) + " out of range");
@@ -74,7 +76,7 @@ public:
 
 private:
     void skip() {
-        while (i_ < s_.size() && std::isspace(static_cast<unsigned char>(s_[i_]))) ++i_;
+        while (i_ < s_.size() && ascii_space(s_[i_])) ++i_;
     }
     double sum() {
         double v = product();
@@ -125,9 +127,9 @@ private:
             if (!eat(')')) throw std::invalid_argument("')' expected");
             return v;
         }
-        if (i_ < s_.size() && (std::isdigit(static_cast<unsigned char>(s_[i_])) || s_[i_] == '.' || s_[i_] == ',')) {
+        if (i_ < s_.size() && (ascii_digit(s_[i_]) || s_[i_] == '.' || s_[i_] == ',')) {
             std::string num;
-            while (i_ < s_.size() && (std::isdigit(static_cast<unsigned char>(s_[i_])) || s_[i_] == '.' || s_[i_] == ','))
+            while (i_ < s_.size() && (ascii_digit(s_[i_]) || s_[i_] == '.' || s_[i_] == ','))
                 num.push_back(s_[i_] == ',' ? '.' : s_[i_]), ++i_;
             double v = 0;
             const auto res = std::from_chars(num.data(), num.data() + num.size(), v);
@@ -136,7 +138,7 @@ private:
             return v;
         }
         if (i_ < s_.size() && (s_[i_] == 'Q' || s_[i_] == 'q') && i_ + 1 < s_.size() &&
-            std::isdigit(static_cast<unsigned char>(s_[i_ + 1]))) {
+            ascii_digit(s_[i_ + 1])) {
             ++i_;
             return q_(q_number());
         }

@@ -1,9 +1,10 @@
 #include "block_words.hpp"
 
-#include <cctype>
 #include <climits>
 #include <cmath>
 #include <string>
+
+#include "toolcomp/program/text.hpp"
 
 namespace toolcomp::iso {
 
@@ -90,7 +91,7 @@ BlockWords collect_words(std::span<const Word> words, int line, Dialect dialect)
         } else {
             WordSlot& slot = bw.letter[w.letter - 'A'];
             if (slot.set) {
-                char lower = static_cast<char>(std::tolower(static_cast<unsigned char>(w.letter)));
+                char lower = ascii_lower(w.letter);
                 fail("multiple_words", std::string("Multiple ") + lower + " words on one line", bw.line, w.column);
             }
             if (w.letter == 'T') {

@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "interp.hpp"
+#include "toolcomp/program/text.hpp"
 #include "toolcomp/tools/tool_table.hpp"
 
 namespace toolcomp::iso {
@@ -143,7 +144,7 @@ namespace {
 std::string lower_prefix(const std::string& s, std::size_t n) {
     std::string r;
     for (std::size_t i = 0; i < s.size() && i < n; ++i)
-        r.push_back(static_cast<char>(std::tolower(static_cast<unsigned char>(s[i]))));
+        r.push_back(ascii_lower(s[i]));
     return r;
 }
 }  // namespace
@@ -176,14 +177,14 @@ std::string Interp::substitute(const std::string& text) {
             }
             std::string name;
             for (std::size_t k = j + 1; k < close; ++k)
-                if (text[k] != ' ' && text[k] != '\t') name.push_back(static_cast<char>(std::tolower(static_cast<unsigned char>(text[k]))));
+                if (text[k] != ' ' && text[k] != '\t') name.push_back(ascii_lower(text[k]));
             const double* v = params_.named(name);
             out += v ? number_text(*v) : "######";
             i = close;
             continue;
         }
         std::size_t k = j;
-        while (k < text.size() && std::isdigit(static_cast<unsigned char>(text[k]))) ++k;
+        while (k < text.size() && ascii_digit(text[k])) ++k;
         if (k == j) {
             out.push_back('#');
             continue;

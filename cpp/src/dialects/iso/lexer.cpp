@@ -1,8 +1,8 @@
 #include "toolcomp/dialects/iso/lexer.hpp"
 #include "toolcomp/program/decimal.hpp"
+#include "toolcomp/program/text.hpp"
 
 #include "line_lexer.hpp"
-#include "toolcomp/program/text.hpp"
 
 #include <algorithm>
 #include <array>
@@ -143,7 +143,7 @@ void LineLexer::run() {
         }
         if (u == '$') fail("bad_character", "Unknown word where unary operation could be");
         if (!is_word_letter(u, prog_.dialect) || (u == 'N' && (!first_word_ || prog_.blocks().back().word_count > 0))) {
-            char lower = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+            char lower = ascii_lower(c);
             fail("bad_character", std::string("Bad character '") + lower + "' used");
         }
         Word w{u, 0, col()};
@@ -171,7 +171,7 @@ void LineLexer::word_value(Word& w) {
         std::size_t k = i_;
         while (k < s_.size() && (s_[k] == '+' || s_[k] == '-')) ++k;
         const char c = k < s_.size() ? s_[k] : 0;
-        const bool letter = prog_.dialect == Dialect::linuxcnc && std::isalpha(static_cast<unsigned char>(c));
+        const bool letter = prog_.dialect == Dialect::linuxcnc && ascii_alpha(c);
         if (c == '#' || c == '[' || letter) {
             const std::int32_t e = expression(true);
             if (auto v = constant_value(prog_.expression(e))) {

@@ -2,8 +2,9 @@
 // ...), LinuxCNC O-words (o100 sub / call / if / while / do / repeat ...), Fanuc Macro B
 // (O1000 program numbers, IF [..] GOTO n, IF [..] THEN, WHILE [..] DO m, END m, GOTO n).
 // Their meaning is the interpreter's (flow.cpp); here they are only read.
-#include <cctype>
 #include <string>
+
+#include "toolcomp/program/text.hpp"
 
 #include "line_lexer.hpp"
 
@@ -32,7 +33,7 @@ std::int32_t LineLexer::expression(bool value_only) {
 bool LineLexer::keyword(std::string_view k) {
     if (s_.size() - i_ < k.size()) return false;
     for (std::size_t j = 0; j < k.size(); ++j)
-        if (std::toupper(static_cast<unsigned char>(s_[i_ + j])) != k[j]) return false;
+        if (ascii_upper(s_[i_ + j]) != k[j]) return false;
     i_ += k.size();
     return true;
 }
@@ -61,7 +62,7 @@ void LineLexer::assignment() {
         while (i_ < s_.size() && s_[i_] != '>') ++i_;
         if (at_end()) fail_at("bad_parameter", "Named parameter not terminated", open);
         for (std::size_t k = open + 1; k < i_; ++k)
-            st.label.push_back(static_cast<char>(std::tolower(static_cast<unsigned char>(s_[k]))));
+            st.label.push_back(ascii_lower(s_[k]));
         ++i_;
         if (st.label.empty()) fail_at("bad_parameter", "Named parameter with no name", open);
     } else {
@@ -94,7 +95,7 @@ void LineLexer::o_word() {
         if (at_end()) fail_at("bad_o_word", "O-word name not terminated", open);
         st.label = "<";
         for (std::size_t k = open + 1; k < i_; ++k)
-            st.label.push_back(static_cast<char>(std::tolower(static_cast<unsigned char>(s_[k]))));
+            st.label.push_back(ascii_lower(s_[k]));
         st.label += ">";
         ++i_;
         if (st.label.size() == 2) fail_at("bad_o_word", "O-word name is empty", open);
@@ -130,7 +131,7 @@ void LineLexer::o_word() {
         if (!at_end() && s_[i_] == '[') return expression(true);
         if (required) {
             std::string k(found->text);
-            for (char& c : k) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+            for (char& c : k) c = ascii_lower(c);
             fail("o_word_missing_expression", "Left bracket missing after '" + k + "'");
         }
         return -1;

@@ -10,6 +10,7 @@
 #include "interp.hpp"
 #include "toolcomp/dialects/sinumerik/lexer.hpp"
 #include "toolcomp/program/input_limits.hpp"
+#include "toolcomp/program/text.hpp"
 
 namespace toolcomp::sinumerik {
 
@@ -282,7 +283,7 @@ void Interp::call(const std::string& name, int passes, int column) {
             for (const auto& entry : fs::directory_iterator(dir, ec)) {
                 std::string file = entry.path().filename().string();
                 std::string up;
-                for (char ch : file) up.push_back(static_cast<char>(std::toupper(static_cast<unsigned char>(ch))));
+                for (char ch : file) up.push_back(ascii_upper(ch));
                 if (up == name + ".SPF" || up == name + ".MPF" || up == name) {
                     found = entry.path().string();
                     break;

@@ -5,6 +5,7 @@
 
 #include "interp.hpp"
 #include "toolcomp/program/int_value.hpp"
+#include "toolcomp/program/text.hpp"
 #include "toolcomp/tools/sinumerik_gettcor.hpp"
 #include "toolcomp/tools/sinumerik_lentoax.hpp"
 #include "toolcomp/tools/sinumerik_settcor.hpp"
@@ -18,7 +19,7 @@ int numbered(const std::string& name, std::string_view prefix) {
     if (name.size() <= prefix.size() || name.compare(0, prefix.size(), prefix) != 0) return 0;
     int n = 0;
     for (std::size_t i = prefix.size(); i < name.size(); ++i) {
-        if (!std::isdigit(static_cast<unsigned char>(name[i])) || n > 100000) return 0;
+        if (!ascii_digit(name[i]) || n > 100000) return 0;
         n = n * 10 + (name[i] - '0');
     }
     return n;
@@ -224,7 +225,7 @@ void Interp::value_call(const Token& t) {
     };
     auto array_arg = [&](std::size_t i, std::size_t size) -> Variable& {
         std::string n = i < args.size() ? args[i] : "";
-        for (char& c : n) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+        for (char& c : n) c = ascii_upper(c);
         Variable* v = n.empty() ? nullptr : find_variable(n);
         if (!v) fail("12550", "12550 Name " + (n.empty() ? std::string("(missing)") : n) + " not defined: " + t.key +
                                   " needs a REAL array of " + std::to_string(size) + " elements", t.column);

@@ -2,15 +2,12 @@
 #include "toolcomp/program/text.hpp"
 
 #include <array>
-#include <cctype>
 #include <cmath>
 
 namespace toolcomp::sinumerik {
 
 namespace {
 
-bool ident_start(char c) { return ascii_alpha(c) || c == '_' || c == '$'; }
-bool ident_char(char c) { return ident_start(c) || ascii_digit(c); }
 bool is_digit(char c) { return ascii_digit(c); }
 
 // Names with digits that are keywords, not an address and a number.
