@@ -198,10 +198,7 @@ void RadiusCompensation::next_line(const Motion& m) {
                 flush();
             }
         }
-        Motion h = m;
-        h.end = with_plane(m.end, C);
-        hold(h, Vec2::Zero(), 0);
-        current_ = h.end;
+        current_ = hold(m, Vec2::Zero(), 0).m.end = with_plane(m.end, C);
         program_ = m.end;
         return;
     }
@@ -265,10 +262,7 @@ void RadiusCompensation::next_line(const Motion& m) {
             move_end_and_flush(cp + rho * u(ac + th + kPi), m.line, true, &next);
         }
     }
-    Motion h = m;
-    h.end = with_plane(m.end, e);
-    hold(h, p - P, 0);
-    current_ = h.end;
+    current_ = hold(m, p - P, 0).m.end = with_plane(m.end, e);
     program_ = m.end;
 }
 
@@ -368,10 +362,7 @@ void RadiusCompensation::next_arc(const Motion& m) {
 
 void RadiusCompensation::hold_arc_and_advance(const Motion& m, const Vec2& e, const Vec2& centre, int turn,
                                               const Vec2& P, const Vec2& p) {
-    Motion h = m;
-    h.end = with_plane(m.end, e);
-    hold(h, Vec2::Zero(), find_turn(P, centre, turn, p));
-    current_ = h.end;
+    current_ = hold(m, Vec2::Zero(), find_turn(P, centre, turn, p)).m.end = with_plane(m.end, e);
     program_ = m.end;
 }
 

@@ -21,7 +21,9 @@ namespace {
 Vec3 start_after(const Vec3& end, const Vec3& end_offset, const Motion& m) { return end + end_offset - m.tool_offset; }
 }  // namespace
 
-void RadiusCompensation::hold(const Motion& m, const Vec2& dir, double sweep) { queue_.emplace_back(m, dir, sweep); }
+RadiusCompensation::Held& RadiusCompensation::hold(const Motion& m, const Vec2& dir, double sweep) {
+    return queue_.emplace_back(m, dir, sweep);
+}
 
 // The overcut watch sees the programmed plane elements under compensation (not the entry
 // move: the contour starts at its end) and the tool-centre moves as they leave the stage.
@@ -42,7 +44,7 @@ void RadiusCompensation::emit(const Held& h) {
     e.settled = overcut_.contour_count();  // its neighbours are counted from here, not from its release
     if (have_last_) e.m.start = start_after(last_, last_off_, e.m);
     if (e.m.is_arc()) e.m.center[axes(e.m.plane).c] = e.m.start[axes(e.m.plane).c];
-    e.in_plane = !e.m.generated && (plane2(e.m.end) - plane2(e.m.start)).norm() > tol::length;
+    e.in_plane = !e.m.generated && (plane2(e.m.end) - plane2(e.m.start)).squaredNorm() > tol::length * tol::length;
     last_ = e.m.end;
     last_off_ = e.m.tool_offset;
     have_last_ = true;
@@ -62,12 +64,14 @@ void RadiusCompensation::release(std::size_t keep) {
     for (std::size_t i = 0; i < n; ++i) {
         watch_released(window_[i]);
         Motion& m = window_[i].m;  // changed in place: it leaves the window below
-        const TipVector tip = tip_vector(m.radius.orientation, profile_.radius.tip_convention);
         const double r = m.radius.radius;
-        if (m.plane == Plane::zx && r > 0 && (tip.x || tip.z)) {
-            const Vec3 shift(tip.x * r, 0, tip.z * r);
-            m.end += shift;
-            if (m.is_arc()) m.center += shift;
+        if (m.plane == Plane::zx && r > 0 && m.radius.orientation != 0) {
+            const TipVector tip = tip_vector(m.radius.orientation, profile_.radius.tip_convention);
+            if (tip.x || tip.z) {
+                const Vec3 shift(tip.x * r, 0, tip.z * r);
+                m.end += shift;
+                if (m.is_arc()) m.center += shift;
+            }
         }
         if (have_out_) m.start = start_after(last_out_, last_out_off_, m);
         // A generated link of zero length (an activation that already stands at the contour's

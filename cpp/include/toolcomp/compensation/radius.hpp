@@ -77,7 +77,7 @@ private:
     int file_of(int line) const;
 
     // held moves, gouge reactions and output (radius_output.cpp)
-    void hold(const Motion& m, const Vec2& dir, double sweep);
+    Held& hold(const Motion& m, const Vec2& dir, double sweep);  // the held move, to be changed in place
     // Gives every held move the in-plane end x and emits them. A move that would run
     // backwards (or an arc that would sweep further) is a gouge, met by the profile's
     // reaction; `next` is the next element's equidistant, for skipping the unreachable move.
