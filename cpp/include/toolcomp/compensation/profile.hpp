@@ -137,8 +137,9 @@ struct RadiusRules {
     GougeReaction gouge = GougeReaction::error;
     // Overcut watch (no control has one): a compensated element whose tool centre comes
     // closer than r - overcut_tolerance (mm) to the programmed contour of the
-    // `overcut_neighbours` programmed elements before and after it gets a warning
-    // "comp_overcut" (LinuxCNC cuts such paths without an error). 0 switches it off.
+    // `overcut_neighbours` programmed elements before and after it (counted from where its
+    // end was settled, whatever the look-ahead) gets a warning "comp_overcut" (LinuxCNC cuts
+    // such paths without an error). 0 switches it off.
     int overcut_neighbours = 3;
     double overcut_tolerance = 1e-6;
     NonPlaneReaction non_plane_reaction = NonPlaneReaction::error;

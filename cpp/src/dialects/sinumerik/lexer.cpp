@@ -13,6 +13,12 @@ bool is_digit(char c) { return ascii_digit(c); }
 // Names with digits that are keywords, not an address and a number.
 constexpr std::array<std::string_view, 12> kDigitKeywords = {
     "CDOF2", "CUT2D", "CUT2DF", "CUT3DC", "CUT3DF", "CUT3DFS", "CUT3DFF", "CUT3DCC", "CUT3DCCD", "TCOFRZ", "TCOFRY", "TCOFRX"};
+constexpr std::size_t kShortestDigitKeyword = 5;  // names shorter are never looked up
+static_assert([] {
+    for (std::string_view k : kDigitKeywords)
+        if (k.size() < kShortestDigitKeyword) return false;
+    return true;
+}());
 
 // Statements that read an expression after them.
 bool condition_keyword(std::string_view k) { return k == "IF" || k == "WHILE" || k == "UNTIL"; }
@@ -281,7 +287,8 @@ private:
         std::size_t letters = 0;
         while (letters < name.size() && !is_digit(name[letters])) ++letters;
         bool keyword = false;
-        for (std::string_view k : kDigitKeywords) keyword |= (k == name);
+        if (name.size() >= kShortestDigitKeyword)
+            for (std::string_view k : kDigitKeywords) keyword |= (k == name);
         bool digits_only = letters < name.size();
         for (std::size_t k = letters; k < name.size(); ++k) digits_only &= is_digit(name[k]);
         // One letter glued to its number and the next word ("G1X10Y20") splits too.
@@ -295,11 +302,17 @@ private:
                 error("Bad number");
             }
             i_ = p;
-            t.key = name.substr(0, letters);
-            t.value = v;
-            t.has_value = true;
-            t.text = glued && !digits_only ? t.key + std::string(s_.substr(start + 1, p - start - 1)) : name;
-            prog_.add_token(std::move(t));
+            Token& w = prog_.new_token();  // filled in place (a failure later drops the block)
+            w.column = column;
+            w.key.assign(name, 0, letters);
+            w.value = v;
+            w.has_value = true;
+            if (glued && !digits_only) {
+                w.text = w.key;
+                w.text.append(s_.substr(start + 1, p - start - 1));
+            } else {
+                w.text = std::move(name);
+            }
             return;
         }
         // A single address letter without a value ("G1 Y" cut short): not a subprogram call,
@@ -407,6 +420,10 @@ Program parse(std::string_view text, std::string name, bool strict) {
     prog.name = std::move(name);
     prog.dialect = Dialect::sinumerik;
     text = skip_bom(text);
+    // At most a token per 4 characters on CAM lines ("G1 X95 Y7.5 I0 J2.5": 5 in 20), about a
+    // block per 24: the tokens' strings are not all moved again when the vector grows (pages
+    // reserved and never written are not memory taken).
+    prog.reserve(text.size() / 24 + 1, 0, text.size() / 4 + 16);
     std::size_t pos = 0;
     int line = 0;
     while (pos <= text.size()) {
