@@ -263,6 +263,12 @@ def test_diamon_halves_x():
     assert ends(res.nominal) == [(20, 0, 0), (15, 0, 0), (40, 0, 0)]
 
 
+def test_diam90_diameter_absolute_radius_incremental():
+    # DIAM90: X is a diameter under G90 and a radius under G91 (840D: dimensions, DIAM90)
+    res = run("G18 DIAM90 G90 G0 X40 Z0\nG91 X-10\nG90 X30\nDIAMOF X30\nM30\n", tools="")
+    assert ends(res.nominal) == [(20, 0, 0), (10, 0, 0), (15, 0, 0), (30, 0, 0)]
+
+
 # ---- tool data ------------------------------------------------------------------------------------
 
 def test_spec_3_2_worked_lengths_by_plane():

@@ -104,7 +104,7 @@ BlockWords collect_words(std::span<const Word> words, int line, Dialect dialect)
             if (w.letter == 'F' && w.value < 0) fail("negative_feed", "Negative f word used", bw.line, w.column);
             if (w.letter == 'S' && w.value < 0)
                 fail("negative_spindle_speed", "Negative spindle speed used", bw.line, w.column);
-            slot = {true, w.value, w.column};
+            slot = {.value = w.value, .column = w.column, .set = true};
         }
     }
     return bw;

@@ -10,10 +10,10 @@
 
 namespace toolcomp::iso {
 
-struct WordSlot {
-    bool set = false;
+struct WordSlot {  // 16 bytes: BlockWords clears 26 of them per block
     double value = 0;
     int column = 0;
+    bool set = false;
 };
 
 struct BlockWords {

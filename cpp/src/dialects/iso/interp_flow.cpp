@@ -410,7 +410,7 @@ void Interp::macro_call(std::span<const Word> words, int column) {
         if (w.letter == 'P' || w.letter == 'L') {
             WordSlot& slot = w.letter == 'P' ? p_word : l_word;
             if (slot.set) fail("multiple_words", std::string("Multiple ") + static_cast<char>(w.letter + 32) + " words on one line", w.column);
-            slot = {true, w.value, w.column};
+            slot = {.value = w.value, .column = w.column, .set = true};
             continue;
         }
         bool ok = false;
