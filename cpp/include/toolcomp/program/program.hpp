@@ -3,7 +3,6 @@
 //
 // Blocks and words are stored flat (one vector of words, blocks as ranges into it), so a
 // million-block CAM program costs two allocations rather than a million.
-#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -148,14 +147,10 @@ public:
     void drop_last_expression() { exprs_.pop_back(); }
     // Removes the last block (a front end that failed half-way through it).
     void drop_last_block();
-    // Room guessed from the text's size; each count is capped at kReserveCap (a piece of a
-    // file read piece by piece fits; a whole large text grows past it as usual), so that a
-    // guess for a text of gigabytes never asks for tens of gigabytes up front.
-    static constexpr std::size_t kReserveCap = std::size_t{1} << 21;
     void reserve(std::size_t blocks, std::size_t words, std::size_t tokens = 0) {
-        blocks_.reserve(std::min(blocks, kReserveCap));
-        words_.reserve(std::min(words, kReserveCap));
-        tokens_.reserve(std::min(tokens, kReserveCap));
+        blocks_.reserve(blocks);
+        words_.reserve(words);
+        tokens_.reserve(tokens);
     }
 
 private:
