@@ -31,6 +31,18 @@ constexpr bool all_longer_than_one(const std::string_view (&names)[N]) {
 }
 static_assert(all_longer_than_one(kKeywords) && all_longer_than_one(kUnsupported));
 
+// A keyword with a digit reaches the interpreter whole only if the lexer keeps it whole.
+constexpr bool digit_keywords_lexed_whole() {
+    for (std::string_view k : kKeywords) {
+        bool digit = false, whole = false;
+        for (char c : k) digit |= c >= '0' && c <= '9';
+        for (std::string_view d : kDigitKeywords) whole |= d == k;
+        if (digit && !whole) return false;
+    }
+    return true;
+}
+static_assert(digit_keywords_lexed_whole(), "a keyword with a digit is missing from kDigitKeywords (lexer.hpp)");
+
 // k is one of `names`; the address words of a block (X, G, F ...) are passed by with one test.
 template <std::size_t N>
 bool listed(const std::string_view (&names)[N], std::string_view k) {

@@ -10,16 +10,6 @@ namespace {
 
 bool is_digit(char c) { return ascii_digit(c); }
 
-// Names with digits that are keywords, not an address and a number.
-constexpr std::array<std::string_view, 13> kDigitKeywords = {
-    "CDOF2", "CUT2D", "DIAM90", "CUT2DF", "CUT3DC", "CUT3DF", "CUT3DFS", "CUT3DFF", "CUT3DCC", "CUT3DCCD", "TCOFRZ", "TCOFRY", "TCOFRX"};
-constexpr std::size_t kShortestDigitKeyword = 5;  // names shorter are never looked up
-static_assert([] {
-    for (std::string_view k : kDigitKeywords)
-        if (k.size() < kShortestDigitKeyword) return false;
-    return true;
-}());
-
 // Statements that read an expression after them.
 bool condition_keyword(std::string_view k) { return k == "IF" || k == "WHILE" || k == "UNTIL"; }
 bool jump_keyword(std::string_view k) { return k == "GOTOF" || k == "GOTOB" || k == "GOTO" || k == "GOTOC"; }

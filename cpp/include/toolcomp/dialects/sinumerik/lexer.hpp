@@ -26,6 +26,7 @@
 //   value, value = array size when declared with [n]), "PROC" (text = name).
 // * Block number: key "N", value. Label: key ":", text = the label.
 // Syntax errors are ParseError "syntax_error" with line and column.
+#include <array>
 #include <string>
 #include <string_view>
 
@@ -38,5 +39,18 @@ Program parse(std::string_view text, std::string name = "<string>", bool strict 
 // The address names whose "NAME=value" is a word of the block rather than a variable
 // assignment (single letters, and CR, AR, TURN, DISC, OFFN, RPL, I1, J1, K1 ...).
 bool is_address(std::string_view upper_name);
+
+// Names with digits that are one keyword, not an address and a number ("CDOF2", not CDOF = 2;
+// "DIAM90"). Every keyword of the interpreter that holds a digit must be here (checked where
+// the interpreter lists its keywords).
+inline constexpr std::array<std::string_view, 13> kDigitKeywords = {
+    "CDOF2", "CUT2D", "DIAM90", "CUT2DF", "CUT3DC", "CUT3DF", "CUT3DFS", "CUT3DFF", "CUT3DCC", "CUT3DCCD",
+    "TCOFRZ", "TCOFRY", "TCOFRX"};
+inline constexpr std::size_t kShortestDigitKeyword = 5;  // the lexer looks up no shorter name
+static_assert([] {
+    for (std::string_view k : kDigitKeywords)
+        if (k.size() < kShortestDigitKeyword) return false;
+    return true;
+}());
 
 }  // namespace toolcomp::sinumerik
