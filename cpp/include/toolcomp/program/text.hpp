@@ -16,14 +16,14 @@ inline std::string_view skip_bom(std::string_view text) {
     return text;
 }
 
-inline bool ascii_digit(char c) { return c >= '0' && c <= '9'; }
-inline bool ascii_alpha(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
-inline bool ascii_space(char c) { return c == ' ' || (c >= '\t' && c <= '\r'); }  // the C locale's isspace
-inline char ascii_upper(char c) { return c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c; }
-inline char ascii_lower(char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c; }
+constexpr bool ascii_digit(char c) { return c >= '0' && c <= '9'; }
+constexpr bool ascii_alpha(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
+constexpr bool ascii_space(char c) { return c == ' ' || (c >= '\t' && c <= '\r'); }  // the C locale's isspace
+constexpr char ascii_upper(char c) { return c >= 'a' && c <= 'z' ? static_cast<char>(c - 'a' + 'A') : c; }
+constexpr char ascii_lower(char c) { return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c; }
 // A name in an expression or a Sinumerik program: a letter, '_' or '$', then those or digits.
-inline bool ident_start(char c) { return ascii_alpha(c) || c == '_' || c == '$'; }
-inline bool ident_char(char c) { return ident_start(c) || ascii_digit(c); }
+constexpr bool ident_start(char c) { return ascii_alpha(c) || c == '_' || c == '$'; }
+constexpr bool ident_char(char c) { return ident_start(c) || ascii_digit(c); }
 inline std::string to_upper_ascii(std::string_view s) {
     std::string r(s);
     for (char& c : r) c = ascii_upper(c);

@@ -2,11 +2,13 @@
 // at once, so "R1=5 X=R1" moves to 5), the words are collected, then executed in the
 // control's order: feed, speed, tool selection and change, edge, plane, units, dimensions,
 // compensation modes, frames, motion, program stop and end, subprogram call.
+#include <algorithm>
 #include <cmath>
 
 #include "interp.hpp"
 #include "toolcomp/program/int_value.hpp"
 #include "toolcomp/dialects/sinumerik/lexer.hpp"
+#include "toolcomp/program/text.hpp"
 
 namespace toolcomp::sinumerik {
 
@@ -33,12 +35,9 @@ static_assert(all_longer_than_one(kKeywords) && all_longer_than_one(kUnsupported
 
 // A keyword with a digit reaches the interpreter whole only if the lexer keeps it whole.
 constexpr bool digit_keywords_lexed_whole() {
-    for (std::string_view k : kKeywords) {
-        bool digit = false, whole = false;
-        for (char c : k) digit |= c >= '0' && c <= '9';
-        for (std::string_view d : kDigitKeywords) whole |= d == k;
-        if (digit && !whole) return false;
-    }
+    for (std::string_view k : kKeywords)
+        if (std::ranges::any_of(k, ascii_digit) && std::ranges::find(kDigitKeywords, k) == kDigitKeywords.end())
+            return false;
     return true;
 }
 static_assert(digit_keywords_lexed_whole(), "a keyword with a digit is missing from kDigitKeywords (lexer.hpp)");
