@@ -3,6 +3,7 @@
 #include "toolcomp/compensation/three_d.hpp"
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 namespace toolcomp {
@@ -49,25 +50,44 @@ void Path::push(const Motion& m) {
     const double u = m.unit;
     const Vec3 n = m.surface.active() ? Vec3(m.surface.normal.normalized()) : m.surface.normal;
     const auto k = static_cast<std::uint8_t>(m.kind);
-    const auto pl = static_cast<std::uint8_t>(m.plane);
     const std::int8_t sd = m.radius.side;
     const std::uint8_t gen = m.generated ? 1 : 0;
+    UniformRow r;
+    const Vec3 off = m.tool_offset * u;
+    for (int i = 0; i < 3; ++i) {
+        r.tool_offset[i] = off[i];
+        r.abc[i] = m.abc[static_cast<std::size_t>(i)];
+        r.normal[i] = n[i];
+        r.tool_axis[i] = m.tool_axis[i];
+    }
+    r.tool = m.tool;
+    r.turns = m.turns;
+    r.file = m.file;
+    r.plane = static_cast<std::int32_t>(m.plane);
     put3(start, m.start * u);
     put3(end, m.end * u);
     put3(center, m.center * u);
-    const Vec3 off = m.tool_offset * u;
-    tool_offset.push(off.x(), off.y(), off.z());
-    abc.push(m.abc[0], m.abc[1], m.abc[2]);
-    normal.push(n.x(), n.y(), n.z());
-    tool_axis.push(m.tool_axis.x(), m.tool_axis.y(), m.tool_axis.z());
     line.push_back(m.line);
-    tool.push(m.tool);
-    turns.push(m.turns);
     feed.push_back(m.feed);
-    file.push(m.file);
+    if (all_uniform_ && std::memcmp(&r, &last_, sizeof r) == 0) {  // the common case
+        for (auto* c : {&tool_offset, &abc, &normal, &tool_axis}) c->push_same();
+        for (auto* c : {&tool, &turns, &file}) c->push_same();
+        plane.push_same();
+    } else {
+        tool_offset.push(r.tool_offset);
+        abc.push(r.abc);
+        normal.push(r.normal);
+        tool_axis.push(r.tool_axis);
+        tool.push(r.tool);
+        turns.push(r.turns);
+        file.push(r.file);
+        plane.push(static_cast<std::uint8_t>(r.plane));
+        all_uniform_ = tool_offset.uniform() && abc.uniform() && normal.uniform() && tool_axis.uniform() &&
+                       tool.uniform() && turns.uniform() && file.uniform() && plane.uniform();
+        last_ = r;
+    }
     kind.push_back(k);
     side.push_back(sd);
-    plane.push(pl);
     generated.push_back(gen);
 }
 

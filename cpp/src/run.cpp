@@ -121,7 +121,7 @@ bool Result::ok() const {
 void run_pipeline(const Program& program, const ToolTable* tools, const RunOptions& options,
                   const ControlProfile& profile, MotionSink& nominal, MotionSink& compensated,
                   std::vector<Diagnostic>& diagnostics, iso::InterpretOutput& out, const PipelineHooks& hooks) {
-    CompensationChain chain(profile, compensated, diagnostics);
+    CompensationChain chain(profile, compensated, diagnostics, options.threads);
     Tee tee(nominal, chain);
     iso::InterpretOptions iopts;
     iopts.block_delete = options.block_delete;
@@ -199,7 +199,8 @@ Result run(const Program& program, const ToolTable* tools, const RunOptions& opt
 
 Result run_file(const std::string& path, std::optional<Dialect> dialect, const ToolTable* tools,
                 const RunOptions& options, const ReadLimits& limits) {
-    ProgramSource src(path, dialect_of_file(path, dialect), limits, kPieceBytes, /*limit_pieces=*/true);
+    ProgramSource src(path, dialect_of_file(path, dialect), limits, kPieceBytes, /*limit_pieces=*/true, {},
+                      options.threads);
     PipelineHooks hooks;
     hooks.next_piece = src.next_piece();
     try {

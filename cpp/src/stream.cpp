@@ -128,7 +128,7 @@ void PathStream::produce() {
         } else {
             ProgramSource src(path_, *dialect_, options_.read, options_.piece_bytes, /*limit_pieces=*/false, [&] {
                 if (cancelled()) throw Cancelled{};
-            });
+            }, options_.run.threads);
             hooks.next_piece = src.next_piece();
             try {
                 pipeline(src.first());

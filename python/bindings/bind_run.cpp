@@ -14,9 +14,10 @@ namespace {
 // `progress` is held by the caller's frame for the whole run.
 RunOptions run_options(bool strict, bool block_delete, std::optional<ControlProfile> profile, py::object& progress,
                        std::size_t progress_every, std::vector<std::string> search_path,
-                       std::map<int, double> parameters, std::size_t max_segments) {
+                       std::map<int, double> parameters, std::size_t max_segments, bool threads) {
     RunOptions o;
     o.max_segments = max_segments;
+    o.threads = threads;
     o.parameters = std::move(parameters);
     o.strict = strict;
     o.block_delete = block_delete;
@@ -264,32 +265,33 @@ void bind_run(py::module_& m) {
         "run",
         [](const Program& program, const ToolTable* tools, bool strict, bool block_delete,
            std::optional<ControlProfile> profile, py::object progress, std::size_t progress_every,
-           std::vector<std::string> search_path, std::map<int, double> parameters, std::size_t max_segments) {
+           std::vector<std::string> search_path, std::map<int, double> parameters, std::size_t max_segments,
+           bool threads) {
             RunOptions o = run_options(strict, block_delete, std::move(profile), progress, progress_every,
-                                       std::move(search_path), std::move(parameters), max_segments);
+                                       std::move(search_path), std::move(parameters), max_segments, threads);
             py::gil_scoped_release nogil;
             return std::make_shared<Result>(run(program, tools, o));
         },
         py::arg("program"), py::arg("tools") = nullptr, py::arg("strict") = true, py::arg("block_delete") = false,
         py::arg("profile") = py::none(), py::arg("progress") = py::none(), py::arg("progress_every") = 1 << 16,
         py::arg("search_path") = std::vector<std::string>{}, py::arg("parameters") = std::map<int, double>{},
-        py::arg("max_segments") = kDefaultMaxSegments,
+        py::arg("max_segments") = kDefaultMaxSegments, py::arg("threads") = true,
         "Interpret a Program with an optional ToolTable and apply tool compensation; returns a Result. strict=True "
         "raises the first error, strict=False returns the path up to it; block_delete skips '/' blocks; profile "
         "overrides the dialect's ControlProfile; progress(blocks_read) is called every progress_every blocks; "
         "search_path lists the directories where called programs and subprogram files are looked up; parameters "
         "gives numbered parameters their start values ({number: value}, e.g. a LinuxCNC .var file); a run "
         "whose programmed or compensated path would hold more than max_segments segments stops with "
-        "ProgramError 'memory_limit' at the line of the block that crossed it. "
-        "The GIL is released while the program runs.");
+        "ProgramError 'memory_limit' at the line of the block that crossed it; threads=False keeps the "
+        "overcut watch on the run's thread (for batches that keep every core busy). The GIL is released while the program runs.");
     m.def(
         "run_file",
         [](const std::string& path, std::optional<std::string> dialect, const ToolTable* tools, bool strict,
            bool block_delete, std::optional<ControlProfile> profile, py::object progress, std::size_t progress_every,
            std::vector<std::string> search_path, std::map<int, double> parameters, std::size_t max_segments,
-           std::uint64_t max_bytes, std::size_t max_line_length) {
+           std::uint64_t max_bytes, std::size_t max_line_length, bool threads) {
             RunOptions o = run_options(strict, block_delete, std::move(profile), progress, progress_every,
-                                       std::move(search_path), std::move(parameters), max_segments);
+                                       std::move(search_path), std::move(parameters), max_segments, threads);
             std::optional<Dialect> d;
             if (dialect) d = dialect_from_name(*dialect);
             py::gil_scoped_release nogil;
@@ -298,6 +300,7 @@ void bind_run(py::module_& m) {
         py::arg("path"), py::arg("dialect"), py::arg("tools"), py::arg("strict"), py::arg("block_delete"),
         py::arg("profile"), py::arg("progress"), py::arg("progress_every"), py::arg("search_path"),
         py::arg("parameters"), py::arg("max_segments"), py::arg("max_bytes"), py::arg("max_line_length"),
+        py::arg("threads") = true,
         "run() on a program file, read leniently; a LinuxCNC / Fanuc file without control flow is read and "
         "parsed a piece at a time as it runs (see toolcomp.run).");
 }

@@ -53,7 +53,7 @@ _sys.modules[__name__ + ".sinumerik"] = sinumerik  # type: ignore[assignment]  #
 
 def run(program, tools=None, *, dialect=None, strict=True, block_delete=False, profile=None,
         units="mm", progress=None, progress_every=65536, search_path=(), parameters=None,
-        max_segments=20_000_000, max_bytes=2**31, max_line_length=2**20):
+        max_segments=20_000_000, max_bytes=2**31, max_line_length=2**20, threads=True):
     """Interpret ``program`` and apply tool compensation.
 
     ``program`` is a :class:`Program` or a path to a program file (dialect from the suffix
@@ -83,6 +83,11 @@ def run(program, tools=None, *, dialect=None, strict=True, block_delete=False, p
     segments (about 120 bytes each) stops at the block that crossed it (``memory_limit``;
     with ``strict=False`` the path up to it is returned). ``ControlProfile.block_limit`` and
     ``call_depth_limit`` bound executed blocks and nested calls.
+
+    ``threads``: a run puts its overcut watch, and the reading of the next piece of a program
+    file, on threads of their own (the other core). ``threads=False`` keeps everything on the
+    calling thread, for batches whose runs keep every core busy anyway (:func:`run_many` does
+    this when it has more programs than workers). The result is the same either way.
     """
     tools, search_path, parameters = _run_inputs(tools, units, search_path, parameters)
     if isinstance(program, (str, _os.PathLike)):
@@ -92,10 +97,10 @@ def run(program, tools=None, *, dialect=None, strict=True, block_delete=False, p
         return _core.run_file(_os.fspath(program), dialect, tools, strict=strict, block_delete=block_delete,
                               profile=profile, progress=progress, progress_every=progress_every,
                               search_path=search_path, parameters=parameters, max_segments=max_segments,
-                              max_bytes=max_bytes, max_line_length=max_line_length)
+                              max_bytes=max_bytes, max_line_length=max_line_length, threads=threads)
     return _core.run(program, tools, strict=strict, block_delete=block_delete, profile=profile,
                      progress=progress, progress_every=progress_every, search_path=search_path,
-                     parameters=parameters, max_segments=max_segments)
+                     parameters=parameters, max_segments=max_segments, threads=threads)
 
 
 def _run_inputs(tools, units, search_path, parameters):

@@ -17,6 +17,9 @@ def run_many(programs: Iterable[Any], tools: Any = None, *, workers: Optional[in
     """Run every program of ``programs`` (Program objects or paths) with ``tools`` (a
     ToolTable or a path, read once) on ``workers`` threads (default: the number of cores) and
     return their Results in the order given. ``kwargs`` are those of :func:`toolcomp.run`.
+    When the workers alone keep every core busy (as many programs and workers as cores, or
+    more), each run goes without threads of its own (``threads=False``: no hand-over between
+    threads) unless ``threads`` is given.
     The first program that raises makes run_many raise that error, unless
     ``return_exceptions`` is true: then the error object takes that program's place."""
     from . import ToolTable, run  # the package's own run (paths, units, search path)
@@ -37,6 +40,8 @@ def run_many(programs: Iterable[Any], tools: Any = None, *, workers: Optional[in
                 raise
             return exc
 
+    if min(workers, len(programs)) >= (os.cpu_count() or 1):
+        kwargs.setdefault("threads", False)
     if workers == 1 or len(programs) <= 1:
         return [one(p) for p in programs]
     with ThreadPoolExecutor(max_workers=min(workers, len(programs))) as pool:

@@ -16,6 +16,7 @@ using namespace toolcomp;
 namespace {
 
 struct Both {
+    explicit Both(bool thread = true) : background(thread) {}
     OvercutWatch direct;
     BackgroundWatch background;
     std::vector<Diagnostic> want, got;
@@ -97,16 +98,19 @@ std::size_t overcuts(const std::vector<Diagnostic>& d) {
 }  // namespace
 
 TEST_CASE("background watch: the same warnings in the same places as the watch called directly") {
-    for (int calls : {10, 1000, 3 * static_cast<int>(BackgroundWatch::kBatch), 200000}) {
-        INFO(calls << " calls");
-        std::mt19937 rng(calls);
-        Both w;
-        w.direct.configure(3, 0.001);
-        w.background.configure(3, 0.001);
-        drive(w, rng, calls);
-        w.background.settle(w.got);
-        same(w.want, w.got);
-        if (calls >= 1000) REQUIRE(overcuts(w.want) > 10);  // the contours do come back near themselves
+    // thread = false: no thread, every call replayed as it is made (RunOptions::threads).
+    for (const bool thread : {true, false}) {
+        for (int calls : {10, 1000, 3 * static_cast<int>(BackgroundWatch::kBatch), 200000}) {
+            INFO(calls << " calls, thread " << thread);
+            std::mt19937 rng(calls);
+            Both w(thread);
+            w.direct.configure(3, 0.001);
+            w.background.configure(3, 0.001);
+            drive(w, rng, calls);
+            w.background.settle(w.got);
+            same(w.want, w.got);
+            if (calls >= 1000) REQUIRE(overcuts(w.want) > 10);  // the contours do come back near themselves
+        }
     }
 }
 

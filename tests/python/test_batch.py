@@ -66,3 +66,28 @@ def test_the_same_work_on_a_dask_bag(programs):
     # each side 10 longer: three of the inside sides are 10 longer, and the last side up to
     # the exit too: 40 more feed per program
     np.testing.assert_allclose(np.diff(lengths), 40, atol=1e-9)
+
+
+def test_run_many_runs_without_threads_of_their_own_when_the_pool_fills_the_cores(programs, monkeypatch):
+    # Each run's helper threads (overcut watch, read-ahead) would only contend with the other
+    # workers for the cores: run_many passes threads=False then, and leaves them otherwise.
+    paths, tools = programs
+    seen = []
+
+    def fake_run(program, tools=None, **kwargs):
+        seen.append(kwargs.get("threads", True))
+        return program
+
+    monkeypatch.setattr(tc, "run", fake_run)
+    monkeypatch.setattr("os.cpu_count", lambda: 2)
+    tc.run_many(paths, tools, workers=2)
+    assert seen == [False] * 8
+    seen.clear()
+    tc.run_many(paths, tools, workers=1)  # one worker: the other core is free for its helpers
+    assert seen == [True] * 8
+    seen.clear()
+    tc.run_many(paths[:1], tools, workers=2)
+    assert seen == [True]
+    seen.clear()
+    tc.run_many(paths, tools, workers=2, threads=True)  # asked for
+    assert seen == [True] * 8

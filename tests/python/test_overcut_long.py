@@ -55,11 +55,25 @@ def seen(diagnostics):
     return out
 
 
+@pytest.mark.parametrize("threads", [True, False])
 @pytest.mark.parametrize("n", [1, 3, 5000])
-def test_warnings_in_place_short_and_long(n):
-    res = tc.run(tc.Program.parse(slots(n)), tools=TOOLS, profile=profile(), strict=False)
+def test_warnings_in_place_short_and_long(n, threads):
+    res = tc.run(tc.Program.parse(slots(n)), tools=TOOLS, profile=profile(), strict=False, threads=threads)
     assert seen(res.diagnostics) == expected(n)
     assert all(d.severity == "warning" for d in res.diagnostics)
+
+
+def test_a_file_run_without_threads_is_the_same(tmp_path):
+    # Read piece by piece (no control flow), the next piece parsed when the run asks for it
+    # and the watch on the run's thread: the same warnings, the same path.
+    f = tmp_path / "slots.ngc"
+    f.write_text(slots(5000))
+    alone = tc.run(str(f), TOOLS, profile=profile(), strict=False, threads=False)
+    assert seen(alone.diagnostics) == expected(5000)
+    helped = tc.run(str(f), TOOLS, profile=profile(), strict=False)
+    assert alone.blocks == helped.blocks == 4 * 5000 + 6
+    for col in ("start", "end", "center", "line", "kind"):
+        assert getattr(alone.path, col).tobytes() == getattr(helped.path, col).tobytes()
 
 
 def test_stream_has_the_same_warnings(tmp_path):

@@ -90,6 +90,9 @@ public:
         push(v);
     }
     void push(T x) requires(K == 1) { push(&x); }
+    // One more row equal to the last one pushed, which left the column uniform (the caller
+    // knows: Path::push compares a segment's uniform values with the last segment's at once).
+    void push_same() noexcept { ++n_; }
 
 private:
     static bool same(T a, T b) {

@@ -49,6 +49,18 @@ public:
     // Where a tool of radius r and corner radius r2 touches the surface at the end of each
     // segment with a surface normal (3D compensation); NaN rows elsewhere. mm.
     void contact_points(double r, double r2, std::vector<double>& out) const;
+
+private:
+    // A segment's values of the uniform columns, without padding (compared with memcmp).
+    struct UniformRow {
+        double tool_offset[3], abc[3], normal[3], tool_axis[3];
+        std::int32_t tool, turns, file, plane;
+    };
+    static_assert(sizeof(UniformRow) == 12 * sizeof(double) + 4 * sizeof(std::int32_t));
+    // The last segment's row, and whether every uniform column was still uniform after it:
+    // then a segment with the same row (bit for bit) only counts one more row in each.
+    UniformRow last_{};
+    bool all_uniform_ = false;
 };
 
 }  // namespace toolcomp

@@ -58,6 +58,10 @@ struct RunOptions {
     // Segments the programmed path and the compensated path may each hold: the segment
     // beyond it stops the run with ProgramError("memory_limit") at its block's line.
     std::size_t max_segments = kDefaultMaxSegments;
+    // A run puts the overcut watch and the reading of the next piece of a program file on
+    // threads of their own (the other core). false: everything on the calling thread, for a
+    // batch whose runs keep every core busy anyway (the hand-over between threads is work too).
+    bool threads = true;
 };
 
 struct Result {

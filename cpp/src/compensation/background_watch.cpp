@@ -16,7 +16,7 @@ BackgroundWatch::~BackgroundWatch() {
 }
 
 void BackgroundWatch::configure(int neighbours, double tolerance) {
-    if (batch_.capacity() == 0) batch_.reserve(kBatch);
+    if (!direct_ && batch_.capacity() == 0) batch_.reserve(kBatch);
     on_ = neighbours > 0;
     record({Op::configure, false, neighbours, 0, tolerance, 0, {}});
 }
@@ -25,20 +25,18 @@ void BackgroundWatch::tangent_slack(double slack) { record({Op::tangent_slack, f
 
 void BackgroundWatch::scale(double f) { record({Op::scale, false, 0, 0, f, 0, {}}); }
 
-void BackgroundWatch::replay(const std::vector<Call>& calls) {
-    for (const Call& c : calls) {
-        switch (c.op) {
-            case Op::configure: watch_.configure(c.line, c.a); break;
-            case Op::programmed: watch_.programmed(c.e, c.line); break;
-            case Op::tangent_slack: watch_.tangent_slack(c.a); break;
-            case Op::compensated: watch_.compensated(c.e, c.line, c.file, c.a, c.at); break;
-            case Op::scale: watch_.scale(c.a); break;
-            case Op::report:
-                scratch_.clear();
-                watch_.report(scratch_, c.a, c.all);
-                for (Diagnostic& d : scratch_) found_.emplace_back(c.at, std::move(d));
-                break;
-        }
+void BackgroundWatch::apply(const Call& c) {
+    switch (c.op) {
+        case Op::configure: watch_.configure(c.line, c.a); break;
+        case Op::programmed: watch_.programmed(c.e, c.line); break;
+        case Op::tangent_slack: watch_.tangent_slack(c.a); break;
+        case Op::compensated: watch_.compensated(c.e, c.line, c.file, c.a, c.at); break;
+        case Op::scale: watch_.scale(c.a); break;
+        case Op::report:
+            scratch_.clear();
+            watch_.report(scratch_, c.a, c.all);
+            for (Diagnostic& d : scratch_) found_.emplace_back(c.at, std::move(d));
+            break;
     }
 }
 

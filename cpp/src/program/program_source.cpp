@@ -7,8 +7,8 @@
 namespace toolcomp {
 
 ProgramSource::ProgramSource(const std::string& path, Dialect dialect, const ReadLimits& limits,
-                             std::size_t piece_bytes, bool limit_pieces, std::function<void()> check)
-    : check_(std::move(check)) {
+                             std::size_t piece_bytes, bool limit_pieces, std::function<void()> check, bool threads)
+    : check_(std::move(check)), threads_(threads) {
     std::uint64_t size = 0;
     ::close(open_program_file(path, "program file", &size));
     if (limit_pieces && size > limits.max_bytes)
@@ -45,9 +45,10 @@ ProgramSource::~ProgramSource() {
     if (ahead_.valid()) ahead_.wait();
 }
 
-// The next piece is read and parsed on the other core while the run works through this one.
+// The next piece is read and parsed on the other core while the run works through this one
+// (without threads: when the run asks for it).
 void ProgramSource::read_ahead() {
-    ahead_ = std::async(std::launch::async, [this]() -> std::optional<Program> {
+    ahead_ = std::async(threads_ ? std::launch::async : std::launch::deferred, [this]() -> std::optional<Program> {
         if (parser_->done()) return std::nullopt;
         const std::string_view t = pieces_->next();
         if (t.empty()) return std::nullopt;

@@ -29,8 +29,10 @@ public:
     // A file larger than `limits.max_bytes` is refused before it is read (ParseError
     // "input_too_large") when it would be read whole, and with `limit_pieces` also when it is
     // read piece by piece. `check` is called before each piece (it may throw to stop).
+    // `threads`: the next piece is read and parsed on a thread of its own while the run works
+    // (else when the run asks for it, on the run's thread).
     ProgramSource(const std::string& path, Dialect dialect, const ReadLimits& limits, std::size_t piece_bytes,
-                  bool limit_pieces, std::function<void()> check = {});
+                  bool limit_pieces, std::function<void()> check = {}, bool threads = true);
     ~ProgramSource();
     ProgramSource(const ProgramSource&) = delete;
     ProgramSource& operator=(const ProgramSource&) = delete;
@@ -50,6 +52,7 @@ private:
     Program current_;
     std::size_t blocks_ = 0, estimate_ = 0;
     std::function<void()> check_;
+    bool threads_ = true;
     std::future<std::optional<Program>> ahead_;  // the next piece, read and parsed meanwhile
 };
 

@@ -6,6 +6,7 @@
 // the place the diagnostics had reached when the stage asked for the report; settle() waits
 // for the thread and puts them in there. The diagnostics come out exactly as from a watch
 // called directly. Short runs never start the thread: settle() replays their one batch.
+// Without a thread (RunOptions::threads false) every call is replayed as it is made.
 #include <condition_variable>
 #include <cstddef>
 #include <cstdint>
@@ -23,7 +24,8 @@ namespace toolcomp {
 
 class BackgroundWatch {
 public:
-    BackgroundWatch() = default;
+    // `thread`: false replays each call as it is made, on the caller's thread.
+    explicit BackgroundWatch(bool thread = true) : direct_(!thread) {}
     BackgroundWatch(const BackgroundWatch&) = delete;
     BackgroundWatch& operator=(const BackgroundWatch&) = delete;
     ~BackgroundWatch();  // what is not settled is abandoned
@@ -68,15 +70,23 @@ private:
         Element2 e;
     };
     void record(const Call& c) {
-        batch_.push_back(c);
         if (c.op != Op::report) since_report_ = since_all_ = true;
+        if (direct_) {
+            apply(c);
+            return;
+        }
+        batch_.push_back(c);
         if (batch_.size() >= kBatch) hand_over();
     }
     void hand_over();
-    void replay(const std::vector<Call>& calls);
+    void apply(const Call& c);
+    void replay(const std::vector<Call>& calls) {
+        for (const Call& c : calls) apply(c);
+    }
     void work();
     void stop();
 
+    bool direct_ = false;  // no thread: every call is replayed as it is made
     bool on_ = false;  // the last configure switched the watch on (else elements are left out)
     // Calls since the last report / the last report of all: a report without any is left out
     // (it would find nothing).

@@ -27,8 +27,10 @@ namespace toolcomp {
 
 class RadiusCompensation : public MotionSink {
 public:
-    RadiusCompensation(const ControlProfile& profile, MotionSink& out, std::vector<Diagnostic>& diagnostics)
-        : profile_(profile), out_(out), diags_(diagnostics) {}
+    // `threads`: the overcut watch may run on a thread of its own (else on the stage's).
+    RadiusCompensation(const ControlProfile& profile, MotionSink& out, std::vector<Diagnostic>& diagnostics,
+                       bool threads = true)
+        : profile_(profile), out_(out), diags_(diagnostics), overcut_(threads) {}
     void push(const Motion& m) override;
     void control(const ControlEvent& e) override;
     void finish() override;

@@ -17,8 +17,10 @@ namespace toolcomp {
 
 class CompensationChain : public MotionSink {
 public:
-    CompensationChain(const ControlProfile& profile, MotionSink& out, std::vector<Diagnostic>& diagnostics)
-        : surface_(out), radius_(profile, surface_, diagnostics) {}
+    // `threads`: the overcut watch may run on a thread of its own (RunOptions::threads).
+    CompensationChain(const ControlProfile& profile, MotionSink& out, std::vector<Diagnostic>& diagnostics,
+                      bool threads = true)
+        : surface_(out), radius_(profile, surface_, diagnostics, threads) {}
     void push(const Motion& m) override { radius_.push(m); }
     void control(const ControlEvent& e) override { radius_.control(e); }
     void finish() override { radius_.finish(); }
