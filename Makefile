@@ -42,7 +42,7 @@ bootstrap: $(VENV)/.stamp
 # Editable install with a fixed build dir: CMake/Ninja rebuild only what changed.
 build: bootstrap
 	PATH=$(abspath $(VENV))/bin:$$PATH $(PY) -m pip install -q --no-build-isolation --no-deps -e . \
-	  -Cbuild-dir=$(BUILD_DIR) -Ccmake.define.TOOLCOMP_TESTS=ON -Ccmake.build-type=Release
+	  -Cbuild-dir=$(BUILD_DIR) -Ccmake.define.TOOLCOMP_TESTS=ON -Ccmake.define.TOOLCOMP_BENCH=ON -Ccmake.build-type=Release
 	$(PY) -c "import toolcomp"
 
 test: build

@@ -1,6 +1,7 @@
 // Parse and run one program file through the C++ pipeline and print the time of each,
 // for profiling without Python (valgrind --tool=callgrind, perf record):
-//   bench_pipeline PROGRAM [TOOL_TABLE.tbl] [dialect]
+//   bench_pipeline PROGRAM [TOOL_TABLE.tbl]         read whole, then run
+//   bench_pipeline --file PROGRAM [TOOL_TABLE.tbl]  run_file: read piece by piece as it runs
 // Prints figures, asserts nothing.
 #include <chrono>
 #include <cstdio>
@@ -14,13 +15,24 @@
 #include "toolcomp/tools/tool_table.hpp"
 
 int main(int argc, char** argv) {
+    const bool file = argc > 1 && std::string(argv[1]) == "--file";
+    if (file) --argc, ++argv;
     if (argc < 2) {
-        std::fprintf(stderr, "usage: %s PROGRAM [TOOL_TABLE.tbl]\n", argv[0]);
+        std::fprintf(stderr, "usage: bench_pipeline [--file] PROGRAM [TOOL_TABLE.tbl]\n");
         return 2;
     }
     using clock = std::chrono::steady_clock;
     std::optional<toolcomp::ToolTable> tools;
     if (argc > 2) tools = toolcomp::read_tool_table_file(argv[2]);
+    if (file) {
+        const auto t0 = clock::now();
+        const toolcomp::Result result = toolcomp::run_file(argv[1], std::nullopt, tools ? &*tools : nullptr);
+        const double s = std::chrono::duration<double>(clock::now() - t0).count();
+        std::printf("blocks %zu  segments %zu/%zu  diagnostics %zu\n", result.blocks, result.nominal.size(),
+                    result.path.size(), result.diagnostics.size());
+        std::printf("run_file %.3f s (%.0f ns/block)\n", s, s / static_cast<double>(result.blocks) * 1e9);
+        return result.ok() ? 0 : 1;
+    }
     const auto t0 = clock::now();
     const toolcomp::Program program = toolcomp::read_program(argv[1]);
     const auto t1 = clock::now();

@@ -176,9 +176,13 @@ Result run_main(const Program& program, const ToolTable* tools, const RunOptions
         res.blank = Blank{program.blank->min * unit, program.blank->max * unit, program.blank->axis};
     }
     // One segment per block is the common case (CAM output): reserving it up front avoids the
-    // copies and the doubled capacity of growing columns (peak memory).
+    // copies and the doubled capacity of growing columns (peak memory). Radius compensation
+    // adds a corner arc at each outside corner, up to a second segment a block: the
+    // compensated path is reserved for two. A reservation is address space only: large
+    // columns are mapped, and pages never written are never memory (release_unused gives
+    // back what the last segment's page leaves).
     res.nominal.reserve(std::min(expected, options.max_segments));
-    res.path.reserve(std::min(expected, options.max_segments));
+    res.path.reserve(std::min(2 * expected, options.max_segments));
     ControlProfile profile = options.profile ? *options.profile : profile_for(program.dialect);
     SegmentLimit nominal(res.nominal, options.max_segments, "programmed");
     SegmentLimit compensated(res.path, options.max_segments, "compensated");
