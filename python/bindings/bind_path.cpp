@@ -10,8 +10,8 @@
 using namespace toolcomp;
 
 namespace {
-template <class T, class A>
-py::array view(py::handle owner, const std::vector<T, A>& v, std::size_t n, std::size_t width,
+template <class T>
+py::array view(py::handle owner, const Column<T>& v, std::size_t n, std::size_t width,
                py::dtype dtype = py::dtype::of<T>()) {
     std::vector<py::ssize_t> shape{static_cast<py::ssize_t>(n)}, strides{static_cast<py::ssize_t>(sizeof(T) * width)};
     if (width > 1) {

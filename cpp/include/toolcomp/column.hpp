@@ -1,7 +1,8 @@
 #pragma once
-// Column: the std::vector the Path's columns and other big result arrays are stored in.
+// Column: the growable array the Path's columns and the Program's blocks and words are
+// stored in.
 //
-// Its allocator asks the kernel for transparent huge pages (2 MB) for allocations of 512 kB
+// Its memory asks the kernel for transparent huge pages (2 MB) for allocations of 512 kB
 // and more (madvise MADV_HUGEPAGE where the kernel offers it): a million-segment Path touches
 // a few hundred pages instead of tens of thousands, and threads filling their own Paths no
 // longer queue on the process's page-fault lock. Small columns use the ordinary heap.
@@ -12,6 +13,8 @@
 #include <cstddef>
 #include <cstring>
 #include <new>
+#include <stdexcept>
+#include <utility>
 #include <type_traits>
 #include <vector>
 
@@ -25,23 +28,121 @@ void column_deallocate(void* p, std::size_t bytes) noexcept;
 void column_release_tail(void* p, std::size_t used, std::size_t capacity) noexcept;
 }  // namespace detail
 
+// A growable array of trivially copyable values (the std::vector operations the columns
+// use), in memory from column_allocate. Beyond std::vector: `push_unchecked` and
+// `append_unchecked` write into capacity reserved before, without a test per value (the Path
+// checks its room once a segment, not once a value), and a copy keeps the capacity.
 template <class T>
-struct ColumnAllocator {
-    using value_type = T;
-    ColumnAllocator() noexcept = default;
-    template <class U>
-    ColumnAllocator(const ColumnAllocator<U>&) noexcept {}
-    T* allocate(std::size_t n) {
-        if (n > static_cast<std::size_t>(-1) / sizeof(T)) throw std::bad_array_new_length();
-        return static_cast<T*>(detail::column_allocate(n * sizeof(T)));
-    }
-    void deallocate(T* p, std::size_t n) noexcept { detail::column_deallocate(p, n * sizeof(T)); }
-    template <class U>
-    bool operator==(const ColumnAllocator<U>&) const noexcept { return true; }
-};
+class Column {
+    static_assert(std::is_trivially_copyable_v<T>, "a Column holds plain values");
 
-template <class T>
-using Column = std::vector<T, ColumnAllocator<T>>;
+public:
+    using value_type = T;
+    using iterator = T*;
+    using const_iterator = const T*;
+
+    Column() noexcept = default;
+    Column(std::size_t n, const T& v) { resize(n, v); }
+    Column(const Column& o) { copy_from(o); }
+    Column(Column&& o) noexcept { swap(o); }
+    Column& operator=(const Column& o) {
+        if (this != &o) {
+            Column c(o);
+            swap(c);
+        }
+        return *this;
+    }
+    Column& operator=(Column&& o) noexcept {
+        Column c(std::move(o));
+        swap(c);
+        return *this;
+    }
+    ~Column() {
+        if (first_) detail::column_deallocate(first_, capacity() * sizeof(T));
+    }
+    void swap(Column& o) noexcept {
+        std::swap(first_, o.first_);
+        std::swap(last_, o.last_);
+        std::swap(limit_, o.limit_);
+    }
+
+    std::size_t size() const noexcept { return static_cast<std::size_t>(last_ - first_); }
+    std::size_t capacity() const noexcept { return static_cast<std::size_t>(limit_ - first_); }
+    bool empty() const noexcept { return last_ == first_; }
+    T* data() noexcept { return first_; }
+    const T* data() const noexcept { return first_; }
+    T& operator[](std::size_t i) noexcept { return first_[i]; }
+    const T& operator[](std::size_t i) const noexcept { return first_[i]; }
+    T* begin() noexcept { return first_; }
+    T* end() noexcept { return last_; }
+    const T* begin() const noexcept { return first_; }
+    const T* end() const noexcept { return last_; }
+    T& front() noexcept { return *first_; }
+    const T& front() const noexcept { return *first_; }
+    T& back() noexcept { return last_[-1]; }
+    const T& back() const noexcept { return last_[-1]; }
+
+    void reserve(std::size_t n) {
+        if (n > capacity()) reallocate(n);
+    }
+    void clear() noexcept { last_ = first_; }
+    void pop_back() noexcept { --last_; }
+    void push_back(const T& v) {
+        if (last_ == limit_) [[unlikely]]
+            grow(size() + 1);
+        *last_++ = v;
+    }
+    template <class... A>
+    T& emplace_back(A&&... a) {
+        if (last_ == limit_) [[unlikely]]
+            grow(size() + 1);
+        return *new (last_++) T{std::forward<A>(a)...};
+    }
+    void resize(std::size_t n) { resize(n, T{}); }
+    void resize(std::size_t n, const T& v) {
+        if (n > capacity()) grow(n);
+        for (T* p = last_; p < first_ + n; ++p) *p = v;
+        last_ = first_ + n;
+    }
+    // Appends [first, last) at the end (the only place the columns insert).
+    void insert(const T* pos, const T* first, const T* last) {
+        if (pos != end()) throw std::logic_error("Column::insert only appends");
+        const std::size_t n = static_cast<std::size_t>(last - first);
+        if (size() + n > capacity()) grow(size() + n);
+        if (n) std::memcpy(last_, first, n * sizeof(T));
+        last_ += n;
+    }
+    // Within reserved capacity only (size() < capacity(), resp. size() + n <= capacity()).
+    void push_unchecked(const T& v) noexcept { *last_++ = v; }
+    T* append_unchecked(std::size_t n) noexcept {
+        T* p = last_;
+        last_ += n;
+        return p;
+    }
+
+private:
+    [[gnu::noinline]] void grow(std::size_t need) { reallocate(std::max({need, 2 * capacity(), std::size_t{8}})); }
+    void reallocate(std::size_t n) {
+        if (n > static_cast<std::size_t>(-1) / sizeof(T)) throw std::bad_array_new_length();
+        T* p = static_cast<T*>(detail::column_allocate(n * sizeof(T)));
+        const std::size_t rows = size();
+        if (rows) std::memcpy(p, first_, rows * sizeof(T));
+        if (first_) detail::column_deallocate(first_, capacity() * sizeof(T));
+        first_ = p;
+        last_ = p + rows;
+        limit_ = p + n;
+    }
+    void copy_from(const Column& o) {
+        if (o.capacity() == 0) return;
+        reallocate(o.capacity());
+        if (!o.empty()) std::memcpy(first_, o.first_, o.size() * sizeof(T));
+        last_ = first_ + o.size();
+    }
+
+    T* first_ = nullptr;  // the rows are [first_, last_), the capacity [first_, limit_)
+    T* last_ = nullptr;
+    T* limit_ = nullptr;
+};
 
 // Gives back the memory of `c` beyond its rows (the column may still grow: pages given back
 // come back zeroed when written).

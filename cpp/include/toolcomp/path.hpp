@@ -61,6 +61,8 @@ private:
     // then a segment with the same row (bit for bit) only counts one more row in each.
     UniformRow last_{};
     bool all_uniform_ = false;
+    // Segments every column but the uniform ones has room for: push() checks once a segment.
+    std::size_t room_ = 0;
 };
 
 }  // namespace toolcomp

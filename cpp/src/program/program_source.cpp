@@ -42,7 +42,8 @@ ProgramSource::ProgramSource(const std::string& path, Dialect dialect, const Rea
 }
 
 ProgramSource::~ProgramSource() {
-    if (ahead_.valid()) ahead_.wait();
+    // A piece being read on the other thread is waited for; a deferred one is never read.
+    if (threads_ && ahead_.valid()) ahead_.wait();
 }
 
 // The next piece is read and parsed on the other core while the run works through this one
