@@ -25,7 +25,7 @@ void BackgroundWatch::tangent_slack(double slack) { record({Op::tangent_slack, f
 
 void BackgroundWatch::scale(double f) { record({Op::scale, false, 0, 0, f, 0, {}}); }
 
-void BackgroundWatch::apply(const Call& c) {
+[[gnu::always_inline]] inline void BackgroundWatch::apply_inline(const Call& c) {
     switch (c.op) {
         case Op::configure: watch_.configure(c.line, c.a); break;
         case Op::programmed: watch_.programmed(c.e, c.line); break;
@@ -38,6 +38,12 @@ void BackgroundWatch::apply(const Call& c) {
             for (Diagnostic& d : scratch_) found_.emplace_back(c.at, std::move(d));
             break;
     }
+}
+
+void BackgroundWatch::apply(const Call& c) { apply_inline(c); }
+
+void BackgroundWatch::replay(const std::vector<Call>& calls) {
+    for (const Call& c : calls) apply_inline(c);
 }
 
 // The full batch goes to the thread (started with the first one); while kQueued batches

@@ -79,10 +79,9 @@ private:
         if (batch_.size() >= kBatch) hand_over();
     }
     void hand_over();
-    void apply(const Call& c);
-    void replay(const std::vector<Call>& calls) {
-        for (const Call& c : calls) apply(c);
-    }
+    void apply(const Call& c);         // one call, as it is made (no thread)
+    void apply_inline(const Call& c);  // the same, inlined into replay (background_watch.cpp)
+    void replay(const std::vector<Call>& calls);
     void work();
     void stop();
 
