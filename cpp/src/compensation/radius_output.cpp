@@ -29,64 +29,76 @@ RadiusCompensation::Held& RadiusCompensation::hold(const Motion& m, const Vec2& 
 // move: the contour starts at its end) and the tool-centre moves as they leave the stage.
 void RadiusCompensation::watch_programmed(const Element2& e, int line) { overcut_.programmed(e, line); }
 
-void RadiusCompensation::watch_released(const Emitted& e) {
-    const Motion& m = e.m;
-    if (e.approach || m.radius.side == 0) return;
+void RadiusCompensation::watch_released(const Motion& m, bool approach, std::size_t settled) {
+    if (approach || m.radius.side == 0) return;
     const Vec2 s = plane2(m.start), x = plane2(m.end);
     const Element2 el = m.is_arc() ? Element2::arc(s, x, plane2(m.center), m.kind == MotionKind::arc_ccw ? 1 : -1, m.turns)
                                    : Element2::line(s, x);
-    overcut_.compensated(el, m.line, m.file, m.radius.radius, e.settled);
+    overcut_.compensated(el, m.line, m.file, m.radius.radius, settled);
 }
 
-void RadiusCompensation::emit(const Held& h) {
-    window_.emplace_back(h);  // made in place: one copy
-    Emitted& e = window_.back();
-    e.settled = overcut_.contour_count();  // its neighbours are counted from here, not from its release
-    if (have_last_) e.m.start = start_after(last_, last_off_, e.m);
-    if (e.m.is_arc()) e.m.center[axes(e.m.plane).c] = e.m.start[axes(e.m.plane).c];
-    e.in_plane = !e.m.generated && (plane2(e.m.end) - plane2(e.m.start)).squaredNorm() > tol::length * tol::length;
-    last_ = e.m.end;
-    last_off_ = e.m.tool_offset;
+// A held move leaves the queue (which flush() clears after): its start follows the last
+// emitted end. Without a look-ahead and with nothing waiting it goes straight out, changed
+// in place; else it waits in the window until release() lets it go.
+void RadiusCompensation::emit(Held& h) {
+    Motion& m = h.m;
+    const std::size_t settled = overcut_.contour_count();  // its neighbours are counted from here
+    if (have_last_) m.start = start_after(last_, last_off_, m);
+    if (m.is_arc()) m.center[axes(m.plane).c] = m.start[axes(m.plane).c];
+    last_ = m.end;
+    last_off_ = m.tool_offset;
     have_last_ = true;
-    release(gouge_ == GougeReaction::skip || lookahead_ > 0 ? static_cast<std::size_t>(std::max(0, lookahead() - 1))
-                                                                   : 0);
+    const std::size_t keep =
+        gouge_ == GougeReaction::skip || lookahead_ > 0 ? static_cast<std::size_t>(std::max(0, lookahead() - 1)) : 0;
+    if (keep == 0 && window_.empty()) {
+        send(m, h.approach, settled);
+        overcut_.report(diags_, unit_, /*all=*/false);
+        return;
+    }
+    Emitted& e = window_.emplace_back(h);  // made in place: one copy
+    e.settled = settled;
+    e.in_plane = !m.generated && (plane2(m.end) - plane2(m.start)).squaredNorm() > tol::length * tol::length;
+    release(keep);
 }
 
 // Sends the oldest emitted moves downstream until at most `keep` plane moves stay for the
-// look-ahead. Lathe tools: the controlled point is the imaginary tip, the nose centre shifted
-// by the nose radius toward the tip (only in the ZX plane; numbering per profile).
+// look-ahead.
 void RadiusCompensation::release(std::size_t keep) {
     std::size_t in_plane = 0;
     for (const auto& e : window_) in_plane += e.in_plane;
     std::size_t n = 0;
     while (n < window_.size() && in_plane > keep) in_plane -= window_[n++].in_plane;
     if (keep == 0) n = window_.size();
-    for (std::size_t i = 0; i < n; ++i) {
-        watch_released(window_[i]);
-        Motion& m = window_[i].m;  // changed in place: it leaves the window below
-        const double r = m.radius.radius;
-        if (m.plane == Plane::zx && r > 0 && m.radius.orientation != 0) {
-            const TipVector tip = tip_vector(m.radius.orientation, profile_.radius.tip_convention);
-            if (tip.x || tip.z) {
-                const Vec3 shift(tip.x * r, 0, tip.z * r);
-                m.end += shift;
-                if (m.is_arc()) m.center += shift;
-            }
-        }
-        if (have_out_) m.start = start_after(last_out_, last_out_off_, m);
-        // A generated link of zero length (an activation that already stands at the contour's
-        // equidistant, as after APPR) is not a move.
-        if (m.generated && m.kind == MotionKind::line && !m.is_arc() && have_out_ && (m.end - m.start).norm() < 1e-12 &&
-            m.radius.side != 0 && m.radius.orientation == 0)
-            continue;
-        if (m.is_arc()) m.center[axes(m.plane).c] = m.start[axes(m.plane).c];
-        last_out_ = m.end;
-        last_out_off_ = m.tool_offset;
-        have_out_ = true;
-        out_.push(m);
-    }
+    for (std::size_t i = 0; i < n; ++i) send(window_[i].m, window_[i].approach, window_[i].settled);
     window_.erase(window_.begin(), window_.begin() + static_cast<std::ptrdiff_t>(n));
     overcut_.report(diags_, unit_, /*all=*/false);
+}
+
+// One move downstream, changed in place (it leaves the stage). Lathe tools: the controlled
+// point is the imaginary tip, the nose centre shifted by the nose radius toward the tip (only
+// in the ZX plane; numbering per profile).
+void RadiusCompensation::send(Motion& m, bool approach, std::size_t settled) {
+    watch_released(m, approach, settled);
+    const double r = m.radius.radius;
+    if (m.plane == Plane::zx && r > 0 && m.radius.orientation != 0) {
+        const TipVector tip = tip_vector(m.radius.orientation, profile_.radius.tip_convention);
+        if (tip.x || tip.z) {
+            const Vec3 shift(tip.x * r, 0, tip.z * r);
+            m.end += shift;
+            if (m.is_arc()) m.center += shift;
+        }
+    }
+    if (have_out_) m.start = start_after(last_out_, last_out_off_, m);
+    // A generated link of zero length (an activation that already stands at the contour's
+    // equidistant, as after APPR) is not a move.
+    if (m.generated && m.kind == MotionKind::line && !m.is_arc() && have_out_ && (m.end - m.start).norm() < 1e-12 &&
+        m.radius.side != 0 && m.radius.orientation == 0)
+        return;
+    if (m.is_arc()) m.center[axes(m.plane).c] = m.start[axes(m.plane).c];
+    last_out_ = m.end;
+    last_out_off_ = m.tool_offset;
+    have_out_ = true;
+    out_.push(m);
 }
 
 void RadiusCompensation::passthrough(const Motion& m) {

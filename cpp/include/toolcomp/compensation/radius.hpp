@@ -88,12 +88,13 @@ private:
     void no_intersection(const Element2& next, int line, const std::string& msg);
     bool skip_unreachable(const Element2& next, int line);
     void flush();
-    void emit(const Held& h);
+    void emit(Held& h);
     void release(std::size_t keep_plane_moves);
+    void send(Motion& m, bool approach, std::size_t settled);
     void passthrough(const Motion& m);
     void warn(const char* code, const std::string& msg, int line);
     void watch_programmed(const Element2& e, int line);
-    void watch_released(const Emitted& e);
+    void watch_released(const Motion& m, bool approach, std::size_t settled);
 
     Vec2 plane2(const Vec3& v) const { return in_plane(v, plane_); }
     Vec3 with_plane(Vec3 v, const Vec2& ab) const;
