@@ -16,29 +16,12 @@ namespace toolcomp::iso {
 
 namespace {
 
-bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
-
 // 1 for the characters that end a run of ordinary ones: blanks, '(' and ';'.
 constexpr auto kCharClass = [] {
     std::array<std::uint8_t, 256> t{};
     for (unsigned char c : {' ', '\t', '\r', '\f', '\v', '(', ';'}) t[c] = 1;
     return t;
 }();
-
-// Letters that are address words in ISO G-code (LinuxCNC's set for a machine with axes
-// XYZABC; O, # and [ belong to the statements of programs that compute).
-bool is_word_letter(char u, Dialect d) {
-    // Fanuc and 9/Series: U V W are words too (incremental X Y Z on lathes, extra axes on mills).
-    if ((u == 'U' || u == 'V' || u == 'W') && (d == Dialect::fanuc || d == Dialect::rockwell)) return true;
-    switch (u) {
-        case 'A': case 'B': case 'C': case 'D': case 'E': case 'F': case 'G': case 'H': case 'I':
-        case 'J': case 'K': case 'L': case 'M': case 'N': case 'P': case 'Q': case 'R':
-        case 'S': case 'T': case 'X': case 'Y': case 'Z':
-            return true;
-        default:
-            return false;
-    }
-}
 
 bool blank_line(std::string_view l) {
     for (char c : l)
@@ -199,28 +182,17 @@ double LineLexer::number() {
         ++i;
     }
     const std::size_t first = i;  // the line has no blanks here: the number is one run
-    int points = 0, digits = 0, frac = 0;
-    std::uint64_t m = 0;
-    for (; i < n; ++i) {
-        const char c = s[i];
-        if (c >= '0' && c <= '9') {
-            if (++digits <= 15) m = m * 10 + static_cast<std::uint64_t>(c - '0');
-            frac += points;  // digits after the point (more than one point fails below)
-        } else if (c == '.') {
-            ++points;
-        } else {
-            break;
-        }
-    }
-    i_ = i;
-    const std::string_view text(s + first, i - first);
+    const DecimalRun run = scan_decimal_run(s, i, n);
+    i_ = run.end;
+    const std::string_view text(s + first, run.end - first);
     if (text.empty()) fail_at("bad_number_format", "No characters found in reading real value", start);
-    if (points > 1)
+    if (run.points > 1)
         fail_at("bad_number_format", "bad number format (trailing characters) parsing '" + std::string(text) + "'", start);
-    if (!digits) fail_at("bad_number_format", "bad number format (conversion failed) parsing '" + std::string(text) + "'", start);
+    if (!run.digits)
+        fail_at("bad_number_format", "bad number format (conversion failed) parsing '" + std::string(text) + "'", start);
     double v = 0;
-    if (digits <= 15)
-        v = decimal_value(m, frac);
+    if (run.plain())
+        v = decimal_value(run.m, run.frac);
     else if (!parse_decimal(text, v) || !std::isfinite(v))
         fail_at("bad_number_format", "bad number format (conversion failed) parsing '" + std::string(text) + "'", start);
     return negative ? -v : v;
@@ -262,7 +234,7 @@ Program PieceParser::parse(std::string_view text) {
             // LinuxCNC reads at most 252 characters a line (a CR of a CRLF end counts).
             if (dialect_ == Dialect::linuxcnc && line.size() > 252)
                 throw ParseError("line_too_long", "Command too long", {line_no_, 253});
-            LineLexer(line, line_no_, prog, buffers).run();
+            if (!lex_plain_line(line, line_no_, prog)) LineLexer(line, line_no_, prog, buffers).run();
         } catch (const ParseError& e) {
             if (strict_) throw;
             // The block of the failing line, if it was begun (a line refused for its length

@@ -15,6 +15,30 @@
 
 namespace toolcomp::iso {
 
+inline bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
+
+// Letters that are address words in ISO G-code (LinuxCNC's set for a machine with axes
+// XYZABC; O, # and [ belong to the statements of programs that compute).
+inline bool is_word_letter(char u, Dialect d) {
+    // Fanuc and 9/Series: U V W are words too (incremental X Y Z on lathes, extra axes on mills).
+    if ((u == 'U' || u == 'V' || u == 'W') && (d == Dialect::fanuc || d == Dialect::rockwell)) return true;
+    switch (u) {
+        case 'A': case 'B': case 'C': case 'D': case 'E': case 'F': case 'G': case 'H': case 'I':
+        case 'J': case 'K': case 'L': case 'M': case 'N': case 'P': case 'Q': case 'R':
+        case 'S': case 'T': case 'X': case 'Y': case 'Z':
+            return true;
+        default:
+            return false;
+    }
+}
+
+// A line of address words with plain numbers ("G1 X10.5 Y-2 F600": letters, signs, digits,
+// points, blanks between words), read straight from the source text into a block of `prog`:
+// what LineLexer makes of it, without its normalising pass (plain_line.cpp). False, with
+// nothing added, for every other line (comments, parameters, expressions, O-words, blanks
+// within a word, anything LineLexer refuses): LineLexer reads those.
+bool lex_plain_line(std::string_view line, int line_no, Program& prog);
+
 // The normalised text of a line and its maps, reused from line to line (no allocation per
 // line on million-block programs).
 struct LineBuffers {
