@@ -22,6 +22,8 @@
 #include "toolcomp/tools/sinumerik_edge.hpp"
 #include "toolcomp/tools/tool_table.hpp"
 
+#include "dialects/iso/line_lexer.hpp"  // the lexer's two readings, compared (cpp/src)
+
 namespace toolcomp::fuzz {
 
 enum class Outcome { ok, error };
@@ -83,6 +85,41 @@ inline void same_in_pieces(std::string_view text, Dialect d, std::size_t piece) 
 // ISO word-address front end. First byte: dialect (% 3: linuxcnc, fanuc, rockwell), strict
 // (/ 3 even) or lenient parsing, and (/ 6) the size of the pieces the text is also read in;
 // the rest is the program text.
+// The ISO lexer's fast path must read every line it takes as the general lexer reads it
+// (words, values bit for bit, columns), and leave nothing behind on a line it refuses; a
+// difference is a bug (std::logic_error).
+inline void same_plain_reading(std::string_view text, Dialect d) {
+    iso::LineBuffers buffers;
+    for (std::size_t pos = 0; pos <= text.size();) {
+        std::size_t nl = text.find('\n', pos);
+        if (nl == std::string_view::npos) nl = text.size();
+        const std::string_view line = text.substr(pos, nl - pos);
+        pos = nl + 1;
+        Program fast, slow;
+        fast.dialect = slow.dialect = d;
+        if (!iso::lex_plain_line(line, 1, fast)) {
+            if (fast.size() != 0 || fast.word_count() != 0) throw std::logic_error("plain line: a refused line left words");
+            continue;
+        }
+        try {
+            iso::LineLexer(line, 1, slow, buffers).run();
+        } catch (const Error&) {
+            throw std::logic_error("plain line: taken, but the general lexer refuses it");
+        }
+        if (fast.size() != 1 || slow.size() != 1) throw std::logic_error("plain line: not one block");
+        const Block& a = fast.blocks()[0];
+        const Block& b = slow.blocks()[0];
+        if (a.word_count != b.word_count || b.comment_count != 0 || b.statement_count != 0 ||
+            a.block_delete != b.block_delete)
+            throw std::logic_error("plain line: the block differs");
+        const auto wa = fast.words(a), wb = slow.words(b);
+        for (std::size_t k = 0; k < wa.size(); ++k)
+            if (wa[k].letter != wb[k].letter || std::memcmp(&wa[k].value, &wb[k].value, sizeof(double)) != 0 ||
+                wa[k].column != wb[k].column || wa[k].expr != wb[k].expr)
+                throw std::logic_error("plain line: a word differs");
+    }
+}
+
 inline Outcome iso_parse(const std::uint8_t* data, std::size_t size) {
     if (size < 1) return Outcome::ok;
     static constexpr Dialect dialects[] = {Dialect::linuxcnc, Dialect::fanuc, Dialect::rockwell};
@@ -91,6 +128,7 @@ inline Outcome iso_parse(const std::uint8_t* data, std::size_t size) {
     const std::string_view text = as_text(data + 1, size - 1);
     const Outcome o = ok_or_error([&] { (void)iso::parse(text, d, "<fuzz>", strict); });
     same_in_pieces(text, d, 1 + data[0] / 6);
+    same_plain_reading(text, d);
     return o;
 }
 
