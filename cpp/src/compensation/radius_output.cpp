@@ -98,7 +98,16 @@ void RadiusCompensation::send(Motion& m, bool approach, std::size_t settled) {
     last_out_ = m.end;
     last_out_off_ = m.tool_offset;
     have_out_ = true;
-    out_.push(m);
+    try {
+        out_.push(m);
+    } catch (...) {
+        // A stage or Path after this one refused the move: the path ends before it. Nothing
+        // held or waiting goes out any more (a lenient run's finish() would send the moves
+        // again, this one changed in place already).
+        queue_.clear();
+        window_.clear();
+        throw;
+    }
 }
 
 void RadiusCompensation::passthrough(const Motion& m) {
