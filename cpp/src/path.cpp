@@ -37,7 +37,7 @@ Vec3 get3(const Vec3Column& v, std::size_t i) { return {v(i, 0), v(i, 1), v(i, 2
 }  // namespace
 
 void Path::reserve(std::size_t n) {
-    if (n <= room_) return;
+    if (n <= room_.n) return;
     kind.reserve(n);
     for (auto* v : {&start, &end, &center}) v->reserve(3 * n);
     for (auto* v : {&tool_offset, &abc, &normal, &tool_axis}) v->reserve(n);
@@ -49,7 +49,7 @@ void Path::reserve(std::size_t n) {
     side.reserve(n);
     plane.reserve(n);
     generated.reserve(n);
-    room_ = n;
+    room_.n = n;
 }
 
 void Path::release_unused() noexcept {
@@ -83,7 +83,7 @@ void Path::push(const Motion& m) {
     r.turns = m.turns;
     r.file = m.file;
     r.plane = static_cast<std::int32_t>(m.plane);
-    if (size() == room_) reserve(std::max<std::size_t>(2 * room_, 1024));
+    if (size() >= room_.n) reserve(std::max<std::size_t>(2 * room_.n, 1024));
     const Vec3 from = m.start * u, to = m.end * u, about = m.center * u;
     put3(start.append_unchecked(3), from);
     put3(end.append_unchecked(3), to);
@@ -95,14 +95,24 @@ void Path::push(const Motion& m) {
         for (auto* c : {&tool, &turns, &file}) c->push_same();
         plane.push_same();
     } else {
-        tool_offset.push(r.tool_offset);
-        abc.push(r.abc);
-        normal.push(r.normal);
-        tool_axis.push(r.tool_axis);
-        tool.push(r.tool);
-        turns.push(r.turns);
-        file.push(r.file);
-        plane.push(static_cast<std::uint8_t>(r.plane));
+        try {
+            tool_offset.push(r.tool_offset);
+            abc.push(r.abc);
+            normal.push(r.normal);
+            tool_axis.push(r.tool_axis);
+            tool.push(r.tool);
+            turns.push(r.turns);
+            file.push(r.file);
+            plane.push(static_cast<std::uint8_t>(r.plane));
+        } catch (...) {
+            // A uniform column could not grow: the row written above is taken back, so that
+            // the columns checked only through kind's size never run past their room.
+            for (auto* c : {&start, &end, &center})
+                for (int i = 0; i < 3; ++i) c->pop_back();
+            line.pop_back();
+            feed.pop_back();
+            throw;
+        }
         all_uniform_ = tool_offset.uniform() && abc.uniform() && normal.uniform() && tool_axis.uniform() &&
                        tool.uniform() && turns.uniform() && file.uniform() && plane.uniform();
         last_ = r;

@@ -95,3 +95,22 @@ TEST_CASE("Column: release_unused leaves heap columns and partly used pages alon
     CHECK(resident_pages(bytes.data(), 8192) == 2);
 }
 #endif
+
+TEST_CASE("Column: a value or range taken from the column itself survives its growth") {
+    toolcomp::Column<double> c;
+    c.push_back(1.5);
+    while (c.size() < c.capacity()) c.push_back(2.5);
+    const std::size_t full = c.size();
+    c.push_back(c.front());  // full: the column moves while the value is read from it
+    REQUIRE(c.size() == full + 1);
+    CHECK(c.back() == 1.5);
+
+    toolcomp::Column<int> d;
+    for (int i = 0; i < 8; ++i) d.push_back(i);
+    REQUIRE(d.size() == d.capacity());
+    d.insert(d.end(), d.begin(), d.end());  // doubles the column from its own rows
+    REQUIRE(d.size() == 16);
+    for (int i = 0; i < 16; ++i) CHECK(d[static_cast<std::size_t>(i)] == i % 8);
+    d.resize(100, d[3]);
+    CHECK(d[99] == 3);
+}

@@ -87,28 +87,38 @@ public:
     }
     void clear() noexcept { last_ = first_; }
     void pop_back() noexcept { --last_; }
+    // Values passed in may be rows of this column (as with std::vector): they are copied
+    // before the column grows and frees its old memory.
     void push_back(const T& v) {
         if (last_ == limit_) [[unlikely]]
-            grow(size() + 1);
+            return grow_and_push(v);
         *last_++ = v;
     }
     template <class... A>
     T& emplace_back(A&&... a) {
-        if (last_ == limit_) [[unlikely]]
-            grow(size() + 1);
+        if (last_ == limit_) [[unlikely]] {
+            grow_and_push(T{std::forward<A>(a)...});
+            return back();
+        }
         return *new (last_++) T{std::forward<A>(a)...};
     }
     void resize(std::size_t n) { resize(n, T{}); }
     void resize(std::size_t n, const T& v) {
+        const T fill = v;
         if (n > capacity()) grow(n);
-        for (T* p = last_; p < first_ + n; ++p) *p = v;
+        for (T* p = last_; p < first_ + n; ++p) *p = fill;
         last_ = first_ + n;
     }
     // Appends [first, last) at the end (the only place the columns insert).
     void insert(const T* pos, const T* first, const T* last) {
         if (pos != end()) throw std::logic_error("Column::insert only appends");
         const std::size_t n = static_cast<std::size_t>(last - first);
-        if (size() + n > capacity()) grow(size() + n);
+        if (size() + n > capacity()) {
+            const bool own = first >= first_ && first < last_;  // rows of this column
+            const std::size_t at = own ? static_cast<std::size_t>(first - first_) : 0;
+            grow(size() + n);
+            if (own) first = first_ + at;
+        }
         if (n) std::memcpy(last_, first, n * sizeof(T));
         last_ += n;
     }
@@ -122,6 +132,10 @@ public:
 
 private:
     [[gnu::noinline]] void grow(std::size_t need) { reallocate(std::max({need, 2 * capacity(), std::size_t{8}})); }
+    [[gnu::noinline]] void grow_and_push(T v) {  // v: a copy, made before the memory moves
+        grow(size() + 1);
+        *last_++ = v;
+    }
     void reallocate(std::size_t n) {
         if (n > static_cast<std::size_t>(-1) / sizeof(T)) throw std::bad_array_new_length();
         T* p = static_cast<T*>(detail::column_allocate(n * sizeof(T)));

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "toolcomp/column.hpp"
@@ -62,7 +63,18 @@ private:
     UniformRow last_{};
     bool all_uniform_ = false;
     // Segments every column but the uniform ones has room for: push() checks once a segment.
-    std::size_t room_ = 0;
+    // A copy keeps the columns' capacity, and this with it; a moved-from Path has none.
+    struct Room {
+        std::size_t n = 0;
+        Room() = default;
+        Room(const Room&) = default;
+        Room& operator=(const Room&) = default;
+        Room(Room&& o) noexcept : n(std::exchange(o.n, 0)) {}
+        Room& operator=(Room&& o) noexcept {
+            n = std::exchange(o.n, 0);
+            return *this;
+        }
+    } room_;
 };
 
 }  // namespace toolcomp
