@@ -87,7 +87,7 @@ def run(program, tools=None, *, dialect=None, strict=True, block_delete=False, p
     ``threads``: a run puts its overcut watch, and the reading of the next piece of a program
     file, on threads of their own (the other core). ``threads=False`` keeps everything on the
     calling thread, for batches whose runs keep every core busy anyway (:func:`run_many` does
-    this when it has more programs than workers). The result is the same either way.
+    this when its workers and programs are at least as many as the cores). The result is the same either way.
     """
     tools, search_path, parameters = _run_inputs(tools, units, search_path, parameters)
     if isinstance(program, (str, _os.PathLike)):

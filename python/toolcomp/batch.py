@@ -12,10 +12,19 @@ from concurrent.futures import ThreadPoolExecutor
 from typing import Any, Iterable, List, Optional
 
 
+def cores() -> int:
+    """The cores this process may run on (its CPU affinity where the system tells it, else
+    the machine's count)."""
+    try:
+        return len(os.sched_getaffinity(0)) or 1
+    except (AttributeError, OSError):
+        return os.cpu_count() or 1
+
+
 def run_many(programs: Iterable[Any], tools: Any = None, *, workers: Optional[int] = None,
              return_exceptions: bool = False, **kwargs: Any) -> List[Any]:
     """Run every program of ``programs`` (Program objects or paths) with ``tools`` (a
-    ToolTable or a path, read once) on ``workers`` threads (default: the number of cores) and
+    ToolTable or a path, read once) on ``workers`` threads (default: the cores the process may use) and
     return their Results in the order given. ``kwargs`` are those of :func:`toolcomp.run`.
     When the workers alone keep every core busy (as many programs and workers as cores, or
     more), each run goes without threads of its own (``threads=False``: no hand-over between
@@ -28,7 +37,7 @@ def run_many(programs: Iterable[Any], tools: Any = None, *, workers: Optional[in
     if isinstance(tools, (str, os.PathLike)):
         tools = ToolTable.read(os.fspath(tools), units=kwargs.pop("units", "mm"))
     if workers is None:
-        workers = os.cpu_count() or 1
+        workers = cores()
     if workers < 1:
         raise ValueError("workers must be at least 1")
 
@@ -40,7 +49,7 @@ def run_many(programs: Iterable[Any], tools: Any = None, *, workers: Optional[in
                 raise
             return exc
 
-    if min(workers, len(programs)) >= (os.cpu_count() or 1):
+    if min(workers, len(programs)) >= cores():
         kwargs.setdefault("threads", False)
     if workers == 1 or len(programs) <= 1:
         return [one(p) for p in programs]

@@ -1,4 +1,6 @@
 """Batches: run_many on a thread pool, and the same work on a local Dask cluster."""
+import os
+
 import numpy as np
 import pytest
 
@@ -79,7 +81,7 @@ def test_run_many_runs_without_threads_of_their_own_when_the_pool_fills_the_core
         return program
 
     monkeypatch.setattr(tc, "run", fake_run)
-    monkeypatch.setattr("os.cpu_count", lambda: 2)
+    monkeypatch.setattr("toolcomp.batch.cores", lambda: 2)
     tc.run_many(paths, tools, workers=2)
     assert seen == [False] * 8
     seen.clear()
@@ -91,3 +93,14 @@ def test_run_many_runs_without_threads_of_their_own_when_the_pool_fills_the_core
     seen.clear()
     tc.run_many(paths, tools, workers=2, threads=True)  # asked for
     assert seen == [True] * 8
+
+
+def test_cores_are_those_the_process_may_use(monkeypatch):
+    # A process pinned to one core of a larger machine (taskset, a container's cpuset) has
+    # one core for its workers.
+    from toolcomp.batch import cores
+    monkeypatch.setattr("os.cpu_count", lambda: 8)
+    monkeypatch.setattr("os.sched_getaffinity", lambda pid: {3}, raising=False)
+    assert cores() == 1
+    monkeypatch.delattr("os.sched_getaffinity", raising=False)
+    assert cores() == 8
