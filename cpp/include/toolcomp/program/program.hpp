@@ -145,6 +145,9 @@ public:
         return static_cast<std::int32_t>(exprs_.size() - 1);
     }
     void drop_last_expression() { exprs_.pop_back(); }
+    std::size_t expression_count() const { return exprs_.size(); }
+    // The expressions from the n-th on go (those of a line refused half-way).
+    void drop_expressions_from(std::size_t n) { exprs_.erase(exprs_.begin() + static_cast<std::ptrdiff_t>(n), exprs_.end()); }
     // Removes the last block (a front end that failed half-way through it).
     void drop_last_block();
     void reserve(std::size_t blocks, std::size_t words, std::size_t tokens = 0) {

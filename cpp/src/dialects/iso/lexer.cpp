@@ -230,6 +230,7 @@ Program PieceParser::parse(std::string_view text) {
         }
         seen_content_ = true;
         last_line_ = line_no_;
+        const std::size_t exprs = prog.expression_count();
         try {
             // LinuxCNC reads at most 252 characters a line (a CR of a CRLF end counts).
             if (dialect_ == Dialect::linuxcnc && line.size() > 252)
@@ -240,6 +241,7 @@ Program PieceParser::parse(std::string_view text) {
             // The block of the failing line, if it was begun (a line refused for its length
             // never is: the block before it stays).
             if (prog.size() && prog.blocks().back().line == line_no_) prog.drop_last_block();
+            prog.drop_expressions_from(exprs);  // and the expressions it had read
             prog.syntax_error = e.diagnostic();
             done_ = true;
         }
