@@ -77,6 +77,7 @@ struct Comment {
 struct Block {
     int line = 0;               // 1-based source line
     bool block_delete = false;  // the block starts with '/'
+    bool computed = false;      // a word's value is an expression (Word::expr)
     std::uint32_t first_word = 0, word_count = 0;
     std::uint32_t first_comment = 0, comment_count = 0;
     std::uint32_t first_token = 0, token_count = 0;
@@ -121,7 +122,12 @@ public:
 
     // Building (front ends): open a block, add its words and comments, close it.
     void begin_block(int line, bool block_delete);
-    void add_word(Word w) { words_.push_back(w); ++blocks_.back().word_count; }
+    void add_word(Word w) {
+        words_.push_back(w);
+        Block& b = blocks_.back();
+        ++b.word_count;
+        b.computed = b.computed || w.expr >= 0;
+    }
     void add_token(Token&& t) {
         tokens_.push_back(std::move(t));
         ++blocks_.back().token_count;

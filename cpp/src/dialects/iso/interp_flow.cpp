@@ -42,9 +42,7 @@ double Interp::eval(std::int32_t e, int column) {
 std::span<const Word> Interp::block_words(const Block& b) {
     const Program& p = frames_.back().prog();
     std::span<const Word> words = p.words(b);
-    bool computed = false;
-    for (const Word& w : words) computed = computed || w.expr >= 0;
-    if (!computed) return words;
+    if (!b.computed) return words;
     scratch_words_.clear();
     for (const Word& w : words) {
         Word v = w;
