@@ -44,6 +44,20 @@ Outcome ok_or_error(F&& f) {
 
 // ---- front ends -------------------------------------------------------------------------
 
+// Two readings of a block: the same line, counts and flags, and the same words (values bit
+// for bit, columns, computed or not).
+inline bool same_block(const Program& p, const Block& a, const Program& q, const Block& b) {
+    if (a.line != b.line || a.word_count != b.word_count || a.comment_count != b.comment_count ||
+        a.statement_count != b.statement_count || a.block_delete != b.block_delete)
+        return false;
+    const auto wa = p.words(a), wb = q.words(b);
+    for (std::size_t k = 0; k < wa.size(); ++k)
+        if (wa[k].letter != wb[k].letter || std::memcmp(&wa[k].value, &wb[k].value, sizeof(double)) != 0 ||
+            wa[k].column != wb[k].column || (wa[k].expr < 0) != (wb[k].expr < 0))
+            return false;
+    return true;
+}
+
 // A text read in pieces of whole lines (at least `piece` bytes each, as a streamed run reads a
 // file) must give the blocks and the syntax error of the text parsed whole (both leniently);
 // a difference is a bug (std::logic_error).
@@ -59,16 +73,8 @@ inline void same_in_pieces(std::string_view text, Dialect d, std::size_t piece) 
         pos = end;
         for (std::size_t i = 0; i < last.size(); ++i, ++block) {
             if (block >= whole.size()) throw std::logic_error("pieces: more blocks than the whole text");
-            const Block& a = whole.blocks()[block];
-            const Block& b = last.blocks()[i];
-            if (a.line != b.line || a.word_count != b.word_count || a.comment_count != b.comment_count ||
-                a.statement_count != b.statement_count || a.block_delete != b.block_delete)
+            if (!same_block(whole, whole.blocks()[block], last, last.blocks()[i]))
                 throw std::logic_error("pieces: block " + std::to_string(block) + " differs");
-            const auto wa = whole.words(a), wb = last.words(b);
-            for (std::size_t k = 0; k < wa.size(); ++k)
-                if (wa[k].letter != wb[k].letter || std::memcmp(&wa[k].value, &wb[k].value, sizeof(double)) != 0 ||
-                    wa[k].column != wb[k].column || (wa[k].expr < 0) != (wb[k].expr < 0))
-                    throw std::logic_error("pieces: a word of block " + std::to_string(block) + " differs");
         }
     }
     if (block != whole.size()) throw std::logic_error("pieces: fewer blocks than the whole text");
@@ -82,9 +88,6 @@ inline void same_in_pieces(std::string_view text, Dialect d, std::size_t piece) 
         throw std::logic_error("pieces: the end of the text differs");
 }
 
-// ISO word-address front end. First byte: dialect (% 3: linuxcnc, fanuc, rockwell), strict
-// (/ 3 even) or lenient parsing, and (/ 6) the size of the pieces the text is also read in;
-// the rest is the program text.
 // The ISO lexer's fast path must read every line it takes as the general lexer reads it
 // (words, values bit for bit, columns), and leave nothing behind on a line it refuses; a
 // difference is a bug (std::logic_error).
@@ -107,19 +110,14 @@ inline void same_plain_reading(std::string_view text, Dialect d) {
             throw std::logic_error("plain line: taken, but the general lexer refuses it");
         }
         if (fast.size() != 1 || slow.size() != 1) throw std::logic_error("plain line: not one block");
-        const Block& a = fast.blocks()[0];
-        const Block& b = slow.blocks()[0];
-        if (a.word_count != b.word_count || b.comment_count != 0 || b.statement_count != 0 ||
-            a.block_delete != b.block_delete)
+        if (!same_block(fast, fast.blocks()[0], slow, slow.blocks()[0]))
             throw std::logic_error("plain line: the block differs");
-        const auto wa = fast.words(a), wb = slow.words(b);
-        for (std::size_t k = 0; k < wa.size(); ++k)
-            if (wa[k].letter != wb[k].letter || std::memcmp(&wa[k].value, &wb[k].value, sizeof(double)) != 0 ||
-                wa[k].column != wb[k].column || wa[k].expr != wb[k].expr)
-                throw std::logic_error("plain line: a word differs");
     }
 }
 
+// ISO word-address front end. First byte: dialect (% 3: linuxcnc, fanuc, rockwell), strict
+// (/ 3 even) or lenient parsing, and (/ 6) the size of the pieces the text is also read in;
+// the rest is the program text.
 inline Outcome iso_parse(const std::uint8_t* data, std::size_t size) {
     if (size < 1) return Outcome::ok;
     static constexpr Dialect dialects[] = {Dialect::linuxcnc, Dialect::fanuc, Dialect::rockwell};

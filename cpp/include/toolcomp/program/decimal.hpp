@@ -47,23 +47,10 @@ inline DecimalRun scan_decimal_run(const char* s, std::size_t i, std::size_t n) 
 
 // False when the text is not such a number (or from_chars refuses it).
 inline bool parse_decimal(std::string_view s, double& out) {
-    std::uint64_t m = 0;
-    int digits = 0, frac = -1;
-    for (const char c : s) {
-        if (c == '.') {
-            if (frac >= 0) return false;
-            frac = 0;
-        } else if (c >= '0' && c <= '9') {
-            if (++digits > 15) break;
-            m = m * 10 + static_cast<std::uint64_t>(c - '0');
-            if (frac >= 0) ++frac;
-        } else {
-            return false;
-        }
-    }
-    if (digits == 0) return false;
-    if (digits <= 15) {
-        out = decimal_value(m, frac);
+    const DecimalRun run = scan_decimal_run(s.data(), 0, s.size());
+    if (run.end != s.size() || run.points > 1 || run.digits == 0) return false;
+    if (run.plain()) {
+        out = decimal_value(run.m, run.frac);
         return true;
     }
     const auto r = std::from_chars(s.data(), s.data() + s.size(), out);
