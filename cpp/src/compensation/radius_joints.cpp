@@ -204,18 +204,15 @@ void RadiusCompensation::next_line(const Motion& m) {
     }
     non_plane_run_ = 0;
     watch_programmed(Element2::line(P, p), m.line);
-    double theta = ang(C - P), alpha = ang(p - P), beta, gamma;
-    if (side_ > 0) {
-        if (theta < alpha) theta += 2 * kPi;
-        beta = theta - alpha - kHalfPi;
-        gamma = kHalfPi;
-    } else {
-        if (alpha < theta) alpha += 2 * kPi;
-        beta = alpha - theta - kHalfPi;
-        gamma = -kHalfPi;
-    }
-    const Vec2 e = p + r_ * u(alpha + gamma);
-    const Vec2 mid = P + r_ * u(alpha + gamma);  // compensated start of the new move
+    // LinuxCNC's angles: theta of the tool's offset C - P at the corner, alpha of the new
+    // move, gamma = ±90° (the tool's side); beta = theta - alpha - 90° (its mirror on the
+    // right), brought into [-90°, 270°): the turn at the corner, > 0 outside. Worked out as
+    // one angle between vectors and the offset as the move's normal, without sines.
+    const Vec2 q = C - P, t = unit(p - P);
+    const double beta = (side_ > 0 ? ccw_angle(t, q) : ccw_angle(q, t)) - kHalfPi;
+    const Vec2 offset = side_ > 0 ? left_normal(t) : Vec2(-left_normal(t));  // u(alpha + gamma)
+    const Vec2 e = p + r_ * offset;
+    const Vec2 mid = P + r_ * offset;  // compensated start of the new move
     const bool front_arc = !queue_.empty() && queue_.front().m.is_arc();
     bool concave = beta < -small || beta > kPi + small;
     if (!concave && beta > kPi - small && front_arc && !tool_inside(side_, turn_of(queue_.front().m)))
@@ -242,7 +239,7 @@ void RadiusCompensation::next_line(const Motion& m) {
         if (halfcorner == 0.0)
             fail("comp_zero_corner", "Zero degree inside corner is invalid for cutter compensation", m.line);
         const double retreat = r_ / std::tan(halfcorner);
-        move_end_and_flush(C + retreat * u(theta + gamma), m.line, true, &next);
+        move_end_and_flush(C + retreat * u(ang(q) + (side_ > 0 ? kHalfPi : -kHalfPi)), m.line, true, &next);
     } else {  // inside corner after an arc: intersect the compensated circle and the new line
         const Motion& prev = queue_.front().m;
         const int pturn = turn_of(prev);
@@ -275,16 +272,17 @@ void RadiusCompensation::next_arc(const Motion& m) {
     const double rho0 = (centre - p).norm();
     non_plane_run_ = 0;
     watch_programmed(Element2::arc(P, p, centre, ccw ? 1 : -1, m.turns), m.line);
-    double theta = ang(C - P);
-    theta = side_ > 0 ? theta - kHalfPi : theta + kHalfPi;  // end direction of the previous element
-    double delta = ang(centre - P);
-    const double alpha = ccw ? delta - kHalfPi : delta + kHalfPi;  // start direction of the arc
-    double beta = side_ > 0 ? theta - alpha : alpha - theta;
-    beta = beta > 1.5 * kPi ? beta - 2 * kPi : (beta < -kHalfPi ? beta + 2 * kPi : beta);
+    // LinuxCNC's angles: theta, the end direction of the previous element (the tool's offset
+    // C - P turned back by 90°); alpha, the arc's start direction (delta, towards its centre,
+    // turned by 90°); beta = theta - alpha (mirrored on the right) in [-90°, 270°], the turn
+    // at the corner. Worked out as one angle between vectors, without sines.
+    const Vec2 q = C - P, towards = unit(centre - P);
+    const Vec2 end_dir = side_ > 0 ? Vec2(-left_normal(q)) : left_normal(q);            // u(theta)
+    const Vec2 start_dir = ccw ? Vec2(-left_normal(towards)) : left_normal(towards);  // u(alpha)
+    double beta = side_ > 0 ? ccw_angle(start_dir, end_dir) : ccw_angle(end_dir, start_dir);
+    if (beta > 1.5 * kPi) beta -= 2 * kPi;
     const bool inside = tool_inside(side_, turn);
-    double gamma;
     if (inside) {
-        gamma = ang(centre - p);
         if (rho0 <= r_) {
             if (gouge_ != GougeReaction::skip) fail("comp_arc_too_small", rules.messages.arc_too_small, m.line);
             // The tool does not fit into the arc: leave it out, the next element decides.
@@ -292,12 +290,11 @@ void RadiusCompensation::next_arc(const Motion& m) {
             program_ = m.end;
             return;
         }
-    } else {
-        gamma = ang(p - centre);
-        delta += kPi;
     }
-    const Vec2 e = p + r_ * u(gamma);
-    const Vec2 mid = P + r_ * u(delta);  // compensated start of the arc
+    // The arc's equidistant: its ends moved by r along the radius (towards the centre when
+    // the tool is inside).
+    const Vec2 e = p + r_ * (inside ? unit(centre - p) : unit(p - centre));
+    const Vec2 mid = P + r_ * (inside ? towards : Vec2(-towards));  // compensated start of the arc
     const bool concave = beta < -small || beta > kPi + small || (std::fabs(beta - kPi) < small && !inside);
     const bool front_arc = !queue_.empty() && queue_.front().m.is_arc();
     const Element2 next = Element2::arc(mid, e, centre, ccw ? 1 : -1, m.turns);  // the arc's equidistant
@@ -325,6 +322,7 @@ void RadiusCompensation::next_arc(const Motion& m) {
         if (l > 1 || l < -1) {
             no_intersection(next, m.line, rules.messages.gouge_arc);
         } else {
+            const double theta = ang(q) + (side_ > 0 ? -kHalfPi : kHalfPi);
             const double ac = inside ? (ccw ? theta + std::asin(l) : theta - std::asin(l))
                                      : (ccw ? theta + kPi - std::asin(l) : theta + kPi + std::asin(l));
             move_end_and_flush(centre + dist * u(ac), m.line, true, &next);

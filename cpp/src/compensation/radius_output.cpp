@@ -144,9 +144,9 @@ void RadiusCompensation::move_end_and_flush(const Vec2& x, int line, bool check,
                 std::snprintf(buf, sizeof buf, rules.messages.arc_mismatch.c_str(), r1, r2);
                 fail("comp_invalid_arc", buf, line);
             }
-            const double sweep = find_turn(endpoint_, c, turn_of(m), x);
             if (check && !gouge && h.sweep != 0 && endpoint_valid_ &&
-                std::fabs(sweep) > std::fabs(h.sweep) + rules.arc_sweep_tolerance[m.inch() ? 1 : 0])
+                std::fabs(find_turn(endpoint_, c, turn_of(m), x)) >
+                    std::fabs(h.sweep) + rules.arc_sweep_tolerance[m.inch() ? 1 : 0])
                 gouge = &rules.messages.gouge_arc;
         } else if (check && !gouge && endpoint_valid_ && h.dir.dot(x - endpoint_) < 0) {
             gouge = m.kind == MotionKind::rapid ? &rules.messages.gouge_traverse : &rules.messages.gouge_feed;
