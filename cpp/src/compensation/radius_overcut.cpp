@@ -88,7 +88,7 @@ double distance_lower_bound(const Swept& a, const Swept& b, double enough) {
     }
     if (a.e.is_arc && b.e.is_arc) {
         const double D = (a.e.c - b.e.c).norm();
-        return std::max({D - rmax(a) - rmax(b), rmin(a) - D - rmax(b), rmin(b) - D - rmax(a)});
+        return std::max(std::max(D - rmax(a) - rmax(b), rmin(a) - D - rmax(b)), rmin(b) - D - rmax(a));
     }
     const Swept& arc = a.e.is_arc ? a : b;
     const Element2& line = a.e.is_arc ? b.e : a.e;
@@ -192,7 +192,8 @@ void OvercutWatch::programmed(const Element2& e, int line) {
     if (prog_.size() >= keep + 32) prog_.erase(prog_.begin(), prog_.end() - static_cast<std::ptrdiff_t>(keep - 1));
     prog_.push_back({Swept(e), line, 0.0});
     ++count_;
-    for (std::size_t i = comp_head_; i < comp_.size(); ++i) check(comp_[i], prog_.back());
+    const Prog& p = prog_.back();
+    for (std::size_t i = comp_head_, n = comp_.size(); i < n; ++i) check(comp_[i], p);
 }
 
 void OvercutWatch::tangent_slack(double slack) {
@@ -211,7 +212,8 @@ void OvercutWatch::compensated(const Element2& e, int line, int file, double r, 
     // The programmed elements from neighbours + 2 before `settled` on, as far as seen (the
     // rest are met as they come, up to neighbours after `settled`).
     const std::size_t before = static_cast<std::size_t>(neighbours_) + 2 + (count_ - settled);
-    for (std::size_t i = prog_.size() > before ? prog_.size() - before : 0; i < prog_.size(); ++i) check(c, prog_[i]);
+    const std::size_t n = prog_.size();
+    for (std::size_t i = n > before ? n - before : 0; i < n; ++i) check(c, prog_[i]);
 }
 
 void OvercutWatch::report(std::vector<Diagnostic>& out, double mm, bool all) {

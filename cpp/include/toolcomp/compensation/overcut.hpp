@@ -29,8 +29,9 @@ struct Swept {
 
 // The gap between two elements' boxes, squared: no point of one comes closer to the other.
 inline double box_gap2(const Swept& a, const Swept& b) {
-    const double dx = std::max({0.0, a.lo.x() - b.hi.x(), b.lo.x() - a.hi.x()});
-    const double dy = std::max({0.0, a.lo.y() - b.hi.y(), b.lo.y() - a.hi.y()});
+    // Nested max (max_element's comparisons in its order): an initializer list is a loop.
+    const double dx = std::max(std::max(0.0, a.lo.x() - b.hi.x()), b.lo.x() - a.hi.x());
+    const double dy = std::max(std::max(0.0, a.lo.y() - b.hi.y()), b.lo.y() - a.hi.y());
     return dx * dx + dy * dy;
 }
 
