@@ -1,6 +1,7 @@
 #include "toolcomp/run.hpp"
 
 #include <algorithm>
+#include <new>
 
 #include "pipeline.hpp"
 #include "program/program_source.hpp"
@@ -166,6 +167,20 @@ void run_pipeline(const Program& program, const ToolTable* tools, const RunOptio
 }
 
 namespace {
+// A reservation the system refuses (an address-space limit, `ulimit -v`, strict overcommit)
+// is only a head start lost: half as much is asked for, down to none, and the columns grow
+// as the run fills them. The Path is still empty: what a refused attempt took goes with it.
+void reserve_what_is_granted(Path& path, std::size_t rows) {
+    for (; rows >= 1024; rows /= 2) {
+        try {
+            path.reserve(rows);
+            return;
+        } catch (const std::bad_alloc&) {
+            path = Path();
+        }
+    }
+}
+
 // `expected`: blocks the program is thought to have (the Paths are reserved for as many).
 Result run_main(const Program& program, const ToolTable* tools, const RunOptions& options,
                 const PipelineHooks& hooks, std::size_t expected) {
@@ -181,8 +196,8 @@ Result run_main(const Program& program, const ToolTable* tools, const RunOptions
     // compensated path is reserved for two. A reservation is address space only: large
     // columns are mapped, and pages never written are never memory (release_unused gives
     // back what the last segment's page leaves).
-    res.nominal.reserve(std::min(expected, options.max_segments));
-    res.path.reserve(std::min(2 * expected, options.max_segments));
+    reserve_what_is_granted(res.nominal, std::min(expected, options.max_segments));
+    reserve_what_is_granted(res.path, std::min(2 * expected, options.max_segments));
     ControlProfile profile = options.profile ? *options.profile : profile_for(program.dialect);
     SegmentLimit nominal(res.nominal, options.max_segments, "programmed");
     SegmentLimit compensated(res.path, options.max_segments, "compensated");

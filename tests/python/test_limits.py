@@ -324,3 +324,33 @@ def test_a_lenient_run_keeps_the_block_before_a_line_too_long():
     assert list(res.path.line) == [2, 3]
     assert res.path.end[-1].tolist() == [0, 0, -1]
     assert [(d.code, d.line) for d in res.diagnostics] == [("line_too_long", 4)]
+
+
+_ADDRESS_SPACE_CHILD = r"""
+import resource, sys
+import toolcomp as tc
+path, rows = sys.argv[1], int(sys.argv[2])
+vm = next(int(l.split()[1]) * 1024 for l in open("/proc/self/status") if l.startswith("VmSize:"))
+# Room for both Paths at one segment a block (about 90 bytes a row each) and some to spare,
+# not for the compensated Path's reservation of two segments a block on top.
+resource.setrlimit(resource.RLIMIT_AS, (vm + int(2.7 * 90 * rows), resource.RLIM_INFINITY))
+res = tc.run(path, threads=False)
+print(len(res.nominal), len(res.path))
+"""
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="RLIMIT_AS and /proc are Linux's")
+def test_a_run_under_an_address_space_limit_grows_the_paths_it_could_not_reserve(tmp_path):
+    # The Paths are reserved up front (the compensated one for two segments a block); a
+    # process whose address space is limited (ulimit -v) is refused that reservation, and the
+    # run goes on with what it is granted instead of failing with MemoryError.
+    rows = 3_000_000
+    prog = tmp_path / "long.ngc"
+    with open(prog, "w") as f:
+        f.write("G21 G90 G0 X0 Y0\n")
+        f.writelines(f"G1 X{i % 1000} Y{i % 7} F100\n" for i in range(1, rows))
+        f.write("M2\n")
+    p = subprocess.run([sys.executable, "-c", _ADDRESS_SPACE_CHILD, str(prog), str(rows)], capture_output=True,
+                       text=True, timeout=300)
+    assert p.returncode == 0, p.stderr[-2000:]
+    assert p.stdout.split() == [str(rows), str(rows)]
