@@ -11,9 +11,14 @@ namespace toolcomp {
 
 namespace {
 
-class NullSink : public MotionSink {
+// The programmed path: counted, not kept.
+class CountingSink : public MotionSink {
 public:
-    void push(const Motion&) override {}
+    explicit CountingSink(std::atomic<std::size_t>& n) : n_(n) {}
+    void push(const Motion&) override { n_.fetch_add(1, std::memory_order_relaxed); }
+
+private:
+    std::atomic<std::size_t>& n_;
 };
 
 }  // namespace
@@ -109,8 +114,13 @@ void PathStream::produce() {
     std::size_t blocks = 0;
     std::exception_ptr error;
     Chunker chunker(*this, live);
-    NullSink nominal;
+    CountingSink nominal(programmed_);
     PipelineHooks hooks;
+    RunOptions run = options_.run;  // its progress also tells blocks_read()
+    run.progress = [this, user = options_.run.progress](std::size_t n) {
+        blocks_read_.store(n, std::memory_order_relaxed);
+        if (user) user(n);
+    };
     hooks.file_opened = [&live](const std::string& f) { live.push_back(f); };
     auto cancelled = [this] {
         std::lock_guard<std::mutex> lk(mu_);
@@ -118,8 +128,8 @@ void PathStream::produce() {
     };
     auto pipeline = [&](const Program& p) {
         if (!is_iso(p.dialect)) live.push_back(p.name);  // Heidenhain, Sinumerik: the main file only, until the end
-        const ControlProfile profile = options_.run.profile ? *options_.run.profile : profile_for(p.dialect);
-        run_pipeline(p, tools_ ? &*tools_ : nullptr, options_.run, profile, nominal, chunker, diags, out, hooks);
+        const ControlProfile profile = run.profile ? *run.profile : profile_for(p.dialect);
+        run_pipeline(p, tools_ ? &*tools_ : nullptr, run, profile, nominal, chunker, diags, out, hooks);
     };
     try {
         if (program_) {
@@ -128,7 +138,7 @@ void PathStream::produce() {
         } else {
             ProgramSource src(path_, *dialect_, options_.read, options_.piece_bytes, /*limit_pieces=*/false, [&] {
                 if (cancelled()) throw Cancelled{};
-            }, options_.run.threads);
+            }, run.threads);
             hooks.next_piece = src.next_piece();
             try {
                 pipeline(src.first());
@@ -154,6 +164,7 @@ void PathStream::produce() {
     error_ = error;
     diagnostics_ = std::move(diags);
     blocks_ = blocks;
+    blocks_read_.store(blocks, std::memory_order_relaxed);
     files_ = out.files.empty() ? live : out.files;
     cv_.notify_all();
 }

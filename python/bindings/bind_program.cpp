@@ -29,6 +29,21 @@ void bind_program(py::module_& m) {
             "max_line_length bytes (default 1 MiB) raises ParseError 'line_too_long' with its line, whatever "
             "strict is.")
         .def_static(
+            "check_file",
+            [](const py::object& path_like, std::optional<std::string> dialect, std::size_t max_line_length) {
+                std::string path = py::module_::import("os").attr("fspath")(path_like).cast<std::string>();
+                std::optional<Dialect> d;
+                if (dialect) d = dialect_from_name(*dialect);
+                py::gil_scoped_release nogil;
+                return check_program_file(path, d, {kDefaultMaxProgramBytes, max_line_length});
+            },
+            py::arg("path"), py::arg("dialect") = py::none(), py::kw_only(),
+            py::arg("max_line_length") = kDefaultMaxLineLength,
+            "Read a program file through as Program.read(strict=True) does, without keeping it: returns its "
+            "number of blocks, or raises its first syntax error, wherever it is (also after M2/M30). LinuxCNC, "
+            "Fanuc and 9/Series files are read a piece at a time, in bounded memory and without a size limit (as "
+            "iter_run reads them); Heidenhain and Sinumerik files are read whole (up to 2 GiB).")
+        .def_static(
             "parse",
             [](const std::string& text, const std::string& dialect, std::string name, bool strict,
                std::size_t max_line_length) {

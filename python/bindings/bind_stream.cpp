@@ -68,6 +68,13 @@ void bind_stream(py::module_& m) {
         .def_property_readonly("diagnostics", &PathStream::diagnostics,
                                "warnings of the run (and with strict=False its error), once the stream has ended")
         .def_property_readonly("blocks", &PathStream::blocks, "blocks read, once the stream has ended")
+        .def_property_readonly("blocks_read", &PathStream::blocks_read,
+                               "blocks read so far (updated every 65536 blocks, and at the end), for a progress bar")
+        .def_property_readonly("dialect", [](const PathStream& s) { return std::string(dialect_name(s.dialect())); },
+                               "the dialect the program is read in: 'linuxcnc', 'fanuc', 'sinumerik', 'heidenhain' "
+                               "or 'rockwell'")
+        .def_property_readonly("programmed_segments", &PathStream::programmed_segments,
+                               "segments of the programmed path so far (counted, not kept)")
         .def_property_readonly("files", &PathStream::files,
                                "the files segments came from (Path.file indexes it), once the stream has ended");
 

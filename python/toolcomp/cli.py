@@ -21,6 +21,8 @@ import tempfile
 
 import numpy as np
 
+from toolcomp import cli_stream
+
 EXIT_OK, EXIT_ERRORS, EXIT_USAGE, EXIT_ENGINE = 0, 1, 2, 3
 
 DIALECTS = ("linuxcnc", "fanuc", "sinumerik", "heidenhain", "rockwell")
@@ -98,6 +100,8 @@ class Outcome:
         self.program = None
         self.result = None
         self.records: list[Record] = []
+        self.blocks = None  # a streamed run: blocks of the program, and
+        self.totals = None  # its paths summed up (cli_stream.PathTotals)
 
     @property
     def has_errors(self):
@@ -166,22 +170,25 @@ PROGRESS_MIN_BLOCKS = 1_000_000
 
 
 def _progress_bar(program, stream=None):
-    """A tqdm bar on stderr for programs of a million blocks or more, when stderr is a
-    terminal and tqdm is installed; None otherwise."""
+    """A tqdm bar on stderr for programs of a million blocks or more (a Program or a block
+    count), when stderr is a terminal and tqdm is installed; None otherwise."""
     stream = stream or sys.stderr
-    if program is None or len(program) < PROGRESS_MIN_BLOCKS or not stream.isatty():
+    blocks = program if isinstance(program, int) or program is None else len(program)
+    if blocks is None or blocks < PROGRESS_MIN_BLOCKS or not stream.isatty():
         return None
     try:
         from tqdm import tqdm
     except ImportError:
         return None
-    return tqdm(total=len(program), unit="block", unit_scale=True, file=stream, leave=False)
+    return tqdm(total=blocks, unit="block", unit_scale=True, file=stream, leave=False)
 
 
 def execute(program_file, tools_file=None, dialect=None, units_table=None, search_path=(),
-            parameters=None) -> Outcome:
+            parameters=None, whole_path=True) -> Outcome:
     """Read the program and tool table and run it with ``strict=False``; every problem
-    becomes a diagnostic record. Raises UsageError for unreadable inputs."""
+    becomes a diagnostic record. Raises UsageError for unreadable inputs. ``whole_path=False``
+    (the caller needs the records and the summary only): a large program file is run as a
+    stream (cli_stream.py), in bounded memory."""
     _check_readable(program_file, "program")
     if tools_file is not None:
         _check_readable(tools_file, "tool table")
@@ -200,6 +207,18 @@ def execute(program_file, tools_file=None, dialect=None, units_table=None, searc
             return out
 
     kwargs = {"dialect": dialect} if dialect else {}
+    run_kwargs = {} if tools is None else {"tools": tools}
+    if search_path:
+        run_kwargs["search_path"] = list(search_path)
+    if parameters is not None:
+        try:
+            run_kwargs["parameters"] = tc.params.read_var(parameters)
+        except tc.Error as exc:
+            out.records.append(Record.of(exc, parameters, "error"))
+            return out
+    if not whole_path and cli_stream.streams(program_file):
+        return cli_stream.execute_streamed(tc, out, program_file, dialect, run_kwargs, _progress_bar)
+
     try:
         out.program = tc.Program.read(program_file, **kwargs)
         name = getattr(out.program, "dialect", None)
@@ -213,15 +232,6 @@ def execute(program_file, tools_file=None, dialect=None, units_table=None, searc
     else:
         parse_error = None
 
-    run_kwargs = {} if tools is None else {"tools": tools}
-    if search_path:
-        run_kwargs["search_path"] = list(search_path)
-    if parameters is not None:
-        try:
-            run_kwargs["parameters"] = tc.params.read_var(parameters)
-        except tc.Error as exc:
-            out.records.append(Record.of(exc, parameters, "error"))
-            return out
     if source is program_file:
         run_kwargs.update(kwargs)
     bar = _progress_bar(out.program)
@@ -251,7 +261,9 @@ def execute(program_file, tools_file=None, dialect=None, units_table=None, searc
 # summary
 # ---------------------------------------------------------------------------------------
 
-def _block_count(program, program_file):
+def _block_count(program, program_file, blocks=None):
+    if blocks is not None:
+        return int(blocks)
     if program is not None:
         for get in (lambda p: p.block_count, len):
             try:
@@ -285,12 +297,14 @@ def summarize(out: Outcome) -> dict:
     summary = {
         "program": out.program_file,
         "dialect": out.dialect,
-        "blocks": _block_count(out.program, out.program_file),
+        "blocks": _block_count(out.program, out.program_file, out.blocks),
         "ok": not out.has_errors,
     }
     segs = {"nominal": 0, "compensated": 0, "generated": 0}
     tools, length = [], {"feed": 0.0, "rapid": 0.0}
-    if res is not None:
+    if out.totals is not None:
+        segs, tools, length = out.totals.segments(), sorted(out.totals.tools), out.totals.lengths()
+    elif res is not None:
         path = res.path
         segs["nominal"] = path_size(res.nominal)
         segs["compensated"] = path_size(path)
@@ -391,7 +405,9 @@ def write_csv(path, filename):
 # ---------------------------------------------------------------------------------------
 
 def cmd_run(args) -> int:
-    out = execute(args.program, args.tools, args.dialect, args.units_table, args.search_path, args.parameters)
+    # Without --csv or --plot only the summary is needed: a large program runs as a stream.
+    out = execute(args.program, args.tools, args.dialect, args.units_table, args.search_path, args.parameters,
+                  whole_path=bool(args.csv or args.plot))
     summary = summarize(out)
     print(format_summary(summary))
     if args.csv:
@@ -416,7 +432,8 @@ def cmd_check(args) -> int:
     # Unreadable files are usage errors: check them all before running any.
     for p in args.programs:
         _check_readable(p, "program")
-    outcomes = [execute(p, args.tools, args.dialect, args.units_table, args.search_path, args.parameters) for p in args.programs]
+    outcomes = [execute(p, args.tools, args.dialect, args.units_table, args.search_path, args.parameters,
+                        whole_path=False) for p in args.programs]
     if args.format == "json":
         doc = [{"program": o.program_file, "ok": not o.has_errors,
                 "diagnostics": [r.as_dict() for r in o.records]} for o in outcomes]

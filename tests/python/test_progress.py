@@ -56,3 +56,21 @@ def test_heidenhain_progress_counts_executed_blocks_with_loops():
     res = tc.run(prog, progress=seen.append, progress_every=5000)
     assert len(res.path) >= 20000
     assert seen[:4] == [5000, 10000, 15000, 20000]
+
+
+def test_a_stream_tells_the_blocks_read_and_the_command_line_bar_takes_a_count(tmp_path):
+    p = tmp_path / "p.ngc"
+    p.write_text(PROG)
+    seen = []
+    with tc.iter_run(p, chunk=30_000) as stream:
+        for chunk in stream:
+            seen.append(stream.blocks_read)
+        assert stream.blocks_read == stream.blocks == 200_002
+        assert stream.programmed_segments == 200_000
+    # read ahead of the chunks handed out, every 65 536 blocks: never backwards
+    assert seen == sorted(seen) and seen[-1] <= 200_002 and len(seen) == 7
+    pytest.importorskip("tqdm")
+    assert cli._progress_bar(200_002, Tty()) is None
+    bar = cli._progress_bar(2_000_000, Tty())
+    assert bar is not None and bar.total == 2_000_000
+    bar.close()

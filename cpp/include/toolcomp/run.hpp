@@ -34,6 +34,12 @@ struct ReadLimits {
 // is read ("not_a_regular_file" otherwise), and its size is checked before it is read.
 Program read_program(const std::string& path, std::optional<Dialect> dialect = std::nullopt, bool strict = true,
                      const ReadLimits& limits = {});
+// Reads a program file through as read_program(strict) does, a piece at a time and without
+// keeping it (LinuxCNC, Fanuc, 9/Series: no max_bytes, as for a stream; the other dialects
+// are read whole, as a run reads them): its number of blocks, or the first syntax error
+// anywhere in the file (ParseError), also after M2/M30. (program/check_file.cpp)
+std::size_t check_program_file(const std::string& path, std::optional<Dialect> dialect = std::nullopt,
+                               const ReadLimits& limits = {});
 
 // Segments each of the two Paths of a run may hold by default. A segment takes about 120
 // bytes of a Path (more when rotary axes, surface normals or tool axes vary), so the two

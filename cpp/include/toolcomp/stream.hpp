@@ -8,6 +8,7 @@
 // in it steers across blocks (iso::may_steer: no O-words, GOTO, loops, program numbers, M99):
 // memory stays the same whatever the program's length. A program that has them, and every
 // Heidenhain or Sinumerik program, is read and parsed whole; its path is still streamed.
+#include <atomic>
 #include <chrono>
 #include <condition_variable>
 #include <cstddef>
@@ -55,6 +56,11 @@ public:
     std::vector<Diagnostic> diagnostics() const;
     std::size_t blocks() const;
     std::vector<std::string> files() const;
+    // At any time: blocks read so far (every RunOptions::progress_every blocks), and segments
+    // of the programmed path so far (counted, not kept).
+    Dialect dialect() const { return program_ ? program_->dialect : *dialect_; }  // the program's
+    std::size_t blocks_read() const { return blocks_read_.load(std::memory_order_relaxed); }
+    std::size_t programmed_segments() const { return programmed_.load(std::memory_order_relaxed); }
 
 private:
     struct Cancelled {};
@@ -77,6 +83,7 @@ private:
     std::vector<Diagnostic> diagnostics_;
     std::size_t blocks_ = 0;
     std::vector<std::string> files_;
+    std::atomic<std::size_t> blocks_read_{0}, programmed_{0};
     std::thread thread_;
 };
 

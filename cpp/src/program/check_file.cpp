@@ -1,0 +1,24 @@
+// A program file read through as a syntax check, without keeping it: the command line's
+// `check` of programs whose blocks (and Paths) would not fit in memory.
+#include <unistd.h>
+
+#include "file_pieces.hpp"
+#include "toolcomp/dialects/iso/lexer.hpp"
+#include "toolcomp/program/input_limits.hpp"
+#include "toolcomp/run.hpp"
+
+namespace toolcomp {
+
+std::size_t check_program_file(const std::string& path, std::optional<Dialect> dialect, const ReadLimits& limits) {
+    const Dialect d = dialect_of_file(path, dialect);
+    if (!is_iso(d)) return read_program(path, d, /*strict=*/true, limits).size();  // read whole by a run too
+    ::close(open_program_file(path));  // a missing file, a FIFO or a directory: as read_program says
+    FilePieces pieces(path, kPieceBytes, limits.max_line_length);
+    iso::PieceParser parser(d, path, /*strict=*/true);
+    std::size_t blocks = 0;
+    for (std::string_view t = pieces.next(); !t.empty() && !parser.done(); t = pieces.next())
+        blocks += parser.parse(t).size();
+    return blocks;
+}
+
+}  // namespace toolcomp

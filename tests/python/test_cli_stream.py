@@ -1,0 +1,126 @@
+"""The command line's streamed run of large programs (cli_stream.py) against its whole run:
+``check`` and ``run`` (summary only) of the same programs both ways give the same records
+and the same summary. The size from which a program streams is lowered to 0 here (the real
+one, 64 MB, would make slow tests); the paths' totals are checked against hand-worked
+values too, and the syntax check against Program.read."""
+
+import json
+import math
+from pathlib import Path
+
+import pytest
+
+import toolcomp as tc
+from toolcomp import cli, cli_stream
+
+ROOT = Path(__file__).resolve().parents[2]
+TOOLS = ROOT / "examples" / "tools.tbl"
+
+SQUARE = "G21 G90 G17\nT1 M6\nG43\nG0 X0 Y0 Z5\nG1 Z-1 F100\nG1 X10\nG1 Y10\nG3 X0 Y10 I-5 J0\nG1 Y0\n" \
+         "G2 X0 Y0 I5 J0\nG0 Z5\nM2\n"
+SQUARE_FEED = 36 + 15 * math.pi  # 6 (plunge) + 10 + 10 + 5 pi + 10 + 10 pi
+
+PROGRAMS = {
+    "square.ngc": SQUARE,
+    # an error at line 4: the path before it, the record with its line
+    "unknown_gcode.ngc": "G21 G90 G17\nG0 X0 Y0 Z5\nG1 Z-1 F100\nG7.5 X10\nG1 X20\nM2\n",
+    # a syntax error after M2: the run never reads it, the check does
+    "after_end.ngc": "G21 G90 G0 X0 Y0\nG1 X10 F100\nM2\nG1 X10 &\n",
+    # LinuxCNC's gouge error at line 6, overcut warnings before it
+    "gouge.ngc": "G21 G0 X0 Y-10\nG41.1 D10\nG1 X0 Y0 F100\nX30\nY2\nX31\nY0\nX60\nG40 G0 X70 Y-10\nM2\n",
+    # compensation with corner arcs (segments inserted by compensation), a Fanuc program
+    "corners.nc": "G21 G17 G90\nG0 X-10 Y-10\nG42.1 D4 G1 X0 Y0 F200\nX40\nY30\nX0\nY0\nG40 G0 X-10 Y-10\nM30\n",
+}
+
+
+@pytest.fixture(params=sorted(PROGRAMS))
+def program(request, tmp_path):
+    p = tmp_path / request.param
+    p.write_text(PROGRAMS[request.param])
+    return p
+
+
+def run_cli(argv, capsys, stream):
+    old = cli_stream.STREAM_MIN_BYTES
+    cli_stream.STREAM_MIN_BYTES = 0 if stream else 2**62
+    try:
+        code = cli.main([str(a) for a in argv])
+    finally:
+        cli_stream.STREAM_MIN_BYTES = old
+    return code, capsys.readouterr().out
+
+
+def close(a, b):
+    """Summaries equal, their lengths to rounding (summed chunk by chunk when streamed)."""
+    if isinstance(a, float) or isinstance(b, float):
+        return math.isclose(a, b, rel_tol=1e-12, abs_tol=1e-9)
+    if isinstance(a, dict):
+        return a.keys() == b.keys() and all(close(a[k], b[k]) for k in a)
+    if isinstance(a, list):
+        return len(a) == len(b) and all(close(x, y) for x, y in zip(a, b))
+    return a == b
+
+
+def test_check_streamed_equals_check_whole(program, capsys):
+    whole = run_cli(["check", program, "--tools", TOOLS], capsys, stream=False)
+    streamed = run_cli(["check", program, "--tools", TOOLS], capsys, stream=True)
+    assert streamed == whole
+    assert whole[0] == (0 if program.stem in ("square", "corners") else 1)
+
+
+def test_run_summary_streamed_equals_run_whole(program, capsys, tmp_path):
+    summaries = []
+    for stream in (False, True):
+        js = tmp_path / f"{stream}.json"
+        code, _ = run_cli(["run", program, "--tools", TOOLS, "--json", js], capsys, stream=stream)
+        summaries.append((code, json.loads(js.read_text())))
+    assert close(summaries[1], summaries[0]), summaries
+
+
+def test_streamed_totals_are_the_programs(tmp_path, capsys):
+    p = tmp_path / "square.ngc"
+    p.write_text(SQUARE)
+    js = tmp_path / "s.json"
+    code, _ = run_cli(["run", p, "--tools", TOOLS, "--json", js], capsys, stream=True)
+    s = json.loads(js.read_text())
+    assert code == 0
+    assert s["blocks"] == 12 and s["dialect"] == "linuxcnc"
+    # moves: G0, plunge, three lines, the semicircle, the full circle, the retract
+    assert s["segments"] == {"nominal": 8, "compensated": 8, "generated": 0}
+    assert s["tools"] == [1]
+    assert s["length_mm"]["feed"] == pytest.approx(SQUARE_FEED, abs=1e-9)
+
+
+def test_a_syntax_error_after_the_end_is_an_error_of_its_line(tmp_path, capsys):
+    p = tmp_path / "after_end.ngc"
+    p.write_text(PROGRAMS["after_end.ngc"])
+    code, out = run_cli(["check", p], capsys, stream=True)
+    assert code == 1
+    assert f"{p}:4:" in out
+
+
+def test_check_file_counts_blocks_and_raises_what_read_raises(tmp_path):
+    many = tmp_path / "many.ngc"
+    # more than one piece of text (the first pieces are 64 kB)
+    many.write_text("G21 G90 G0 X0 Y0\n" + "".join(f"G1 X{i % 50} Y{i % 3} F100\n" for i in range(200_000)) + "M2\n")
+    assert tc.Program.check_file(many) == len(tc.Program.read(many)) == 200_002
+    bad = tmp_path / "bad.ngc"
+    bad.write_text(many.read_text() + "G1 X10 &\n")
+    with pytest.raises(tc.ParseError) as whole:
+        tc.Program.read(bad)
+    with pytest.raises(tc.ParseError) as pieces:
+        tc.Program.check_file(bad)
+    assert (pieces.value.code, pieces.value.line) == (whole.value.code, whole.value.line) == (
+        whole.value.code, 200_003)
+    with pytest.raises(tc.Error) as missing:
+        tc.Program.check_file(tmp_path / "missing.ngc")
+    assert missing.value.code == "file_not_found"
+
+
+def test_only_large_files_stream(tmp_path, monkeypatch):
+    p = tmp_path / "p.ngc"
+    p.write_text(SQUARE)
+    assert not cli_stream.streams(p)
+    monkeypatch.setattr(cli_stream, "STREAM_MIN_BYTES", p.stat().st_size)
+    assert cli_stream.streams(p)
+    assert not cli_stream.streams(tmp_path)  # a directory: the whole run reports it
