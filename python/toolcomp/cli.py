@@ -366,6 +366,7 @@ CSV_HEADER = (["index", "kind", "line", "tool",
                "center_x", "center_y", "center_z", "feed", "side", "generated",
                "tool_offset_x", "tool_offset_y", "tool_offset_z", "a", "b", "c"])
 KIND_NAMES = {0: "rapid", 1: "line", 2: "arc_cw", 3: "arc_ccw"}
+CSV_ROWS_AT_ONCE = 65536
 
 
 def _fmt(values):
@@ -387,16 +388,20 @@ def write_csv(path, filename):
         center = np.asarray(path.center).reshape(n, 3)
         offs = np.asarray(path.tool_offset).reshape(n, 3)
         abc = np.asarray(getattr(path, "abc", np.full((n, 3), np.nan))).reshape(n, 3)
-        cols = [
-            range(n),
-            [KIND_NAMES.get(k, str(k)) for k in np.asarray(path.kind).tolist()],
-            np.asarray(path.line).tolist(), np.asarray(path.tool).tolist(),
-            *(_fmt(a[:, j]) for a in (start, end, center) for j in range(3)),
-            _fmt(path.feed), np.asarray(path.side).tolist(),
-            np.asarray(path.generated).astype(int).tolist(),
-            *(_fmt(a[:, j]) for a in (offs, abc) for j in range(3)),
-        ]
-        w.writerows(zip(*cols))
+        kind, line, tool = np.asarray(path.kind), np.asarray(path.line), np.asarray(path.tool)
+        feed, side, generated = np.asarray(path.feed), np.asarray(path.side), np.asarray(path.generated)
+        # A block of rows at a time: the text of a whole path would take many times its memory.
+        for a in range(0, n, CSV_ROWS_AT_ONCE):
+            b = min(n, a + CSV_ROWS_AT_ONCE)
+            cols = [
+                range(a, b),
+                [KIND_NAMES.get(k, str(k)) for k in kind[a:b].tolist()],
+                line[a:b].tolist(), tool[a:b].tolist(),
+                *(_fmt(v[a:b, j]) for v in (start, end, center) for j in range(3)),
+                _fmt(feed[a:b]), side[a:b].tolist(), generated[a:b].astype(int).tolist(),
+                *(_fmt(v[a:b, j]) for v in (offs, abc) for j in range(3)),
+            ]
+            w.writerows(zip(*cols))
     return n
 
 

@@ -141,6 +141,20 @@ def test_run_csv_has_one_row_per_segment(tmp_path):
     assert all(row["center_x"] != "" for row in rows if row["kind"].startswith("arc"))
 
 
+def test_the_csv_is_written_a_block_of_rows_at_a_time(tmp_path, monkeypatch):
+    # Rows written 7 at a time are the rows written all at once, numbered on across blocks.
+    import toolcomp as tc
+    from toolcomp import cli
+
+    path = tc.run(str(EXAMPLE), tools=str(TOOLS)).path
+    whole, blocks = tmp_path / "whole.csv", tmp_path / "blocks.csv"
+    assert cli.write_csv(path, whole) == len(path) > 7
+    monkeypatch.setattr(cli, "CSV_ROWS_AT_ONCE", 7)
+    assert cli.write_csv(path, blocks) == len(path)
+    assert blocks.read_text() == whole.read_text()
+    assert len(whole.read_text().splitlines()) == len(path) + 1
+
+
 def test_run_plot_writes_png(tmp_path):
     pytest.importorskip("matplotlib")
     out = tmp_path / "pocket.png"
