@@ -12,10 +12,12 @@
 
 #include "toolcomp/program/expr.hpp"
 #include "toolcomp/program/program.hpp"
+#include "toolcomp/program/text.hpp"
 
 namespace toolcomp::iso {
 
-inline bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
+// A blank within a line: the C locale's white space but the line end.
+inline bool is_blank(char c) { return c != '\n' && ascii_space(c); }
 
 // Letters that are address words in ISO G-code (LinuxCNC's set for a machine with axes
 // XYZABC; O, # and [ belong to the statements of programs that compute).
