@@ -309,11 +309,22 @@ def test_parameter_files_have_a_size_limit(tmp_path):
 
 
 def test_the_command_line_reports_a_too_large_program_without_reading_it(tmp_path):
+    # A run that keeps the whole path (--csv) reads the program whole: refused by its size.
     big = sparse(tmp_path / "big.ngc", 10 * GiB)
-    p = subprocess.run([sys.executable, "-m", "toolcomp", "run", str(big), "--json", str(tmp_path / "s.json")],
+    p = subprocess.run([sys.executable, "-m", "toolcomp", "run", str(big), "--csv", str(tmp_path / "p.csv")],
                        capture_output=True, text=True, timeout=300)
     assert p.returncode in (1, 2), p.stderr
     assert "input_too_large" in p.stdout + p.stderr
+
+
+def test_the_command_line_checks_a_huge_program_a_piece_at_a_time(tmp_path):
+    # check streams a large program (no size limit, as iter_run): the 10 GiB of zeros are one
+    # line too long, refused after its first MiB with its line.
+    big = sparse(tmp_path / "big.ngc", 10 * GiB)
+    p = subprocess.run([sys.executable, "-m", "toolcomp", "check", str(big)], capture_output=True, text=True,
+                       timeout=300)
+    assert p.returncode == 1, p.stderr
+    assert f"{big}:1:" in p.stdout and "line_too_long" in p.stdout
 
 
 def test_a_lenient_run_keeps_the_block_before_a_line_too_long():
