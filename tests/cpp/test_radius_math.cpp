@@ -4,6 +4,7 @@
 // find_turn). Random vectors of every size, and the ends of the ranges.
 #include <catch2/catch.hpp>
 
+#include <climits>
 #include <cmath>
 #include <random>
 
@@ -95,6 +96,10 @@ TEST_CASE("find_turn with one atan2 is LinuxCNC's two-atan2 swept angle") {
     // A quarter anticlockwise, and the other three quarters clockwise.
     CHECK(find_turn(Vec2(1, 0), Vec2(0, 0), 1, Vec2(0, 1)) == Approx(kPi / 2));
     CHECK(find_turn(Vec2(1, 0), Vec2(0, 0), -1, Vec2(0, 1)) == Approx(-1.5 * kPi));
+    // A turn count saturated at INT_MAX (P2147483647 and beyond): the extra turns in double,
+    // not an int overflow (found by fuzz_pipeline).
+    CHECK(find_turn(Vec2(1, 0), Vec2(0, 0), INT_MAX, Vec2(0, 1)) == Approx((INT_MAX - 1.0) * 2 * kPi + kPi / 2));
+    CHECK(find_turn(Vec2(1, 0), Vec2(0, 0), -INT_MAX, Vec2(0, 1)) == Approx(-(INT_MAX - 1.0) * 2 * kPi - 1.5 * kPi));
     // Radii far beyond any machine: no overflow into NaN.
     CHECK(std::isfinite(find_turn(Vec2(1e300, 0), Vec2(-1e300, 0), 1, Vec2(-1e300, 2e300))));
 }

@@ -1,5 +1,6 @@
 #pragma once
 // Small angle helpers shared by the radius compensation files (plane coordinates).
+#include <climits>
 #include <cmath>
 
 #include "toolcomp/geometry/vec.hpp"
@@ -26,7 +27,11 @@ inline double ccw_angle(const Vec2& a, const Vec2& b) {
 }
 
 // LinuxCNC's turn count of an arc: ±1 for less than a full turn, ±(n+1) with n extra turns.
-inline int turn_of(const Motion& m) { return (m.kind == MotionKind::arc_ccw ? 1 : -1) * (m.turns + 1); }
+// (A count saturated at INT_MAX by int_value stays there.)
+inline int turn_of(const Motion& m) {
+    const int n = m.turns < INT_MAX ? m.turns + 1 : INT_MAX;
+    return m.kind == MotionKind::arc_ccw ? n : -n;
+}
 
 // Signed swept angle from s to e about c for a turn count.
 // LinuxCNC takes it as ang(e - c) - ang(s - c), brought into (0, 2π] anticlockwise and
@@ -36,10 +41,10 @@ inline double find_turn(const Vec2& s, const Vec2& c, int turn, const Vec2& e) {
     const Vec2 a = unit(s - c), b = unit(e - c);
     if (turn > 0) {
         const double t = ccw_angle(a, b);
-        return (t == 0 ? 2 * kPi : t) + (turn - 1) * 2 * kPi;
+        return (t == 0 ? 2 * kPi : t) + (static_cast<double>(turn) - 1) * 2 * kPi;  // no int overflow
     }
     const double t = ccw_angle(b, a);
-    return -(t == 0 ? 2 * kPi : t) + (turn + 1) * 2 * kPi;
+    return -(t == 0 ? 2 * kPi : t) + (static_cast<double>(turn) + 1) * 2 * kPi;
 }
 
 // The tool is inside the arc (its equidistant is the smaller circle).
