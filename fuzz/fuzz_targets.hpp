@@ -69,7 +69,7 @@ inline void same_in_pieces(std::string_view text, Dialect d, std::size_t piece) 
     for (std::size_t pos = 0; pos < text.size() && !parser.done();) {
         std::size_t end = text.find('\n', std::min(text.size(), pos + piece - 1));
         end = end == std::string_view::npos ? text.size() : end + 1;
-        last = parser.parse(text.substr(pos, end - pos));
+        last = parser.parse(text.substr(pos, end - pos), std::move(last));  // over the piece before, as a run
         pos = end;
         for (std::size_t i = 0; i < last.size(); ++i, ++block) {
             if (block >= whole.size()) throw std::logic_error("pieces: more blocks than the whole text");

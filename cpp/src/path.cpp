@@ -3,6 +3,7 @@
 #include "toolcomp/compensation/three_d.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -20,17 +21,6 @@ void put3(double* out, const Vec3& p) {
     out[0] = p.x();
     out[1] = p.y();
     out[2] = p.z();
-}
-// Bit for bit (memcmp, without the call: 14 words).
-template <class R>
-bool same_bits(const R& a, const R& b) {
-    static_assert(sizeof(R) % 8 == 0);
-    std::uint64_t x[sizeof(R) / 8], y[sizeof(R) / 8];
-    std::memcpy(x, &a, sizeof x);
-    std::memcpy(y, &b, sizeof y);
-    std::uint64_t diff = 0;
-    for (std::size_t i = 0; i < sizeof(R) / 8; ++i) diff |= x[i] ^ y[i];
-    return diff == 0;
 }
 Vec3 get3(const Column<double>& v, std::size_t i) { return {v[3 * i], v[3 * i + 1], v[3 * i + 2]}; }
 Vec3 get3(const Vec3Column& v, std::size_t i) { return {v(i, 0), v(i, 1), v(i, 2)}; }
@@ -63,16 +53,56 @@ void Path::release_unused() noexcept {
     toolcomp::release_unused(generated);
 }
 
+// Whether a segment's uniform values are the last segment's, bit for bit (the tool length
+// offset as it is stored, in mm): compared field by field from the Motion, without building
+// its row. A surface normal (3D compensation) is stored normalised: those segments take the
+// long way.
+bool Path::same_row(const Motion& m, const Vec3& offset) const {
+    const auto bits = [](double x) { return std::bit_cast<std::uint64_t>(x); };
+    std::uint64_t diff = 0;
+    for (int i = 0; i < 3; ++i) {
+        diff |= bits(offset[i]) ^ bits(last_.tool_offset[i]);
+        diff |= bits(m.abc[static_cast<std::size_t>(i)]) ^ bits(last_.abc[i]);
+        diff |= bits(m.surface.normal[i]) ^ bits(last_.normal[i]);
+        diff |= bits(m.tool_axis[i]) ^ bits(last_.tool_axis[i]);
+    }
+    const std::uint32_t ints = static_cast<std::uint32_t>((m.tool ^ last_.tool) | (m.turns ^ last_.turns) |
+                                                          (m.file ^ last_.file) |
+                                                          (static_cast<std::int32_t>(m.plane) ^ last_.plane));
+    return (diff | ints) == 0 && !m.surface.active();
+}
+
 void Path::push(const Motion& m) {
     // Everything is read from the Motion first and the byte columns are written last: a byte
     // store may alias anything, so after one the compiler reloads what it had in registers.
     const double u = m.unit;
-    const Vec3 n = m.surface.active() ? Vec3(m.surface.normal.normalized()) : m.surface.normal;
     const auto k = static_cast<std::uint8_t>(m.kind);
     const std::int8_t sd = m.radius.side;
     const std::uint8_t gen = m.generated ? 1 : 0;
-    UniformRow r;
     const Vec3 off = m.tool_offset * u;
+    if (size() >= room_.n) reserve(std::max<std::size_t>(2 * room_.n, 1024));
+    const Vec3 from = m.start * u, to = m.end * u, about = m.center * u;
+    put3(start.append_unchecked(3), from);
+    put3(end.append_unchecked(3), to);
+    put3(center.append_unchecked(3), about);
+    line.push_unchecked(m.line);
+    feed.push_unchecked(m.feed);
+    if (all_uniform_ && same_row(m, off)) {  // the common case
+        for (auto* c : {&tool_offset, &abc, &normal, &tool_axis}) c->push_same();
+        for (auto* c : {&tool, &turns, &file}) c->push_same();
+        plane.push_same();
+    } else {
+        push_row(m, off);
+    }
+    kind.push_unchecked(k);
+    side.push_unchecked(sd);
+    generated.push_unchecked(gen);
+}
+
+// The uniform values of a segment that differs from the last one (or follows one that did).
+void Path::push_row(const Motion& m, const Vec3& off) {
+    const Vec3 n = m.surface.active() ? Vec3(m.surface.normal.normalized()) : m.surface.normal;
+    UniformRow r;
     for (int i = 0; i < 3; ++i) {
         r.tool_offset[i] = off[i];
         r.abc[i] = m.abc[static_cast<std::size_t>(i)];
@@ -83,43 +113,27 @@ void Path::push(const Motion& m) {
     r.turns = m.turns;
     r.file = m.file;
     r.plane = static_cast<std::int32_t>(m.plane);
-    if (size() >= room_.n) reserve(std::max<std::size_t>(2 * room_.n, 1024));
-    const Vec3 from = m.start * u, to = m.end * u, about = m.center * u;
-    put3(start.append_unchecked(3), from);
-    put3(end.append_unchecked(3), to);
-    put3(center.append_unchecked(3), about);
-    line.push_unchecked(m.line);
-    feed.push_unchecked(m.feed);
-    if (all_uniform_ && same_bits(r, last_)) {  // the common case
-        for (auto* c : {&tool_offset, &abc, &normal, &tool_axis}) c->push_same();
-        for (auto* c : {&tool, &turns, &file}) c->push_same();
-        plane.push_same();
-    } else {
-        try {
-            tool_offset.push(r.tool_offset);
-            abc.push(r.abc);
-            normal.push(r.normal);
-            tool_axis.push(r.tool_axis);
-            tool.push(r.tool);
-            turns.push(r.turns);
-            file.push(r.file);
-            plane.push(static_cast<std::uint8_t>(r.plane));
-        } catch (...) {
-            // A uniform column could not grow: the row written above is taken back, so that
-            // the columns checked only through kind's size never run past their room.
-            for (auto* c : {&start, &end, &center})
-                for (int i = 0; i < 3; ++i) c->pop_back();
-            line.pop_back();
-            feed.pop_back();
-            throw;
-        }
-        all_uniform_ = tool_offset.uniform() && abc.uniform() && normal.uniform() && tool_axis.uniform() &&
-                       tool.uniform() && turns.uniform() && file.uniform() && plane.uniform();
-        last_ = r;
+    try {
+        tool_offset.push(r.tool_offset);
+        abc.push(r.abc);
+        normal.push(r.normal);
+        tool_axis.push(r.tool_axis);
+        tool.push(r.tool);
+        turns.push(r.turns);
+        file.push(r.file);
+        plane.push(static_cast<std::uint8_t>(r.plane));
+    } catch (...) {
+        // A uniform column could not grow: the row written before is taken back, so that
+        // the columns checked only through kind's size never run past their room.
+        for (auto* c : {&start, &end, &center})
+            for (int i = 0; i < 3; ++i) c->pop_back();
+        line.pop_back();
+        feed.pop_back();
+        throw;
     }
-    kind.push_unchecked(k);
-    side.push_unchecked(sd);
-    generated.push_unchecked(gen);
+    all_uniform_ = tool_offset.uniform() && abc.uniform() && normal.uniform() && tool_axis.uniform() &&
+                   tool.uniform() && turns.uniform() && file.uniform() && plane.uniform();
+    last_ = r;
 }
 
 Motion Path::segment(std::size_t i) const {

@@ -141,3 +141,27 @@ TEST_CASE("lenient ISO parse: a line refused half-way leaves none of its express
     CHECK(p.size() == 1);
     CHECK(p.expression_count() == 1);  // Y#5 of the first line ([1+2] is the constant 3)
 }
+
+TEST_CASE("a piece parsed over the piece before last: its own blocks, in the same memory") {
+    iso::PieceParser parser(Dialect::linuxcnc, "<pieces>", /*strict=*/false, 4096);
+    Program first = parser.parse("%\nG0 X1 (a comment) Y2\n#1 = 5\nG1 X#1 F100\n");
+    REQUIRE(first.size() == 3);
+    REQUIRE(first.word_count() == 6);
+    const Block* rows = first.blocks().data();
+    // Blocks without comments, statements or expressions, line numbers running on.
+    Program second = parser.parse("G1 X3\nG2 X4 Y0 I1\n", std::move(first));
+    CHECK(second.blocks().data() == rows);  // parsed over: the column did not move
+    REQUIRE(second.size() == 2);
+    CHECK(second.blocks()[0].line == 5);
+    CHECK(second.blocks()[0].first_word == 0);
+    CHECK(second.blocks()[1].first_word == 2);
+    CHECK(second.word_count() == 6);
+    CHECK(word_string(second, 1) == "G2.000000 X4.000000 Y0.000000 I1.000000 ");
+    CHECK(second.comments(second.blocks()[0]).empty());
+    CHECK(second.statements(second.blocks()[0]).empty());
+    CHECK(second.expression_count() == 0);
+    CHECK(!second.blocks()[0].computed);
+    CHECK(second.percent_open);  // the text so far
+    CHECK(second.last_line == 6);
+    CHECK(second.name == "<pieces>");
+}

@@ -52,7 +52,7 @@ public:
     void contact_points(double r, double r2, std::vector<double>& out) const;
 
 private:
-    // A segment's values of the uniform columns, without padding (compared with memcmp).
+    // A segment's values of the uniform columns.
     struct UniformRow {
         double tool_offset[3], abc[3], normal[3], tool_axis[3];
         std::int32_t tool, turns, file, plane;
@@ -62,6 +62,8 @@ private:
     // then a segment with the same row (bit for bit) only counts one more row in each.
     UniformRow last_{};
     bool all_uniform_ = false;
+    bool same_row(const Motion& m, const Vec3& offset) const;
+    void push_row(const Motion& m, const Vec3& offset);
     // Segments every column but the uniform ones has room for: push() checks once a segment.
     // A copy keeps the columns' capacity, and this with it; a moved-from Path has none.
     struct Room {

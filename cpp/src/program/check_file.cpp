@@ -14,10 +14,13 @@ std::size_t check_program_file(const std::string& path, std::optional<Dialect> d
     if (!is_iso(d)) return read_program(path, d, /*strict=*/true, limits).size();  // read whole by a run too
     ::close(open_program_file(path));  // a missing file, a FIFO or a directory: as read_program says
     FilePieces pieces(path, kPieceBytes, limits.max_line_length);
-    iso::PieceParser parser(d, path, /*strict=*/true);
+    iso::PieceParser parser(d, path, /*strict=*/true, kPieceBytes);
     std::size_t blocks = 0;
-    for (std::string_view t = pieces.next(); !t.empty() && !parser.done(); t = pieces.next())
-        blocks += parser.parse(t).size();
+    Program piece;  // each piece parsed over the one before (its memory written already)
+    for (std::string_view t = pieces.next(); !t.empty() && !parser.done(); t = pieces.next()) {
+        piece = parser.parse(t, std::move(piece));
+        blocks += piece.size();
+    }
     return blocks;
 }
 

@@ -23,4 +23,14 @@ void Program::drop_last_block() {
     blocks_.pop_back();
 }
 
+void Program::clear() {
+    Column<Block> blocks = std::move(blocks_);
+    Column<Word> words = std::move(words_);
+    *this = Program();
+    blocks.clear();
+    words.clear();
+    blocks_ = std::move(blocks);
+    words_ = std::move(words);
+}
+
 }  // namespace toolcomp

@@ -2,6 +2,8 @@
 
 #include <unistd.h>
 
+#include <utility>
+
 #include "toolcomp/program/input_limits.hpp"
 
 namespace toolcomp {
@@ -32,7 +34,7 @@ ProgramSource::ProgramSource(const std::string& path, Dialect dialect, const Rea
         return;
     }
     pieces_->rewind();
-    parser_.emplace(dialect, path, /*strict=*/false);
+    parser_.emplace(dialect, path, /*strict=*/false, piece_bytes);
     const std::string_view t = pieces_->next();
     current_ = parser_->parse(t);
     blocks_ = current_.size();
@@ -49,12 +51,14 @@ ProgramSource::~ProgramSource() {
 // The next piece is read and parsed on the other core while the run works through this one
 // (without threads: when the run asks for it).
 void ProgramSource::read_ahead() {
-    ahead_ = std::async(threads_ ? std::launch::async : std::launch::deferred, [this]() -> std::optional<Program> {
-        if (parser_->done()) return std::nullopt;
-        const std::string_view t = pieces_->next();
-        if (t.empty()) return std::nullopt;
-        return parser_->parse(t);
-    });
+    // The piece before last is parsed over: its pages are written already.
+    ahead_ = std::async(threads_ ? std::launch::async : std::launch::deferred,
+                        [this, into = std::move(spare_)]() mutable -> std::optional<Program> {
+                            if (parser_->done()) return std::nullopt;
+                            const std::string_view t = pieces_->next();
+                            if (t.empty()) return std::nullopt;
+                            return parser_->parse(t, std::move(into));
+                        });
 }
 
 std::function<const Program*()> ProgramSource::next_piece() {
@@ -68,7 +72,7 @@ std::function<const Program*()> ProgramSource::next_piece() {
             throw InputError{std::current_exception()};
         }
         if (!next) return nullptr;
-        current_ = std::move(*next);
+        spare_ = std::exchange(current_, std::move(*next));
         blocks_ += current_.size();
         read_ahead();
         return &current_;

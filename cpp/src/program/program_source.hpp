@@ -50,6 +50,7 @@ private:
     std::optional<FilePieces> pieces_;
     std::optional<iso::PieceParser> parser_;
     Program current_;
+    Program spare_;  // the piece before current_, to be parsed over by the next read-ahead
     std::size_t blocks_ = 0, estimate_ = 0;
     std::function<void()> check_;
     bool threads_ = true;

@@ -156,6 +156,10 @@ public:
     void drop_expressions_from(std::size_t n) { exprs_.erase(exprs_.begin() + static_cast<std::ptrdiff_t>(n), exprs_.end()); }
     // Removes the last block (a front end that failed half-way through it).
     void drop_last_block();
+    // An empty program again, whose block and word columns keep their memory: a file read
+    // piece by piece parses each piece into the Program of the piece before last, into pages
+    // already written (fresh pages cost the kernel's zeroing, and a grown column a copy).
+    void clear();
     void reserve(std::size_t blocks, std::size_t words, std::size_t tokens = 0) {
         blocks_.reserve(blocks);
         words_.reserve(words);

@@ -27,8 +27,14 @@ bool may_steer(std::string_view text);
 // with content carry over: every piece's Program holds the figures of the text so far.
 class PieceParser {
 public:
-    PieceParser(Dialect dialect, std::string name, bool strict) : dialect_(dialect), name_(std::move(name)), strict_(strict) {}
-    Program parse(std::string_view piece);
+    // `piece_bytes`: the size pieces grow to (FilePieces), 0 for a text parsed whole. A piece's
+    // Program is given room for a piece that large (address space: only the rows written
+    // become memory), so that a Program parsed over (`into`) keeps its columns in place.
+    // The room per byte follows the pieces read so far.
+    PieceParser(Dialect dialect, std::string name, bool strict, std::size_t piece_bytes = 0)
+        : dialect_(dialect), name_(std::move(name)), strict_(strict), piece_bytes_(piece_bytes) {}
+    // `into`: a Program no longer needed, whose memory the piece reuses (Program::clear).
+    Program parse(std::string_view piece, Program into = {});
     // The closing "%" or (lenient) a syntax error was met: later text is not part of the program.
     bool done() const { return done_; }
     int lines() const { return line_no_; }  // lines read so far
@@ -37,6 +43,8 @@ private:
     Dialect dialect_;
     std::string name_;
     bool strict_;
+    std::size_t piece_bytes_;
+    double blocks_per_byte_ = 1.0 / 24, words_per_byte_ = 1.0 / 6;  // the most so far
     bool first_ = true, done_ = false;
     int line_no_ = 0, last_line_ = 0;
     bool seen_content_ = false, percent_open_ = false, percent_closed_ = false;
