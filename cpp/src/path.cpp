@@ -40,6 +40,36 @@ void Path::reserve(std::size_t n) {
     plane.reserve(n);
     generated.reserve(n);
     room_.n = n;
+    warm_.rows = std::min(warm_.rows, size());  // the columns may have moved: fresh memory
+    if (warm_.by) warm_.next = size();
+}
+
+namespace {
+constexpr std::size_t kWarmStretch = std::size_t{1} << 16;  // rows asked for at once
+}
+
+void Path::warm_with(PageWarmer* warmer) {
+    warm_ = Warm{};
+    if (!warmer || room_.n < 4 * kWarmStretch) return;  // small: the zeroing is not worth a thread
+    warm_.by = warmer;
+    warm_.rows = size();
+    warm_.next = size();
+}
+
+// Two stretches ahead of the row being written, asked for one stretch before the last one
+// asked for is reached.
+void Path::warm_ahead() {
+    while (warm_.rows < room_.n && warm_.rows < size() + 2 * kWarmStretch) {
+        const std::size_t from = warm_.rows, to = std::min(room_.n, from + kWarmStretch), n = to - from;
+        for (auto* c : {&start, &end, &center}) warm_.by->warm(c->data() + 3 * from, 3 * n * sizeof(double));
+        warm_.by->warm(feed.data() + from, n * sizeof(double));
+        warm_.by->warm(line.data() + from, n * sizeof(std::int32_t));
+        warm_.by->warm(kind.data() + from, n);
+        warm_.by->warm(side.data() + from, n);
+        warm_.by->warm(generated.data() + from, n);
+        warm_.rows = to;
+    }
+    warm_.next = warm_.rows < room_.n ? warm_.rows - kWarmStretch : static_cast<std::size_t>(-1);
 }
 
 void Path::release_unused() noexcept {
@@ -81,6 +111,8 @@ void Path::push(const Motion& m) {
     const std::uint8_t gen = m.generated ? 1 : 0;
     const Vec3 off = m.tool_offset * u;
     if (size() >= room_.n) reserve(std::max<std::size_t>(2 * room_.n, 1024));
+    if (size() >= warm_.next) [[unlikely]]
+        warm_ahead();
     const Vec3 from = m.start * u, to = m.end * u, about = m.center * u;
     put3(start.append_unchecked(3), from);
     put3(end.append_unchecked(3), to);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <new>
+#include <optional>
 
 #include "pipeline.hpp"
 #include "program/program_source.hpp"
@@ -201,8 +202,20 @@ Result run_main(const Program& program, const ToolTable* tools, const RunOptions
     ControlProfile profile = options.profile ? *options.profile : profile_for(program.dialect);
     SegmentLimit nominal(res.nominal, options.max_segments, "programmed");
     SegmentLimit compensated(res.path, options.max_segments, "compensated");
+    // The Paths' fresh pages are faulted in on another thread, ahead of the rows being
+    // written (page_warmer.hpp). Stopped before the Paths give back what they do not use
+    // (and, declared after them, before they are freed).
+    std::optional<PageWarmer> warmer;
+    if (options.threads) {
+        warmer.emplace();
+        res.nominal.warm_with(&*warmer);
+        res.path.warm_with(&*warmer);
+    }
     iso::InterpretOutput out;
     run_pipeline(program, tools, options, profile, nominal, compensated, res.diagnostics, out, hooks);
+    res.nominal.warm_with(nullptr);
+    res.path.warm_with(nullptr);
+    warmer.reset();
     res.nominal.release_unused();  // what the reservation and the last 2 MB pages left over
     res.path.release_unused();
     res.nominal.files = out.files;

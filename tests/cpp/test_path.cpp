@@ -1,9 +1,15 @@
 // Path: segments pushed, copied and moved keep their rows; a Path copied or moved from can
-// take more segments (its room follows its columns' capacity).
+// take more segments (its room follows its columns' capacity). PageWarmer: pages faulted in
+// ahead of a Path being filled, its rows unchanged.
 #include <catch2/catch.hpp>
 
-#include <utility>
+#include <sys/mman.h>
 
+#include <cstring>
+#include <utility>
+#include <vector>
+
+#include "toolcomp/page_warmer.hpp"
 #include "toolcomp/path.hpp"
 
 using namespace toolcomp;
@@ -56,4 +62,61 @@ TEST_CASE("Path: rows past the first reservation, in a copy and after a move") {
     check_rows(assigned, 0, 3000);
     for (int i = 0; i < 10; ++i) moved.push(move_to(i));
     check_rows(moved, 0, 10);
+}
+
+TEST_CASE("PageWarmer: pages faulted in, what is written left as it is") {
+    if (!PageWarmer::available()) {
+        WARN("no MADV_POPULATE_WRITE on this system: nothing to check");
+        return;
+    }
+    const std::size_t bytes = std::size_t{8} << 20;
+    void* raw = detail::column_allocate(bytes);  // a fresh mapping (2 MB aligned)
+    auto* p = static_cast<unsigned char*>(raw);
+    p[0] = 7;
+    p[bytes / 2 + 5] = 9;
+    const auto resident = [&] {
+        std::vector<unsigned char> in(bytes / 4096);
+        REQUIRE(mincore(raw, bytes, in.data()) == 0);
+        std::size_t n = 0;
+        for (unsigned char c : in) n += c & 1;
+        return n;
+    };
+    CHECK(resident() < bytes / 4096);
+    {
+        PageWarmer w;
+        w.warm(p + 100, bytes - 200);  // not page aligned: the pages around it
+        w.drain();
+        CHECK(resident() == bytes / 4096);
+    }
+    CHECK(p[0] == 7);
+    CHECK(p[bytes / 2 + 5] == 9);
+    std::size_t nonzero = 0;
+    for (std::size_t i = 0; i < bytes; ++i) nonzero += p[i] != 0;
+    CHECK(nonzero == 2);
+    detail::column_deallocate(raw, bytes);
+}
+
+TEST_CASE("Path: rows written while a warmer faults the pages ahead are the rows pushed") {
+    const int n = 700'000;  // past the reservation a warmer is used for
+    Path warmed, plain;
+    warmed.reserve(300'000);  // grows twice while warmed
+    plain.reserve(300'000);
+    {
+        PageWarmer w;
+        warmed.warm_with(&w);
+        for (int i = 0; i < n; ++i) {
+            Motion m = move_to(i);
+            m.tool = 1 + i / 200'000;
+            warmed.push(m);
+            plain.push(m);
+        }
+        warmed.warm_with(nullptr);
+    }
+    REQUIRE(warmed.size() == plain.size());
+    for (auto col : {&Path::start, &Path::end, &Path::center, &Path::feed})
+        CHECK(std::memcmp((warmed.*col).data(), (plain.*col).data(), (plain.*col).size() * sizeof(double)) == 0);
+    CHECK(std::memcmp(warmed.line.data(), plain.line.data(), plain.line.size() * sizeof(std::int32_t)) == 0);
+    CHECK(std::memcmp(warmed.kind.data(), plain.kind.data(), plain.kind.size()) == 0);
+    CHECK(warmed.tool(699'999) == 4);
+    CHECK(warmed.end[3 * 699'999] == 699'999);
 }

@@ -11,6 +11,7 @@
 
 #include "toolcomp/column.hpp"
 #include "toolcomp/motion/motion.hpp"
+#include "toolcomp/page_warmer.hpp"
 
 namespace toolcomp {
 
@@ -40,6 +41,9 @@ public:
     // Gives back the columns' memory beyond the segments (once the Path is complete).
     void release_unused() noexcept;
     void push(const Motion& m) override;
+    // Has `warmer` fault in the pages of the rows ahead of push() on its thread (large
+    // reservations only; nullptr: no more). Neither copied nor moved with the Path.
+    void warm_with(PageWarmer* warmer);
     // Segment i back as a Motion (for sampling, checks and later stages).
     Motion segment(std::size_t i) const;
 
@@ -77,6 +81,21 @@ private:
             return *this;
         }
     } room_;
+    // The warmer, the rows asked for, and the row at which push() asks for the next stretch.
+    struct Warm {
+        PageWarmer* by = nullptr;
+        std::size_t rows = 0;
+        std::size_t next = static_cast<std::size_t>(-1);
+        Warm() = default;
+        Warm(const Warm&) {}
+        Warm& operator=(const Warm&) {
+            by = nullptr;
+            rows = 0;
+            next = static_cast<std::size_t>(-1);
+            return *this;
+        }
+    } warm_;
+    void warm_ahead();
 };
 
 }  // namespace toolcomp
