@@ -2,7 +2,10 @@
 
 #include <cerrno>
 #include <cstdint>
+#include <system_error>
 #if defined(__linux__)
+#include <pthread.h>
+#include <sched.h>
 #include <sys/mman.h>
 #endif
 
@@ -49,7 +52,15 @@ void PageWarmer::warm(void* p, std::size_t bytes) {
         queue_.emplace_back(p, bytes);
         if (!thread_.joinable()) {
             try {
-                thread_ = std::thread([this] { loop(); });
+                thread_ = std::thread([this] {
+#if defined(__linux__) && defined(SCHED_IDLE)
+                    // Idle time only: the run's other threads (the overcut watch, the next
+                    // piece's parse) come first; pages it does not reach, the run faults in.
+                    sched_param none{};
+                    pthread_setschedparam(pthread_self(), SCHED_IDLE, &none);
+#endif
+                    loop();
+                });
             } catch (const std::system_error&) {
                 queue_.clear();  // no thread to be had: the filling thread faults its pages itself
                 return;

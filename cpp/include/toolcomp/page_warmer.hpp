@@ -5,8 +5,8 @@
 // at once for the columns' transparent huge pages): for a million-block run about 220 MB of
 // Path columns, a large share of the run's own thread. A Path given a warmer asks it, a
 // stretch of rows ahead of the rows being written, to fault in the pages of the next
-// stretch with madvise(MADV_POPULATE_WRITE), on a thread of its own: the pages are made
-// present and writable, their contents untouched. The warmer never writes, so it never
+// stretch with madvise(MADV_POPULATE_WRITE), on a thread of its own that runs in idle time
+// only (SCHED_IDLE): the pages are made present and writable, their contents untouched. The warmer never writes, so it never
 // races with the filling thread: where it lags behind, that thread faults the page itself,
 // and a range freed meanwhile is refused (ENOMEM) or warmed for nothing. Without
 // MADV_POPULATE_WRITE (Linux before 5.14, other systems) it does nothing.

@@ -1,14 +1,32 @@
 // may_steer: a byte scan (no parsing) for what makes a program's blocks depend on each
 // other beyond the modal state: any letter O outside a parenthesised comment, or M99.
-#include <cctype>
+#include <cstddef>
 
 #include "toolcomp/dialects/iso/lexer.hpp"
 
 namespace toolcomp::iso {
 
+namespace {
+// Whether a run of 32 bytes holds a byte that can matter outside a comment: one that opens a
+// comment or an O or M word. The loop is one the compiler vectorises; most lines of a CAM
+// program have none of them.
+constexpr std::size_t kRun = 32;
+bool has_special(const char* p) {
+    unsigned any = 0;
+    for (std::size_t k = 0; k < kRun; ++k) {
+        const unsigned char c = static_cast<unsigned char>(p[k]);
+        any |= static_cast<unsigned>(c == '(') | (c == 'O') | (c == 'o') | (c == 'M') | (c == 'm');
+    }
+    return any != 0;
+}
+}  // namespace
+
 bool may_steer(std::string_view text) {
     bool comment = false;
     for (std::size_t i = 0; i < text.size(); ++i) {
+        // Outside a comment, runs without such a byte are passed over whole.
+        while (!comment && i % kRun == 0 && text.size() - i >= kRun && !has_special(text.data() + i)) i += kRun;
+        if (i >= text.size()) break;
         const char c = text[i];
         if (c == '\n') {
             comment = false;  // a comment ends at the end of its line
