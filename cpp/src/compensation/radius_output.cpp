@@ -78,6 +78,7 @@ void RadiusCompensation::release(std::size_t keep) {
 // point is the imaginary tip, the nose centre shifted by the nose radius toward the tip (only
 // in the ZX plane; numbering per profile).
 void RadiusCompensation::send(Motion& m, bool approach, std::size_t settled) {
+    if (refused_) return;  // a stage after this one refused a move: nothing goes out any more
     watch_released(m, approach, settled);
     const double r = m.radius.radius;
     if (m.plane == Plane::zx && r > 0 && m.radius.orientation != 0) {
@@ -103,15 +104,16 @@ void RadiusCompensation::send(Motion& m, bool approach, std::size_t settled) {
     } catch (...) {
         // A stage or Path after this one refused the move: the path ends before it. Nothing
         // held or waiting goes out any more (a lenient run's finish() would send the moves
-        // again, this one changed in place already).
-        queue_.clear();
-        window_.clear();
+        // again, this one changed in place already). The held moves stay where they are: the
+        // loops over them that led here end with the exception.
+        refused_ = true;
         throw;
     }
 }
 
 void RadiusCompensation::passthrough(const Motion& m) {
     release(0);
+    if (refused_) return;
     Motion o = m;
     // The exit move runs from the last compensated point to the programmed target.
     if (exit_pending_ && have_out_) o.start = start_after(last_out_, last_out_off_, o);

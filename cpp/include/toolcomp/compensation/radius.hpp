@@ -141,6 +141,7 @@ private:
     bool have_last_ = false;
     Vec3 last_ = Vec3::Zero();      // end of the last emitted move (nose centre)
     Vec3 last_off_ = Vec3::Zero();  // and its tool length offset (a new offset moves the start)
+    bool refused_ = false;          // a stage after this one refused a move (send() sends no more)
     bool have_out_ = false;
     Vec3 last_out_ = Vec3::Zero();  // end of the last released move (controlled point)
     Vec3 last_out_off_ = Vec3::Zero();
