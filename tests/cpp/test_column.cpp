@@ -114,3 +114,21 @@ TEST_CASE("Column: a value or range taken from the column itself survives its gr
     d.resize(100, d[3]);
     CHECK(d[99] == 3);
 }
+
+#if defined(__linux__)
+TEST_CASE("column memory: a mapping freed is kept for the next allocation of its size") {
+    const std::size_t bytes = (std::size_t{5} << 20) + 12345;  // three 2 MB pages
+    void* a = toolcomp::detail::column_allocate(bytes);
+    static_cast<char*>(a)[bytes - 1] = 1;  // written: its pages are in memory
+    toolcomp::detail::column_deallocate(a, bytes);
+    void* b = toolcomp::detail::column_allocate(bytes - 1000);  // the same three pages
+    CHECK(b == a);
+    void* c = toolcomp::detail::column_allocate(bytes);  // none kept any more: a new mapping
+    CHECK(c != a);
+    toolcomp::detail::column_deallocate(c, bytes);
+    void* d = toolcomp::detail::column_allocate(std::size_t{8} << 20);  // another size: not the kept one
+    CHECK(d != c);
+    toolcomp::detail::column_deallocate(d, std::size_t{8} << 20);
+    toolcomp::detail::column_deallocate(b, bytes - 1000);
+}
+#endif
