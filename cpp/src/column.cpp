@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 #if defined(__linux__)
+#include <pthread.h>
 #include <sys/mman.h>
 #endif
 
@@ -32,7 +33,13 @@ struct Kept {
     std::size_t bytes = 0;
 };
 Kept& kept() {
-    static Kept* k = new Kept;  // never destroyed: columns may be freed during exit
+    static Kept* k = [] {
+        auto* made = new Kept;  // never destroyed: columns may be freed during exit
+        // A fork while another thread holds the lock would leave it held in the child for
+        // good: the fork waits for it, and both sides let go.
+        pthread_atfork([] { kept().mu.lock(); }, [] { kept().mu.unlock(); }, [] { kept().mu.unlock(); });
+        return made;
+    }();
     return *k;
 }
 void* take_kept(std::size_t size) {

@@ -1,8 +1,10 @@
 #include <catch2/catch.hpp>
 
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <thread>
 
 #include "toolcomp/column.hpp"
 
@@ -52,6 +54,7 @@ TEST_CASE("UniformColumn: the first row is the fill") {
 
 #if defined(__linux__)
 #include <sys/mman.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 namespace {
@@ -130,5 +133,30 @@ TEST_CASE("column memory: a mapping freed is kept for the next allocation of its
     CHECK(d != c);
     toolcomp::detail::column_deallocate(d, std::size_t{8} << 20);
     toolcomp::detail::column_deallocate(b, bytes - 1000);
+}
+
+TEST_CASE("column memory: a process forked while another thread allocates can allocate") {
+    // The kept mappings' lock, held by the other thread at the moment of a fork, would stay
+    // held in the child: the child would hang at its first allocation (alarm: fails).
+    const std::size_t bytes = std::size_t{4} << 20;
+    std::atomic<bool> stop{false};
+    std::thread churn([&] {
+        while (!stop) toolcomp::detail::column_deallocate(toolcomp::detail::column_allocate(bytes), bytes);
+    });
+    int bad = 0;
+    for (int i = 0; i < 30; ++i) {
+        const pid_t pid = fork();
+        if (pid == 0) {
+            alarm(10);
+            toolcomp::detail::column_deallocate(toolcomp::detail::column_allocate(bytes), bytes);
+            _exit(0);
+        }
+        int status = 0;
+        waitpid(pid, &status, 0);
+        bad += !(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+    }
+    stop = true;
+    churn.join();
+    CHECK(bad == 0);
 }
 #endif
