@@ -79,3 +79,19 @@ TEST_CASE("chording keeps the sagitta within tolerance") {
     double coarser = 2 * kPi / (n - 1);
     CHECK(10 * (1 - std::cos(coarser / 2)) > 0.01);
 }
+
+TEST_CASE("in_plane and with_plane follow the plane's axes (a, b, applicate c)") {
+    const Vec3 v(1, 2, 3);
+    for (Plane p : {Plane::xy, Plane::zx, Plane::yz}) {
+        const PlaneAxes ax = axes(p);
+        const Vec2 ab = in_plane(v, p);
+        CHECK(ab.x() == v[ax.a]);
+        CHECK(ab.y() == v[ax.b]);
+        const Vec3 w = with_plane(v, Vec2(7, 8), p);
+        CHECK(w[ax.a] == 7);
+        CHECK(w[ax.b] == 8);
+        CHECK(w[ax.c] == v[ax.c]);
+    }
+    CHECK(in_plane(v, Plane::zx) == Vec2(3, 1));  // G18: a = Z, b = X
+    CHECK(with_plane(v, Vec2(7, 8), Plane::yz) == Vec3(1, 7, 8));
+}

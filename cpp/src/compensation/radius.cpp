@@ -12,12 +12,7 @@ namespace toolcomp {
 using namespace radius_math;
 
 
-Vec3 RadiusCompensation::with_plane(Vec3 v, const Vec2& ab) const {
-    auto ax = axes(plane_);
-    v[ax.a] = ab.x();
-    v[ax.b] = ab.y();
-    return v;
-}
+Vec3 RadiusCompensation::with_plane(const Vec3& v, const Vec2& ab) const { return toolcomp::with_plane(v, ab, plane_); }
 
 void RadiusCompensation::fail(const char* code, const std::string& msg, int line) const {
     throw CompensationError(code, msg, {line, 0, {}, file_of(line)});

@@ -97,7 +97,7 @@ private:
     void watch_released(const Motion& m, bool approach, std::size_t settled);
 
     Vec2 plane2(const Vec3& v) const { return in_plane(v, plane_); }
-    Vec3 with_plane(Vec3 v, const Vec2& ab) const;
+    Vec3 with_plane(const Vec3& v, const Vec2& ab) const;
 
     const ControlProfile& profile_;
     MotionSink& out_;

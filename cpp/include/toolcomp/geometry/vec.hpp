@@ -22,9 +22,22 @@ constexpr PlaneAxes axes(Plane p) {
         default: return {0, 1, 2};
     }
 }
+// A point's plane coordinates (a, b), and the point with them replaced (c kept). Written out
+// per plane: an element picked by a run-time index goes through memory (a store, then a
+// vector load that waits for it), on every move of the radius stage.
 inline Vec2 in_plane(const Vec3& v, Plane p) {
-    auto ax = axes(p);
-    return {v[ax.a], v[ax.b]};
+    switch (p) {
+        case Plane::zx: return {v.z(), v.x()};
+        case Plane::yz: return {v.y(), v.z()};
+        default: return {v.x(), v.y()};
+    }
+}
+inline Vec3 with_plane(const Vec3& v, const Vec2& ab, Plane p) {
+    switch (p) {
+        case Plane::zx: return {ab.y(), v.y(), ab.x()};
+        case Plane::yz: return {v.x(), ab.x(), ab.y()};
+        default: return {ab.x(), ab.y(), v.z()};
+    }
 }
 
 inline double cross2(const Vec2& u, const Vec2& v) { return u.x() * v.y() - u.y() * v.x(); }
