@@ -2,7 +2,6 @@
 
 #include <cerrno>
 #include <cstdint>
-#include <system_error>
 #if defined(__linux__)
 #include <pthread.h>
 #include <sched.h>
@@ -45,13 +44,13 @@ PageWarmer::~PageWarmer() {
     if (thread_.joinable()) thread_.join();
 }
 
-void PageWarmer::warm(void* p, std::size_t bytes) {
+void PageWarmer::warm(void* p, std::size_t bytes) noexcept {
     if (bytes == 0 || !available()) return;
-    {
-        std::lock_guard<std::mutex> lock(mu_);
-        queue_.emplace_back(p, bytes);
-        if (!thread_.joinable()) {
-            try {
+    try {
+        {
+            std::lock_guard<std::mutex> lock(mu_);
+            queue_.emplace_back(p, bytes);
+            if (!thread_.joinable()) {
                 thread_ = std::thread([this] {
 #if defined(__linux__) && defined(SCHED_IDLE)
                     // Idle time only: the run's other threads (the overcut watch, the next
@@ -61,13 +60,15 @@ void PageWarmer::warm(void* p, std::size_t bytes) {
 #endif
                     loop();
                 });
-            } catch (const std::system_error&) {
-                queue_.clear();  // no thread to be had: the filling thread faults its pages itself
-                return;
             }
         }
+        cv_.notify_all();
+    } catch (...) {
+        // No memory for the request or no thread to be had: warming is a head start only,
+        // the filling thread faults its pages itself.
+        std::lock_guard<std::mutex> lock(mu_);
+        if (!thread_.joinable()) queue_.clear();
     }
-    cv_.notify_all();
 }
 
 void PageWarmer::drain() {

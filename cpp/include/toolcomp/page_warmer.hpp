@@ -27,8 +27,8 @@ public:
     ~PageWarmer();  // requests not yet served are dropped, the thread is joined
 
     // Queues [p, p + bytes) to be faulted in; returns at once. The thread starts with the
-    // first request.
-    void warm(void* p, std::size_t bytes);
+    // first request. Never fails: without memory or a thread the pages are left as they are.
+    void warm(void* p, std::size_t bytes) noexcept;
     // Waits until every request made so far is served.
     void drain();
     // Whether the system can warm pages at all (else warm() does nothing).
