@@ -39,12 +39,7 @@ std::optional<double> Interp::number(Tokens t, std::string_view key) const {
     return k->value;
 }
 
-Vec3 Interp::with_plane(Vec3 v, const Vec2& ab) const {
-    auto ax = axes(plane_);
-    v[ax.a] = ab.x();
-    v[ax.b] = ab.y();
-    return v;
-}
+Vec3 Interp::with_plane(const Vec3& v, const Vec2& ab) const { return toolcomp::with_plane(v, ab, plane_); }
 
 Vec3 Interp::end_point(Tokens t, std::size_t from) const {
     Vec3 e = pos_;

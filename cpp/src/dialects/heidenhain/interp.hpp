@@ -86,7 +86,7 @@ private:
     void put(Motion m);
     void settle_pending();
     Vec2 plane2(const Vec3& v) const { return in_plane(v, plane_); }
-    Vec3 with_plane(Vec3 v, const Vec2& ab) const;
+    Vec3 with_plane(const Vec3& v, const Vec2& ab) const;
     Vec2 end_tangent() const;  // direction at the end of the last element
     Element2 plane_element(const Motion& m) const;  // the move in the working plane
 
