@@ -2,12 +2,14 @@
 // pieces small and growing to the piece size (each up to the last line end within its size), the file's text unchanged.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
 
 #include "program/file_pieces.hpp"
+#include "toolcomp/program/text.hpp"
 
 using namespace toolcomp;
 namespace fs = std::filesystem;
@@ -42,4 +44,14 @@ TEST_CASE("FilePieces: 64 kB first, then twice the one before up to the piece si
         f.rewind();
     }
     fs::remove(path);
+}
+
+TEST_CASE("line_ends counts what std::count counts, across its 4 kB runs") {
+    std::string text;
+    for (std::size_t n : {0u, 1u, 4095u, 4096u, 4097u, 20000u}) {
+        text.assign(n, 'x');
+        for (std::size_t i = 0; i < n; i += 1 + i % 97) text[i] = '\n';
+        CHECK(line_ends(text) == static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')));
+    }
+    CHECK(line_ends("G1\nG2\n\nM2") == 3);
 }

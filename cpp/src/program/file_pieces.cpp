@@ -8,6 +8,7 @@
 
 #include "toolcomp/program/diagnostic.hpp"
 #include "toolcomp/program/input_limits.hpp"
+#include "toolcomp/program/text.hpp"
 
 namespace toolcomp {
 
@@ -61,7 +62,7 @@ std::string_view FilePieces::next() {
     carry_ = buf_.size() - end;
     const std::string_view piece(buf_.data(), end);
     check_line_lengths(piece, max_line_length_, false, lines_ + 1);
-    lines_ += static_cast<std::size_t>(std::count(piece.begin(), piece.end(), '\n'));
+    lines_ += line_ends(piece);
     return piece;
 }
 
