@@ -61,7 +61,6 @@ private:
         double tool_offset[3], abc[3], normal[3], tool_axis[3];
         std::int32_t tool, turns, file, plane;
     };
-    static_assert(sizeof(UniformRow) == 12 * sizeof(double) + 4 * sizeof(std::int32_t));
     // The last segment's row, and whether every uniform column was still uniform after it:
     // then a segment with the same row (bit for bit) only counts one more row in each.
     UniformRow last_{};
