@@ -44,6 +44,7 @@ void add_g(BlockWords& bw, const Word& w, Dialect d) {
     }
     bw.g[group] = code;
     bw.g_column[group] = w.column;
+    bw.g_groups |= std::uint32_t{1} << group;
 }
 
 void add_m(BlockWords& bw, const Word& w, Dialect d) {
@@ -90,7 +91,7 @@ BlockWords collect_words(std::span<const Word> words, int line, Dialect dialect)
             add_m(bw, w, dialect);
         } else {
             WordSlot& slot = bw.letter[w.letter - 'A'];
-            if (slot.set) {
+            if (bw.has(w.letter)) {
                 char lower = ascii_lower(w.letter);
                 fail("multiple_words", std::string("Multiple ") + lower + " words on one line", bw.line, w.column);
             }
@@ -105,6 +106,7 @@ BlockWords collect_words(std::span<const Word> words, int line, Dialect dialect)
             if (w.letter == 'S' && w.value < 0)
                 fail("negative_spindle_speed", "Negative spindle speed used", bw.line, w.column);
             slot = {.value = w.value, .column = w.column, .set = true};
+            bw.letters |= letter_bit(w.letter);
         }
     }
     return bw;

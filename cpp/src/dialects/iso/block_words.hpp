@@ -2,6 +2,7 @@
 // The words of one block sorted by meaning: one slot per letter, G codes by modal group,
 // M codes by group. Built with LinuxCNC's checks (one word per letter, one code per group).
 #include <array>
+#include <cstdint>
 #include <span>
 
 #include "codes.hpp"
@@ -16,20 +17,35 @@ struct WordSlot {  // 16 bytes: BlockWords clears 26 of them per block
     bool set = false;
 };
 
+// A letter's bit in BlockWords::letters.
+constexpr std::uint32_t letter_bit(char c) { return std::uint32_t{1} << (c - 'A'); }
+
 struct BlockWords {
     int line = 0;
     std::array<WordSlot, 26> letter{};  // A..Z except G and M
+    std::uint32_t letters = 0;          // bit c - 'A' for each letter with a slot set
+    std::uint32_t g_groups = 0;         // bit of each G group with a code
     std::array<int, g_group_count> g;   // code10 per group, -1 when none
     std::array<int, g_group_count> g_column{};
     std::array<int, m_group_count> m;
     std::array<int, m_group_count> m_column{};
     int m_count = 0;
 
+    static constexpr std::uint32_t kAxes = letter_bit('X') | letter_bit('Y') | letter_bit('Z') | letter_bit('A') |
+                                           letter_bit('B') | letter_bit('C') | letter_bit('U') | letter_bit('V') |
+                                           letter_bit('W');
+
     const WordSlot& operator[](char c) const { return letter[c - 'A']; }
-    bool has(char c) const { return letter[c - 'A'].set; }
-    bool has_axis() const {
-        return has('X') || has('Y') || has('Z') || has('A') || has('B') || has('C') || has('U') || has('V') ||
-               has('W');
+    bool has(char c) const { return (letters & letter_bit(c)) != 0; }
+    bool has_axis() const { return (letters & kAxes) != 0; }
+    // A G code of a group other than motion (G0-G3, cycles), resp. an M code: a plain move
+    // has neither, and execute() passes over what they would set.
+    bool modal_codes() const { return (g_groups & ~(std::uint32_t{1} << g_motion)) != 0; }
+    bool m_codes() const { return m_count != 0; }
+    // Takes a word out of the block (its slot emptied).
+    void remove(char c) {
+        letter[c - 'A'] = {};
+        letters &= ~letter_bit(c);
     }
     // Column of the first axis word (for error positions), or 0.
     int axis_column() const;

@@ -152,7 +152,8 @@ void Interp::run_blocks() {
         if (sub_m >= 0) {
             p_word = bw['P'];
             l_word = bw['L'];
-            bw.letter['P' - 'A'] = bw.letter['L' - 'A'] = {};
+            bw.remove('P');
+            bw.remove('L');
         }
         if (!execute(bw)) {
             sink_.finish();
@@ -175,6 +176,10 @@ void Interp::run_blocks() {
 }
 
 void Interp::check_words(const BlockWords& bw, int motion_to_be) {
+    constexpr auto bit = letter_bit;
+    constexpr std::uint32_t kChecked = bit('D') | bit('E') | bit('H') | bit('I') | bit('J') | bit('K') | bit('L') |
+                                       bit('P') | bit('Q') | bit('R');
+    if ((bw.letters & kChecked) == 0) return;  // none of the words that need a code to use them
     const int g0 = bw.g[g_nonmodal];
     const bool arc = motion_to_be == 20 || motion_to_be == 30;
     const bool g87 = motion_to_be == 870;  // back boring takes I J K too
@@ -258,55 +263,62 @@ bool Interp::execute(const BlockWords& bw) {
         if ((bw.has('U') && bw.has('X')) || (bw.has('W') && bw.has('Z')))
             fail("absolute_and_incremental", "X and U (or Z and W) in one block", bw[l].column);
     }
+    // A plain move (no G code but its motion, no M code) has none of the codes checked and set
+    // below but the motion group's.
+    const bool modal = bw.modal_codes() || bw.m_codes();
     if (comp_on() && bw.g[g_radius_comp] != 400) {
         // What LinuxCNC refuses while the tool radius is compensated.
-        if (bw.g[g_plane] >= 0 && bw.g[g_plane] != (st_.plane == Plane::xy ? 170 : st_.plane == Plane::zx ? 180 : 190))
-            fail("comp_plane_change", "Cannot change planes with cutter radius compensation on", bw.g_column[g_plane]);
-        if (bw.m[m_tool_change] == 60)
-            fail("comp_tool_change", "Cannot change tools with cutter radius compensation on", bw.m_column[m_tool_change]);
-        if (bw.g[g_length_comp] >= 0)
-            fail("comp_tool_offset", "Cannot change tool offset with cutter radius compensation on",
-                 bw.g_column[g_length_comp]);
-        if (g0 == 530 && radius_.radius > 0)
-            fail("comp_g53", "Cannot use g53 with cutter radius comp", bw.g_column[g_nonmodal]);
-        if (bw.g[g_path_control] >= 0)
-            fail("comp_control_mode", "Cannot change control mode with cutter radius compensation on",
-                 bw.g_column[g_path_control]);
-        if (bw.g[g_retract] >= 0)
-            fail("comp_retract_mode", "Cannot change retract mode with cutter radius compensation on",
-                 bw.g_column[g_retract]);
-        if (int ov = bw.m[m_override]; ov >= 0) {
-            bool enable = ov == 480 || (ov >= 500 && (!bw.has('P') || bw['P'].value != 0));
-            fail("comp_overrides",
-                 enable ? "Cannot enable overrides with cutter radius compensation on"
-                        : "Cannot disable overrides with cutter radius compensation on",
-                 bw.m_column[m_override]);
+        if (modal) {
+            if (bw.g[g_plane] >= 0 && bw.g[g_plane] != (st_.plane == Plane::xy ? 170 : st_.plane == Plane::zx ? 180 : 190))
+                fail("comp_plane_change", "Cannot change planes with cutter radius compensation on", bw.g_column[g_plane]);
+            if (bw.m[m_tool_change] == 60)
+                fail("comp_tool_change", "Cannot change tools with cutter radius compensation on", bw.m_column[m_tool_change]);
+            if (bw.g[g_length_comp] >= 0)
+                fail("comp_tool_offset", "Cannot change tool offset with cutter radius compensation on",
+                     bw.g_column[g_length_comp]);
+            if (g0 == 530 && radius_.radius > 0)
+                fail("comp_g53", "Cannot use g53 with cutter radius comp", bw.g_column[g_nonmodal]);
+            if (bw.g[g_path_control] >= 0)
+                fail("comp_control_mode", "Cannot change control mode with cutter radius compensation on",
+                     bw.g_column[g_path_control]);
+            if (bw.g[g_retract] >= 0)
+                fail("comp_retract_mode", "Cannot change retract mode with cutter radius compensation on",
+                     bw.g_column[g_retract]);
+            if (int ov = bw.m[m_override]; ov >= 0) {
+                bool enable = ov == 480 || (ov >= 500 && (!bw.has('P') || bw['P'].value != 0));
+                fail("comp_overrides",
+                     enable ? "Cannot enable overrides with cutter radius compensation on"
+                            : "Cannot disable overrides with cutter radius compensation on",
+                     bw.m_column[m_override]);
+            }
         }
         if (motion_code >= 382 && motion_code <= 385)
             fail("comp_probe", "Cannot probe with cutter radius comp on", bw.g_column[g_motion]);
-        if (int io = bw.m[m_io]; io >= 0) {
-            const char* what = io == 620 ? "Cannot set motion output with cutter radius compensation on"
-                             : io == 630 ? "Cannot set motion digital output with cutter radius compensation on"
-                             : io <= 650 ? "Cannot set auxiliary digital output with cutter radius compensation on"
-                             : io == 660 ? "Cannot wait for digital input with cutter radius compensation on"
-                             : io == 670 ? "Cannot set motion analog output with cutter radius compensation on"
-                                         : "Cannot set auxiliary analog output with cutter radius compensation on";
-            fail("comp_io", what, bw.m_column[m_io]);
-        }
-        if (g0 == 280 || g0 == 300)
-            fail("comp_home", "Cannot use g28 or g30 with cutter radius comp", bw.g_column[g_nonmodal]);
-        if (bw.g[g_coord_system] >= 0)
-            fail("comp_coord_system", "Cannot change coordinate systems with cutter radius compensation on",
-                 bw.g_column[g_coord_system]);
-        if (g0 == 920 || g0 == 921 || g0 == 922 || g0 == 923)
-            fail("comp_axis_offsets", "Cannot change axis offsets with cutter radius comp", bw.g_column[g_nonmodal]);
-        if (g0 == 100) {
-            if (!profile_.radius.messages.g10.empty())
-                fail("comp_g10", profile_.radius.messages.g10, bw.g_column[g_nonmodal]);
-            const int p = bw.has('P') ? int_value_truncated(bw['P'].value) : -1;
-            if (p == 0 || p == st_.coord_system)
-                fail("comp_g10", "Cannot change the active coordinate system with cutter radius compensation on",
-                     bw.g_column[g_nonmodal]);
+        if (modal) {
+            if (int io = bw.m[m_io]; io >= 0) {
+                const char* what = io == 620 ? "Cannot set motion output with cutter radius compensation on"
+                                 : io == 630 ? "Cannot set motion digital output with cutter radius compensation on"
+                                 : io <= 650 ? "Cannot set auxiliary digital output with cutter radius compensation on"
+                                 : io == 660 ? "Cannot wait for digital input with cutter radius compensation on"
+                                 : io == 670 ? "Cannot set motion analog output with cutter radius compensation on"
+                                             : "Cannot set auxiliary analog output with cutter radius compensation on";
+                fail("comp_io", what, bw.m_column[m_io]);
+            }
+            if (g0 == 280 || g0 == 300)
+                fail("comp_home", "Cannot use g28 or g30 with cutter radius comp", bw.g_column[g_nonmodal]);
+            if (bw.g[g_coord_system] >= 0)
+                fail("comp_coord_system", "Cannot change coordinate systems with cutter radius compensation on",
+                     bw.g_column[g_coord_system]);
+            if (g0 == 920 || g0 == 921 || g0 == 922 || g0 == 923)
+                fail("comp_axis_offsets", "Cannot change axis offsets with cutter radius comp", bw.g_column[g_nonmodal]);
+            if (g0 == 100) {
+                if (!profile_.radius.messages.g10.empty())
+                    fail("comp_g10", profile_.radius.messages.g10, bw.g_column[g_nonmodal]);
+                const int p = bw.has('P') ? int_value_truncated(bw['P'].value) : -1;
+                if (p == 0 || p == st_.coord_system)
+                    fail("comp_g10", "Cannot change the active coordinate system with cutter radius compensation on",
+                         bw.g_column[g_nonmodal]);
+            }
         }
         if (is_cycle(motion_to_be))
             fail("comp_canned_cycle", "Cannot use canned cycles with cutter compensation on",
@@ -322,42 +334,48 @@ bool Interp::execute(const BlockWords& bw) {
         fail("unsupported_m_code", "M" + std::to_string(io / 10) + " is not supported by toolcomp", bw.m_column[m_io]);
 
     // 2-4: feed mode, feed, speed
-    if (bw.g[g_feed_mode] >= 0) st_.feed_mode = bw.g[g_feed_mode];
-    if (profile_.t_offsets && bw.g[g_retract] >= 0)  // Fanuc lathes: G98 per minute, G99 per revolution
-        st_.feed_mode = bw.g[g_retract] == 980 ? 940 : 950;
+    if (modal) {
+        if (bw.g[g_feed_mode] >= 0) st_.feed_mode = bw.g[g_feed_mode];
+        if (profile_.t_offsets && bw.g[g_retract] >= 0)  // Fanuc lathes: G98 per minute, G99 per revolution
+            st_.feed_mode = bw.g[g_retract] == 980 ? 940 : 950;
+    }
     if (bw.has('F')) feed_ = bw['F'].value * (st_.feed_mode == 930 ? 1.0 : scale());
     if (bw.has('S')) speed_ = bw['S'].value;
     // 5-6: tools
     if (bw.has('T')) select_tool(bw);
-    if (bw.m[m_tool_change] >= 0) change_tool(bw, bw.m[m_tool_change]);
-    if (int ch = bw.m[m_checks]; ch >= 0) {  // 9/Series M800 / M801
-        checks_ = ch == 8010;
-        radius_.checks = checks_;
+    if (modal) {
+        if (bw.m[m_tool_change] >= 0) change_tool(bw, bw.m[m_tool_change]);
+        if (int ch = bw.m[m_checks]; ch >= 0) {  // 9/Series M800 / M801
+            checks_ = ch == 8010;
+            radius_.checks = checks_;
+        }
+        // 7-9: spindle, coolant, overrides: state of the machine, not of the path (the spindle
+        // direction matters to the boring cycles).
+        if (int sp = bw.m[m_spindle]; sp >= 0) spindle_ = sp == 30 ? 1 : sp == 40 ? -1 : 0;
     }
-    // 7-9: spindle, coolant, overrides: state of the machine, not of the path (the spindle
-    // direction matters to the boring cycles).
-    if (int sp = bw.m[m_spindle]; sp >= 0) spindle_ = sp == 30 ? 1 : sp == 40 ? -1 : 0;
     // 10: dwell
     if (g0 == 40 && (!bw.has('P') || bw['P'].value < 0))
         fail("dwell_missing", "Dwell time missing with g4", bw.g_column[g_nonmodal]);
-    // 11-12: plane, units (an F in the same block was read in the old units, as LinuxCNC does)
-    if (bw.g[g_units] >= 0) set_units(bw.g[g_units] == 200);
-    if (bw.g[g_plane] >= 0) st_.plane = bw.g[g_plane] == 170 ? Plane::xy : bw.g[g_plane] == 180 ? Plane::zx : Plane::yz;
-    if (bw.g[g_lathe_diameter] >= 0) st_.diameter = bw.g[g_lathe_diameter] == 70;
-    // 13: cutter radius compensation (requested here, applied by the compensation stage)
-    if (bw.g[g_radius_comp] >= 0) radius_comp(bw, bw.g[g_radius_comp]);
-    // 14: tool length compensation
-    if (bw.g[g_length_comp] >= 0) length_comp(bw, bw.g[g_length_comp]);
-    // 15: coordinate system
-    if (bw.g[g_coord_system] >= 0) {
-        int c = bw.g[g_coord_system];
-        set_coord_system(c < 590 ? (c - 530) / 10 : 6 + (c - 590));
+    if (modal) {
+        // 11-12: plane, units (an F in the same block was read in the old units, as LinuxCNC does)
+        if (bw.g[g_units] >= 0) set_units(bw.g[g_units] == 200);
+        if (bw.g[g_plane] >= 0) st_.plane = bw.g[g_plane] == 170 ? Plane::xy : bw.g[g_plane] == 180 ? Plane::zx : Plane::yz;
+        if (bw.g[g_lathe_diameter] >= 0) st_.diameter = bw.g[g_lathe_diameter] == 70;
+        // 13: cutter radius compensation (requested here, applied by the compensation stage)
+        if (bw.g[g_radius_comp] >= 0) radius_comp(bw, bw.g[g_radius_comp]);
+        // 14: tool length compensation
+        if (bw.g[g_length_comp] >= 0) length_comp(bw, bw.g[g_length_comp]);
+        // 15: coordinate system
+        if (bw.g[g_coord_system] >= 0) {
+            int c = bw.g[g_coord_system];
+            set_coord_system(c < 590 ? (c - 530) / 10 : 6 + (c - 590));
+        }
+        // 16-18: path control, distance modes, retract mode
+        if (bw.g[g_path_control] >= 0) st_.path_control = bw.g[g_path_control];
+        if (bw.g[g_distance] >= 0) st_.incremental = bw.g[g_distance] == 910;
+        if (bw.g[g_arc_distance] >= 0) st_.arc_absolute = bw.g[g_arc_distance] == 901;
+        if (bw.g[g_retract] >= 0 && !profile_.t_offsets) st_.retract_initial = bw.g[g_retract] == 980;
     }
-    // 16-18: path control, distance modes, retract mode
-    if (bw.g[g_path_control] >= 0) st_.path_control = bw.g[g_path_control];
-    if (bw.g[g_distance] >= 0) st_.incremental = bw.g[g_distance] == 910;
-    if (bw.g[g_arc_distance] >= 0) st_.arc_absolute = bw.g[g_arc_distance] == 901;
-    if (bw.g[g_retract] >= 0 && !profile_.t_offsets) st_.retract_initial = bw.g[g_retract] == 980;
     // 19: G10, G28/G30, G92
     switch (g0) {
         case 100: g10(bw); break;
