@@ -102,6 +102,7 @@ class Outcome:
         self.records: list[Record] = []
         self.blocks = None  # a streamed run: blocks of the program, and
         self.totals = None  # its paths summed up (cli_stream.PathTotals)
+        self.streamed = False  # run as a stream (no result: the path went chunk by chunk)
 
     @property
     def has_errors(self):
@@ -184,11 +185,12 @@ def _progress_bar(program, stream=None):
 
 
 def execute(program_file, tools_file=None, dialect=None, units_table=None, search_path=(),
-            parameters=None, whole_path=True) -> Outcome:
+            parameters=None, whole_path=True, csv=None) -> Outcome:
     """Read the program and tool table and run it with ``strict=False``; every problem
     becomes a diagnostic record. Raises UsageError for unreadable inputs. ``whole_path=False``
-    (the caller needs the records and the summary only): a large program file is run as a
-    stream (cli_stream.py), in bounded memory."""
+    (the caller needs the records, the summary and at most ``csv``, a CsvWriter): a large
+    program file is run as a stream (cli_stream.py), in bounded memory, and ``out.streamed``
+    is set (the compensated path went to ``csv`` chunk by chunk; ``out.result`` is None)."""
     _check_readable(program_file, "program")
     if tools_file is not None:
         _check_readable(tools_file, "tool table")
@@ -217,7 +219,7 @@ def execute(program_file, tools_file=None, dialect=None, units_table=None, searc
             out.records.append(Record.of(exc, parameters, "error"))
             return out
     if not whole_path and cli_stream.streams(program_file):
-        return cli_stream.execute_streamed(tc, out, program_file, dialect, run_kwargs, _progress_bar)
+        return cli_stream.execute_streamed(tc, out, program_file, dialect, run_kwargs, _progress_bar, csv)
 
     try:
         out.program = tc.Program.read(program_file, **kwargs)
@@ -374,16 +376,32 @@ def _fmt(values):
     return ["" if v != v else f"{v:.6f}" for v in np.asarray(values, dtype=float).tolist()]
 
 
-def write_csv(path, filename):
-    """One row per segment of ``path``; returns the number of rows."""
-    from toolcomp.plot import path_size
+class CsvWriter:
+    """The CSV of a compensated path, written as its segments come: ``add`` a Path (a whole
+    one, or the chunks of a stream in order; rows are numbered on across them), then
+    ``close``. The file is made at the first ``add`` or at ``close`` (header only for no
+    segments). ``discard`` takes back what was written (a streamed run that stopped with an
+    error has no path, as a whole run has none)."""
 
-    n = path_size(path) if path is not None else 0
-    with open(filename, "w", newline="", encoding="utf-8") as f:
-        w = csv.writer(f)
-        w.writerow(CSV_HEADER)
+    def __init__(self, filename):
+        self.filename = filename
+        self.rows = 0
+        self._file = self._writer = None
+        self._closed = False
+
+    def _open(self):
+        if self._file is None:
+            self._file = open(self.filename, "w", newline="", encoding="utf-8")
+            self._writer = csv.writer(self._file)
+            self._writer.writerow(CSV_HEADER)
+
+    def add(self, path) -> None:
+        from toolcomp.plot import path_size
+
+        self._open()
+        n = path_size(path) if path is not None else 0
         if n == 0:
-            return 0
+            return
         start, end = np.asarray(path.start).reshape(n, 3), np.asarray(path.end).reshape(n, 3)
         center = np.asarray(path.center).reshape(n, 3)
         offs = np.asarray(path.tool_offset).reshape(n, 3)
@@ -394,14 +412,41 @@ def write_csv(path, filename):
         for a in range(0, n, CSV_ROWS_AT_ONCE):
             b = min(n, a + CSV_ROWS_AT_ONCE)
             cols = [
-                range(a, b),
+                range(self.rows + a, self.rows + b),
                 [KIND_NAMES.get(k, str(k)) for k in kind[a:b].tolist()],
                 line[a:b].tolist(), tool[a:b].tolist(),
                 *(_fmt(v[a:b, j]) for v in (start, end, center) for j in range(3)),
                 _fmt(feed[a:b]), side[a:b].tolist(), generated[a:b].astype(int).tolist(),
                 *(_fmt(v[a:b, j]) for v in (offs, abc) for j in range(3)),
             ]
-            w.writerows(zip(*cols))
+            self._writer.writerows(zip(*cols))
+        self.rows += n
+
+    def discard(self) -> None:
+        if self._file is not None:
+            self._file.seek(0)
+            self._file.truncate()
+            self._writer.writerow(CSV_HEADER)
+        self.rows = 0
+
+    def close(self, make=True) -> int:
+        """Closes the file (made now if nothing was added, unless ``make`` is false); returns
+        the number of rows. Closing again does nothing."""
+        if make and not self._closed:
+            self._open()
+        if self._file is not None:
+            self._file.close()
+        self._closed = True
+        return self.rows
+
+
+def write_csv(path, filename):
+    """One row per segment of ``path``; returns the number of rows."""
+    w = CsvWriter(filename)
+    try:
+        w.add(path)
+    finally:
+        n = w.close()
     return n
 
 
@@ -410,13 +455,21 @@ def write_csv(path, filename):
 # ---------------------------------------------------------------------------------------
 
 def cmd_run(args) -> int:
-    # Without --csv or --plot only the summary is needed: a large program runs as a stream.
-    out = execute(args.program, args.tools, args.dialect, args.units_table, args.search_path, args.parameters,
-                  whole_path=bool(args.csv or args.plot))
+    # Without --plot the whole path is not needed: a large program runs as a stream, its
+    # CSV written chunk by chunk.
+    writer = CsvWriter(args.csv) if args.csv else None
+    try:
+        out = execute(args.program, args.tools, args.dialect, args.units_table, args.search_path,
+                      args.parameters, whole_path=bool(args.plot), csv=writer)
+        if writer is not None:
+            if not out.streamed:
+                writer.add(out.result.path if out.result is not None else None)
+            writer.close()
+    finally:
+        if writer is not None:
+            writer.close(make=False)  # after an exception: a file begun is closed, none is made
     summary = summarize(out)
     print(format_summary(summary))
-    if args.csv:
-        write_csv(out.result.path if out.result is not None else None, args.csv)
     if args.json:
         with open(args.json, "w", encoding="utf-8") as f:
             json.dump(summary, f, indent=2)

@@ -1,11 +1,12 @@
 """The command line's run of a large program as a stream: ``check``, and ``run`` without
-``--csv`` or ``--plot``, need the diagnostics and the summary's totals, not the paths. A
-program file of ``STREAM_MIN_BYTES`` or more is read through once as a syntax check
-(``Program.check_file``, every syntax error wherever it is, as ``Program.read`` finds them)
-and run with ``iter_run``: the compensated path is summed up chunk by chunk and dropped, the
-programmed path only counted. Memory stays that of a chunk or two whatever the program's
-length, and ``max_segments`` does not apply. The records and the summary are those of a
-whole run (tests/python/test_cli_stream.py runs both ways).
+``--plot``, need the diagnostics, the summary's totals and at most the CSV of the compensated
+path, not the paths. A program file of ``STREAM_MIN_BYTES`` or more is read through once as a
+syntax check (``Program.check_file``, every syntax error wherever it is, as ``Program.read``
+finds them) and run with ``iter_run``: the compensated path is summed up (and written to the
+CSV) chunk by chunk and dropped, the programmed path only counted. Memory stays that of a
+chunk or two whatever the program's length, and ``max_segments`` does not apply. The
+records, the summary and the CSV are those of a whole run (tests/python/test_cli_stream.py
+runs both ways).
 """
 
 from __future__ import annotations
@@ -52,10 +53,12 @@ class PathTotals:
         return {"feed": self.feed, "rapid": max(0.0, self.total - self.feed)}
 
 
-def execute_streamed(tc, out, program_file, dialect, run_kwargs, progress_bar):
+def execute_streamed(tc, out, program_file, dialect, run_kwargs, progress_bar, csv=None):
     """``cli.execute`` for a large program: fills ``out`` (records, dialect, blocks, totals;
     blocks stay None for a program with a syntax error: the summary counts its lines, as for
-    a whole run). `progress_bar(total)` makes a bar (or None) for a program of `total` blocks."""
+    a whole run). `progress_bar(total)` makes a bar (or None) for a program of `total` blocks.
+    ``csv`` (a cli.CsvWriter or None) gets every chunk of the compensated path; a run that
+    stops with an error takes its rows back (a whole run has no path then)."""
     from toolcomp.cli import Record
 
     try:
@@ -72,14 +75,19 @@ def execute_streamed(tc, out, program_file, dialect, run_kwargs, progress_bar):
             out.dialect = stream.dialect
             for chunk in stream:
                 totals.add(chunk)
+                if csv is not None:
+                    csv.add(chunk)
                 if bar is not None:
                     bar.update(stream.blocks_read - bar.n)
             totals.nominal = stream.programmed_segments
             diagnostics = stream.diagnostics
     except tc.Error as exc:
         out.records.append(Record.of(parse_error or exc, program_file, "error"))
+        if csv is not None:
+            csv.discard()
         return out
     finally:
+        out.streamed = True
         if bar is not None:
             bar.close()
     out.totals = totals

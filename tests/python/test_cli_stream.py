@@ -77,6 +77,45 @@ def test_run_summary_streamed_equals_run_whole(program, capsys, tmp_path):
     assert close(summaries[1], summaries[0]), summaries
 
 
+def test_run_csv_streamed_equals_run_csv_whole(program, capsys, tmp_path, monkeypatch):
+    # Chunks of 3 segments: rows numbered on across chunks, the same text as from the whole
+    # path; a program that stops with an error has the same rows (or header only) both ways.
+    monkeypatch.setattr(cli_stream, "STREAM_CHUNK", 3)
+    texts = []
+    for stream in (False, True):
+        out = tmp_path / f"{stream}.csv"
+        code, summary = run_cli(["run", program, "--tools", TOOLS, "--csv", out], capsys, stream=stream)
+        texts.append((code, summary, out.read_text()))
+    assert texts[1] == texts[0]
+    rows = texts[0][2].splitlines()
+    assert rows[0].startswith("index,kind,line,tool,start_x")
+    if program.stem in ("square", "corners"):
+        assert len(rows) - 1 == len(tc.run(str(program), tools=str(TOOLS)).path) > 3
+
+
+def test_a_streamed_csv_of_a_square_has_its_segments(tmp_path, capsys, monkeypatch):
+    monkeypatch.setattr(cli_stream, "STREAM_CHUNK", 2)
+    p = tmp_path / "square.ngc"
+    p.write_text(SQUARE)
+    out = tmp_path / "s.csv"
+    code, _ = run_cli(["run", p, "--tools", TOOLS, "--csv", out], capsys, stream=True)
+    assert code == 0
+    import csv
+
+    rows = list(csv.DictReader(out.open()))
+    # G0, plunge, X10, Y10, the semicircle, Y0, the full circle, the retract
+    assert [r["index"] for r in rows] == [str(i) for i in range(8)]
+    assert [r["kind"] for r in rows] == ["rapid", "line", "line", "line", "arc_ccw", "line", "arc_cw", "rapid"]
+    assert [float(rows[4][k]) for k in ("end_x", "end_y", "center_x", "center_y")] == [0, 10, 5, 10]
+
+
+def test_a_csv_is_not_made_for_an_unreadable_program(tmp_path, capsys):
+    out = tmp_path / "never.csv"
+    for stream in (False, True):
+        code, _ = run_cli(["run", tmp_path / "missing.ngc", "--csv", out], capsys, stream=stream)
+        assert code == 2 and not out.exists()
+
+
 def test_streamed_totals_are_the_programs(tmp_path, capsys):
     p = tmp_path / "square.ngc"
     p.write_text(SQUARE)
@@ -124,3 +163,39 @@ def test_only_large_files_stream(tmp_path, monkeypatch):
     monkeypatch.setattr(cli_stream, "STREAM_MIN_BYTES", p.stat().st_size)
     assert cli_stream.streams(p)
     assert not cli_stream.streams(tmp_path)  # a directory: the whole run reports it
+
+
+def test_a_stream_that_stops_with_an_error_leaves_a_csv_of_its_header(tmp_path, capsys, monkeypatch):
+    # A run that raises has no path (as a whole run that raises has none): the rows of the
+    # chunks that came before the error are taken back.
+    real = tc.iter_run
+
+    class Breaks:
+        def __init__(self, *a, **kw):
+            self.stream = real(*a, **kw)
+
+        def __enter__(self):
+            self.stream.__enter__()
+            return self
+
+        def __exit__(self, *exc):
+            return self.stream.__exit__(*exc)
+
+        @property
+        def dialect(self):
+            return self.stream.dialect
+
+        def __iter__(self):
+            for i, chunk in enumerate(self.stream):
+                if i == 2:
+                    raise tc.ProgramError("stopped")
+                yield chunk
+
+    monkeypatch.setattr(tc, "iter_run", Breaks)
+    monkeypatch.setattr(cli_stream, "STREAM_CHUNK", 2)
+    p = tmp_path / "square.ngc"
+    p.write_text(SQUARE)
+    out = tmp_path / "s.csv"
+    code, _ = run_cli(["run", p, "--tools", TOOLS, "--csv", out], capsys, stream=True)
+    assert code == 1
+    assert out.read_text().splitlines() == [",".join(cli.CSV_HEADER)]
