@@ -309,12 +309,25 @@ def test_parameter_files_have_a_size_limit(tmp_path):
 
 
 def test_the_command_line_reports_a_too_large_program_without_reading_it(tmp_path):
-    # A run that keeps the whole path (--csv) reads the program whole: refused by its size.
+    # A run that keeps the whole path (--plot) reads the program whole: refused by its size.
+    pytest.importorskip("matplotlib")
     big = sparse(tmp_path / "big.ngc", 10 * GiB)
-    p = subprocess.run([sys.executable, "-m", "toolcomp", "run", str(big), "--csv", str(tmp_path / "p.csv")],
+    p = subprocess.run([sys.executable, "-m", "toolcomp", "run", str(big), "--plot", str(tmp_path / "p.png")],
                        capture_output=True, text=True, timeout=300)
     assert p.returncode in (1, 2), p.stderr
     assert "input_too_large" in p.stdout + p.stderr
+
+
+def test_the_command_line_writes_the_csv_of_a_huge_program_a_piece_at_a_time(tmp_path):
+    # run --csv streams (the CSV is written chunk by chunk): the 10 GiB of zeros are one line
+    # too long, refused after its first MiB with its line; the CSV has its header only.
+    big = sparse(tmp_path / "big.ngc", 10 * GiB)
+    out = tmp_path / "p.csv"
+    p = subprocess.run([sys.executable, "-m", "toolcomp", "run", str(big), "--csv", str(out)],
+                       capture_output=True, text=True, timeout=300)
+    assert p.returncode == 1, p.stderr
+    assert f"{big}:1:" in p.stdout and "line_too_long" in p.stdout
+    assert len(out.read_text().splitlines()) == 1
 
 
 def test_the_command_line_checks_a_huge_program_a_piece_at_a_time(tmp_path):

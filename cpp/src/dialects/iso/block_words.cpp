@@ -90,7 +90,6 @@ BlockWords collect_words(std::span<const Word> words, int line, Dialect dialect)
         } else if (w.letter == 'M') {
             add_m(bw, w, dialect);
         } else {
-            WordSlot& slot = bw.letter[w.letter - 'A'];
             if (bw.has(w.letter)) {
                 char lower = ascii_lower(w.letter);
                 fail("multiple_words", std::string("Multiple ") + lower + " words on one line", bw.line, w.column);
@@ -105,8 +104,7 @@ BlockWords collect_words(std::span<const Word> words, int line, Dialect dialect)
             if (w.letter == 'F' && w.value < 0) fail("negative_feed", "Negative f word used", bw.line, w.column);
             if (w.letter == 'S' && w.value < 0)
                 fail("negative_spindle_speed", "Negative spindle speed used", bw.line, w.column);
-            slot = {.value = w.value, .column = w.column, .set = true};
-            bw.letters |= letter_bit(w.letter);
+            bw.set(w.letter, w.value, w.column);
         }
     }
     return bw;

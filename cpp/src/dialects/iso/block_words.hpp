@@ -11,7 +11,7 @@
 
 namespace toolcomp::iso {
 
-struct WordSlot {  // 16 bytes: BlockWords clears 26 of them per block
+struct WordSlot {
     double value = 0;
     int column = 0;
     bool set = false;
@@ -22,8 +22,14 @@ constexpr std::uint32_t letter_bit(char c) { return std::uint32_t{1} << (c - 'A'
 
 struct BlockWords {
     int line = 0;
-    std::array<WordSlot, 26> letter{};  // A..Z except G and M
-    std::uint32_t letters = 0;          // bit c - 'A' for each letter with a slot set
+    // A..Z except G and M: the value and column of each letter in `letters` (the others are
+    // never read, nor cleared for each block).
+    struct Slot {
+        double value;
+        int column;
+    };
+    std::array<Slot, 26> letter;
+    std::uint32_t letters = 0;  // bit c - 'A' for each letter the block has
     std::uint32_t g_groups = 0;         // bit of each G group with a code
     std::array<int, g_group_count> g;   // code10 per group, -1 when none
     std::array<int, g_group_count> g_column{};
@@ -35,18 +41,24 @@ struct BlockWords {
                                            letter_bit('B') | letter_bit('C') | letter_bit('U') | letter_bit('V') |
                                            letter_bit('W');
 
-    const WordSlot& operator[](char c) const { return letter[c - 'A']; }
+    // The letter's word; an unset slot (value 0, column 0) when the block has none.
+    WordSlot operator[](char c) const {
+        if (!has(c)) return {};
+        const Slot& s = letter[static_cast<std::size_t>(c - 'A')];
+        return {s.value, s.column, true};
+    }
+    void set(char c, double value, int column) {
+        letter[static_cast<std::size_t>(c - 'A')] = {value, column};
+        letters |= letter_bit(c);
+    }
     bool has(char c) const { return (letters & letter_bit(c)) != 0; }
     bool has_axis() const { return (letters & kAxes) != 0; }
     // A G code of a group other than motion (G0-G3, cycles), resp. an M code: a plain move
     // has neither, and execute() passes over what they would set.
     bool modal_codes() const { return (g_groups & ~(std::uint32_t{1} << g_motion)) != 0; }
     bool m_codes() const { return m_count != 0; }
-    // Takes a word out of the block (its slot emptied).
-    void remove(char c) {
-        letter[c - 'A'] = {};
-        letters &= ~letter_bit(c);
-    }
+    // Takes a word out of the block.
+    void remove(char c) { letters &= ~letter_bit(c); }
     // Column of the first axis word (for error positions), or 0.
     int axis_column() const;
 };
