@@ -40,10 +40,11 @@ int RadiusCompensation::file_of(int line) const {
 
 void RadiusCompensation::entry_line(const Motion& m) {
     const Vec2 c = plane2(m.start), p = plane2(m.end);
-    if (profile_.radius.entry_length_check && (p - c).norm() <= r_)
+    if (profile_.radius.entry_length_check && dist(p, c) <= r_)
         fail("comp_entry_too_short", profile_.radius.messages.entry_too_short, m.line);
-    // Perpendicular to the entry move itself, at its programmed end.
-    const double alpha = ang(p - c) + (side_ > 0 ? kHalfPi : -kHalfPi);
+    // Perpendicular to the entry move itself, at its programmed end (LinuxCNC's
+    // convert_straight_comp1, its arithmetic).
+    const double alpha = stored(ang(p - c) + (side_ > 0 ? kPiL / 2. : -kPiL / 2.));
     const Vec2 e = p + r_ * u(alpha);
     endpoint_ = c;
     endpoint_valid_ = true;

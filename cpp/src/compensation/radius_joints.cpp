@@ -204,18 +204,26 @@ void RadiusCompensation::next_line(const Motion& m) {
     }
     non_plane_run_ = 0;
     watch_programmed(Element2::line(P, p), m.line);
-    // LinuxCNC's angles: theta of the tool's offset C - P at the corner, alpha of the new
-    // move, gamma = ±90° (the tool's side); beta = theta - alpha - 90° (its mirror on the
-    // right), brought into [-90°, 270°): the turn at the corner, > 0 outside. Worked out as
-    // one angle between vectors and the offset as the move's normal, without sines.
-    const Vec2 q = C - P, t = unit(p - P);
-    const double beta = (side_ > 0 ? ccw_angle(t, q) : ccw_angle(q, t)) - kHalfPi;
-    const Vec2 offset = side_ > 0 ? left_normal(t) : Vec2(-left_normal(t));  // u(alpha + gamma)
-    const Vec2 e = p + r_ * offset;
-    const Vec2 mid = P + r_ * offset;  // compensated start of the new move
+    // LinuxCNC's convert_straight_comp2, operation for operation: theta, the direction of the
+    // tool's offset C - P at the corner; alpha, of the new move; gamma = ±90° (the tool's
+    // side); beta = theta - alpha - 90° (its mirror on the right), the turn at the corner in
+    // [-90°, 270°), > 0 outside.
+    double theta = ang(C - P), alpha = ang(p - P), beta;
+    double gamma;
+    if (side_ > 0) {
+        if (theta < alpha) theta = stored(theta + 2 * kPiL);
+        beta = stored((theta - alpha) - kHalfPiL);
+        gamma = kHalfPi;
+    } else {
+        if (alpha < theta) alpha = stored(alpha + 2 * kPiL);
+        beta = stored((alpha - theta) - kHalfPiL);
+        gamma = -kHalfPi;
+    }
+    const Vec2 e = p + r_ * u(alpha + gamma);
+    const Vec2 mid = P + r_ * u(alpha + gamma);  // compensated start of the new move
     const bool front_arc = !queue_.empty() && queue_.front().m.is_arc();
-    bool concave = beta < -small || beta > kPi + small;
-    if (!concave && beta > kPi - small && front_arc && !tool_inside(side_, turn_of(queue_.front().m)))
+    bool concave = beta < -small || beta > kPiL + small;
+    if (!concave && beta > kPiL - small && front_arc && !tool_inside(side_, turn_of(queue_.front().m)))
         concave = true;  // 180 degrees off an arc the tool was outside of ("h" shape)
 
     const Element2 next = Element2::line(mid, e);  // the new move's equidistant
@@ -235,18 +243,18 @@ void RadiusCompensation::next_line(const Motion& m) {
         endpoint_ = C;
         endpoint_valid_ = true;
     } else if (!front_arc) {  // inside corner after a line: pull it back to the intersection
-        const double halfcorner = (beta + kPi) / 2;
+        const double halfcorner = stored((beta + kPiL) / 2.0);
         if (halfcorner == 0.0)
             fail("comp_zero_corner", "Zero degree inside corner is invalid for cutter compensation", m.line);
         const double retreat = r_ / std::tan(halfcorner);
-        move_end_and_flush(C + retreat * u(ang(q) + (side_ > 0 ? kHalfPi : -kHalfPi)), m.line, true, &next);
+        move_end_and_flush(C + retreat * u(theta + gamma), m.line, true, &next);
     } else {  // inside corner after an arc: intersect the compensated circle and the new line
         const Motion& prev = queue_.front().m;
         const int pturn = turn_of(prev);
         const Vec2 cp = plane2(prev.center);
-        const double rho = (cp - plane2(prev.end)).norm();
+        const double rho = dist(cp, plane2(prev.end));
         const double base = ang(p - P);
-        const double th = pturn > 0 ? base + kHalfPi : base - kHalfPi;
+        const double th = stored(pturn > 0 ? base + kHalfPiL : base - kHalfPiL);
         const double phi = ang(cp - P);
         const bool inside = tool_inside(side_, pturn);
         const double d = (inside ? rho + r_ : rho - r_) * std::cos(th - phi);
@@ -256,7 +264,7 @@ void RadiusCompensation::next_line(const Motion& m) {
         } else {
             const double ac =
                 inside ? (pturn > 0 ? -std::acos(l) : std::acos(l)) : (pturn > 0 ? std::acos(l) : -std::acos(l));
-            move_end_and_flush(cp + rho * u(ac + th + kPi), m.line, true, &next);
+            move_end_and_flush(cp + rho * u(stored(ac + th + kPiL)), m.line, true, &next);
         }
     }
     current_ = hold(m, p - P, 0).m.end = with_plane(m.end, e);
@@ -269,20 +277,23 @@ void RadiusCompensation::next_arc(const Motion& m) {
     const Vec2 P = plane2(program_), C = plane2(current_), p = plane2(m.end), centre = plane2(m.center);
     const int turn = turn_of(m);
     const bool ccw = turn > 0;
-    const double rho0 = (centre - p).norm();
+    const double rho0 = dist(centre, p);
     non_plane_run_ = 0;
     watch_programmed(Element2::arc(P, p, centre, ccw ? 1 : -1, m.turns), m.line);
-    // LinuxCNC's angles: theta, the end direction of the previous element (the tool's offset
-    // C - P turned back by 90°); alpha, the arc's start direction (delta, towards its centre,
-    // turned by 90°); beta = theta - alpha (mirrored on the right) in [-90°, 270°], the turn
-    // at the corner. Worked out as one angle between vectors, without sines.
-    const Vec2 q = C - P, towards = unit(centre - P);
-    const Vec2 end_dir = side_ > 0 ? Vec2(-left_normal(q)) : left_normal(q);            // u(theta)
-    const Vec2 start_dir = ccw ? Vec2(-left_normal(towards)) : left_normal(towards);  // u(alpha)
-    double beta = side_ > 0 ? ccw_angle(start_dir, end_dir) : ccw_angle(end_dir, start_dir);
-    if (beta > 1.5 * kPi) beta -= 2 * kPi;
+    // LinuxCNC's convert_arc_comp2, operation for operation: theta, the end direction of the
+    // previous element (the tool's offset C - P turned back by 90°); alpha, the arc's start
+    // direction (delta, towards its centre, turned by 90°); beta = theta - alpha (mirrored on
+    // the right) brought into [-90°, 270°], the turn at the corner.
+    double theta = ang(C - P);
+    theta = stored(side_ > 0 ? theta - kHalfPiL : theta + kHalfPiL);
+    double delta = ang(centre - P);
+    const double alpha = stored(ccw ? delta - kHalfPiL : delta + kHalfPiL);
+    double beta = side_ > 0 ? theta - alpha : alpha - theta;
+    beta = beta > 1.5L * kPiL ? stored(beta - 2 * kPiL) : (beta < -kHalfPiL ? stored(beta + 2 * kPiL) : beta);
     const bool inside = tool_inside(side_, turn);
+    double gamma;  // the direction the arc's end moves in
     if (inside) {
+        gamma = ang(centre - p);
         if (rho0 <= r_) {
             if (gouge_ != GougeReaction::skip) fail("comp_arc_too_small", rules.messages.arc_too_small, m.line);
             // The tool does not fit into the arc: leave it out, the next element decides.
@@ -290,12 +301,13 @@ void RadiusCompensation::next_arc(const Motion& m) {
             program_ = m.end;
             return;
         }
+    } else {
+        gamma = ang(p - centre);
+        delta = stored(delta + kPiL);
     }
-    // The arc's equidistant: its ends moved by r along the radius (towards the centre when
-    // the tool is inside).
-    const Vec2 e = p + r_ * (inside ? unit(centre - p) : unit(p - centre));
-    const Vec2 mid = P + r_ * (inside ? towards : Vec2(-towards));  // compensated start of the arc
-    const bool concave = beta < -small || beta > kPi + small || (std::fabs(beta - kPi) < small && !inside);
+    const Vec2 e = p + r_ * u(gamma);
+    const Vec2 mid = P + r_ * u(delta);  // compensated start of the arc
+    const bool concave = beta < -small || beta > kPiL + small || (std::fabs(beta - kPiL) < small && !inside);
     const bool front_arc = !queue_.empty() && queue_.front().m.is_arc();
     const Element2 next = Element2::arc(mid, e, centre, ccw ? 1 : -1, m.turns);  // the arc's equidistant
     if (open_corner(m, mid)) {
@@ -316,24 +328,23 @@ void RadiusCompensation::next_arc(const Motion& m) {
     if (close_open_entry(mid)) {
         // the entry block already ends at the arc's start
     } else if (concave && !front_arc) {  // inside corner after a line
-        const double y = rho0 * std::sin(beta - kHalfPi);
+        const double y = stored(rho0 * std::sin(beta - kHalfPiL));  // sin of a long double
         const double dist = inside ? rho0 - r_ : rho0 + r_;
         const double l = inside ? (y + r_) / dist : (y - r_) / dist;
         if (l > 1 || l < -1) {
             no_intersection(next, m.line, rules.messages.gouge_arc);
         } else {
-            const double theta = ang(q) + (side_ > 0 ? -kHalfPi : kHalfPi);
             const double ac = inside ? (ccw ? theta + std::asin(l) : theta - std::asin(l))
-                                     : (ccw ? theta + kPi - std::asin(l) : theta + kPi + std::asin(l));
+                                     : stored(ccw ? theta + kPiL - std::asin(l) : theta + kPiL + std::asin(l));
             move_end_and_flush(centre + dist * u(ac), m.line, true, &next);
         }
     } else if (concave) {  // inside corner after an arc: intersect the two compensated circles
         const Motion& prev = queue_.front().m;
         const int pturn = turn_of(prev);
         const Vec2 pc = plane2(prev.center);
-        const double rp = (pc - plane2(prev.end)).norm();
+        const double rp = dist(pc, plane2(prev.end));
         const double rn = inside ? rho0 - r_ : rho0 + r_;
-        const double dcc = (pc - centre).norm();
+        const double dcc = dist(pc, centre);
         // Concentric arcs, compared exactly as LinuxCNC does (in inch programs its inch
         // arithmetic and toolcomp's millimetres can round differently: message only).
         if (rp == 0 || dcc == 0)

@@ -10,6 +10,16 @@ namespace toolcomp::radius_math {
 
 constexpr double kHalfPi = kPi / 2;
 
+// LinuxCNC writes its angle constants as long doubles (M_PIl, M_PI_2l): an expression with one
+// of them is worked out in long double and rounded where it is stored in a double. The joints
+// repeat that operation for operation (`stored`): at an exactly tangent concave corner the
+// verdict, reached or gouging, turns on the last bit of the corner angle.
+constexpr long double kPiL = 3.141592653589793238462643383279502884L;
+constexpr long double kHalfPiL = kPiL / 2;
+inline double stored(long double x) { return static_cast<double>(x); }
+// LinuxCNC's distances between two points (hypot, not the square root of the squares).
+inline double dist(const Vec2& a, const Vec2& b) { return std::hypot(a.x() - b.x(), a.y() - b.y()); }
+
 inline double ang(const Vec2& v) { return std::atan2(v.y(), v.x()); }
 inline Vec2 u(double phi) { return {std::cos(phi), std::sin(phi)}; }
 // u(ang(v)) without the angle: v's direction ((1, 0) for the zero vector, as atan2(0, 0) = 0).
