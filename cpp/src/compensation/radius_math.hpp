@@ -22,20 +22,6 @@ inline double dist(const Vec2& a, const Vec2& b) { return std::hypot(a.x() - b.x
 
 inline double ang(const Vec2& v) { return std::atan2(v.y(), v.x()); }
 inline Vec2 u(double phi) { return {std::cos(phi), std::sin(phi)}; }
-// u(ang(v)) without the angle: v's direction ((1, 0) for the zero vector, as atan2(0, 0) = 0).
-// The square root of the squared length unless that under- or overflows (then hypot).
-inline Vec2 unit(const Vec2& v) {
-    const double n2 = v.squaredNorm();
-    const double n = n2 > 1e-290 && n2 < 1e290 ? std::sqrt(n2) : std::hypot(v.x(), v.y());
-    return n > 0 ? Vec2(v / n) : Vec2(1, 0);
-}
-// The angle from a to b, anticlockwise, in [0, 2π): ang(b) - ang(a) brought into that range,
-// with one atan2 (a and b of moderate size: the products must not overflow).
-inline double ccw_angle(const Vec2& a, const Vec2& b) {
-    const double t = std::atan2(cross2(a, b), a.dot(b));
-    return t < 0 ? t + 2 * kPi : t;
-}
-
 // LinuxCNC's turn count of an arc: ±1 for less than a full turn, ±(n+1) with n extra turns.
 // (A count saturated at INT_MAX by int_value stays there.)
 inline int turn_of(const Motion& m) {
@@ -43,18 +29,19 @@ inline int turn_of(const Motion& m) {
     return m.kind == MotionKind::arc_ccw ? n : -n;
 }
 
-// Signed swept angle from s to e about c for a turn count.
-// LinuxCNC takes it as ang(e - c) - ang(s - c), brought into (0, 2π] anticlockwise and
-// [-2π, 0) clockwise (the same ends: a full turn); here with one atan2.
+// Signed swept angle from s to e about c for a turn count: LinuxCNC's find_turn, operation
+// for operation (the difference of two atan2, a full turn added as a long double where the end
+// is not beyond the start: an end on the start sweeps a full turn in its arithmetic, whatever
+// the last bits of the two points).
 inline double find_turn(const Vec2& s, const Vec2& c, int turn, const Vec2& e) {
     if (turn == 0) return 0;
-    const Vec2 a = unit(s - c), b = unit(e - c);
+    double alpha = ang(s - c), beta = ang(e - c);
     if (turn > 0) {
-        const double t = ccw_angle(a, b);
-        return (t == 0 ? 2 * kPi : t) + (static_cast<double>(turn) - 1) * 2 * kPi;  // no int overflow
+        if (beta <= alpha) beta = stored(beta + 2 * kPiL);
+        return stored((beta - alpha) + (turn - 1) * (2 * kPiL));
     }
-    const double t = ccw_angle(b, a);
-    return -(t == 0 ? 2 * kPi : t) + (static_cast<double>(turn) + 1) * 2 * kPi;
+    if (alpha <= beta) alpha = stored(alpha + 2 * kPiL);
+    return stored((beta - alpha) + (turn + 1) * (2 * kPiL));
 }
 
 // The tool is inside the arc (its equidistant is the smaller circle).

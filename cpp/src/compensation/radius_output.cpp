@@ -140,7 +140,7 @@ void RadiusCompensation::move_end_and_flush(const Vec2& x, int line, bool check,
         const Motion& m = h.m;
         if (m.is_arc()) {
             const Vec2 c = plane2(m.center);
-            const double r1 = (plane2(m.end) - c).norm(), r2 = (x - c).norm();  // program units
+            const double r1 = dist(plane2(m.end), c), r2 = dist(x, c);  // program units
             if (std::fabs(r1 - r2) > 0.01) {
                 char buf[256];
                 std::snprintf(buf, sizeof buf, rules.messages.arc_mismatch.c_str(), r1, r2);
