@@ -42,3 +42,19 @@ def test_exactly_tangent_concave_line_to_arc(name):
     assert path.end[0][:2] == pytest.approx(want, abs=1e-7)
     assert path.end[0][:2] == pytest.approx(path.start[1][:2], abs=1e-12)
     assert path.end[1].tolist() == pytest.approx([*want, 0], abs=1e-12)
+
+
+
+@pytest.mark.parametrize("n", range(8))
+def test_a_tangent_corner_at_a_slant_is_decided_in_long_double(n):
+    # 3-4-5 slants, tool radius half the arc's: l = 1 in exact arithmetic. LinuxCNC takes the
+    # sine of the long double beta - M_PI_2l and refuses the first six (l = 1 + 2e-16; with a
+    # double sine toolcomp ran them) and runs the last two (verdicts of LinuxCNC's gcode module).
+    prog = COMP / f"tangent_concave_line_arc_slant_{n}.ngc"
+    if n <= 5:
+        with pytest.raises(tc.CompensationError) as e:
+            tc.run(str(prog))
+        assert (e.value.line, e.value.message) == (
+            6, "Arc move in concave corner cannot be reached by the tool without gouging")
+    else:
+        assert list(tc.run(str(prog)).path.kind) == [tc.LINE, tc.ARC_CCW if "G3" in prog.read_text() else tc.ARC_CW]
