@@ -60,15 +60,15 @@ void RadiusCompensation::entry_line(const Motion& m) {
 void RadiusCompensation::entry_arc(const Motion& m) {
     const Vec2 c = plane2(m.start), p = plane2(m.end), centre = plane2(m.center);
     const int turn = turn_of(m);
-    if (profile_.radius.entry_length_check && (p - c).norm() <= r_)
+    if (profile_.radius.entry_length_check && dist(p, c) <= r_)
         fail("comp_entry_too_short", profile_.radius.messages.entry_arc_too_short, m.line);
-    if ((centre - c).norm() <= r_ && tool_inside(side_, turn))
+    if (dist(centre, c) <= r_ && tool_inside(side_, turn))
         fail("comp_arc_too_small", profile_.radius.messages.arc_too_small, m.line);
     const double gamma = tool_inside(side_, turn) ? ang(centre - p) : ang(p - centre);
     const Vec2 e = p + r_ * u(gamma);
     // New centre: on the line from the compensated end to the programmed centre, equally far
     // from the start (the uncompensated current point) and the compensated end.
-    const double b_len = (c - e).norm() / 2;
+    const double b_len = dist(c, e) / 2.0;  // LinuxCNC's convert_arc_comp1, its arithmetic
     const double ab = ang(centre - e);
     const double a = ang(c - e) - ab;
     if (std::fabs(std::cos(a)) < 1e-6) fail("comp_arc_too_small", profile_.radius.messages.arc_too_small, m.line);
