@@ -44,7 +44,7 @@ void RadiusCompensation::entry_line(const Motion& m) {
         fail("comp_entry_too_short", profile_.radius.messages.entry_too_short, m.line);
     // Perpendicular to the entry move itself, at its programmed end (LinuxCNC's
     // convert_straight_comp1, its arithmetic).
-    const double alpha = stored(ang(p - c) + (side_ > 0 ? kPiL / 2. : -kPiL / 2.));
+    const double alpha = stored(ang(p - c) + (side_ > 0 ? kHalfPiL : -kHalfPiL));
     const Vec2 e = p + r_ * u(alpha);
     endpoint_ = c;
     endpoint_valid_ = true;

@@ -219,8 +219,9 @@ void RadiusCompensation::next_line(const Motion& m) {
         beta = stored((alpha - theta) - kHalfPiL);
         gamma = -kHalfPi;
     }
-    const Vec2 e = p + r_ * u(alpha + gamma);
-    const Vec2 mid = P + r_ * u(alpha + gamma);  // compensated start of the new move
+    const Vec2 offset = r_ * u(alpha + gamma);  // the tool's offset along the new move
+    const Vec2 e = p + offset;
+    const Vec2 mid = P + offset;  // compensated start of the new move
     const bool front_arc = !queue_.empty() && queue_.front().m.is_arc();
     bool concave = beta < -small || beta > kPiL + small;
     if (!concave && beta > kPiL - small && front_arc && !tool_inside(side_, turn_of(queue_.front().m)))
@@ -329,14 +330,14 @@ void RadiusCompensation::next_arc(const Motion& m) {
         // the entry block already ends at the arc's start
     } else if (concave && !front_arc) {  // inside corner after a line
         const double y = stored(rho0 * std::sin(beta - kHalfPiL));  // sin of a long double
-        const double dist = inside ? rho0 - r_ : rho0 + r_;
-        const double l = inside ? (y + r_) / dist : (y - r_) / dist;
+        const double from_centre = inside ? rho0 - r_ : rho0 + r_;  // the arc's equidistant
+        const double l = inside ? (y + r_) / from_centre : (y - r_) / from_centre;
         if (l > 1 || l < -1) {
             no_intersection(next, m.line, rules.messages.gouge_arc);
         } else {
             const double ac = inside ? (ccw ? theta + std::asin(l) : theta - std::asin(l))
                                      : stored(ccw ? theta + kPiL - std::asin(l) : theta + kPiL + std::asin(l));
-            move_end_and_flush(centre + dist * u(ac), m.line, true, &next);
+            move_end_and_flush(centre + from_centre * u(ac), m.line, true, &next);
         }
     } else if (concave) {  // inside corner after an arc: intersect the two compensated circles
         const Motion& prev = queue_.front().m;

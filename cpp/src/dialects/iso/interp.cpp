@@ -176,9 +176,9 @@ void Interp::run_blocks() {
 }
 
 void Interp::check_words(const BlockWords& bw, int motion_to_be) {
-    constexpr auto bit = letter_bit;
-    constexpr std::uint32_t kChecked = bit('D') | bit('E') | bit('H') | bit('I') | bit('J') | bit('K') | bit('L') |
-                                       bit('P') | bit('Q') | bit('R');
+    constexpr std::uint32_t kChecked = letter_bit('D') | letter_bit('E') | letter_bit('H') | letter_bit('I') |
+                                       letter_bit('J') | letter_bit('K') | letter_bit('L') | letter_bit('P') |
+                                       letter_bit('Q') | letter_bit('R');
     if ((bw.letters & kChecked) == 0) return;  // none of the words that need a code to use them
     const int g0 = bw.g[g_nonmodal];
     const bool arc = motion_to_be == 20 || motion_to_be == 30;
