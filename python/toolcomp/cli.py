@@ -387,7 +387,6 @@ class CsvWriter:
         self.filename = filename
         self.rows = 0
         self._file = self._writer = None
-        self._closed = False
 
     def _open(self):
         if self._file is None:
@@ -431,12 +430,11 @@ class CsvWriter:
 
     def close(self, make=True) -> int:
         """Closes the file (made now if nothing was added, unless ``make`` is false); returns
-        the number of rows. Closing again does nothing."""
-        if make and not self._closed:
+        the number of rows."""
+        if make:
             self._open()
         if self._file is not None:
             self._file.close()
-        self._closed = True
         return self.rows
 
 
@@ -445,9 +443,10 @@ def write_csv(path, filename):
     w = CsvWriter(filename)
     try:
         w.add(path)
-    finally:
-        n = w.close()
-    return n
+    except BaseException:
+        w.close(make=False)
+        raise
+    return w.close()
 
 
 # ---------------------------------------------------------------------------------------
@@ -461,13 +460,14 @@ def cmd_run(args) -> int:
     try:
         out = execute(args.program, args.tools, args.dialect, args.units_table, args.search_path,
                       args.parameters, whole_path=bool(args.plot), csv=writer)
+        if writer is not None and not out.streamed:
+            writer.add(out.result.path if out.result is not None else None)
+    except BaseException:
         if writer is not None:
-            if not out.streamed:
-                writer.add(out.result.path if out.result is not None else None)
-            writer.close()
-    finally:
-        if writer is not None:
-            writer.close(make=False)  # after an exception: a file begun is closed, none is made
+            writer.close(make=False)  # a file begun is closed, none is made
+        raise
+    if writer is not None:
+        writer.close()
     summary = summarize(out)
     print(format_summary(summary))
     if args.json:

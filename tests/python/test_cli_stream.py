@@ -93,12 +93,18 @@ def test_run_csv_streamed_equals_run_csv_whole(program, capsys, tmp_path, monkey
         assert len(rows) - 1 == len(tc.run(str(program), tools=str(TOOLS)).path) > 3
 
 
-def test_a_streamed_csv_of_a_square_has_its_segments(tmp_path, capsys, monkeypatch):
+def square_csv_streamed(tmp_path, capsys, monkeypatch):
+    """run --csv of SQUARE as a stream of chunks of 2 segments: (exit code, CSV path)."""
     monkeypatch.setattr(cli_stream, "STREAM_CHUNK", 2)
     p = tmp_path / "square.ngc"
     p.write_text(SQUARE)
     out = tmp_path / "s.csv"
     code, _ = run_cli(["run", p, "--tools", TOOLS, "--csv", out], capsys, stream=True)
+    return code, out
+
+
+def test_a_streamed_csv_of_a_square_has_its_segments(tmp_path, capsys, monkeypatch):
+    code, out = square_csv_streamed(tmp_path, capsys, monkeypatch)
     assert code == 0
     import csv
 
@@ -192,10 +198,6 @@ def test_a_stream_that_stops_with_an_error_leaves_a_csv_of_its_header(tmp_path, 
                 yield chunk
 
     monkeypatch.setattr(tc, "iter_run", Breaks)
-    monkeypatch.setattr(cli_stream, "STREAM_CHUNK", 2)
-    p = tmp_path / "square.ngc"
-    p.write_text(SQUARE)
-    out = tmp_path / "s.csv"
-    code, _ = run_cli(["run", p, "--tools", TOOLS, "--csv", out], capsys, stream=True)
+    code, out = square_csv_streamed(tmp_path, capsys, monkeypatch)
     assert code == 1
     assert out.read_text().splitlines() == [",".join(cli.CSV_HEADER)]
