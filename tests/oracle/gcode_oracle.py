@@ -290,6 +290,21 @@ class TracingCollector(Collector):
         return logged
 
 
+def reset_interpreter(gcode, lookup, find, home: str) -> None:
+    """Parse a program that cancels the tool length offset and goes to 0, so that the next
+    program starts as in a fresh process: state survives gcode.parse's re-initialisation
+    (gcodemodule.cc keeps the last STRAIGHT_* end in globals, the interpreter its tool length
+    offset; a G49 in the next program re-expresses the position by the previous offset, and a
+    first move that omits an axis would start where the previous program ended). For batches
+    of programs in one process; ``home``: a private directory for the program and its .var."""
+    reset = os.path.join(home, "reset.ngc")
+    if not os.path.exists(reset):
+        with open(reset, "w") as f:
+            f.write("G21 G40 G90 G17\nG49\nG0 X0 Y0 Z0 A0 B0 C0\nM2\n")
+        open(os.path.join(home, "reset.var"), "w").close()
+    gcode.parse(reset, Collector(lookup, find, [], os.path.join(home, "reset.var")), "G21", "F0")
+
+
 def parse_program(program: str, table: str | None) -> dict:
     """Run ``program`` through gcode.parse (in this process) and return the JSON-able result.
 

@@ -90,14 +90,6 @@ class Collector(go.Collector):
         return self.feed * go.MM_PER_INCH
 
 
-# State survives gcode.parse's re-initialisation: the interpreter keeps its tool length offset
-# and the module the last move's end (see test_oracle_macros.py). Each program starts after a
-# reset program that cancels the offset and goes to 0, as in a fresh process.
-RESET = os.path.join(home, "reset.ngc")
-with open(RESET, "w") as f:
-    f.write("G21 G40 G90 G17\nG49\nG0 X0 Y0 Z0 A0 B0 C0\nM2\n")
-open(os.path.join(home, "reset.var"), "w").close()
-
 loaded = None
 out = []
 for program, table in jobs:
@@ -105,7 +97,7 @@ for program, table in jobs:
         if load(os.fsencode(table), None) != 0:
             raise RuntimeError("tooldata_load(%s) failed" % table)
         loaded = table
-    gcode.parse(RESET, go.Collector(lookup, find, [], os.path.join(home, "reset.var")), "G21", "F0")
+    go.reset_interpreter(gcode, lookup, find, home)  # as in a fresh process
     var = os.path.join(home, "oracle.var")
     open(var, "w").close()                       # fresh parameters for every program
     source = open(program, errors="replace").read().splitlines()

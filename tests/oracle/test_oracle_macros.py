@@ -126,7 +126,6 @@ def ini(subdir):
 
 
 _offset_dirs = {}
-open(os.path.join(home, "reset.var"), "w").close()
 
 
 def offset_copy(subdir):
@@ -161,19 +160,9 @@ class Collector(go.Collector):
         self.cols.setdefault("emit_comp", []).append(side)
 
 
-RESET = os.path.join(home, "reset.ngc")
-with open(RESET, "w") as f:
-    f.write("G21 G40 G90 G17\nG49\nG0 X0 Y0 Z0 A0 B0 C0\nM2\n")
-
-
 def parse(program, subdir):
-    # State survives gcode.parse's re-initialisation: gcodemodule.cc keeps the last STRAIGHT_*
-    # end in globals (GET_EXTERNAL_POSITION_*), and the interpreter keeps its tool length offset
-    # (a G49 in the next program re-expresses the position by the previous program's G43 offset).
-    # A program whose first move omits an axis would start where the previous one of the batch
-    # ended. Cancel the offset, go to 0: as in a fresh process (the spindle tool does not leak:
-    # it is the Collector's).
-    gcode.parse(RESET, go.Collector(lookup, find, [], os.path.join(home, "reset.var")), "G21", "F0")
+    # As in a fresh process (the spindle tool does not leak: it is the Collector's).
+    go.reset_interpreter(gcode, lookup, find, home)
     os.environ["INI_FILE_NAME"] = ini(subdir)
     var = os.path.join(home, "oracle.var")
     open(var, "w").close()                       # fresh parameters for every program
