@@ -6,7 +6,9 @@
 
 #include <climits>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
+#include <limits>
 
 #include "compensation/radius_math.hpp"
 
@@ -64,4 +66,54 @@ TEST_CASE("the long-double constants are M_PIl and M_PI_2l, stored rounded to ne
     CHECK(theta - kHalfPi == 0.6527795896033926);
     CHECK(dist(Vec2(3, 0), Vec2(0, 4)) == 5);
     CHECK(dist(Vec2(1e300, 0), Vec2(-1e300, 0)) == 2e300);  // no overflow (hypot)
+}
+
+// LinuxCNC's y = rho * sin(beta - M_PI_2l) at a concave line->arc corner: sinl of a long
+// double, stored in a double. scaled_sinl must give that double bit for bit.
+namespace {
+double linuxcnc_y(double rho, long double x) { return static_cast<double>(rho * ::sinl(x)); }
+bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+}  // namespace
+
+TEST_CASE("scaled_sinl: bit for bit LinuxCNC's rho * sinl(beta - M_PI_2l) over the corner's range") {
+    std::uint64_t state = 0x9E3779B97F4A7C15ull;  // splitmix64: the same samples on every run
+    const auto next = [&state] {
+        std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
+        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+        return z ^ (z >> 31);
+    };
+    const auto unit = [&next] { return static_cast<double>(next() >> 11) * 0x1p-53; };
+    int mismatches = 0;
+    const auto check = [&](double rho, long double x) {
+        if (!same_bits(scaled_sinl(rho, x), linuxcnc_y(rho, x))) {
+            ++mismatches;
+            UNSCOPED_INFO("rho " << rho << " x " << static_cast<double>(x));
+        }
+    };
+    // beta anywhere in LinuxCNC's [-90°, 270°], a radius from 1 µm to 10 m.
+    for (int i = 0; i < 200000; ++i) {
+        const double beta = -kHalfPi + 2 * kPi * unit();
+        check(std::exp(std::log(1e-3) + std::log(1e7) * unit()), beta - kHalfPiL);
+    }
+    // Corners a few ulps from straight, reversed and square, where the sine cancels or is 1.
+    for (const double c : {-kHalfPi, 0.0, kHalfPi, kPi, 1.5 * kPi}) {
+        double b = c;
+        for (int k = 0; k < 64; ++k) b = std::nextafter(b, -10.0);
+        for (int k = 0; k < 128; ++k, b = std::nextafter(b, 10.0)) {
+            check(5.0, b - kHalfPiL);
+            check(1.0 + unit(), b - kHalfPiL);
+        }
+    }
+    // Long doubles next to +-pi/2 and +-pi themselves (the closest a long double gets to a
+    // multiple of pi/2), and to pi/4 and 3pi/4 where the reduction changes its quadrant.
+    for (const long double c : {kHalfPiL, kPiL, -kHalfPiL, -kPiL, kPiL / 4, 3 * kPiL / 4, -3 * kPiL / 4}) {
+        long double x = c;
+        for (int k = 0; k < 200; ++k) x = std::nextafter(x, -10.0L);
+        for (int k = 0; k < 400; ++k, x = std::nextafter(x, 10.0L)) check(1.0 + 99 * unit(), x);
+    }
+    CHECK(mismatches == 0);
+    // Outside the reduced range and NaN: sinl's own answer.
+    CHECK(same_bits(scaled_sinl(2.0, 10.0L), linuxcnc_y(2.0, 10.0L)));
+    CHECK(std::isnan(scaled_sinl(2.0, std::numeric_limits<long double>::quiet_NaN())));
 }

@@ -329,7 +329,7 @@ void RadiusCompensation::next_arc(const Motion& m) {
     if (close_open_entry(mid)) {
         // the entry block already ends at the arc's start
     } else if (concave && !front_arc) {  // inside corner after a line
-        const double y = stored(rho0 * std::sin(beta - kHalfPiL));  // sin of a long double
+        const double y = scaled_sinl(rho0, beta - kHalfPiL);  // stored(rho0 * sinl(...))
         const double from_centre = inside ? rho0 - r_ : rho0 + r_;  // the arc's equidistant
         const double l = inside ? (y + r_) / from_centre : (y - r_) / from_centre;
         if (l > 1 || l < -1) {

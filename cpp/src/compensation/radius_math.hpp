@@ -17,6 +17,9 @@ constexpr double kHalfPi = kPi / 2;
 constexpr long double kPiL = 3.141592653589793238462643383279502884L;
 constexpr long double kHalfPiL = kPiL / 2;
 inline double stored(long double x) { return static_cast<double>(x); }
+// stored(rho * sinl(x)) bit for bit, for the corner's |x| <= 5pi/4 without sinl's slow
+// argument reduction (radius_sine.cpp).
+double scaled_sinl(double rho, long double x);
 // LinuxCNC's distances between two points (hypot, not the square root of the squares).
 inline double dist(const Vec2& a, const Vec2& b) { return std::hypot(a.x() - b.x(), a.y() - b.y()); }
 
