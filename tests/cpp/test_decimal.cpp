@@ -70,4 +70,9 @@ TEST_CASE("expr::read_number: signs, digits and EX exponents as from_chars reads
     pos = 0;
     CHECK_FALSE(toolcomp::expr::read_number("1EX999", pos, v, true));  // out of range
     CHECK(pos == 0);
+    CHECK(toolcomp::expr::read_number("-1.25.5", pos, v, true));  // a second point ends the number
+    CHECK((v == -1.25 && pos == 5));
+    pos = 0;
+    CHECK(toolcomp::expr::read_number("0.1234567890123456789Y", pos, v, false));  // past 15 digits: from_chars
+    CHECK((v == 0.1234567890123456789 && pos == 21));
 }

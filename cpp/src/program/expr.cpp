@@ -406,6 +406,16 @@ bool read_number(std::string_view t, std::size_t& pos, double& value, bool ex_ex
     bool negative = false;
     if (p < t.size() && (t[p] == '-' || t[p] == '+')) negative = t[p++] == '-';
     const std::size_t first = p;
+    // Digits with at most one point: one pass gives the end and, for up to 15 digits, the
+    // value (a second point ends the number, as a non-digit does).
+    const DecimalRun run = scan_decimal_run(t.data(), first, t.size());
+    const bool ex = ex_exponent && run.points <= 1 && run.end + 1 < t.size() && ascii_upper(t[run.end]) == 'E' &&
+                    ascii_upper(t[run.end + 1]) == 'X';
+    if (run.plain() && !ex) {
+        value = negative ? -decimal_value(run.m, run.frac) : decimal_value(run.m, run.frac);
+        pos = run.end;
+        return true;
+    }
     bool digits = false;
     while (p < t.size() && ascii_digit(t[p])) ++p, digits = true;
     if (p < t.size() && t[p] == '.') {

@@ -128,7 +128,35 @@ private:
         return i_ < s_.size() && s_[i_] == '=' && (i_ + 1 >= s_.size() || s_[i_ + 1] != '=');
     }
 
+    // The common CAM word, an address letter and its digits ("X95", "Y2.000", "G1"), taken as
+    // the general path in statement() takes it, without building the name first. Not when
+    // the name goes on (X1A), or a call, an index or an assignment follows it.
+    bool plain_word() {
+        const std::size_t start = i_;
+        if (!ascii_alpha(s_[start]) || start + 1 >= s_.size() || !is_digit(s_[start + 1])) return false;
+        std::size_t j = start + 2;
+        while (j < s_.size() && is_digit(s_[j])) ++j;
+        if (j < s_.size() && ident_char(s_[j])) return false;
+        std::size_t k = j;
+        while (k < s_.size() && (s_[k] == ' ' || s_[k] == '\t')) ++k;
+        if (k < s_.size() && (s_[k] == '(' || s_[k] == '[' || (s_[k] == '=' && (k + 1 >= s_.size() || s_[k + 1] != '='))))
+            return false;
+        std::size_t p = start + 1;
+        double v = 0;
+        if (!expr::read_number(s_, p, v, false)) return false;  // the general path reports it
+        Token& w = prog_.new_token();
+        w.column = col();
+        w.key.assign(1, ascii_upper(s_[start]));
+        w.value = v;
+        w.has_value = true;
+        w.text = w.key;
+        w.text.append(s_.substr(start + 1, j - start - 1));
+        i_ = p;
+        return true;
+    }
+
     void statement() {
+        if (plain_word()) return;
         const int column = col();
         if (!ident_start(s_[i_])) error(std::string("Unexpected '") + s_[i_] + "'");
         const std::size_t start = i_;
