@@ -69,3 +69,17 @@ def test_q_parameter_numbers_have_at_most_five_digits():
 def test_circle_of_radius_zero_is_arc_end_incorrect(body):
     code, line, _ = error_of(body)
     assert (code, line) == ("arc_end_incorrect", 6)
+
+
+def test_numbers_with_a_decimal_comma_or_a_leading_point():
+    # The TNC takes a comma for the point, and a number may start with either.
+    path = tc.run(tc.Program.parse(pgm("L X+1,5 Y+,25\nL X-.75 Y+2."), dialect="heidenhain")).nominal
+    assert [tuple(e[:2]) for e in path.end[-2:]] == [(1.5, 0.25), (-0.75, 2.0)]
+
+
+@pytest.mark.parametrize("body, shown", [("L X+1.2.3", "1.2.3"), ("L X+1,2,3", "1.2.3"), ("L X+.1.", "0.1.")])
+def test_bad_number_is_an_error_with_its_text(body, shown):
+    with pytest.raises(tc.Error) as e:
+        tc.run(tc.Program.parse(pgm(body), dialect="heidenhain"))
+    assert (e.value.code, e.value.line) == ("bad_number_format", 5)
+    assert f"Bad number '{shown}'" in e.value.message

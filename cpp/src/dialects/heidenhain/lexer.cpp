@@ -120,7 +120,6 @@ private:
             t.key.append(s_.substr(i_, j - i_));
             i_ = j;
         }
-        std::string num;
         int sign = 1;
         bool have_sign = false;
         if (i_ < s_.size() && (s_[i_] == '+' || s_[i_] == '-')) {
@@ -142,18 +141,24 @@ private:
                 fail("bad_word", "Unexpected character '" + std::string(1, s_[i_]) + "'", col());
             return;
         }
-        while (i_ < s_.size() && (ascii_digit(s_[i_]) || s_[i_] == '.' || s_[i_] == ',')) {
-            num.push_back(s_[i_] == ',' ? '.' : s_[i_]);
-            ++i_;
+        const std::size_t num_begin = i_;
+        bool comma = false;
+        while (i_ < s_.size() && (ascii_digit(s_[i_]) || s_[i_] == '.' || s_[i_] == ',')) comma |= s_[i_++] == ',';
+        // The number's text as written; a decimal comma or a leading point: rewritten.
+        std::string_view num(s_.data() + num_begin, i_ - num_begin);
+        std::string rewritten;
+        if (comma || (!num.empty() && num.front() == '.')) {
+            if (num.front() == '.' || num.front() == ',') rewritten = "0";
+            for (char c : num) rewritten.push_back(c == ',' ? '.' : c);
+            num = rewritten;
         }
         if ((t.is("REP") || t.key.empty()) && i_ < s_.size() && s_[i_] == '/')  // REP 2/2: the count of passes left
             while (i_ < s_.size() && !blank(s_[i_])) ++i_;
         if (i_ < s_.size() && !blank(s_[i_]) && s_[i_] != ';')
             fail("bad_word", "Unexpected character '" + std::string(1, s_[i_]) + "'", col());
         if (!num.empty()) {
-            if (num.front() == '.') num.insert(num.begin(), '0');
             double v = 0;
-            if (!parse_decimal(num, v)) fail("bad_number_format", "Bad number '" + num + "'", t.column);
+            if (!parse_decimal(num, v)) fail("bad_number_format", "Bad number '" + std::string(num) + "'", t.column);
             t.value = sign * v;
             t.has_value = true;
         } else if (have_sign) {
