@@ -497,3 +497,11 @@ def test_an_error_in_a_subprogram_file_names_that_file(tmp_path):
     with pytest.raises(tc.ProgramError) as e:
         tc.run(prog, search_path=[str(tmp_path)])
     assert e.value.line == 2 and pathlib.Path(e.value.file).name == "L20.SPF"
+
+
+def test_a_block_with_many_g_functions_takes_them_all():
+    # Eight G functions in one block (more than are kept in place): G91 makes X5 Y5 a move
+    # of +5 +5 from (1, 2), G1 makes it a feed move; the next block's G90 G0 goes back.
+    p = run("T1 D1 M6\nG0 X1 Y2 Z0\nG17 G71 G94 G40 G64 G450 G91 G1 X5 Y5 F100\nG90 G0 X0\n").nominal
+    assert list(p.kind) == [0, 1, 0]
+    assert ends(p) == [(1.0, 2.0, 0.0), (6.0, 7.0, 0.0), (0.0, 7.0, 0.0)]

@@ -14,6 +14,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "toolcomp/program/source_files.hpp"
@@ -26,8 +27,10 @@ using Mat3 = Eigen::Matrix3d;
 struct Frame {
     Mat3 a = Mat3::Identity();
     Vec3 t = Vec3::Zero();
+    Mat3 inv = Mat3::Identity().inverse();  // a.inverse(), worked out once (set_inverse) for each block's invert()
     Vec3 apply(const Vec3& p) const { return a * p + t; }
-    Vec3 invert(const Vec3& q) const { return a.inverse() * (q - t); }
+    Vec3 invert(const Vec3& q) const { return inv * (q - t); }
+    void set_inverse() { inv = a.inverse(); }
 };
 
 // A program's control structures and jump targets, found once per program.
@@ -57,12 +60,37 @@ struct Value {
     int column = 0;
 };
 
+// A block's G or M functions (code, column) in their order: a few are kept in place, without
+// an allocation for each block; a block with more moves them to the heap.
+class CodeList {
+public:
+    using Item = std::pair<int, int>;
+    void emplace_back(int code, int column) {
+        if (n_ < kInline) {
+            inline_[n_++] = {code, column};
+            return;
+        }
+        if (n_ == kInline) heap_.assign(inline_.begin(), inline_.end());
+        heap_.emplace_back(code, column);
+        ++n_;
+    }
+    const Item* begin() const { return n_ <= kInline ? inline_.data() : heap_.data(); }
+    const Item* end() const { return begin() + n_; }
+    std::size_t size() const { return n_; }
+
+private:
+    static constexpr std::size_t kInline = 6;
+    std::array<Item, kInline> inline_{};
+    std::vector<Item> heap_;
+    std::size_t n_ = 0;
+};
+
 // What one block asks for, after its expressions are evaluated.
 struct BlockData {
     std::array<Value, 26> letter;  // A..Z (R is never an address)
     Value cr, ar, turn, disc, offn, rpl, i1, j1, k1, tcarr;
-    std::vector<std::pair<int, int>> g;  // code, column
-    std::vector<std::pair<int, int>> m;
+    CodeList g;  // code, column
+    CodeList m;
     std::vector<std::pair<std::string, int>> keywords;  // NORM, CDON, TRANS ..., column
     std::string tool_name;  // T="name"
     int tool_name_column = 0;

@@ -119,6 +119,7 @@ void Interp::frame_statement(const BlockData& b, const std::string& which, int c
             if (b[kAxes[i]].set) m(i, i) = -1;
         f.a = f.a * m;
     }
+    f.set_inverse();
     frame_ = f;
 }
 
