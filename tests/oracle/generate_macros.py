@@ -895,6 +895,15 @@ class _Gen:
         return words, abs(d) / 2, setup
 
     # -- shapes ------------------------------------------------------------------------------
+    def min_bulge(self) -> float:
+        """The smallest arc radius of a polygon's edges, in polygon radii. At 1 the edges are
+        one circle; just above it they meet at corners turning less than LinuxCNC's 0.05 rad,
+        which it takes as tangent: it pulls the arc's end there, and in inch refuses the few
+        0.001 rad its sweep then grows by (its inch tolerance; 0.0254 rad in mm), which this
+        model does not predict (that error: tests/programs/comp/inch_s1_arc_sweep_growth.ngc).
+        From 1.1 on a corner turns at least 0.066 rad for 3 to 9 edges."""
+        return 1.1 if self.inch else 1.0
+
     def polygon(self, comp: bool, loop: str = None, arcs: str = None, centre_args: bool = False):
         """A regular polygon (or its vertices on a circle with some skipped) drawn by a loop.
 
@@ -973,7 +982,7 @@ class _Gen:
         if arcs is None:
             body_move = [Move([("G1", ""), ("X", vx(ang_i)), ("Y", vy(ang_i))])]
         elif arcs == "R":
-            st, par_, arv = self.setp(r_mm * k * rnd.uniform(1.0, 2.5))
+            st, par_, arv = self.setp(r_mm * k * rnd.uniform(self.min_bulge(), 2.5))
             pre.append(st)
             body_move = [Move([(arc_code, ""), ("X", vx(ang_i)), ("Y", vy(ang_i)), ("R", par_)])]
         elif arcs == "circle":
@@ -987,7 +996,7 @@ class _Gen:
         else:                                             # IJ: centre of a flatter arc
             ppx, ppy, pnx, pny = self.par(), self.par(), self.par(), self.par()
             pmx, pmy, ps, ph, pccx, pccy = (self.par(numbered_ok=False) for _ in range(6))
-            st, par_, arv = self.setp(r_mm * k * rnd.uniform(1.0, 2.5))
+            st, par_, arv = self.setp(r_mm * k * rnd.uniform(self.min_bulge(), 2.5))
             pre += [st, Assign([(ppx, vx(pa0)), (ppy, vy(pa0))])]
             body_move = [
                 Assign([(pnx, vx(ang_i)), (pny, vy(ang_i))]),
