@@ -9,7 +9,7 @@
 // (|y| <= pi/4: their kernels, no reduction) within about 2 ulp of glibc's sinl(x), which is
 // itself within 1 ulp of the sine. The product is rounded to double: unless the long-double
 // value lies within 2^-58 (relative) of a rounding boundary between two doubles, the double is
-// the one LinuxCNC stores, bit for bit. Near a boundary (about 1 call in 16), sinl itself.
+// the one LinuxCNC stores, bit for bit. Near a boundary (3.4 % of random corners), sinl itself.
 #include <cmath>
 
 #include "radius_math.hpp"
