@@ -901,7 +901,7 @@ class _Gen:
         which it takes as tangent: it pulls the arc's end there, and in inch refuses the few
         0.001 rad its sweep then grows by (its inch tolerance; 0.0254 rad in mm), which this
         model does not predict (that error: tests/programs/comp/inch_s1_arc_sweep_growth.ngc).
-        From 1.1 on a corner turns at least 0.066 rad for 3 to 9 edges."""
+        From 1.1 on a corner turns at least 0.065 rad for 3 to 9 edges."""
         return 1.1 if self.inch else 1.0
 
     def polygon(self, comp: bool, loop: str = None, arcs: str = None, centre_args: bool = False):
