@@ -259,27 +259,11 @@ def bench_other(label, text, blocks, dialect, tools):
     del res, prog
 
 
-RUN_ONCE = """
-import sys, time
-import toolcomp as tc
-tools = tc.ToolTable.parse("T1 P1 Z50 D6\\n", "linuxcnc")
-t0 = time.perf_counter()
-tc.run(sys.argv[1], tools)
-print(time.perf_counter() - t0)
-"""
-
-
-def run_in_fresh_process(path):
-    """tc.run of a program file in a new interpreter, as a user's script meets it: its Path
-    columns in fresh memory. (In one process, the allocator keeps the 1x run's columns of up
-    to 32 MB for the next run and maps the 10x run's anew each time: warm against cold.)"""
-    out = subprocess.run([sys.executable, "-c", RUN_ONCE, path], check=True, capture_output=True, text=True)
-    return float(out.stdout.split()[-1])
-
-
 def bench_linear(n, factor):
     """Time of tc.run on a program file `factor` times as long, against the 1x file (no
-    compensation; the file is read piece by piece as it runs; each run in a new process)."""
+    compensation; the file is read piece by piece as it runs). Each run is in a new process,
+    as a user's script meets it: in one process the column cache keeps the 1x run's columns
+    warm for its next round and maps the 10x run's anew (warm against cold)."""
     with tempfile.TemporaryDirectory() as d:
         small, big = os.path.join(d, "small.ngc"), os.path.join(d, "big.ngc")
         write_program(small, n, comp=False)
@@ -287,7 +271,7 @@ def bench_linear(n, factor):
         best = {"small": float("inf"), "big": float("inf")}
         for _ in range(5):
             for name, path in (("small", small), ("big", big)):
-                best[name] = min(best[name], run_in_fresh_process(path))
+                best[name] = min(best[name], child(path, "run")["seconds"])  # a new process: fresh memory
     print(f"linearity      : {n * factor:,} blocks take {best['big'] / best['small']:.1f} x the time of {n:,} "
           f"({best['small']:.2f} s, {best['big']:.2f} s; tc.run on files, no compensation, each in a new "
           f"process; best of 5, in turn)")
