@@ -1,6 +1,6 @@
 // stored(rho * sinl(x)), LinuxCNC's `rho * sin(beta - M_PI_2l)`, without glibc's long-double
 // argument reduction. Beyond pi/4 sinl reduces through its general multi-precision kernel
-// (__kernel_rem_pio2, about 4 000 instructions a call); the joint's argument never exceeds
+// (__kernel_rem_pio2, about 1 400 instructions a call); the joint's argument never exceeds
 // 5pi/4, where a two-part pi/2 reduces it exactly enough:
 //   x - n*P1 is exact (Sterbenz: x and n*P1 are within a factor of 2 of each other),
 //   n*P2 carries pi/2 on to 2^-130, while |x - n*pi/2| >= 2.5e-20 (2^-65) for every long

@@ -27,10 +27,14 @@ using Mat3 = Eigen::Matrix3d;
 struct Frame {
     Mat3 a = Mat3::Identity();
     Vec3 t = Vec3::Zero();
-    Mat3 inv = Mat3::Identity().inverse();  // a.inverse(), worked out once (set_inverse) for each block's invert()
+    Mat3 inv = Mat3::Identity().inverse();  // a.inverse(), kept with `a` for each block's invert()
     Vec3 apply(const Vec3& p) const { return a * p + t; }
     Vec3 invert(const Vec3& q) const { return inv * (q - t); }
-    void set_inverse() { inv = a.inverse(); }
+    // a ROT, SCALE or MIRROR after the frame so far (the only way `a` changes)
+    void then(const Mat3& m) {
+        a = a * m;
+        inv = a.inverse();
+    }
 };
 
 // A program's control structures and jump targets, found once per program.
@@ -76,7 +80,6 @@ public:
     }
     const Item* begin() const { return n_ <= kInline ? inline_.data() : heap_.data(); }
     const Item* end() const { return begin() + n_; }
-    std::size_t size() const { return n_; }
 
 private:
     static constexpr std::size_t kInline = 6;

@@ -104,7 +104,7 @@ void Interp::frame_statement(const BlockData& b, const std::string& which, int c
             for (int i : {2, 1, 0})  // Z, then Y, then X (RPY angles, MD10600 = 1)
                 if (b[kAxes[i]].set) r = r * rotation(i, b[kAxes[i]].v);
         }
-        f.a = f.a * r;
+        f.then(r);
     } else if (base == "SCALE") {
         Mat3 s = Mat3::Identity();
         for (int i = 0; i < 3; ++i)
@@ -112,14 +112,13 @@ void Interp::frame_statement(const BlockData& b, const std::string& which, int c
                 if (b[kAxes[i]].v == 0) fail("scale_zero", "SCALE with a factor of zero", b[kAxes[i]].column);
                 s(i, i) = b[kAxes[i]].v;
             }
-        f.a = f.a * s;
+        f.then(s);
     } else if (base == "MIRROR") {
         Mat3 m = Mat3::Identity();
         for (int i = 0; i < 3; ++i)
             if (b[kAxes[i]].set) m(i, i) = -1;
-        f.a = f.a * m;
+        f.then(m);
     }
-    f.set_inverse();
     frame_ = f;
 }
 
