@@ -29,7 +29,10 @@ Vec3 get3(const Vec3Column& v, std::size_t i) { return {v(i, 0), v(i, 1), v(i, 2
 void Path::reserve(std::size_t n) {
     if (n <= room_.n) return;
     kind.reserve(n);
-    for (auto* v : {&start, &end, &center}) v->reserve(3 * n);
+    // Room for a centre on every row: address space only, the rows not written take no
+    // memory (and are given back by release_unused()). Jumps are few: they grow as needed.
+    for (auto* v : {&end, &arc_centers_}) v->reserve(3 * n);
+    arc_rank_.reserve(n / kRankRows + 1);
     for (auto* v : {&tool_offset, &abc, &normal, &tool_axis}) v->reserve(n);
     file.reserve(n);
     line.reserve(n);
@@ -41,6 +44,7 @@ void Path::reserve(std::size_t n) {
     generated.reserve(n);
     room_.n = n;
     warm_.rows = std::min(warm_.rows, size());  // the columns may have moved: fresh memory
+    warm_.arcs = std::min(warm_.arcs, arc_centers_.size() / 3);
     if (warm_.by) warm_.next = size();
 }
 
@@ -61,7 +65,7 @@ void Path::warm_with(PageWarmer* warmer) {
 void Path::warm_ahead() {
     while (warm_.rows < room_.n && warm_.rows < size() + 2 * kWarmStretch) {
         const std::size_t from = warm_.rows, to = std::min(room_.n, from + kWarmStretch), n = to - from;
-        for (auto* c : {&start, &end, &center}) warm_.by->warm(c->data() + 3 * from, 3 * n * sizeof(double));
+        warm_.by->warm(end.data() + 3 * from, 3 * n * sizeof(double));
         warm_.by->warm(feed.data() + from, n * sizeof(double));
         warm_.by->warm(line.data() + from, n * sizeof(std::int32_t));
         warm_.by->warm(kind.data() + from, n);
@@ -69,12 +73,21 @@ void Path::warm_ahead() {
         warm_.by->warm(generated.data() + from, n);
         warm_.rows = to;
     }
+    // Arc centres: at most one a row, so as far ahead of the arcs written as the rows are.
+    const std::size_t arcs = arc_centers_.size() / 3, arcs_to = std::min(room_.n, arcs + 2 * kWarmStretch);
+    if (warm_.arcs < arcs_to) {
+        const std::size_t from = std::max(warm_.arcs, arcs);
+        warm_.by->warm(arc_centers_.data() + 3 * from, 3 * (arcs_to - from) * sizeof(double));
+        warm_.arcs = arcs_to;
+    }
     warm_.next = warm_.rows < room_.n ? warm_.rows - kWarmStretch : static_cast<std::size_t>(-1);
 }
 
 void Path::release_unused() noexcept {
     toolcomp::release_unused(kind);
-    for (auto* v : {&start, &end, &center, &feed}) toolcomp::release_unused(*v);
+    for (auto* v : {&end, &feed, &jump_starts_, &arc_centers_}) toolcomp::release_unused(*v);
+    toolcomp::release_unused(jump_rows_);
+    toolcomp::release_unused(arc_rank_);
     for (auto* v : {&tool_offset, &abc, &normal, &tool_axis}) v->release_unused();
     for (auto* v : {&file, &tool, &turns}) v->release_unused();
     plane.release_unused();
@@ -113,10 +126,18 @@ void Path::push(const Motion& m) {
     if (size() >= room_.n) reserve(std::max<std::size_t>(2 * room_.n, 1024));
     if (size() >= warm_.next) [[unlikely]]
         warm_ahead();
-    const Vec3 from = m.start * u, to = m.end * u, about = m.center * u;
-    put3(start.append_unchecked(3), from);
+    if (written_.rows.load(std::memory_order_relaxed)) [[unlikely]]
+        written_.reset();
+    const std::size_t row = size();
+    const Vec3 from = m.start * u, to = m.end * u;
+    // A start that is not the end before it, bit for bit, is kept (a jump).
+    const bool jump = row == 0 || std::memcmp(from.data(), end.data() + 3 * row - 3, 3 * sizeof(double)) != 0;
+    const bool arc = m.is_arc(), ranked = row % kRankRows == 0;
+    if (jump) [[unlikely]]
+        push_jump(row, from);  // may throw: before anything is written
+    if (ranked) arc_rank_.push_unchecked(arc_centers_.size() / 3);
+    if (arc) put3(arc_centers_.append_unchecked(3), Vec3(m.center * u));
     put3(end.append_unchecked(3), to);
-    put3(center.append_unchecked(3), about);
     line.push_unchecked(m.line);
     feed.push_unchecked(m.feed);
     if (all_uniform_ && same_row(m, off)) {  // the common case
@@ -129,6 +150,16 @@ void Path::push(const Motion& m) {
     kind.push_unchecked(k);
     side.push_unchecked(sd);
     generated.push_unchecked(gen);
+}
+
+void Path::push_jump(std::size_t row, const Vec3& from) {
+    jump_rows_.push_back(row);
+    try {
+        jump_starts_.insert(jump_starts_.end(), from.data(), from.data() + 3);
+    } catch (...) {
+        jump_rows_.pop_back();
+        throw;
+    }
 }
 
 // The uniform values of a segment that differs from the last one (or follows one that did).
@@ -157,8 +188,15 @@ void Path::push_row(const Motion& m, const Vec3& off) {
     } catch (...) {
         // A uniform column could not grow: the row written before is taken back, so that
         // the columns checked only through kind's size never run past their room.
-        for (auto* c : {&start, &end, &center})
-            for (int i = 0; i < 3; ++i) c->pop_back();
+        const std::size_t row = end.size() / 3 - 1;
+        for (int i = 0; i < 3; ++i) end.pop_back();
+        if (!jump_rows_.empty() && jump_rows_.back() == row) {
+            jump_rows_.pop_back();
+            for (int i = 0; i < 3; ++i) jump_starts_.pop_back();
+        }
+        if (row % kRankRows == 0) arc_rank_.pop_back();
+        if (m.is_arc())
+            for (int i = 0; i < 3; ++i) arc_centers_.pop_back();
         line.pop_back();
         feed.pop_back();
         throw;
@@ -172,9 +210,9 @@ Motion Path::segment(std::size_t i) const {
     Motion m;
     m.kind = static_cast<MotionKind>(kind[i]);
     m.plane = static_cast<Plane>(plane(i));
-    m.start = get3(start, i);
+    m.start = start_at(i);
     m.end = get3(end, i);
-    m.center = get3(center, i);
+    m.center = center_at(i);
     m.turns = turns(i);
     m.abc = {abc(i, 0), abc(i, 1), abc(i, 2)};
     m.feed = feed[i];
@@ -193,7 +231,7 @@ void Path::sample(double tolerance, std::vector<double>& points, std::vector<std
     points.clear();
     seg.clear();
     if (size() == 0) return;
-    put3(points, get3(start, 0));
+    put3(points, start_at(0));
     seg.push_back(0);
     for (std::size_t i = 0; i < size(); ++i) {
         Motion m = segment(i);

@@ -1,5 +1,6 @@
-// Path columns as read-only numpy views over the C++ storage (no copies); the array keeps
-// the Path (and so the Result owning it) alive.
+// Path columns as read-only numpy views over the C++ storage (no copies; start and center
+// over the rows the Path writes out once asked for); the array keeps the Path (and so the
+// Result owning it) alive.
 #include "bindings.hpp"
 
 #include <pybind11/numpy.h>
@@ -22,6 +23,22 @@ py::array view(py::handle owner, const Column<T>& v, std::size_t n, std::size_t 
     py::array a(dtype, shape, strides, v.empty() ? &dummy : v.data(), owner);
     py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
     return a;
+}
+
+// Rows written out by the Path when asked for (starts(), centers()): kept with it.
+template <std::span<const double> (Path::*rows)() const>
+py::object written3(py::object self) {
+    const Path& p = self.cast<const Path&>();
+    std::span<const double> v;
+    {
+        py::gil_scoped_release nogil;  // a million rows take a few ms
+        v = (p.*rows)();
+    }
+    static const double dummy = 0;
+    py::array a(py::dtype::of<double>(), {static_cast<py::ssize_t>(p.size()), py::ssize_t(3)},
+                {py::ssize_t(24), py::ssize_t(8)}, v.empty() ? &dummy : v.data(), self);
+    py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
+    return std::move(a);
 }
 
 // A Vec3Column: its rows, or while every row is the same, that one row repeated (stride 0).
@@ -81,12 +98,16 @@ void bind_path(py::module_& m) {
         .def("__len__", &Path::size, "number of segments")
         .def_property_readonly("kind", column(&Path::kind, 1),
                                "motion type of each segment, uint8 (N,): RAPID 0, LINE 1, ARC_CW 2, ARC_CCW 3")
-        .def_property_readonly("start", column(&Path::start, 3),
-                               "start point of each segment, float64 (N, 3), mm, program coordinates")
+        .def_property_readonly("start", &written3<&Path::starts>,
+                               "start point of each segment, float64 (N, 3), mm, program coordinates (written "
+                               "out at the first access: stored, a segment starts where the one before ended)")
         .def_property_readonly("end", column(&Path::end, 3),
                                "end point of each segment, float64 (N, 3), mm, program coordinates")
-        .def_property_readonly("center", column(&Path::center, 3),
-                               "arc centre, float64 (N, 3), mm, program coordinates; NaN for rapids and lines")
+        .def_property_readonly("center", &written3<&Path::centers>,
+                               "arc centre, float64 (N, 3), mm, program coordinates; NaN for rapids and lines "
+                               "(written out at the first access: only arcs' are stored)")
+        .def_property_readonly("nbytes", &Path::bytes,
+                               "bytes the columns hold as stored (start and center once written out included)")
         .def_property_readonly("abc", column3(&Path::abc),
                                "rotary axes A B C at the segment end, float64 (N, 3), degrees")
         .def_property_readonly("line", column(&Path::line, 1),

@@ -107,7 +107,6 @@ _CHILD = r"""
 import json, sys, time
 sys.path.insert(0, sys.argv[1])
 import toolcomp as tc
-from run_bench import path_bytes
 
 def hwm():
     with open("/proc/self/status") as f:
@@ -118,7 +117,7 @@ base = hwm()
 t = time.perf_counter()
 if sys.argv[3] == "run":
     res = tc.run(sys.argv[2], tools)
-    segments, blocks, columns = len(res.path), res.blocks, path_bytes(res.path) + path_bytes(res.nominal)
+    segments, blocks, columns = len(res.path), res.blocks, res.path.nbytes + res.nominal.nbytes
 else:
     stream = tc.iter_run(sys.argv[2], tools, chunk=1_000_000)
     segments = sum(len(c) for c in stream)
@@ -163,16 +162,6 @@ def bench_stream(n):
     print(f"streaming      : tc.iter_run over {r['blocks']:,} blocks ({size / 2**30:.2f} GiB file, written in "
           f"{gen:.0f} s): {r['segments']:,} segments in {r['seconds']:.1f} s, "
           f"{r['seconds'] / r['blocks'] * 1e9:.0f} ns/block, peak RSS {r['peak']:.0f} MB")
-
-
-def path_bytes(p):
-    """Bytes of the numpy columns of a Path (stride-0 columns count once)."""
-    total = 0
-    for name in ("kind", "start", "end", "center", "abc", "line", "file", "tool", "feed", "side", "generated",
-                 "tool_offset", "plane", "turns", "normal", "tool_axis"):
-        a = getattr(p, name)
-        total += a.nbytes if all(st != 0 for st in a.strides) else a.itemsize * (a.shape[1] if a.ndim > 1 else 1)
-    return total
 
 
 def best_of(fn, repeat=3):
@@ -224,7 +213,7 @@ def bench_program(n, comp, tools):
     print(f"  toolcomp run   : {t_run:7.3f} s  {blocks / t_run / 1e6:6.2f} M blocks/s  "
           f"{t_run / blocks * 1e9:5.0f} ns/block  ({len(res.path):,} segments, {compensated:,} compensated)")
     print(f"  toolcomp total : {t_parse + t_run:7.3f} s  peak RSS of the bench so far {rss:.0f} MB; the two Paths' "
-          f"columns {(path_bytes(res.path) + path_bytes(res.nominal)) / 2**20:.0f} MB")
+          f"columns {(res.path.nbytes + res.nominal.nbytes) / 2**20:.0f} MB")
     del res, prog
     with tempfile.TemporaryDirectory() as d:
         path = os.path.join(d, "bench.ngc")

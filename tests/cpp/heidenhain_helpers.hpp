@@ -27,7 +27,8 @@ inline std::string pgm(const std::string& body) {
 
 inline Result run_h(const std::string& body) { return tctest::run_text(pgm(body), nullptr, Dialect::heidenhain); }
 
-inline Vec3 col(const Column<double>& v, std::size_t i) { return {v[3 * i], v[3 * i + 1], v[3 * i + 2]}; }
+template <class Rows>
+Vec3 col(const Rows& v, std::size_t i) { return {v[3 * i], v[3 * i + 1], v[3 * i + 2]}; }
 
 // Indices of the segments produced by source line `line`.
 inline std::vector<std::size_t> of_line(const Path& p, int line) {

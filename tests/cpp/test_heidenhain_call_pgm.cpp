@@ -85,7 +85,7 @@ TEST_CASE("heidenhain CALL PGM runs the called program inline with shared Q para
     REQUIRE(p.size() == 3);
     CHECK(col(p.end, 0) == Vec3(10, 5, 0));
     CHECK(col(p.end, 1) == Vec3(17, 0, 0));
-    CHECK(col(p.start, 2) == Vec3(17, 0, 0));  // the position carries into the called program
+    CHECK(col(p.starts(), 2) == Vec3(17, 0, 0));  // the position carries into the called program
     CHECK(col(p.end, 2) == Vec3(11, 5, 0));
     // Lines: source line 2 of sub1.h, source line 7 of call_main.h, line 2 of sub1.h again.
     CHECK(std::vector<std::int32_t>(p.line.begin(), p.line.end()) == std::vector<std::int32_t>{2, 7, 2});
@@ -144,7 +144,7 @@ TEST_CASE("heidenhain CALL PGM cancels radius compensation", "[heidenhain][call_
     const std::size_t last = p.size() - 1;
     CHECK(p.line[last] == 2);
     CHECK(p.side[last] == 0);
-    CHECK(col(p.start, last) == Vec3(20, 2, 0));
+    CHECK(col(p.starts(), last) == Vec3(20, 2, 0));
     CHECK(col(p.end, last) == Vec3(20, 20, 0));
     CHECK(p.line[last - 1] == 6);
     CHECK(p.side[last - 1] == 1);

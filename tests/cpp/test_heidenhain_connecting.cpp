@@ -32,20 +32,20 @@ TEST_CASE("heidenhain APPR CT with compensation on: a tangential arc, compensate
     // The programmed contour of the APPR block.
     const auto nom = of_line(r.nominal, 7);
     REQUIRE(nom.size() == 2);
-    CHECK_XY(col(r.nominal.start, nom[0]), 20, 5);
+    CHECK_XY(col(r.nominal.starts(), nom[0]), 20, 5);
     CHECK_XY(col(r.nominal.end, nom[0]), 35, 5);
     CHECK(r.nominal.kind[nom[1]] == kArcCcw);
-    CHECK_XY(col(r.nominal.center, nom[1]), 35, 10);
+    CHECK_XY(col(r.nominal.centers(), nom[1]), 35, 10);
     CHECK_XY(col(r.nominal.end, nom[1]), 40, 10);
     // The tool path.
     const Path& p = r.path;
     const auto appr = of_line(p, 7), next = of_line(p, 8);
     REQUIRE(appr.size() == 2);
     REQUIRE(next.size() == 1);
-    CHECK_XY(col(p.start, appr[0]), 20, 7);
+    CHECK_XY(col(p.starts(), appr[0]), 20, 7);
     CHECK_XY(col(p.end, appr[0]), 35, 7);
     CHECK(p.kind[appr[1]] == kArcCcw);
-    CHECK_XY(col(p.center, appr[1]), 35, 10);
+    CHECK_XY(col(p.centers(), appr[1]), 35, 10);
     CHECK_XY(col(p.end, appr[1]), 38, 10);
     CHECK_XY(col(p.end, next[0]), 38, 30);
     for (std::size_t i : {appr[0], appr[1], next[0]}) CHECK(p.side[i] == 1);  // compensation stays on
@@ -91,7 +91,7 @@ TEST_CASE("heidenhain APPR LN with compensation on: PH on the contour normal", "
     const double q = std::sqrt(325.0);
     const auto appr = of_line(r.path, 6);
     REQUIRE(appr.size() == 2);
-    CHECK_XY(col(r.path.start, appr[0]), 40, 10);
+    CHECK_XY(col(r.path.starts(), appr[0]), 40, 10);
     CHECK_XY(col(r.path.end, appr[0]), 10 + 225 / q, 20 - 150 / q);
     CHECK_XY(col(r.path.end, appr[1]), 10, 20);
     CHECK(r.path.side[appr[0]] == -1);
@@ -112,7 +112,7 @@ TEST_CASE("heidenhain DEP with RL/RR programmed again keeps compensation on", "[
         const auto dep = of_line(r.path, 7), next = of_line(r.path, 8);
         REQUIRE(dep.size() == 1);
         REQUIRE(next.size() == 1);
-        CHECK_XY(col(r.path.start, dep[0]), 38, 30);
+        CHECK_XY(col(r.path.starts(), dep[0]), 38, 30);
         CHECK_XY(col(r.path.end, dep[0]), 38, 38);
         CHECK_XY(col(r.path.end, next[0]), 20, 38);
         CHECK(r.path.side[dep[0]] == 1);
@@ -129,8 +129,8 @@ TEST_CASE("heidenhain DEP with RL/RR programmed again keeps compensation on", "[
         REQUIRE(dep.size() == 1);
         REQUIRE(next.size() == 1);
         CHECK(r.path.kind[dep[0]] == kArcCcw);
-        CHECK_XY(col(r.path.start, dep[0]), 38, 30);
-        CHECK_XY(col(r.path.center, dep[0]), 35, 30);
+        CHECK_XY(col(r.path.starts(), dep[0]), 38, 30);
+        CHECK_XY(col(r.path.centers(), dep[0]), 35, 30);
         CHECK_XY(col(r.path.end, dep[0]), 35, 33);
         CHECK_XY(col(r.path.end, next[0]), 20, 33);
         CHECK(r.path.side[dep[0]] == 1);

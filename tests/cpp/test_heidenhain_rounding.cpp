@@ -34,13 +34,13 @@ TEST_CASE("heidenhain RND between a line and an arc", "[heidenhain][rnd]") {
     REQUIRE(arc.size() == 1);
     CHECK_XY(col(p.end, line[0]), 40 - 10 * s2, 0);
     CHECK(p.kind[rnd[0]] == static_cast<std::uint8_t>(MotionKind::arc_ccw));
-    CHECK_XY(col(p.start, rnd[0]), 40 - 10 * s2, 0);
-    CHECK_XY(col(p.center, rnd[0]), 40 - 10 * s2, 5);
+    CHECK_XY(col(p.starts(), rnd[0]), 40 - 10 * s2, 0);
+    CHECK_XY(col(p.centers(), rnd[0]), 40 - 10 * s2, 5);
     CHECK_XY(col(p.end, rnd[0]), 40 - 20 * s2 / 3, 10.0 / 3);
     // The arc is shortened to start at T2, keeps its centre, direction and end.
     CHECK(p.kind[arc[0]] == static_cast<std::uint8_t>(MotionKind::arc_cw));
-    CHECK_XY(col(p.start, arc[0]), 40 - 20 * s2 / 3, 10.0 / 3);
-    CHECK_XY(col(p.center, arc[0]), 40, 0);
+    CHECK_XY(col(p.starts(), arc[0]), 40 - 20 * s2 / 3, 10.0 / 3);
+    CHECK_XY(col(p.centers(), arc[0]), 40, 0);
     CHECK_XY(col(p.end, arc[0]), 40, 10);
 }
 
@@ -57,13 +57,13 @@ TEST_CASE("heidenhain RND between an arc and a line", "[heidenhain][rnd]") {
     REQUIRE(arc.size() == 1);
     REQUIRE(rnd.size() == 1);
     REQUIRE(line.size() == 1);
-    CHECK_XY(col(p.start, arc[0]), 10, 0);
+    CHECK_XY(col(p.starts(), arc[0]), 10, 0);
     CHECK_XY(col(p.end, arc[0]), 30.0 / 13, 40 * s10 / 13);
-    CHECK_XY(col(p.center, arc[0]), 0, 0);
+    CHECK_XY(col(p.centers(), arc[0]), 0, 0);
     CHECK(p.kind[rnd[0]] == static_cast<std::uint8_t>(MotionKind::arc_cw));
-    CHECK_XY(col(p.center, rnd[0]), 3, 4 * s10);
+    CHECK_XY(col(p.centers(), rnd[0]), 3, 4 * s10);
     CHECK_XY(col(p.end, rnd[0]), 0, 4 * s10);
-    CHECK_XY(col(p.start, line[0]), 0, 4 * s10);
+    CHECK_XY(col(p.starts(), line[0]), 0, 4 * s10);
     CHECK_XY(col(p.end, line[0]), 0, 30);
 }
 
@@ -84,11 +84,11 @@ TEST_CASE("heidenhain RND between two arcs", "[heidenhain][rnd]") {
     REQUIRE(a2.size() == 1);
     CHECK_XY(col(p.end, a1[0]), 6.25, y);
     CHECK(p.kind[rnd[0]] == static_cast<std::uint8_t>(MotionKind::arc_ccw));
-    CHECK_XY(col(p.start, rnd[0]), 6.25, y);
-    CHECK_XY(col(p.center, rnd[0]), 5, std::sqrt(39.0));
+    CHECK_XY(col(p.starts(), rnd[0]), 6.25, y);
+    CHECK_XY(col(p.centers(), rnd[0]), 5, std::sqrt(39.0));
     CHECK_XY(col(p.end, rnd[0]), 3.75, y);
-    CHECK_XY(col(p.start, a2[0]), 3.75, y);
-    CHECK_XY(col(p.center, a2[0]), 10, 0);
+    CHECK_XY(col(p.starts(), a2[0]), 3.75, y);
+    CHECK_XY(col(p.centers(), a2[0]), 10, 0);
     CHECK_XY(col(p.end, a2[0]), 0, 0);
 }
 
@@ -106,11 +106,11 @@ TEST_CASE("heidenhain RND next to an arc, with radius compensation", "[heidenhai
     REQUIRE(line.size() == 1);
     REQUIRE(rnd.size() == 1);
     REQUIRE(arc.size() == 1);
-    CHECK_XY(col(p.start, line[0]), 0, 1);
+    CHECK_XY(col(p.starts(), line[0]), 0, 1);
     CHECK_XY(col(p.end, line[0]), 40 - 10 * s2, 1);
-    CHECK_XY(col(p.center, rnd[0]), 40 - 10 * s2, 5);
+    CHECK_XY(col(p.centers(), rnd[0]), 40 - 10 * s2, 5);
     CHECK_XY(col(p.end, rnd[0]), 40 - 22 * s2 / 3, 11.0 / 3);
-    CHECK_XY(col(p.start, arc[0]), 40 - 22 * s2 / 3, 11.0 / 3);
+    CHECK_XY(col(p.starts(), arc[0]), 40 - 22 * s2 / 3, 11.0 / 3);
     CHECK_XY(col(p.end, arc[0]), 40, 11);  // the CW arc's end, 11 from its centre on the left
     for (std::size_t i : {line[0], rnd[0], arc[0]}) CHECK(p.side[i] == 1);
     for (std::size_t i = 0; i < p.size(); ++i) CHECK_FALSE(p.generated[i]);  // no corner arcs
@@ -154,7 +154,7 @@ TEST_CASE("heidenhain CHF next to an arc is refused as on the TNC", "[heidenhain
     const Result r = run_h(kHead + "L X+0 Y+0 Z+0 R0 F100\nL X+30 Y+0\nCHF 2\nL X+30 Y+20\n");
     const auto chf = of_line(r.path, 6);
     REQUIRE(chf.size() == 1);
-    CHECK_XY(col(r.path.start, chf[0]), 28, 0);
+    CHECK_XY(col(r.path.starts(), chf[0]), 28, 0);
     CHECK_XY(col(r.path.end, chf[0]), 30, 2);
 }
 

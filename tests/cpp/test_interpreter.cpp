@@ -68,20 +68,20 @@ TEST_CASE("arcs: IJK and R in G17, G18, G19; helix; full circle with turns") {
     const Path& p = r.nominal;
     REQUIRE(p.size() == 8);  // three rapids, five arcs
     CHECK(p.kind[1] == 3);
-    CHECK(Vec3(p.center[3], p.center[4], p.center[5]).isApprox(Vec3(0, 0, 0)));
+    CHECK(Vec3(p.centers()[3], p.centers()[4], p.centers()[5]).isApprox(Vec3(0, 0, 0)));
     CHECK(p.kind[2] == 2);
-    CHECK(std::fabs(p.center[6]) < 1e-9);
-    CHECK(std::fabs(p.center[7]) < 1e-9);
+    CHECK(std::fabs(p.centers()[6]) < 1e-9);
+    CHECK(std::fabs(p.centers()[7]) < 1e-9);
     CHECK(p.turns(3) == 2);
     CHECK(end_of(p, 3).z() == Approx(-2));
     CHECK(p.plane(5) == 1);
-    CHECK(p.center[3 * 5 + 0] == Approx(0).margin(1e-12));
-    CHECK(p.center[3 * 5 + 2] == Approx(0).margin(1e-12));
+    CHECK(p.centers()[3 * 5 + 0] == Approx(0).margin(1e-12));
+    CHECK(p.centers()[3 * 5 + 2] == Approx(0).margin(1e-12));
     // G19 R-10 from (Y10,Z0) to (Y0,Z-10), clockwise seen from +X, more than 180 degrees: the
     // centre is the one of the two candidates ((0,0) and (10,-10)) that gives the long arc.
     CHECK(p.plane(7) == 2);
-    CHECK(p.center[3 * 7 + 1] == Approx(10));
-    CHECK(p.center[3 * 7 + 2] == Approx(-10));
+    CHECK(p.centers()[3 * 7 + 1] == Approx(10));
+    CHECK(p.centers()[3 * 7 + 2] == Approx(-10));
 }
 
 TEST_CASE("arc end off the circle: LinuxCNC's tolerance and message") {
@@ -117,6 +117,6 @@ TEST_CASE("G7 diameter mode halves X words but not I, K or R") {
     const Path& p = r.nominal;
     REQUIRE(p.size() == 3);
     CHECK(end_of(p, 1).x() == Approx(10));
-    CHECK(p.center[3 * 1 + 0] == Approx(10));
+    CHECK(p.centers()[3 * 1 + 0] == Approx(10));
     CHECK(end_of(p, 2).x() == Approx(15));
 }

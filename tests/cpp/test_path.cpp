@@ -114,10 +114,106 @@ TEST_CASE("Path: rows written while a warmer faults the pages ahead are the rows
         warmed.warm_with(nullptr);
     }
     REQUIRE(warmed.size() == plain.size());
-    for (auto col : {&Path::start, &Path::end, &Path::center, &Path::feed})
+    for (auto col : {&Path::end, &Path::feed})
         CHECK(std::memcmp((warmed.*col).data(), (plain.*col).data(), (plain.*col).size() * sizeof(double)) == 0);
+    for (auto rows : {&Path::starts, &Path::centers})
+        CHECK(std::memcmp((warmed.*rows)().data(), (plain.*rows)().data(), 3 * n * sizeof(double)) == 0);
     CHECK(std::memcmp(warmed.line.data(), plain.line.data(), plain.line.size() * sizeof(std::int32_t)) == 0);
     CHECK(std::memcmp(warmed.kind.data(), plain.kind.data(), plain.kind.size()) == 0);
     CHECK(warmed.tool(699'999) == 4);
     CHECK(warmed.end[3 * 699'999] == 699'999);
+}
+
+namespace {
+// A contour of lines and arcs that runs on from end to end, with a jump (a new tool length
+// offset moves the start) every 97th segment and a -0.0 start after a +0.0 end every 89th.
+Motion contour(int i) {
+    Motion m;
+    const bool arc = i % 3 != 0 && i % 7 != 0;
+    m.kind = arc ? (i % 2 ? MotionKind::arc_ccw : MotionKind::arc_cw) : MotionKind::line;
+    m.start = Vec3(i, i % 5, 0);
+    m.end = Vec3(i + 1, (i + 1) % 5, 0);
+    if (i % 97 == 0) m.start.y() += 0.5;
+    if (i % 89 == 0) m.start.z() = -0.0;
+    if (arc) m.center = Vec3(i + 0.5, 10 + i, -1);
+    m.line = i + 1;
+    return m;
+}
+void check_contour(const Path& p, int n) {
+    REQUIRE(p.size() == static_cast<std::size_t>(n));
+    const auto starts = p.starts(), centers = p.centers();
+    REQUIRE(starts.size() == 3 * static_cast<std::size_t>(n));
+    REQUIRE(centers.size() == 3 * static_cast<std::size_t>(n));
+    std::size_t mismatched = 0;
+    for (int i = 0; i < n; ++i) {
+        const Motion m = contour(i);
+        const auto r = static_cast<std::size_t>(i);
+        const Vec3 s = p.start_at(r), c = p.center_at(r);
+        // bit for bit: -0.0 stays -0.0, a line's centre is NaN
+        mismatched += std::memcmp(s.data(), m.start.data(), sizeof(Vec3)) != 0;
+        mismatched += std::memcmp(starts.data() + 3 * r, m.start.data(), sizeof(Vec3)) != 0;
+        mismatched += std::memcmp(p.segment(r).start.data(), m.start.data(), sizeof(Vec3)) != 0;
+        if (m.is_arc()) {
+            mismatched += c != m.center;
+            mismatched += Vec3(centers[3 * r], centers[3 * r + 1], centers[3 * r + 2]) != m.center;
+        } else {
+            mismatched += !(std::isnan(c.x()) && std::isnan(c.y()) && std::isnan(c.z()));
+            mismatched += !std::isnan(centers[3 * r]) + !std::isnan(centers[3 * r + 2]);
+        }
+    }
+    CHECK(mismatched == 0);
+    if (n > 90) {
+        CHECK(std::signbit(p.start_at(89).z()));
+        CHECK(!std::signbit(p.start_at(90).z()));
+    }
+}
+}  // namespace
+
+TEST_CASE("Path: starts kept as jumps and centres as arcs' read back as pushed, written out when asked") {
+    Path p;
+    const int n = 3 * 256 + 41;  // several rank stretches and a part one
+    for (int i = 0; i < n; ++i) p.push(contour(i));
+    check_contour(p, n);
+    // Fewer bytes than 9 doubles a segment before starts and centres are written out, 6 more after.
+    Path fresh;
+    for (int i = 0; i < n; ++i) fresh.push(contour(i));
+    const std::size_t stored = fresh.bytes();
+    CHECK(stored < 60 * static_cast<std::size_t>(n));
+    (void)fresh.starts();
+    (void)fresh.centers();
+    CHECK(fresh.bytes() == stored + 48 * static_cast<std::size_t>(n));
+
+    // A push after the rows were written out: they are written anew.
+    p.push(contour(n));
+    check_contour(p, n + 1);
+    // A copy writes its own; a move takes them along.
+    Path copy = p;
+    copy.push(contour(n + 1));
+    check_contour(copy, n + 2);
+    check_contour(p, n + 1);
+    Path moved = std::move(p);
+    check_contour(moved, n + 1);
+    for (int i = 0; i < 5; ++i) p.push(contour(i));
+    check_contour(p, 5);
+}
+
+TEST_CASE("Path: arc centres across rank stretches of arcs only and of lines only") {
+    Path p;
+    std::vector<Motion> pushed;
+    for (int i = 0; i < 2000; ++i) {
+        Motion m;
+        const bool arc = (i / 300) % 2 == 0;  // 300 arcs, 300 lines, ...
+        m.kind = arc ? MotionKind::arc_cw : MotionKind::line;
+        m.start = Vec3(i, 0, 0);
+        m.end = Vec3(i + 1, 0, 0);
+        if (arc) m.center = Vec3(i + 0.5, -i, 0);
+        p.push(m);
+        pushed.push_back(m);
+    }
+    std::size_t mismatched = 0;
+    for (std::size_t i = 0; i < pushed.size(); ++i) {
+        const Vec3 c = p.center_at(i);
+        mismatched += pushed[i].is_arc() ? c != pushed[i].center : !std::isnan(c.y());
+    }
+    CHECK(mismatched == 0);
 }

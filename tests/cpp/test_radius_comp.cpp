@@ -27,8 +27,8 @@ void check_path(const Path& p, std::size_t first, std::initializer_list<Seg> exp
         CHECK(e[ax.a] == Approx(s.a).margin(1e-6));
         CHECK(e[ax.b] == Approx(s.b).margin(1e-6));
         if (!std::isnan(s.ca)) {
-            CHECK(p.center[3 * i + ax.a] == Approx(s.ca).margin(1e-6));
-            CHECK(p.center[3 * i + ax.b] == Approx(s.cb).margin(1e-6));
+            CHECK(p.centers()[3 * i + ax.a] == Approx(s.ca).margin(1e-6));
+            CHECK(p.centers()[3 * i + ax.b] == Approx(s.cb).margin(1e-6));
         }
         ++i;
     }
@@ -57,7 +57,7 @@ TEST_CASE("spec 1.4 L-shape and 1.6.1 start-up, LinuxCNC style") {
     CHECK(p.side[3] == 1);
     CHECK(p.side[7] == 0);
     CHECK(end_of(p, 6).isApprox(Vec3(80, 35, 0)));
-    CHECK(Vec3(p.start[3 * 7], p.start[3 * 7 + 1], 0).isApprox(Vec3(80, 35, 0)));  // exit starts at the tool
+    CHECK(Vec3(p.starts()[3 * 7], p.starts()[3 * 7 + 1], 0).isApprox(Vec3(80, 35, 0)));  // exit starts at the tool
 }
 
 TEST_CASE("LinuxCNC V1: outside corners get arcs, inside corners pull back") {

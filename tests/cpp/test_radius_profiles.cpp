@@ -155,7 +155,7 @@ TEST_CASE("An unreachable step: error, skip with look-ahead, or report") {
     CHECK(rep.diagnostics[0].message.find("line 5") != std::string::npos);
     bool reversed = false;
     for (std::size_t i = 0; i < rep.path.size(); ++i)
-        if (rep.path.line[i] == 5 && !rep.path.generated[i]) reversed = end_of(rep.path, i).y() > rep.path.start[3 * i + 1];
+        if (rep.path.line[i] == 5 && !rep.path.generated[i]) reversed = end_of(rep.path, i).y() > rep.path.starts()[3 * i + 1];
     CHECK(reversed);
 }
 
@@ -195,8 +195,8 @@ TEST_CASE("DISC distorts the transition arc from the arc (0) to the intersection
     REQUIRE(a >= 0);
     REQUIRE(b == a + 1);
     CHECK(r.path.kind[b] == 2);
-    CHECK(r.path.center[3 * b] == Approx(47.5));
-    CHECK(r.path.center[3 * b + 1] == Approx(32.5));
+    CHECK(r.path.centers()[3 * b] == Approx(47.5));
+    CHECK(r.path.centers()[3 * b + 1] == Approx(32.5));
     p.radius.disc = 100;
     auto sharp = run_with(text, p);
     CHECK(find(sharp.path, Vec3(45, 35, 0)) >= 0);

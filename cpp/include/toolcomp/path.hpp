@@ -2,9 +2,17 @@
 // Path: a column store of segments (the numpy-facing result).
 //
 // Three-vectors are stored row-major (x0 y0 z0 x1 y1 z1 ...) so that Python sees (N, 3)
-// float64 arrays without a copy.
+// float64 arrays without a copy. Two columns are kept as what they are and written out in
+// full only when asked for (`starts()`, `centers()`, once, then kept): a segment starts
+// where the one before it ended, except at the first segment and at a jump (a new tool
+// length offset moves the start in program coordinates), and only arcs have a centre. That
+// is 48 of the 87 bytes a segment on an ordinary program, and the memory a run writes
+// costs time too (pages the kernel zeroes).
 #include <cstdint>
 #include <limits>
+#include <atomic>
+#include <mutex>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -20,7 +28,7 @@ class Path : public MotionSink {
 
 public:
     Column<std::uint8_t> kind;
-    Column<double> start, end, center;    // 3 per segment
+    Column<double> end;                   // 3 per segment
     Vec3Column tool_offset{0, 0, 0};
     Vec3Column abc{0, 0, 0};              // degrees
     Vec3Column normal{kNaN, kNaN, kNaN};  // unit surface normal (3D compensation)
@@ -46,6 +54,15 @@ public:
     void warm_with(PageWarmer* warmer);
     // Segment i back as a Motion (for sampling, checks and later stages).
     Motion segment(std::size_t i) const;
+    // Start point and arc centre of segment i (NaN centre for rapids and lines).
+    Vec3 start_at(std::size_t i) const;
+    Vec3 center_at(std::size_t i) const;
+    // Every segment's start point, resp. centre, 3 per segment: written out at the first
+    // call and kept with the Path (thread-safe; a push() drops them).
+    std::span<const double> starts() const;
+    std::span<const double> centers() const;
+    // Bytes the columns hold (as stored, and what starts()/centers() wrote out).
+    std::size_t bytes() const;
 
     // Polyline with arcs chorded within `tolerance` (mm). The first point is the start of
     // segment 0; every point carries the index of the segment it ends.
@@ -85,16 +102,56 @@ private:
         PageWarmer* by = nullptr;
         std::size_t rows = 0;
         std::size_t next = static_cast<std::size_t>(-1);
+        std::size_t arcs = 0;  // arc centre rows asked for
         Warm() = default;
         Warm(const Warm&) {}
         Warm& operator=(const Warm&) {
             by = nullptr;
             rows = 0;
             next = static_cast<std::size_t>(-1);
+            arcs = 0;
             return *this;
         }
     } warm_;
     void warm_ahead();
+
+    // Start points: the rows whose start is not the end before them (bit for bit; row 0
+    // always), with those starts. Centres: the arcs' only, in row order, and the arcs before
+    // every kRankRows-th row (for center_at).
+    static constexpr std::size_t kRankRows = 256;
+    Column<std::uint64_t> jump_rows_;
+    Column<double> jump_starts_;
+    Column<double> arc_centers_;
+    Column<std::uint64_t> arc_rank_;
+    void push_jump(std::size_t row, const Vec3& from);
+    // starts() and centers() once written out: made at the first call (the first of two
+    // threads to get there wins), moved with the Path, not copied (a copy writes its own),
+    // dropped by push().
+    struct Rows {
+        std::mutex mutex;
+        Column<double> starts, centers;
+        bool have_starts = false, have_centers = false;
+    };
+    struct Written {
+        mutable std::atomic<Rows*> rows{nullptr};
+        Written() = default;
+        Written(const Written&) {}
+        Written(Written&& o) noexcept : rows(o.rows.exchange(nullptr)) {}
+        Written& operator=(const Written& o) {
+            if (this != &o) reset();
+            return *this;
+        }
+        Written& operator=(Written&& o) noexcept {
+            if (this != &o) {
+                reset();
+                rows = o.rows.exchange(nullptr);
+            }
+            return *this;
+        }
+        ~Written() { reset(); }
+        void reset() noexcept { delete rows.exchange(nullptr); }
+        Rows& get() const;
+    } written_;
 };
 
 }  // namespace toolcomp
