@@ -102,7 +102,7 @@ void bind_stream(py::module_& m) {
             return std::make_shared<PathStream>(std::shared_ptr<const Program>(std::move(program)), table(tools),
                                                 stream_options(strict, block_delete, std::move(profile),
                                                                std::move(search_path), std::move(parameters), chunk,
-                                                               4 << 20, kDefaultMaxProgramBytes, kDefaultMaxLineLength));
+                                                               kPieceBytes, kDefaultMaxProgramBytes, kDefaultMaxLineLength));
         },
         py::arg("program"), py::arg("tools"), py::arg("strict"), py::arg("block_delete"), py::arg("profile"),
         py::arg("search_path"), py::arg("parameters"), py::arg("chunk"),

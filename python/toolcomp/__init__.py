@@ -120,7 +120,7 @@ def _run_inputs(tools, units, search_path, parameters):
 
 def iter_run(program, tools=None, *, chunk=1_000_000, dialect=None, strict=True, block_delete=False,
              profile=None, units="mm", search_path=(), parameters=None, max_bytes=2**31,
-             max_line_length=2**20, piece_bytes=4 << 20):
+             max_line_length=2**20, piece_bytes=1 << 20):
     """Run ``program`` like :func:`run` and yield its compensated path in chunks of ``chunk``
     segments (:class:`Path` objects; the last may be shorter). The chunks joined are the
     ``path`` that :func:`run` returns, segment for segment: the compensation look-ahead runs

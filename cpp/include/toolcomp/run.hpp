@@ -83,7 +83,7 @@ struct Result {
 Result run(const Program& program, const ToolTable* tools, const RunOptions& options = {});
 
 // Text read at a time from a program file read piece by piece.
-inline constexpr std::size_t kPieceBytes = std::size_t{4} << 20;
+inline constexpr std::size_t kPieceBytes = std::size_t{1} << 20;
 
 // Reads and runs a program file (dialect from the suffix unless given), read leniently (a
 // syntax error is raised when the run reaches its line). A LinuxCNC / Fanuc file in which
