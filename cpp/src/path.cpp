@@ -38,7 +38,6 @@ void Path::reserve(std::size_t n) {
     line.reserve(n);
     tool.reserve(n);
     turns.reserve(n);
-    feed.reserve(n);
     side.reserve(n);
     plane.reserve(n);
     generated.reserve(n);
@@ -66,7 +65,6 @@ void Path::warm_ahead() {
     while (warm_.rows < room_.n && warm_.rows < size() + 2 * kWarmStretch) {
         const std::size_t from = warm_.rows, to = std::min(room_.n, from + kWarmStretch), n = to - from;
         warm_.by->warm(end.data() + 3 * from, 3 * n * sizeof(double));
-        warm_.by->warm(feed.data() + from, n * sizeof(double));
         warm_.by->warm(line.data() + from, n * sizeof(std::int32_t));
         warm_.by->warm(kind.data() + from, n);
         warm_.by->warm(side.data() + from, n);
@@ -85,7 +83,8 @@ void Path::warm_ahead() {
 
 void Path::release_unused() noexcept {
     toolcomp::release_unused(kind);
-    for (auto* v : {&end, &feed, &jump_starts_, &arc_centers_}) toolcomp::release_unused(*v);
+    for (auto* v : {&end, &jump_starts_, &arc_centers_}) toolcomp::release_unused(*v);
+    feed.release_unused();
     toolcomp::release_unused(jump_rows_);
     toolcomp::release_unused(arc_rank_);
     for (auto* v : {&tool_offset, &abc, &normal, &tool_axis}) v->release_unused();
@@ -133,13 +132,21 @@ void Path::push(const Motion& m) {
     // A start that is not the end before it, bit for bit, is kept (a jump).
     const bool jump = row == 0 || std::memcmp(from.data(), end.data() + 3 * row - 3, 3 * sizeof(double)) != 0;
     const bool arc = m.is_arc(), ranked = row % kRankRows == 0;
-    if (jump) [[unlikely]]
-        push_jump(row, from);  // may throw: before anything is written
+    // These two may throw (where a run of the feed starts, at a jump): before anything is
+    // written, the feed taken back when the jump cannot be kept.
+    feed.push(m.feed);
+    if (jump) [[unlikely]] {
+        try {
+            push_jump(row, from);
+        } catch (...) {
+            feed.pop_back();
+            throw;
+        }
+    }
     if (ranked) arc_rank_.push_unchecked(arc_centers_.size() / 3);
     if (arc) put3(arc_centers_.append_unchecked(3), Vec3(m.center * u));
     put3(end.append_unchecked(3), to);
     line.push_unchecked(m.line);
-    feed.push_unchecked(m.feed);
     if (all_uniform_ && same_row(m, off)) {  // the common case
         for (auto* c : {&tool_offset, &abc, &normal, &tool_axis}) c->push_same();
         for (auto* c : {&tool, &turns, &file}) c->push_same();

@@ -1,5 +1,5 @@
-// The Path's start points and arc centres as they are stored (jumps, arcs' centres) read
-// back one segment at a time, or written out for every segment once asked for.
+// The Path's start points, arc centres and feeds as they are stored (jumps, arcs' centres,
+// runs) read back one segment at a time, or written out for every segment once asked for.
 #include <algorithm>
 #include <cstring>
 #include <limits>
@@ -73,10 +73,21 @@ std::span<const double> Path::centers() const {
     return {w.centers.data(), w.centers.size()};
 }
 
+std::span<const double> Path::feeds() const {
+    Rows& w = written_.get();
+    std::lock_guard lock(w.mutex);
+    if (!w.have_feeds) {
+        w.feeds.resize(size());
+        feed.write(w.feeds.data());
+        w.have_feeds = true;
+    }
+    return {w.feeds.data(), w.feeds.size()};
+}
+
 std::size_t Path::bytes() const {
     std::size_t b = kind.size() + side.size() + generated.size() + line.size() * sizeof(std::int32_t) +
-                    (end.size() + feed.size() + jump_starts_.size() + arc_centers_.size()) * sizeof(double) +
-                    (jump_rows_.size() + arc_rank_.size()) * sizeof(std::uint64_t);
+                    (end.size() + jump_starts_.size() + arc_centers_.size()) * sizeof(double) +
+                    (jump_rows_.size() + arc_rank_.size()) * sizeof(std::uint64_t) + feed.bytes();
     for (const Vec3Column* c : {&tool_offset, &abc, &normal, &tool_axis})
         b += c->uniform() ? 3 * sizeof(double) : 3 * c->size() * sizeof(double);
     for (const UniformColumn<std::int32_t, 1>* c : {&tool, &turns, &file})
@@ -84,7 +95,7 @@ std::size_t Path::bytes() const {
     b += plane.uniform() ? 1 : plane.size();
     if (Rows* w = written_.rows.load(std::memory_order_acquire)) {
         std::lock_guard lock(w->mutex);
-        b += (w->starts.size() + w->centers.size()) * sizeof(double);
+        b += (w->starts.size() + w->centers.size() + w->feeds.size()) * sizeof(double);
     }
     return b;
 }

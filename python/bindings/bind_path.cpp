@@ -1,5 +1,5 @@
-// Path columns as read-only numpy views over the C++ storage (no copies; start and center
-// over the rows the Path writes out once asked for); the array keeps the Path (and so the
+// Path columns as read-only numpy views over the C++ storage (no copies; start, center and
+// feed over the rows the Path writes out once asked for); the array keeps the Path (and so the
 // Result owning it) alive.
 #include "bindings.hpp"
 
@@ -25,9 +25,9 @@ py::array view(py::handle owner, const Column<T>& v, std::size_t n, std::size_t 
     return a;
 }
 
-// Rows written out by the Path when asked for (starts(), centers()): kept with it.
-template <std::span<const double> (Path::*rows)() const>
-py::object written3(py::object self) {
+// Rows written out by the Path when asked for (starts(), centers(), feeds()): kept with it.
+template <std::span<const double> (Path::*rows)() const, int width>
+py::object written(py::object self) {
     const Path& p = self.cast<const Path&>();
     std::span<const double> v;
     {
@@ -35,8 +35,12 @@ py::object written3(py::object self) {
         v = (p.*rows)();
     }
     static const double dummy = 0;
-    py::array a(py::dtype::of<double>(), {static_cast<py::ssize_t>(p.size()), py::ssize_t(3)},
-                {py::ssize_t(24), py::ssize_t(8)}, v.empty() ? &dummy : v.data(), self);
+    std::vector<py::ssize_t> shape{static_cast<py::ssize_t>(p.size())}, strides{py::ssize_t(8 * width)};
+    if (width > 1) {
+        shape.push_back(width);
+        strides.push_back(8);
+    }
+    py::array a(py::dtype::of<double>(), shape, strides, v.empty() ? &dummy : v.data(), self);
     py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
     return std::move(a);
 }
@@ -98,12 +102,12 @@ void bind_path(py::module_& m) {
         .def("__len__", &Path::size, "number of segments")
         .def_property_readonly("kind", column(&Path::kind, 1),
                                "motion type of each segment, uint8 (N,): RAPID 0, LINE 1, ARC_CW 2, ARC_CCW 3")
-        .def_property_readonly("start", &written3<&Path::starts>,
+        .def_property_readonly("start", &written<&Path::starts, 3>,
                                "start point of each segment, float64 (N, 3), mm, program coordinates (written "
                                "out at the first access: stored, a segment starts where the one before ended)")
         .def_property_readonly("end", column(&Path::end, 3),
                                "end point of each segment, float64 (N, 3), mm, program coordinates")
-        .def_property_readonly("center", &written3<&Path::centers>,
+        .def_property_readonly("center", &written<&Path::centers, 3>,
                                "arc centre, float64 (N, 3), mm, program coordinates; NaN for rapids and lines "
                                "(written out at the first access: only arcs' are stored)")
         .def_property_readonly("nbytes", &Path::bytes,
@@ -119,7 +123,9 @@ void bind_path(py::module_& m) {
                       "names of the files segments come from: the main program, then each called program or "
                       "subprogram file in the order the run entered it")
         .def_property_readonly("tool", column1(&Path::tool), "number of the tool in the spindle, int32 (N,)")
-        .def_property_readonly("feed", column(&Path::feed, 1), "feed rate, float64 (N,), mm/min; NaN for rapids")
+        .def_property_readonly("feed", &written<&Path::feeds, 1>,
+                               "feed rate, float64 (N,), mm/min; NaN for rapids (written out at the first access: "
+                               "stored where it changes)")
         .def_property_readonly("side", column(&Path::side, 1),
                                "cutter radius compensation, int8 (N,): +1 left (G41/RL), -1 right (G42/RR), 0 off")
         .def_property_readonly("generated",

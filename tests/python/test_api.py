@@ -121,23 +121,26 @@ def test_tool_length_offsets():
                                          [2 + 1 - 1, 0, 5 - 55.5 + 55.5 - 7.5], [3 + 1 - 0, 0, 5 - 7.5 + 7.5]])
 
 
-def test_start_and_center_are_written_out_once_when_asked_for():
+def test_start_center_and_feed_are_written_out_once_when_asked_for():
     res = run(PROGRAM, TOOLS)
     p = res.nominal
     n, stored = len(p), p.nbytes
     # stored: a jump for the first start, the two arcs' centres; no start or centre row else
-    # kind side generated line feed end; a jump row and start, two centres, one rank; the uniform
-    # columns once: four 3-vectors, tool, turns, file, plane
-    assert stored == n * (1 + 1 + 1 + 4 + 8 + 24) + 8 + 24 + 2 * 24 + 8 + 4 * 24 + 3 * 4 + 1
+    # kind side generated line end; a jump row and start, two centres, one rank, two runs of the
+    # feed (NaN, then 200); the uniform columns once: four 3-vectors, tool, turns, file, plane
+    assert stored == n * (1 + 1 + 1 + 4 + 24) + 8 + 24 + 2 * 24 + 8 + 2 * 16 + 4 * 24 + 3 * 4 + 1
     a = p.start
     assert p.nbytes == stored + 24 * n
     assert np.shares_memory(a, p.start)  # kept: the same rows the next time
     c = p.center
     assert p.nbytes == stored + 48 * n and np.shares_memory(c, p.center)
+    f = p.feed
+    assert p.nbytes == stored + 56 * n and np.shares_memory(f, p.feed)
     del res, p
     # they keep the Path alive; the first starts at machine zero in program Z (tool length 25 active)
     np.testing.assert_allclose(a, [[0, 0, -25], [0, 0, 5], [0, 0, -1], [10, 0, -1]])
     np.testing.assert_allclose(c[2:], [[5, 0, -1], [5, 0, -1]], atol=1e-12)
+    assert np.isnan(f[0]) and list(f[1:]) == [200, 200, 200]
 
 
 def test_fanuc_g44_subtracts_and_acts_on_z_only():

@@ -2,12 +2,12 @@
 // Path: a column store of segments (the numpy-facing result).
 //
 // Three-vectors are stored row-major (x0 y0 z0 x1 y1 z1 ...) so that Python sees (N, 3)
-// float64 arrays without a copy. Two columns are kept as what they are and written out in
-// full only when asked for (`starts()`, `centers()`, once, then kept): a segment starts
-// where the one before it ended, except at the first segment and at a jump (a new tool
-// length offset moves the start in program coordinates), and only arcs have a centre. That
-// is 48 of the 87 bytes a segment on an ordinary program, and the memory a run writes
-// costs time too (pages the kernel zeroes).
+// float64 arrays without a copy. Three columns are kept as what they are and written out in
+// full only when asked for (`starts()`, `centers()`, `feeds()`, once, then kept): a segment
+// starts where the one before it ended, except at the first segment and at a jump (a new
+// tool length offset moves the start in program coordinates), only arcs have a centre, and
+// the feed changes now and then. That is 56 of the 87 bytes a segment on an ordinary
+// program, and the memory a run writes costs time too (pages the kernel zeroes).
 #include <cstdint>
 #include <limits>
 #include <atomic>
@@ -20,6 +20,7 @@
 #include "toolcomp/column.hpp"
 #include "toolcomp/motion/motion.hpp"
 #include "toolcomp/page_warmer.hpp"
+#include "toolcomp/run_column.hpp"
 
 namespace toolcomp {
 
@@ -35,7 +36,7 @@ public:
     Vec3Column tool_axis{0, 0, 1};
     Column<std::int32_t> line;
     UniformColumn<std::int32_t, 1> tool, turns;
-    Column<double> feed;
+    RunColumn<double> feed;  // mm/min, NaN for rapids: kept as runs of one value
     Column<std::int8_t> side;
     UniformColumn<std::uint8_t, 1> plane;
     Column<std::uint8_t> generated;  // bool as byte
@@ -57,10 +58,11 @@ public:
     // Start point and arc centre of segment i (NaN centre for rapids and lines).
     Vec3 start_at(std::size_t i) const;
     Vec3 center_at(std::size_t i) const;
-    // Every segment's start point, resp. centre, 3 per segment: written out at the first
-    // call and kept with the Path (thread-safe; a push() drops them).
+    // Every segment's start point, resp. centre (3 per segment), feed: written out at the
+    // first call and kept with the Path (thread-safe; a push() drops them).
     std::span<const double> starts() const;
     std::span<const double> centers() const;
+    std::span<const double> feeds() const;
     // Bytes the columns hold (as stored, and what starts()/centers() wrote out).
     std::size_t bytes() const;
 
@@ -129,8 +131,8 @@ private:
     // dropped by push().
     struct Rows {
         std::mutex mutex;
-        Column<double> starts, centers;
-        bool have_starts = false, have_centers = false;
+        Column<double> starts, centers, feeds;
+        bool have_starts = false, have_centers = false, have_feeds = false;
     };
     struct Written {
         mutable std::atomic<Rows*> rows{nullptr};
