@@ -24,25 +24,27 @@ int main(int argc, char** argv) {
     using clock = std::chrono::steady_clock;
     std::optional<toolcomp::ToolTable> tools;
     if (argc > 2) tools = toolcomp::read_tool_table_file(argv[2]);
+    toolcomp::RunOptions options;
+    options.share_unchanged_path = true;  // as the Python module runs
     if (file) {
         const auto t0 = clock::now();
-        const toolcomp::Result result = toolcomp::run_file(argv[1], std::nullopt, tools ? &*tools : nullptr);
+        const toolcomp::Result result = toolcomp::run_file(argv[1], std::nullopt, tools ? &*tools : nullptr, options);
         const double s = std::chrono::duration<double>(clock::now() - t0).count();
         std::printf("blocks %zu  segments %zu/%zu  diagnostics %zu\n", result.blocks, result.nominal.size(),
-                    result.path.size(), result.diagnostics.size());
+                    result.compensated().size(), result.diagnostics.size());
         std::printf("run_file %.3f s (%.0f ns/block)\n", s, s / static_cast<double>(result.blocks) * 1e9);
         return result.ok() ? 0 : 1;
     }
     const auto t0 = clock::now();
     const toolcomp::Program program = toolcomp::read_program(argv[1]);
     const auto t1 = clock::now();
-    const toolcomp::Result result = toolcomp::run(program, tools ? &*tools : nullptr);
+    const toolcomp::Result result = toolcomp::run(program, tools ? &*tools : nullptr, options);
     const auto t2 = clock::now();
     const double parse = std::chrono::duration<double>(t1 - t0).count();
     const double run = std::chrono::duration<double>(t2 - t1).count();
     const double blocks = static_cast<double>(result.blocks);
     std::printf("blocks %zu  segments %zu/%zu  diagnostics %zu\n", result.blocks, result.nominal.size(),
-                result.path.size(), result.diagnostics.size());
+                result.compensated().size(), result.diagnostics.size());
     std::printf("parse %.3f s (%.0f ns/block)  run %.3f s (%.0f ns/block)\n", parse, parse / blocks * 1e9, run,
                 run / blocks * 1e9);
     return result.ok() ? 0 : 1;

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <type_traits>
+#include <new>
 
 namespace toolcomp {
 
@@ -45,6 +47,17 @@ void Path::reserve(std::size_t n) {
     warm_.rows = std::min(warm_.rows, size());  // the columns may have moved: fresh memory
     warm_.arcs = std::min(warm_.arcs, arc_centers_.size() / 3);
     if (warm_.by) warm_.next = size();
+}
+
+void Path::reserve_granted(std::size_t n) {
+    for (; n >= size() + 1024; n /= 2) {
+        try {
+            reserve(n);
+            return;
+        } catch (const std::bad_alloc&) {
+            if (size() == 0) *this = Path();
+        }
+    }
 }
 
 namespace {
@@ -167,6 +180,78 @@ void Path::push_jump(std::size_t row, const Vec3& from) {
         jump_rows_.pop_back();
         throw;
     }
+}
+
+namespace {
+// The bits in which two values differ (0: the same, bit for bit), without a branch.
+template <class T>
+std::uint64_t differ(const T& a, const T& b) {
+    if constexpr (std::is_floating_point_v<T>)
+        return std::bit_cast<std::uint64_t>(a) ^ std::bit_cast<std::uint64_t>(b);
+    else
+        return static_cast<std::uint64_t>(a != b);
+}
+std::uint64_t differ3(const Vec3& a, const Vec3& b) { return differ(a.x(), b.x()) | differ(a.y(), b.y()) | differ(a.z(), b.z()); }
+}  // namespace
+
+// Every field push(), same_row() and push_row() read (a centre only matters on arcs).
+bool Path::same_segment(const Motion& a, const Motion& b) {
+    std::uint64_t d = differ(a.unit, b.unit) | differ(a.kind, b.kind) | differ(a.plane, b.plane) |
+                      differ(a.radius.side, b.radius.side) | differ(a.generated, b.generated) |
+                      differ3(a.start, b.start) | differ3(a.end, b.end) | differ(a.line, b.line) |
+                      differ(a.feed, b.feed) | differ(a.turns, b.turns) | differ(a.file, b.file) |
+                      differ(a.tool, b.tool) | differ3(a.tool_offset, b.tool_offset) |
+                      differ3(a.surface.normal, b.surface.normal) | differ3(a.tool_axis, b.tool_axis);
+    for (std::size_t i = 0; i < 3; ++i) d |= differ(a.abc[i], b.abc[i]);
+    if (a.is_arc()) d |= differ3(a.center, b.center);
+    return d == 0;
+}
+
+Path::Path(const Path& o, std::size_t rows)
+    : kind(o.kind.data(), rows),
+      end(o.end.data(), 3 * rows),
+      tool_offset(o.tool_offset, rows),
+      abc(o.abc, rows),
+      normal(o.normal, rows),
+      tool_axis(o.tool_axis, rows),
+      line(o.line.data(), rows),
+      tool(o.tool, rows),
+      turns(o.turns, rows),
+      feed(o.feed, rows),
+      side(o.side.data(), rows),
+      plane(o.plane, rows),
+      generated(o.generated.data(), rows),
+      file(o.file, rows),
+      files(o.files) {
+    const std::size_t jumps = static_cast<std::size_t>(
+        std::lower_bound(o.jump_rows_.begin(), o.jump_rows_.end(), static_cast<std::uint64_t>(rows)) -
+        o.jump_rows_.begin());
+    jump_rows_.insert(jump_rows_.end(), o.jump_rows_.data(), o.jump_rows_.data() + jumps);
+    jump_starts_.insert(jump_starts_.end(), o.jump_starts_.data(), o.jump_starts_.data() + 3 * jumps);
+    const std::size_t ranks = (rows + kRankRows - 1) / kRankRows;
+    arc_rank_.insert(arc_rank_.end(), o.arc_rank_.data(), o.arc_rank_.data() + ranks);
+    std::size_t arcs = 0;
+    for (std::size_t i = 0; i < rows; ++i)
+        arcs += kind[i] == static_cast<std::uint8_t>(MotionKind::arc_cw) ||
+                kind[i] == static_cast<std::uint8_t>(MotionKind::arc_ccw);
+    arc_centers_.insert(arc_centers_.end(), o.arc_centers_.data(), o.arc_centers_.data() + 3 * arcs);
+    room_.n = rows;
+    // The last segment's uniform row, as push() left it.
+    if (rows > 0) {
+        const std::size_t r = rows - 1;
+        for (int k = 0; k < 3; ++k) {
+            last_.tool_offset[k] = tool_offset(r, k);
+            last_.abc[k] = abc(r, k);
+            last_.normal[k] = normal(r, k);
+            last_.tool_axis[k] = tool_axis(r, k);
+        }
+        last_.tool = tool(r);
+        last_.turns = turns(r);
+        last_.file = file(r);
+        last_.plane = plane(r);
+    }
+    all_uniform_ = rows > 0 && tool_offset.uniform() && abc.uniform() && normal.uniform() && tool_axis.uniform() &&
+                   tool.uniform() && turns.uniform() && file.uniform() && plane.uniform();
 }
 
 // The uniform values of a segment that differs from the last one (or follows one that did).

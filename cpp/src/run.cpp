@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "pipeline.hpp"
+#include "unchanged_path.hpp"
 #include "program/program_source.hpp"
 
 #include "toolcomp/compensation/stages.hpp"
@@ -74,6 +75,25 @@ private:
     const char* what_;
     std::size_t count_ = 0;
     bool tripped_ = false;
+};
+
+// The programmed Path's SegmentLimit, telling the compensated side what it stored.
+class Programmed : public MotionSink {
+public:
+    Programmed(MotionSink& limit, const Path& path, UnchangedPath& unchanged)
+        : limit_(limit), path_(path), unchanged_(unchanged) {}
+    void push(const Motion& m) override {
+        const std::size_t before = path_.size();
+        limit_.push(m);
+        if (path_.size() != before) unchanged_.programmed(m);
+    }
+    void control(const ControlEvent& e) override { limit_.control(e); }
+    void finish() override { limit_.finish(); }
+
+private:
+    MotionSink& limit_;
+    const Path& path_;
+    UnchangedPath& unchanged_;
 };
 
 // The compensation stages know a move's file by its index only (Motion::file): the name,
@@ -168,20 +188,6 @@ void run_pipeline(const Program& program, const ToolTable* tools, const RunOptio
 }
 
 namespace {
-// A reservation the system refuses (an address-space limit, `ulimit -v`, strict overcommit)
-// is only a head start lost: half as much is asked for, down to none, and the columns grow
-// as the run fills them. The Path is still empty: what a refused attempt took goes with it.
-void reserve_what_is_granted(Path& path, std::size_t rows) {
-    for (; rows >= 1024; rows /= 2) {
-        try {
-            path.reserve(rows);
-            return;
-        } catch (const std::bad_alloc&) {
-            path = Path();
-        }
-    }
-}
-
 // `expected`: blocks the program is thought to have (the Paths are reserved for as many).
 Result run_main(const Program& program, const ToolTable* tools, const RunOptions& options,
                 const PipelineHooks& hooks, std::size_t expected) {
@@ -197,11 +203,14 @@ Result run_main(const Program& program, const ToolTable* tools, const RunOptions
     // compensated path is reserved for two. A reservation is address space only: large
     // columns are mapped, and pages never written are never memory (release_unused gives
     // back what the last segment's page leaves).
-    reserve_what_is_granted(res.nominal, std::min(expected, options.max_segments));
-    reserve_what_is_granted(res.path, std::min(2 * expected, options.max_segments));
+    res.nominal.reserve_granted(std::min(expected, options.max_segments));
     ControlProfile profile = options.profile ? *options.profile : profile_for(program.dialect);
-    SegmentLimit nominal(res.nominal, options.max_segments, "programmed");
-    SegmentLimit compensated(res.path, options.max_segments, "compensated");
+    // The compensated path is stored only once it differs from the programmed one
+    // (unchanged_path.hpp); its reservation is address space until then.
+    UnchangedPath unchanged(res.nominal, res.path, std::min(2 * expected, options.max_segments));
+    SegmentLimit nominal_limit(res.nominal, options.max_segments, "programmed");
+    Programmed nominal(nominal_limit, res.nominal, unchanged);
+    SegmentLimit compensated(unchanged, options.max_segments, "compensated");
     // The Paths' fresh pages are faulted in on another thread, ahead of the rows being
     // written (page_warmer.hpp). Stopped before the Paths give back what they do not use
     // (and, declared after them, before they are freed).
@@ -209,17 +218,25 @@ Result run_main(const Program& program, const ToolTable* tools, const RunOptions
     if (options.threads) {
         warmer.emplace();
         res.nominal.warm_with(&*warmer);
-        res.path.warm_with(&*warmer);
+        unchanged.warm_with(&*warmer);
     }
     iso::InterpretOutput out;
     run_pipeline(program, tools, options, profile, nominal, compensated, res.diagnostics, out, hooks);
+    const bool same = unchanged.settle();
     res.nominal.warm_with(nullptr);
-    res.path.warm_with(nullptr);
+    unchanged.warm_with(nullptr);
     warmer.reset();
     res.nominal.release_unused();  // what the reservation and the last 2 MB pages left over
-    res.path.release_unused();
     res.nominal.files = out.files;
-    res.path.files = std::move(out.files);
+    if (same && options.share_unchanged_path) {
+        res.path = Path();
+        res.path_is_nominal = true;
+    } else if (same) {
+        res.path = res.nominal;
+    } else {
+        res.path.release_unused();
+        res.path.files = std::move(out.files);
+    }
     res.parameters = std::move(out.parameters);
     return res;
 }

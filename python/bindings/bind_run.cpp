@@ -24,6 +24,7 @@ RunOptions run_options(bool strict, bool block_delete, std::optional<ControlProf
     o.profile = std::move(profile);
     o.progress_every = progress_every;
     o.search_path = std::move(search_path);
+    o.share_unchanged_path = true;  // `path` is then the `nominal` Path object
     if (!progress.is_none())
         o.progress = [&progress](std::size_t n) {
             py::gil_scoped_acquire gil;
@@ -208,8 +209,11 @@ void bind_run(py::module_& m) {
         .def_property_readonly("nominal",
                                [](std::shared_ptr<Result> r) { return std::shared_ptr<Path>(r, &r->nominal); },
                                "the programmed Path (what the interpreter produced, before compensation)")
-        .def_property_readonly("path", [](std::shared_ptr<Result> r) { return std::shared_ptr<Path>(r, &r->path); },
-                               "the compensated Path (after the compensation stages)")
+        .def_property_readonly(
+            "path",
+            [](std::shared_ptr<Result> r) { return std::shared_ptr<Path>(r, r->path_is_nominal ? &r->nominal : &r->path); },
+            "the compensated Path (after the compensation stages); the `nominal` Path itself when no stage changed "
+            "a segment (a program without compensation: stored once)")
         .def_readonly("blocks", &Result::blocks, "number of blocks in the program")
         .def_readonly("parameters", &Result::parameters,
                       "numbered parameters set at the end of the run, {number: value} (LinuxCNC, Fanuc; vacant "
@@ -224,7 +228,7 @@ void bind_run(py::module_& m) {
             "the workpiece blank the program declares (Heidenhain BLK FORM), ((min), (max)) in mm, or None")
         .def("__repr__", [](const Result& r) {
             return "Result(ok=" + std::string(r.ok() ? "True" : "False") + ", segments=" +
-                   std::to_string(r.path.size()) + ", diagnostics=" + std::to_string(r.diagnostics.size()) + ")";
+                   std::to_string(r.compensated().size()) + ", diagnostics=" + std::to_string(r.diagnostics.size()) + ")";
         });
 
     m.def(

@@ -279,3 +279,22 @@ def test_constant_columns_are_stride_0_views_until_they_vary():
     res = tc.run(tc.Program.parse("G21 G0 X1\nX2 A90\nM2\n"))
     np.testing.assert_array_equal(res.path.abc, [[0, 0, 0], [90, 0, 0]])
     assert res.path.abc.strides[0] == 24
+
+
+def test_a_path_no_stage_changes_is_the_programmed_path_stored_once():
+    res = run(PROGRAM, TOOLS)  # no radius compensation: every segment passes unchanged
+    assert res.path is res.nominal
+    np.testing.assert_allclose(res.path.end, [[0, 0, 5], [0, 0, -1], [10, 0, -1], [0, 0, -1]])
+    # with compensation the two differ: the compensated path is stored on its own
+    comp = run("G21 G0 X0 Y0\nG41.1 D2 G1 X20 F100\nG1 X40 Y10\nG40 G1 X60\nM2\n")
+    assert comp.path is not comp.nominal
+    assert len(comp.path) == len(comp.nominal) == 4
+    # radius 1 on the left: an inside corner, where y = 1 meets the next line's offset
+    np.testing.assert_allclose(comp.path.end[1], [22 - 5 ** 0.5, 1, 0])
+    np.testing.assert_allclose(comp.nominal.end[1], [20, 0, 0])
+    # an error the stages meet after the programmed path stored the move: the compensated
+    # path ends one segment earlier (strict=False returns both up to the error)
+    bad = run("G21 G0 X0 Y0\nG1 X5 F100\nG41.1 D20 G1 X10\nM2\n", strict=False)
+    assert not bad.ok and bad.path is not bad.nominal
+    assert (len(bad.nominal), len(bad.path)) == (3, 2)
+    np.testing.assert_allclose(bad.path.end, bad.nominal.end[:2])

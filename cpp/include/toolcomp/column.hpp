@@ -43,6 +43,7 @@ public:
 
     Column() noexcept = default;
     Column(std::size_t n, const T& v) { resize(n, v); }
+    Column(const T* first, std::size_t n) { insert(end(), first, first + n); }
     Column(const Column& o) { copy_from(o); }
     Column(Column&& o) noexcept { swap(o); }
     Column& operator=(const Column& o) {
@@ -175,6 +176,19 @@ template <class T, int K>
 class UniformColumn {
 public:
     UniformColumn() { std::fill(fill_, fill_ + K, T{}); }
+    // The first `rows` rows of `o`, stored as `o` stored them then: uniform up to the first
+    // row that differs from the fill (the rows before it were written out as the fill).
+    UniformColumn(const UniformColumn& o, std::size_t rows) : n_(rows), reserve_(o.reserve_) {
+        std::copy(o.fill_, o.fill_ + K, fill_);
+        if (!o.stored_) return;
+        for (std::size_t r = 0; r < rows && !stored_; ++r)
+            stored_ = std::memcmp(o.data_.data() + K * r, fill_, sizeof fill_) != 0;
+        if (stored_) data_.insert(data_.end(), o.data_.data(), o.data_.data() + K * rows);
+    }
+    UniformColumn(const UniformColumn&) = default;
+    UniformColumn& operator=(const UniformColumn&) = default;
+    UniformColumn(UniformColumn&&) = default;
+    UniformColumn& operator=(UniformColumn&&) = default;
     explicit UniformColumn(T x, T y = T{}, T z = T{}) {
         const T v[3] = {x, y, z};
         std::copy(v, v + K, fill_);

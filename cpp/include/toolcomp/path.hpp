@@ -45,11 +45,26 @@ public:
     // subprogram file in the order the run first entered it.
     std::vector<std::string> files;
 
+    Path() = default;
+    // The first `rows` segments of `other`, stored as `other` stores them (room for no more).
+    Path(const Path& other, std::size_t rows);
+    Path(const Path&) = default;
+    Path& operator=(const Path&) = default;
+    Path(Path&&) = default;
+    Path& operator=(Path&&) = default;
+
     std::size_t size() const { return kind.size(); }
     void reserve(std::size_t n);
+    // reserve(n), or where the system refuses (an address-space limit, `ulimit -v`, strict
+    // overcommit) half as much, down to none: a head start lost, not an error (the columns
+    // grow as segments come). An empty Path gives back what a refused attempt took.
+    void reserve_granted(std::size_t n);
     // Gives back the columns' memory beyond the segments (once the Path is complete).
     void release_unused() noexcept;
     void push(const Motion& m) override;
+    // Whether push() stores the same row for `a` as for `b` after the same segments (the
+    // fields push() reads, bit for bit).
+    static bool same_segment(const Motion& a, const Motion& b);
     // Has `warmer` fault in the pages of the rows ahead of push() on its thread (large
     // reservations only; nullptr: no more). Neither copied nor moved with the Path.
     void warm_with(PageWarmer* warmer);

@@ -68,11 +68,19 @@ struct RunOptions {
     // threads of their own (the other core). false: everything on the calling thread, for a
     // batch whose runs keep every core busy anyway (the hand-over between threads is work too).
     bool threads = true;
+    // A compensated path that is the programmed one, segment for segment (no compensation
+    // changed anything: a program in tool-centre coordinates), is stored once: true leaves
+    // Result::path empty and sets Result::path_is_nominal (the Python module does); false
+    // copies it into Result::path.
+    bool share_unchanged_path = false;
 };
 
 struct Result {
     Path nominal;  // the programmed path (what the interpreter produced)
-    Path path;     // after the compensation stages
+    Path path;     // after the compensation stages (empty when path_is_nominal)
+    // The compensated path is `nominal`, segment for segment (RunOptions::share_unchanged_path).
+    bool path_is_nominal = false;
+    const Path& compensated() const { return path_is_nominal ? nominal : path; }
     std::vector<Diagnostic> diagnostics;
     std::size_t blocks = 0;
     std::optional<Blank> blank;  // the workpiece blank the program declares (mm), if any

@@ -26,6 +26,14 @@ public:
         return *this;
     }
 
+    // The first `rows` rows of `o`.
+    RunColumn(const RunColumn& o, std::size_t rows) : n_(rows) {
+        const std::size_t runs = static_cast<std::size_t>(
+            std::lower_bound(o.starts_.begin(), o.starts_.end(), static_cast<std::uint64_t>(rows)) - o.starts_.begin());
+        starts_.insert(starts_.end(), o.starts_.data(), o.starts_.data() + runs);
+        values_.insert(values_.end(), o.values_.data(), o.values_.data() + runs);
+    }
+
     std::size_t size() const noexcept { return n_; }
     std::size_t runs() const noexcept { return values_.size(); }
     // Throws (bad_alloc) only where a run starts, and then leaves the column as it was.
