@@ -231,9 +231,7 @@ Path::Path(const Path& o, std::size_t rows)
     const std::size_t ranks = (rows + kRankRows - 1) / kRankRows;
     arc_rank_.insert(arc_rank_.end(), o.arc_rank_.data(), o.arc_rank_.data() + ranks);
     std::size_t arcs = 0;
-    for (std::size_t i = 0; i < rows; ++i)
-        arcs += kind[i] == static_cast<std::uint8_t>(MotionKind::arc_cw) ||
-                kind[i] == static_cast<std::uint8_t>(MotionKind::arc_ccw);
+    for (std::size_t i = 0; i < rows; ++i) arcs += arc_row(kind[i]);
     arc_centers_.insert(arc_centers_.end(), o.arc_centers_.data(), o.arc_centers_.data() + 3 * arcs);
     room_.n = rows;
     // The last segment's uniform row, as push() left it.

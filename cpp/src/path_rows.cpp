@@ -22,12 +22,9 @@ Vec3 Path::start_at(std::size_t i) const {
 }
 
 Vec3 Path::center_at(std::size_t i) const {
-    const auto k = static_cast<MotionKind>(kind[i]);
-    if (k != MotionKind::arc_cw && k != MotionKind::arc_ccw) return Vec3::Constant(kNaN);
+    if (!arc_row(kind[i])) return Vec3::Constant(kNaN);
     std::size_t arc = arc_rank_[i / kRankRows];  // arcs before the first row of i's stretch
-    for (std::size_t r = i - i % kRankRows; r < i; ++r)
-        arc += kind[r] == static_cast<std::uint8_t>(MotionKind::arc_cw) ||
-               kind[r] == static_cast<std::uint8_t>(MotionKind::arc_ccw);
+    for (std::size_t r = i - i % kRankRows; r < i; ++r) arc += arc_row(kind[r]);
     return row3(arc_centers_.data() + 3 * arc);
 }
 
@@ -40,48 +37,48 @@ Path::Rows& Path::Written::get() const {
     return *r;
 }
 
+namespace {
+// A column written out once: `write` fills its n values under the lock, then it is kept.
+template <class Rows, class Write>
+std::span<const double> once(Rows& w, Column<double>& col, bool& have, std::size_t n, Write write) {
+    std::lock_guard lock(w.mutex);
+    if (!have) {
+        col.resize(n);
+        write(col.data());
+        have = true;
+    }
+    return {col.data(), col.size()};
+}
+}  // namespace
+
 std::span<const double> Path::starts() const {
     Rows& w = written_.get();
-    std::lock_guard lock(w.mutex);
-    if (!w.have_starts) {
-        const std::size_t n = size();
-        w.starts.resize(3 * n);
-        if (n > 1) std::memcpy(w.starts.data() + 3, end.data(), 3 * (n - 1) * sizeof(double));
+    return once(w, w.starts, w.have_starts, 3 * size(), [&](double* out) {
+        // each the end before it, then the jumps (row 0 is one)
+        if (size() > 1) std::memcpy(out + 3, end.data(), 3 * (size() - 1) * sizeof(double));
         for (std::size_t j = 0; j < jump_rows_.size(); ++j)
-            std::memcpy(w.starts.data() + 3 * jump_rows_[j], jump_starts_.data() + 3 * j, 3 * sizeof(double));
-        w.have_starts = true;
-    }
-    return {w.starts.data(), w.starts.size()};
+            std::memcpy(out + 3 * jump_rows_[j], jump_starts_.data() + 3 * j, 3 * sizeof(double));
+    });
 }
 
 std::span<const double> Path::centers() const {
     Rows& w = written_.get();
-    std::lock_guard lock(w.mutex);
-    if (!w.have_centers) {
-        const std::size_t n = size();
-        w.centers.resize(3 * n, kNaN);
+    return once(w, w.centers, w.have_centers, 3 * size(), [&](double* out) {
         const double* next = arc_centers_.data();
-        for (std::size_t i = 0; i < n; ++i) {
-            const auto k = static_cast<MotionKind>(kind[i]);
-            if (k == MotionKind::arc_cw || k == MotionKind::arc_ccw) {
-                std::memcpy(w.centers.data() + 3 * i, next, 3 * sizeof(double));
+        for (std::size_t i = 0; i < size(); ++i, out += 3) {
+            if (arc_row(kind[i])) {
+                std::memcpy(out, next, 3 * sizeof(double));
                 next += 3;
+            } else {
+                out[0] = out[1] = out[2] = kNaN;
             }
         }
-        w.have_centers = true;
-    }
-    return {w.centers.data(), w.centers.size()};
+    });
 }
 
 std::span<const double> Path::feeds() const {
     Rows& w = written_.get();
-    std::lock_guard lock(w.mutex);
-    if (!w.have_feeds) {
-        w.feeds.resize(size());
-        feed.write(w.feeds.data());
-        w.have_feeds = true;
-    }
-    return {w.feeds.data(), w.feeds.size()};
+    return once(w, w.feeds, w.have_feeds, size(), [&](double* out) { feed.write(out); });
 }
 
 std::size_t Path::bytes() const {

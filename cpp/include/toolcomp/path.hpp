@@ -136,6 +136,9 @@ private:
     // always), with those starts. Centres: the arcs' only, in row order, and the arcs before
     // every kRankRows-th row (for center_at).
     static constexpr std::size_t kRankRows = 256;
+    static bool arc_row(std::uint8_t k) {
+        return k == static_cast<std::uint8_t>(MotionKind::arc_cw) || k == static_cast<std::uint8_t>(MotionKind::arc_ccw);
+    }
     Column<std::uint64_t> jump_rows_;
     Column<double> jump_starts_;
     Column<double> arc_centers_;
