@@ -102,6 +102,37 @@ TEST_CASE("element distance: arcs about an end of a segment (corner arcs), again
     CHECK(settled > 50);  // the arcs that turn away from the segment are settled by the bound
 }
 
+TEST_CASE("element distance: corner arcs and segments off an arc's sweep, against sampling") {
+    // A minor arc, and at one of its ends a corner arc of radius r (or a segment from there)
+    // turning any way: the bound never passes the sampled distance, and it settles those that
+    // lie off the arc's sweep (the distance is then the corner's radius).
+    std::mt19937 rng(1204);
+    std::uniform_real_distribution<double> pos(-5, 5), unit(0, 1);
+    int settled = 0, checked = 0;
+    for (int k = 0; k < 600; ++k) {
+        const Vec2 o(pos(rng), pos(rng));
+        const double R = 1 + 4 * unit(rng), b0 = 2 * kPi * unit(rng), bs = kPi * unit(rng);
+        const int bdir = unit(rng) < 0.5 ? 1 : -1;
+        const Element2 arc = Element2::arc(o + R * Vec2(std::cos(b0), std::sin(b0)),
+                                           o + R * Vec2(std::cos(b0 + bdir * bs), std::sin(b0 + bdir * bs)), o, bdir);
+        const Vec2 E = unit(rng) < 0.5 ? arc.p0 : arc.p1;
+        const double r = 0.2 + unit(rng), a0 = 2 * kPi * unit(rng), sweep = kPi * unit(rng);
+        const int dir = unit(rng) < 0.5 ? 1 : -1;
+        const Vec2 s = E + r * Vec2(std::cos(a0), std::sin(a0)), e = E + r * Vec2(std::cos(a0 + dir * sweep), std::sin(a0 + dir * sweep));
+        const Element2 other = unit(rng) < 0.7 ? Element2::arc(s, e, E, dir) : Element2::line(E + 0.5 * (s - E), s + (s - E));
+        const double sampled = sampled_distance(other, arc, 2000), exact = element_distance(other, arc);
+        for (const double bound : {distance_lower_bound(Swept(other), Swept(arc)), distance_lower_bound(Swept(arc), Swept(other))}) {
+            INFO("case " << k << ": bound " << bound << ", exact " << exact << ", sampled " << sampled);
+            CHECK(bound <= sampled + 1e-9);
+            CHECK(bound <= exact + 1e-9);
+            ++checked;
+            settled += other.is_arc && bound > r - 1e-9;
+        }
+    }
+    CHECK(checked == 1200);
+    CHECK(settled > 100);  // the corner arcs that turn away from the arc (0 without the bound)
+}
+
 TEST_CASE("element distance: hand-calculated cases") {
     // Parallel segments 2 apart; a segment through a circle; a point of a quarter arc.
     CHECK(element_distance(Element2::line({0, 0}, {10, 0}), Element2::line({2, 2}, {8, 2})) == Approx(2));

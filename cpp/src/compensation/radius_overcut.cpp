@@ -77,6 +77,26 @@ double beyond_line(const Swept& l, const Element2& o) {
     return s0 * s1 > 0 ? std::min(std::fabs(s0), std::fabs(s1)) / l.len : 0.0;
 }
 
+// Whether every point of `a` lies on the closed side n.(x - o) <= 0 of the line through o.
+bool within_half_plane(const Swept& a, const Vec2& o, const Vec2& n) {
+    if (n.dot(a.e.p0 - o) > 0 || n.dot(a.e.p1 - o) > 0) return false;
+    if (!a.e.is_arc) return true;
+    // An arc reaches furthest along n at an end or where it points along n.
+    return !on_arc(a, a.e.c + n) || n.dot(a.e.c - o) + std::max(a.r0, a.r1) * n.norm() <= 0;
+}
+
+// The distance of `a` from the arc `b` when b is a circular arc of at most half a turn and
+// `a` lies wholly before its start or after its end (on the far side of the line through
+// its centre and that end): from a point off an arc's sweep the nearest point of the arc is
+// an end (the distance to a point of the circle grows with the angle between them), so the
+// distance is a's from b's nearer end. 0: not so.
+double off_sweep(const Swept& a, const Swept& b) {
+    if (!b.e.is_arc || b.full || b.major || b.sweep != 0) return 0;
+    const Vec2 before = b.e.dir * left_normal(b.u), after = -b.e.dir * left_normal(b.w);
+    if (!within_half_plane(a, b.e.c, before) && !within_half_plane(a, b.e.c, after)) return 0;
+    return std::min(point_distance(a, b.e.p0), point_distance(a, b.e.p1));
+}
+
 }  // namespace
 
 double distance_lower_bound(const Swept& a, const Swept& b, double enough) {
@@ -88,7 +108,10 @@ double distance_lower_bound(const Swept& a, const Swept& b, double enough) {
     }
     if (a.e.is_arc && b.e.is_arc) {
         const double D = (a.e.c - b.e.c).norm();
-        return std::max(std::max(D - rmax(a) - rmax(b), rmin(a) - D - rmax(b)), rmin(b) - D - rmax(a));
+        const double ring = std::max(std::max(D - rmax(a) - rmax(b), rmin(a) - D - rmax(b)), rmin(b) - D - rmax(a));
+        if (ring >= enough) return ring;
+        // a corner arc about an end of the next or last arc, turning away from it
+        return std::max({ring, off_sweep(a, b), off_sweep(b, a)});
     }
     const Swept& arc = a.e.is_arc ? a : b;
     const Element2& line = a.e.is_arc ? b.e : a.e;
@@ -108,7 +131,9 @@ double distance_lower_bound(const Swept& a, const Swept& b, double enough) {
         if (arc.u.dot(along) <= 0 && arc.w.dot(along) <= 0 && !on_arc(arc, arc.e.c + along))
             bound = std::max(bound, rmin(arc) - (arc.e.c - E).norm());
     }
-    return bound;
+    if (bound >= enough) return bound;
+    // the segment off the arc's sweep (a line after the arc it joins, on the tool's side)
+    return std::max(bound, off_sweep(a.e.is_arc ? b : a, arc));
 }
 
 Swept::Swept(const Element2& el) : e(el) {
