@@ -44,6 +44,7 @@ void check_same(const Path& a, const Path& b) {
     CHECK(a.bytes() == b.bytes());
     CHECK(a.tool.uniform() == b.tool.uniform());
     CHECK(a.abc.uniform() == b.abc.uniform());
+    if (a.size() == 0) return;  // nothing written out (and no memory to compare)
     const auto as = a.starts(), bs = b.starts(), ac = a.centers(), bc = b.centers(), af = a.feeds(), bf = b.feeds();
     CHECK(std::memcmp(as.data(), bs.data(), as.size_bytes()) == 0);
     CHECK(std::memcmp(ac.data(), bc.data(), ac.size_bytes()) == 0);
