@@ -7,8 +7,8 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
-#include <type_traits>
 #include <new>
+#include <type_traits>
 
 namespace toolcomp {
 

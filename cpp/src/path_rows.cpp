@@ -40,12 +40,11 @@ Path::Rows& Path::Written::get() const {
 namespace {
 // A column written out once: `write` fills its n values under the lock, then it is kept.
 template <class Rows, class Write>
-std::span<const double> once(Rows& w, Column<double>& col, bool& have, std::size_t n, Write write) {
+std::span<const double> once(Rows& w, Column<double>& col, std::size_t n, Write write) {
     std::lock_guard lock(w.mutex);
-    if (!have) {
+    if (col.size() != n) {
         col.resize(n);
         write(col.data());
-        have = true;
     }
     return {col.data(), col.size()};
 }
@@ -53,7 +52,7 @@ std::span<const double> once(Rows& w, Column<double>& col, bool& have, std::size
 
 std::span<const double> Path::starts() const {
     Rows& w = written_.get();
-    return once(w, w.starts, w.have_starts, 3 * size(), [&](double* out) {
+    return once(w, w.starts, 3 * size(), [&](double* out) {
         // each the end before it, then the jumps (row 0 is one)
         if (size() > 1) std::memcpy(out + 3, end.data(), 3 * (size() - 1) * sizeof(double));
         for (std::size_t j = 0; j < jump_rows_.size(); ++j)
@@ -63,7 +62,7 @@ std::span<const double> Path::starts() const {
 
 std::span<const double> Path::centers() const {
     Rows& w = written_.get();
-    return once(w, w.centers, w.have_centers, 3 * size(), [&](double* out) {
+    return once(w, w.centers, 3 * size(), [&](double* out) {
         const double* next = arc_centers_.data();
         for (std::size_t i = 0; i < size(); ++i, out += 3) {
             if (arc_row(kind[i])) {
@@ -78,7 +77,7 @@ std::span<const double> Path::centers() const {
 
 std::span<const double> Path::feeds() const {
     Rows& w = written_.get();
-    return once(w, w.feeds, w.have_feeds, size(), [&](double* out) { feed.write(out); });
+    return once(w, w.feeds, size(), [&](double* out) { feed.write(out); });
 }
 
 std::size_t Path::bytes() const {

@@ -23,8 +23,7 @@ public:
     // The programmed Path has stored `m` (the stages are given it next).
     void programmed(const Motion& m) {
         if (!same_) return;
-        if (pending_) diverge();  // the one before it was kept back
-        if (!same_) return;
+        if (pending_) return diverge();  // the one before it was kept back
         last_ = m;
         pending_ = true;
     }

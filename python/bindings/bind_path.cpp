@@ -12,17 +12,21 @@ using namespace toolcomp;
 
 namespace {
 template <class T>
-py::array view(py::handle owner, const Column<T>& v, std::size_t n, std::size_t width,
-               py::dtype dtype = py::dtype::of<T>()) {
+py::array view(py::handle owner, const T* data, std::size_t n, std::size_t width, py::dtype dtype = py::dtype::of<T>()) {
     std::vector<py::ssize_t> shape{static_cast<py::ssize_t>(n)}, strides{static_cast<py::ssize_t>(sizeof(T) * width)};
     if (width > 1) {
         shape.push_back(static_cast<py::ssize_t>(width));
         strides.push_back(sizeof(T));
     }
     static const T dummy{};
-    py::array a(dtype, shape, strides, v.empty() ? &dummy : v.data(), owner);
+    py::array a(dtype, shape, strides, data ? data : &dummy, owner);
     py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
     return a;
+}
+template <class T>
+py::array view(py::handle owner, const Column<T>& v, std::size_t n, std::size_t width,
+               py::dtype dtype = py::dtype::of<T>()) {
+    return view(owner, v.empty() ? nullptr : v.data(), n, width, dtype);
 }
 
 // Rows written out by the Path when asked for (starts(), centers(), feeds()): kept with it.
@@ -34,15 +38,7 @@ py::object written(py::object self) {
         py::gil_scoped_release nogil;  // a million rows take a few ms
         v = (p.*rows)();
     }
-    static const double dummy = 0;
-    std::vector<py::ssize_t> shape{static_cast<py::ssize_t>(p.size())}, strides{py::ssize_t(8 * width)};
-    if (width > 1) {
-        shape.push_back(width);
-        strides.push_back(8);
-    }
-    py::array a(py::dtype::of<double>(), shape, strides, v.empty() ? &dummy : v.data(), self);
-    py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
-    return std::move(a);
+    return view(self, v.empty() ? nullptr : v.data(), p.size(), width);
 }
 
 // A Vec3Column: its rows, or while every row is the same, that one row repeated (stride 0).

@@ -8,9 +8,9 @@
 // tool length offset moves the start in program coordinates), only arcs have a centre, and
 // the feed changes now and then. That is 56 of the 87 bytes a segment on an ordinary
 // program, and the memory a run writes costs time too (pages the kernel zeroes).
+#include <atomic>
 #include <cstdint>
 #include <limits>
-#include <atomic>
 #include <mutex>
 #include <span>
 #include <string>
@@ -78,7 +78,7 @@ public:
     std::span<const double> starts() const;
     std::span<const double> centers() const;
     std::span<const double> feeds() const;
-    // Bytes the columns hold (as stored, and what starts()/centers() wrote out).
+    // Bytes the columns hold (as stored, and what starts()/centers()/feeds() wrote out).
     std::size_t bytes() const;
 
     // Polyline with arcs chorded within `tolerance` (mm). The first point is the start of
@@ -144,13 +144,13 @@ private:
     Column<double> arc_centers_;
     Column<std::uint64_t> arc_rank_;
     void push_jump(std::size_t row, const Vec3& from);
-    // starts() and centers() once written out: made at the first call (the first of two
+    // starts(), centers() and feeds() once written out (a column is written when it holds
+    // fewer values than the Path asks of it): made at the first call (the first of two
     // threads to get there wins), moved with the Path, not copied (a copy writes its own),
     // dropped by push().
     struct Rows {
         std::mutex mutex;
         Column<double> starts, centers, feeds;
-        bool have_starts = false, have_centers = false, have_feeds = false;
     };
     struct Written {
         mutable std::atomic<Rows*> rows{nullptr};
