@@ -59,7 +59,7 @@ public:
             tripped_ = true;
             throw ProgramError("memory_limit", std::string("The ") + what_ + " path would hold more than " +
                                                    std::to_string(limit_) + " segments (max_segments)",
-                               {m.line, 0});
+                               {m.line, 0, {}, m.file});
         }
         ++count_;
         out_.push(m);

@@ -4,6 +4,7 @@ with a tc.Error subclass carrying a stable code (and the line where one applies)
 below it the input runs."""
 import inspect
 import os
+import pathlib
 import re
 import resource
 import subprocess
@@ -243,6 +244,24 @@ def test_max_segments_bounds_the_programmed_path():
     assert res.nominal.end[-1, 0] == 9.0
     (d,) = [d for d in res.diagnostics if d.severity == "error"]
     assert (d.code, d.line) == ("memory_limit", 12)
+
+
+def test_max_segments_in_a_called_file(tmp_path):
+    # The segment beyond the limit is in the called file: a Heidenhain CALL PGM names that
+    # file and its line (sub1.h line 2, the third segment: see test_heidenhain_call_pgm).
+    heidenhain = pathlib.Path(__file__).resolve().parents[1] / "programs" / "heidenhain"
+    with pytest.raises(tc.ProgramError) as e:
+        tc.run(heidenhain / "call_main.h", search_path=[heidenhain], max_segments=2)
+    assert (e.value.code, e.value.line) == ("memory_limit", 2)
+    assert pathlib.Path(e.value.file).name.lower() == "sub1.h"
+    # LinuxCNC unwinds its calls before it reports any error raised inside one: the line of
+    # the outermost call in the main program (as for the errors of its own).
+    (tmp_path / "moves.ngc").write_text("o<moves> sub\nG1 X1 F100\nG1 X2\nG1 X3\no<moves> endsub\nM2\n")
+    prog = tc.Program.parse("G21\nG0 X0 Y0\no<moves> call\nM2\n")
+    assert len(tc.run(prog, search_path=[tmp_path]).nominal) == 4
+    with pytest.raises(tc.ProgramError) as e:
+        tc.run(prog, search_path=[tmp_path], max_segments=3)
+    assert (e.value.code, e.value.line, e.value.file) == ("memory_limit", 3, None)
 
 
 SQUARE = """G21 G90 G17
