@@ -17,6 +17,7 @@ PYBIND11_MODULE(_core, m) {
     bind_tools(m);
     bind_program(m);
     bind_path(m);
+    bind_path_text(m);
     bind_run(m);
     bind_stream(m);
     bind_sinumerik(m);

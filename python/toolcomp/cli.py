@@ -13,7 +13,6 @@ the engine itself cannot be loaded.
 from __future__ import annotations
 
 import argparse
-import csv
 import json
 import os
 import sys
@@ -367,13 +366,7 @@ CSV_HEADER = (["index", "kind", "line", "tool",
                "start_x", "start_y", "start_z", "end_x", "end_y", "end_z",
                "center_x", "center_y", "center_z", "feed", "side", "generated",
                "tool_offset_x", "tool_offset_y", "tool_offset_z", "a", "b", "c"])
-KIND_NAMES = {0: "rapid", 1: "line", 2: "arc_cw", 3: "arc_ccw"}
 CSV_ROWS_AT_ONCE = 65536
-
-
-def _fmt(values):
-    """Column of floats as text; NaN (centre of a line, feed of a rapid) as an empty field."""
-    return ["" if v != v else f"{v:.6f}" for v in np.asarray(values, dtype=float).tolist()]
 
 
 class CsvWriter:
@@ -381,51 +374,40 @@ class CsvWriter:
     one, or the chunks of a stream in order; rows are numbered on across them), then
     ``close``. The file is made at the first ``add`` or at ``close`` (header only for no
     segments). ``discard`` takes back what was written (a streamed run that stopped with an
-    error has no path, as a whole run has none)."""
+    error has no path, as a whole run has none). The rows are written by the engine
+    (``cpp/src/path_csv.cpp``): numbers with 6 decimals, an empty field for a line's centre
+    and a rapid's feed, RFC 4180 line ends."""
 
     def __init__(self, filename):
         self.filename = filename
         self.rows = 0
-        self._file = self._writer = None
+        self._file = None
 
     def _open(self):
         if self._file is None:
-            self._file = open(self.filename, "w", newline="", encoding="utf-8")
-            self._writer = csv.writer(self._file)
-            self._writer.writerow(CSV_HEADER)
+            self._file = open(self.filename, "w", newline="", encoding="ascii")
+            self._file.write(self._header())
+
+    @staticmethod
+    def _header():
+        return _engine()._core._csv_header
 
     def add(self, path) -> None:
         from toolcomp.plot import path_size
 
         self._open()
         n = path_size(path) if path is not None else 0
-        if n == 0:
-            return
-        start, end = np.asarray(path.start).reshape(n, 3), np.asarray(path.end).reshape(n, 3)
-        center = np.asarray(path.center).reshape(n, 3)
-        offs = np.asarray(path.tool_offset).reshape(n, 3)
-        abc = np.asarray(getattr(path, "abc", np.full((n, 3), np.nan))).reshape(n, 3)
-        kind, line, tool = np.asarray(path.kind), np.asarray(path.line), np.asarray(path.tool)
-        feed, side, generated = np.asarray(path.feed), np.asarray(path.side), np.asarray(path.generated)
+        core = _engine()._core
         # A block of rows at a time: the text of a whole path would take many times its memory.
         for a in range(0, n, CSV_ROWS_AT_ONCE):
-            b = min(n, a + CSV_ROWS_AT_ONCE)
-            cols = [
-                range(self.rows + a, self.rows + b),
-                [KIND_NAMES.get(k, str(k)) for k in kind[a:b].tolist()],
-                line[a:b].tolist(), tool[a:b].tolist(),
-                *(_fmt(v[a:b, j]) for v in (start, end, center) for j in range(3)),
-                _fmt(feed[a:b]), side[a:b].tolist(), generated[a:b].astype(int).tolist(),
-                *(_fmt(v[a:b, j]) for v in (offs, abc) for j in range(3)),
-            ]
-            self._writer.writerows(zip(*cols))
+            self._file.write(core._csv_rows(path, a, min(n, a + CSV_ROWS_AT_ONCE), self.rows + a))
         self.rows += n
 
     def discard(self) -> None:
         if self._file is not None:
             self._file.seek(0)
             self._file.truncate()
-            self._writer.writerow(CSV_HEADER)
+            self._file.write(self._header())
         self.rows = 0
 
     def close(self, make=True) -> int:
