@@ -200,6 +200,19 @@ def rs274_run(d, text):
                                   env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=False)
 
 
+def bench_text(path):
+    """What users wait for after a run: the G-code export and the CLI's CSV rows."""
+    from toolcomp import _core
+    from toolcomp.export import to_gcode
+
+    n = len(path)
+    path.start, path.center, path.feed  # written out once, as any first use does
+    t_gcode, text = best_of(lambda: to_gcode(path, "grbl"))
+    t_csv, _ = best_of(lambda: _core._csv_rows(path, 0, n, 0))
+    print(f"  export, CSV    : {n:,} segments: G-code {t_gcode:.3f} s ({t_gcode / n * 1e9:.0f} ns/segment, "
+          f"{len(text) / 2**20:.0f} MB), CSV rows {t_csv:.3f} s ({t_csv / n * 1e9:.0f} ns/segment)")
+
+
 def bench_program(n, comp, tools):
     text, blocks = generate(n, comp)
     print(f"program {'with G42' if comp else 'without compensation'}: {blocks:,} motion blocks, "
@@ -214,6 +227,8 @@ def bench_program(n, comp, tools):
           f"{t_run / blocks * 1e9:5.0f} ns/block  ({len(res.path):,} segments, {compensated:,} compensated)")
     print(f"  toolcomp total : {t_parse + t_run:7.3f} s  peak RSS of the bench so far {rss:.0f} MB; the two Paths' "
           f"columns {(res.path.nbytes + res.nominal.nbytes) / 2**20:.0f} MB")
+    if comp:
+        bench_text(res.path)
     del res, prog
     with tempfile.TemporaryDirectory() as d:
         path = os.path.join(d, "bench.ngc")
