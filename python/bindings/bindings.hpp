@@ -9,6 +9,7 @@ void bind_errors(py::module_& m);
 void bind_program(py::module_& m);
 void bind_path(py::module_& m);
 void bind_path_text(py::module_& m);
+void bind_geometry(py::module_& m);
 void bind_run(py::module_& m);
 void bind_stream(py::module_& m);
 void bind_tools(py::module_& m);

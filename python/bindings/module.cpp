@@ -18,6 +18,7 @@ PYBIND11_MODULE(_core, m) {
     bind_program(m);
     bind_path(m);
     bind_path_text(m);
+    bind_geometry(m);
     bind_run(m);
     bind_stream(m);
     bind_sinumerik(m);

@@ -58,41 +58,73 @@ def _polyline(contour) -> np.ndarray:
     c = np.asarray(contour, dtype=float)[:, :2]
     if len(c) < 2:
         raise ValueError("contour needs at least two points")
+    if not np.isfinite(c).all():
+        raise ValueError("contour points must be finite numbers")
     return c
 
 
-def _distance_to_polyline(p: np.ndarray, c: np.ndarray) -> np.ndarray:
-    step = max(1, 4_000_000 // max(1, len(c)))  # bounded memory: points in chunks
-    if len(p) > step:
-        return np.concatenate([_distance_to_polyline(p[i:i + step], c) for i in range(0, len(p), step)])
-    a, b = c[:-1], c[1:]
-    ab = b - a
-    L2 = np.maximum((ab * ab).sum(axis=1), 1e-300)
-    t = np.clip(((p[:, None, :] - a[None]) * ab[None]).sum(axis=2) / L2[None], 0, 1)
-    q = a[None] + t[..., None] * ab[None]
-    return np.sqrt(((p[:, None, :] - q) ** 2).sum(axis=2)).min(axis=1)
+def _chords(path, tolerance):
+    """Each segment as the straight pieces of its XY track (arcs chorded within
+    ``tolerance``): start and end points (k, 2) and the segment of each piece."""
+    pts, seg = path.sample(tolerance)
+    if len(seg) == 0:
+        return np.zeros((0, 2)), np.zeros((0, 2)), seg
+    # A piece runs from the point before to this one; a segment's first piece from its start.
+    first = np.ones(len(seg), dtype=bool)
+    first[1:] = seg[1:] != seg[:-1]
+    start = np.asarray(path.start)[seg, :2]
+    a = np.where(first[:, None], start, np.roll(pts[:, :2], 1, axis=0))
+    return a, pts[:, :2], seg
+
+
+def _xy_elements(path, tolerance):
+    """The XY track of each move as elements: lines as they are, arcs in the XY plane as arcs
+    (centre and turn: +1 counter-clockwise, -1 clockwise, +-2 a whole circle), arcs in other
+    planes as chords within ``tolerance``. Ends (k, 2), centres, turns and the move of each."""
+    kind, plane = np.asarray(path.kind), np.asarray(path.plane)
+    arc = kind >= _core.ARC_CW
+    whole = ~arc | (plane == 0)
+    idx = np.flatnonzero(whole)
+    a, b = np.asarray(path.start)[idx, :2], np.asarray(path.end)[idx, :2]
+    c = np.nan_to_num(np.asarray(path.center)[idx, :2])
+    sense = np.where(kind[idx] == _core.ARC_CCW, 1, -1)
+    turn = np.where(arc[idx], sense * np.where(np.asarray(path.turns)[idx] > 0, 2, 1), 0).astype(np.int8)
+    if whole.all():
+        return a, b, c, turn, idx
+    ca, cb, cseg = _chords(path, tolerance)
+    keep = ~whole[cseg]
+    a, b = np.concatenate([a, ca[keep]]), np.concatenate([b, cb[keep]])
+    c = np.concatenate([c, np.zeros((int(keep.sum()), 2))])
+    turn = np.concatenate([turn, np.zeros(int(keep.sum()), dtype=np.int8)])
+    return a, b, c, turn, np.concatenate([idx, cseg[keep]])
 
 
 def assert_no_gouge(res: "_core.Result", contour, radius: float, *, tol: float = 1e-6,
                     tolerance: float = 0.001, rapids: bool = False) -> None:
-    """No point of the compensated feed moves (XY, arcs sampled within ``tolerance``) comes
-    closer than ``radius - tol`` to the contour (an (N, 2) polyline or a shapely geometry):
-    the cutter does not cut into the part. Only moves with compensation on are checked."""
+    """No compensated feed move comes closer than ``radius - tol`` to the contour (an (N, 2)
+    polyline or a shapely geometry) in XY: the cutter does not cut into the part. The whole
+    track of each move is measured exactly, not only its end points (a line passing a corner
+    of the contour between its ends); arcs in the XY plane (helices too) are measured as
+    arcs, arcs in other planes as chords within ``tolerance`` mm. Only moves with
+    compensation on are checked; the first one that comes too close (in path order) is
+    reported with its line and the point where it comes closest."""
     path = res.path if hasattr(res, "path") else res
     c = _polyline(contour)
-    pts, seg = path.sample(tolerance)
-    keep = path.side[seg] != 0
+    a, b, centre, turn, seg = _xy_elements(path, tolerance)
+    keep = np.asarray(path.side)[seg] != 0
     if not rapids:
-        keep &= path.kind[seg] != _core.RAPID
+        keep &= np.asarray(path.kind)[seg] != _core.RAPID
     if not keep.any():
         return
-    d = _distance_to_polyline(pts[keep, :2], c)
-    bad = d < radius - tol
-    if bad.any():
-        i = int(np.argmax(bad))
-        s = seg[keep][i]
-        raise AssertionError(f"the tool comes {radius - d[i]:.6f} mm into the contour at "
-                             f"{np.round(pts[keep][i], 6).tolist()} (move of line {int(path.line[s])})")
+    a, b, centre, turn, seg = a[keep], b[keep], centre[keep], turn[keep], seg[keep]
+    d, at = _core._nearest_segments(a, b, c[:-1], c[1:], radius - tol, centre, turn)
+    bad = np.flatnonzero(d < radius - tol)
+    if len(bad):
+        s = seg[bad].min()
+        mine = bad[seg[bad] == s]
+        worst = mine[np.argmin(d[mine])]  # that move's closest piece
+        raise AssertionError(f"the tool comes {radius - d[worst]:.6f} mm into the contour at "
+                             f"{np.round(at[worst], 6).tolist()} (move of line {int(path.line[s])})")
 
 
 def assert_paths_close(a: "_core.Path", b: "_core.Path", tol: float = 1e-6, *,

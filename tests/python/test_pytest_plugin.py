@@ -1,5 +1,7 @@
 """The pytest plugin (NC programs as test items) and the toolcomp.testing helpers."""
+import math
 import pathlib
+import re
 import subprocess
 import sys
 import textwrap
@@ -73,14 +75,109 @@ def test_assert_no_errors_and_within():
 
 def test_assert_no_gouge_against_the_contour():
     res = tc.run(tc.Program.parse(GOOD))
+    # The entry move runs straight from (0, -10) to (-5, 0) and passes the contour's first
+    # corner (0, 0) at 50 / sqrt(125) = 4.472136 mm, at (-4, -2): a 5 mm tool cuts
+    # 0.527864 mm into it there.
     contour = [(0, 0), (30, 0), (30, 20), (0, 20)]
-    assert_no_gouge(res, contour, radius=5)
-    with pytest.raises(AssertionError, match=r"comes 1\.0+ mm into the contour"):
-        assert_no_gouge(res, contour, radius=6)
+    with pytest.raises(AssertionError, match=r"comes 0\.527864 mm into the contour at \[-4\.0, -2\.0\] "
+                                             r"\(move of line 3\)"):
+        assert_no_gouge(res, contour, radius=5)
+    # Without that corner the rest of the contour is 5 mm from the tool centre throughout.
+    walls = [(30, 0), (30, 20), (0, 20)]
+    assert_no_gouge(res, walls, radius=5)
+    with pytest.raises(AssertionError, match=r"comes 1\.0+ mm into the contour at .* \(move of line 4\)"):
+        assert_no_gouge(res, walls, radius=6)
     # A path computed for a smaller tool than the one in the spindle gouges.
     small = tc.run(tc.Program.parse(GOOD.replace("D10", "D8")))
     with pytest.raises(AssertionError):
-        assert_no_gouge(small, contour, radius=5)
+        assert_no_gouge(small, walls, radius=5)
+
+
+ARCS = """G21 G0 X-20 Y-20
+G41.1 D8 G1 X0 Y0 F400
+G1 X40
+G2 X60 Y20 R20
+G1 Y40
+G3 X40 Y60 I-20 J0
+G1 X10 Y50
+G1 X0 Y0
+G40 G0 X-20 Y-20
+M2
+"""
+OUTLINE = "G21 G0 X-10 Y-10\nG42.1 D10 G1 X0 Y0 F600\nX60\nY40\nX0\nY0\nG40 G0 X-10 Y-10\nM2\n"
+
+
+def test_assert_no_gouge_takes_corner_arcs_as_arcs():
+    # G42 around the outside of a 60 x 40 rectangle: corner arcs of exactly the tool radius
+    # about its corners (chords of them would come up to the chord tolerance closer).
+    res = tc.run(tc.Program.parse(OUTLINE))
+    rect = [(0, 0), (60, 0), (60, 40), (0, 40), (0, 0)]
+    assert_no_gouge(res, rect, radius=5)
+    assert_no_gouge(res, rect, radius=5.000001, tol=2e-6)
+    # A larger tool: 0.5 mm into the bottom edge from the end of the entry move on.
+    with pytest.raises(AssertionError, match=r"comes 0\.500000 mm into the contour at \[2\.071068, -5\.0\] "
+                                             r"\(move of line 2\)"):
+        assert_no_gouge(res, rect, radius=5.5)
+    # A speck 5.2 mm from the corner (60, 0) at -45 degrees: 0.2 mm from the corner arc of
+    # line 4, at its middle (60 + 5 cos 45, -5 sin 45).
+    s45 = math.sqrt(0.5)
+    speck = [(60 + 5.2 * s45, -5.2 * s45), (60 + 5.3 * s45, -5.3 * s45)]
+    assert_no_gouge(res, speck, radius=0.2 - 1e-5)
+    with pytest.raises(AssertionError, match=r"comes 0\.800000 mm into the contour at \[63\.535534, -3\.535534\] "
+                                             r"\(move of line 4\)"):
+        assert_no_gouge(res, speck, radius=1)
+
+
+SPIKE_PASS = "G21 G0 X-20 Y5\nG41.1 D12 G1 X-10 Y5 F100\nG1 X10 Y5\nG40 G0 X20 Y20\nM2\n"
+
+
+def test_assert_no_gouge_measures_between_the_end_points():
+    # The tool centre runs along y = 11 from x = -10 to 10 (line 3); a spike of the contour
+    # reaches (0, 6): 5 mm from the track's middle, over 11 mm from both its ends.
+    res = tc.run(tc.Program.parse(SPIKE_PASS))
+    with pytest.raises(AssertionError, match=r"comes 1\.000000 mm into the contour at \[0\.0, 11\.0\] "
+                                             r"\(move of line 3\)"):
+        assert_no_gouge(res, [(-1, 0), (0, 6), (1, 0)], radius=6)
+    assert_no_gouge(res, [(-1, 0), (0, 4.99), (1, 0)], radius=6)  # 6.01 away
+    # A contour edge crossing the track with both its ends far from it: the tool cuts through.
+    with pytest.raises(AssertionError, match=r"comes 6\.000000 mm into the contour at \[2\.0, 11\.0\]"):
+        assert_no_gouge(res, [(-8, -20), (12, 42)], radius=6)
+
+
+def test_assert_no_gouge_agrees_with_shapely():
+    # Random contours against a compensated contour of lines and arcs: the first move that
+    # comes too close and how far, against shapely's distances between the contour and the
+    # moves as chords within 1e-5 mm.
+    shapely = pytest.importorskip("shapely")
+    import numpy as np
+
+    from toolcomp.testing import _chords
+
+    res = tc.run(tc.Program.parse(ARCS))
+    a, b, seg = _chords(res.path, 1e-5)  # within 1e-5 mm of the arcs
+    feed = (res.path.side[seg] != 0) & (res.path.kind[seg] != tc.RAPID)
+    rng = np.random.default_rng(7)
+    lo, hi = res.path.end[:, :2].min(axis=0), res.path.end[:, :2].max(axis=0)
+    reported = 0
+    for _ in range(30):
+        contour = rng.uniform(lo - 10, hi + 10, size=(int(rng.integers(2, 5)), 2))
+        line = shapely.LineString(contour)
+        moves = sorted(set(seg[feed].tolist()))
+        dist = {i: min(shapely.distance(shapely.LineString([a[k], b[k]]), line)
+                       for k in np.nonzero(feed & (seg == i))[0]) for i in moves}
+        radius = float(rng.uniform(0.1, 4))
+        gouging = [i for i in moves if dist[i] < radius - 1e-6]
+        if not gouging:
+            assert_no_gouge(res, contour, radius=radius)
+            continue
+        with pytest.raises(AssertionError) as e:
+            assert_no_gouge(res, contour, radius=radius)
+        i = gouging[0]
+        m = re.match(r"the tool comes ([0-9.]+) mm into the contour at .* \(move of line (\d+)\)", str(e.value))
+        assert int(m.group(2)) == res.path.line[i]
+        assert abs(float(m.group(1)) - (radius - dist[i])) < 2e-5
+        reported += 1
+    assert 5 < reported < 30
 
 
 def test_assert_paths_close_names_the_first_difference():
