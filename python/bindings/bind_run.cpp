@@ -188,6 +188,8 @@ void bind_run(py::module_& m) {
         .def_readwrite("startup_inch", &ControlProfile::startup_inch,
                        "G20 (inch) active at program start")
         .def_readwrite("block_limit", &ControlProfile::block_limit, "blocks a program may execute (loops count)")
+        .def_readwrite("feed_mode_clears_feed", &ControlProfile::feed_mode_clears_feed,
+                       "G93/G94/G95 set the feed rate to 0, so the next feed move needs an F word (LinuxCNC)")
         .def_readwrite("last_comment_only", &ControlProfile::last_comment_only,
                        "only the last comment in parentheses of a block is read for MSG/DEBUG/PRINT, ';' "
                        "comments never (LinuxCNC); False: every comment")

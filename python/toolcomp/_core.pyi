@@ -251,6 +251,7 @@ class ControlProfile:
     block_limit: int
     call_depth_limit: int
     last_comment_only: bool
+    feed_mode_clears_feed: bool
     length_axes: LengthAxes
     length_subtract_word: bool
     radius: RadiusRules

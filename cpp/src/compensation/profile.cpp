@@ -12,6 +12,7 @@ ControlProfile profile_for(Dialect d, Machine machine) {
     // levels"), Fanuc 10 (M98 and G65 together, 0i/30i).
     if (d == Dialect::linuxcnc) p.call_depth_limit = 9;
     p.last_comment_only = d == Dialect::linuxcnc;
+    p.feed_mode_clears_feed = d == Dialect::linuxcnc;
     if (d == Dialect::fanuc) p.call_depth_limit = 10;
     switch (d) {
         case Dialect::fanuc: {

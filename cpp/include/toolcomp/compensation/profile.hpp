@@ -170,6 +170,10 @@ struct ControlProfile {
     // parentheses of a block, ';' comments never (LinuxCNC keeps one comment per block), or
     // every comment of the block (false).
     bool last_comment_only = false;
+    // A G93, G94 or G95 word sets the feed rate to 0 (LinuxCNC, even when the mode does not
+    // change): the next feed move needs an F word, which may stand in the same block.
+    // Whether Fanuc controls do the same is not documented here: off for them.
+    bool feed_mode_clears_feed = false;
     // Arc tolerances, in program units ([0] for mm programs, [1] for inch programs), as
     // LinuxCNC 2.9 applies them: an arc given by its centre is refused when its start and
     // end radius differ by more than `arc_spiral_hard_factor`·`arc_spiral_abs`, or by more

@@ -335,7 +335,10 @@ bool Interp::execute(const BlockWords& bw) {
 
     // 2-4: feed mode, feed, speed
     if (modal) {
-        if (bw.g[g_feed_mode] >= 0) st_.feed_mode = bw.g[g_feed_mode];
+        if (bw.g[g_feed_mode] >= 0) {
+            st_.feed_mode = bw.g[g_feed_mode];
+            if (profile_.feed_mode_clears_feed) feed_ = 0;  // an F in this block is read after it
+        }
         if (profile_.t_offsets && bw.g[g_retract] >= 0)  // Fanuc lathes: G98 per minute, G99 per revolution
             st_.feed_mode = bw.g[g_retract] == 980 ? 940 : 950;
     }

@@ -138,6 +138,7 @@ private:
     void set_units(bool inch);
     void motion_line(const BlockWords& bw, int code, bool machine_coords);
     void motion_arc(const BlockWords& bw, int code);
+    void check_feed_per_rev(int column) const;
     double feed_for(const BlockWords& bw, int code, double length) const;
 
     // ---- offsets (interp_offsets.cpp) ------------------------------------------------------

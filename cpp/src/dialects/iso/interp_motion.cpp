@@ -44,6 +44,12 @@ Vec6 Interp::find_end(const BlockWords& bw) const {
     return end;
 }
 
+// Feed per revolution needs a spindle speed (S; M5 keeps it).
+void Interp::check_feed_per_rev(int column) const {
+    if (st_.feed_mode == 950 && speed_ == 0)
+        fail("zero_spindle_speed", "Cannot feed with zero spindle speed in feed per rev mode", column);
+}
+
 double Interp::feed_for(const BlockWords& bw, int code, double length) const {
     if (code == 0) return std::nan("");
     switch (st_.feed_mode) {
@@ -95,6 +101,7 @@ void Interp::motion_line(const BlockWords& bw, int code, bool machine_coords) {
     }
     if (code == 10 && st_.feed_mode != 930 && feed_ <= 0)
         fail("zero_feed", "Cannot do g1 with zero feed rate", bw.axis_column());
+    if (code == 10) check_feed_per_rev(bw.axis_column());
     double feed = feed_for(bw, code, (end.head<3>() - pos_.head<3>()).norm() * scale());
     straight(code == 0 ? MotionKind::rapid : MotionKind::line, end, feed);
 }
@@ -107,6 +114,7 @@ void Interp::motion_arc(const BlockWords& bw, int code) {
     const char a_l = letters[ax.a], b_l = letters[ax.b];
     const char a_off = offset_letter[ax.a], b_off = offset_letter[ax.b], c_off = offset_letter[ax.c];
     if (st_.feed_mode != 930 && feed_ <= 0) fail("zero_feed", "Cannot make arc with zero feed rate");
+    check_feed_per_rev(0);
     const bool r_form = bw.has('R');
     if (r_form && (bw.has('I') || bw.has('J') || bw.has('K')))
         fail("mixed_arc_format", "Mixed radius ijk format for arc", bw['R'].column);
