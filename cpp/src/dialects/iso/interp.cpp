@@ -266,51 +266,48 @@ bool Interp::execute(const BlockWords& bw) {
     // A plain move (no G code but its motion, no M code) has none of the codes checked and set
     // below but the motion group's.
     const bool modal = bw.modal_codes() || bw.m_codes();
-    if (comp_on() && bw.g[g_radius_comp] != 400) {
-        // What LinuxCNC refuses while the tool radius is compensated.
+    // What LinuxCNC refuses while the tool radius is compensated, as it works through a block:
+    // the M codes (I/O, tool change, overrides, in its order) and the plane before
+    // G40/G41/G42, the rest after them (so G40 G43 is allowed, G41 G43 is not, G40 G18 is
+    // not). G53 is refused with the move (motion_line).
+    const int comp_code = bw.g[g_radius_comp];
+    const bool comp_before = comp_on(), comp_after = comp_code >= 0 ? comp_code != 400 : comp_before;
+    if (comp_before && modal) {
+        if (int io = bw.m[m_io]; io >= 0) {
+            const char* what = io == 620 ? "Cannot set motion output with cutter radius compensation on"
+                             : io == 630 ? "Cannot set motion digital output with cutter radius compensation on"
+                             : io <= 650 ? "Cannot set auxiliary digital output with cutter radius compensation on"
+                             : io == 660 ? "Cannot wait for digital input with cutter radius compensation on"
+                             : io == 670 ? "Cannot set motion analog output with cutter radius compensation on"
+                                         : "Cannot set auxiliary analog output with cutter radius compensation on";
+            fail("comp_io", what, bw.m_column[m_io]);
+        }
+        if (bw.m[m_tool_change] == 60)
+            fail("comp_tool_change", "Cannot change tools with cutter radius compensation on", bw.m_column[m_tool_change]);
+        if (int ov = bw.m[m_override]; ov >= 0) {
+            bool enable = ov == 480 || (ov >= 500 && (!bw.has('P') || bw['P'].value != 0));
+            fail("comp_overrides",
+                 enable ? "Cannot enable overrides with cutter radius compensation on"
+                        : "Cannot disable overrides with cutter radius compensation on",
+                 bw.m_column[m_override]);
+        }
+        if (bw.g[g_plane] >= 0 && bw.g[g_plane] != (st_.plane == Plane::xy ? 170 : st_.plane == Plane::zx ? 180 : 190))
+            fail("comp_plane_change", "Cannot change planes with cutter radius compensation on", bw.g_column[g_plane]);
+    }
+    if (comp_after) {
         if (modal) {
-            if (bw.g[g_plane] >= 0 && bw.g[g_plane] != (st_.plane == Plane::xy ? 170 : st_.plane == Plane::zx ? 180 : 190))
-                fail("comp_plane_change", "Cannot change planes with cutter radius compensation on", bw.g_column[g_plane]);
-            if (bw.m[m_tool_change] == 60)
-                fail("comp_tool_change", "Cannot change tools with cutter radius compensation on", bw.m_column[m_tool_change]);
             if (bw.g[g_length_comp] >= 0)
                 fail("comp_tool_offset", "Cannot change tool offset with cutter radius compensation on",
                      bw.g_column[g_length_comp]);
-            if (g0 == 530 && radius_.radius > 0)
-                fail("comp_g53", "Cannot use g53 with cutter radius comp", bw.g_column[g_nonmodal]);
+            if (bw.g[g_coord_system] >= 0)
+                fail("comp_coord_system", "Cannot change coordinate systems with cutter radius compensation on",
+                     bw.g_column[g_coord_system]);
             if (bw.g[g_path_control] >= 0)
                 fail("comp_control_mode", "Cannot change control mode with cutter radius compensation on",
                      bw.g_column[g_path_control]);
             if (bw.g[g_retract] >= 0)
                 fail("comp_retract_mode", "Cannot change retract mode with cutter radius compensation on",
                      bw.g_column[g_retract]);
-            if (int ov = bw.m[m_override]; ov >= 0) {
-                bool enable = ov == 480 || (ov >= 500 && (!bw.has('P') || bw['P'].value != 0));
-                fail("comp_overrides",
-                     enable ? "Cannot enable overrides with cutter radius compensation on"
-                            : "Cannot disable overrides with cutter radius compensation on",
-                     bw.m_column[m_override]);
-            }
-        }
-        if (motion_code >= 382 && motion_code <= 385)
-            fail("comp_probe", "Cannot probe with cutter radius comp on", bw.g_column[g_motion]);
-        if (modal) {
-            if (int io = bw.m[m_io]; io >= 0) {
-                const char* what = io == 620 ? "Cannot set motion output with cutter radius compensation on"
-                                 : io == 630 ? "Cannot set motion digital output with cutter radius compensation on"
-                                 : io <= 650 ? "Cannot set auxiliary digital output with cutter radius compensation on"
-                                 : io == 660 ? "Cannot wait for digital input with cutter radius compensation on"
-                                 : io == 670 ? "Cannot set motion analog output with cutter radius compensation on"
-                                             : "Cannot set auxiliary analog output with cutter radius compensation on";
-                fail("comp_io", what, bw.m_column[m_io]);
-            }
-            if (g0 == 280 || g0 == 300)
-                fail("comp_home", "Cannot use g28 or g30 with cutter radius comp", bw.g_column[g_nonmodal]);
-            if (bw.g[g_coord_system] >= 0)
-                fail("comp_coord_system", "Cannot change coordinate systems with cutter radius compensation on",
-                     bw.g_column[g_coord_system]);
-            if (g0 == 920 || g0 == 921 || g0 == 922 || g0 == 923)
-                fail("comp_axis_offsets", "Cannot change axis offsets with cutter radius comp", bw.g_column[g_nonmodal]);
             if (g0 == 100) {
                 if (!profile_.radius.messages.g10.empty())
                     fail("comp_g10", profile_.radius.messages.g10, bw.g_column[g_nonmodal]);
@@ -319,7 +316,13 @@ bool Interp::execute(const BlockWords& bw) {
                     fail("comp_g10", "Cannot change the active coordinate system with cutter radius compensation on",
                          bw.g_column[g_nonmodal]);
             }
+            if (g0 == 280 || g0 == 300)
+                fail("comp_home", "Cannot use g28 or g30 with cutter radius comp", bw.g_column[g_nonmodal]);
+            if (g0 == 920 || g0 == 921 || g0 == 922 || g0 == 923)
+                fail("comp_axis_offsets", "Cannot change axis offsets with cutter radius comp", bw.g_column[g_nonmodal]);
         }
+        if (motion_code >= 382 && motion_code <= 385)
+            fail("comp_probe", "Cannot probe with cutter radius comp on", bw.g_column[g_motion]);
         if (is_cycle(motion_to_be))
             fail("comp_canned_cycle", "Cannot use canned cycles with cutter compensation on",
                  motion_code >= 0 ? bw.g_column[g_motion] : bw.axis_column());

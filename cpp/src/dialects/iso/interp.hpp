@@ -170,6 +170,10 @@ private:
     // ---- cutter radius compensation request (interp_radius.cpp) ----------------------------
     void radius_comp(const BlockWords& bw, int code);
     void set_radius_from_offset();
+    // LinuxCNC's rule after G40: the next G0/G1 must come before any arc; moves of G28/G30 and
+    // canned cycles do not count (the stage alone would take them as straight moves).
+    bool arc_not_allowed_ = false;
+    bool comp_moved_ = false;  // a move made since compensation came on (else G40 sets no rule)
     bool comp_on() const { return radius_.side != 0; }
 
     // ---- canned cycles (interp_cycles.cpp) ---------------------------------------------------

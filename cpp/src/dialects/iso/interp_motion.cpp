@@ -86,11 +86,13 @@ Motion Interp::motion_to(MotionKind kind, const Vec6& end) const {
 void Interp::straight(MotionKind kind, const Vec6& end, double feed) {
     Motion m = motion_to(kind, end);
     m.feed = feed;
+    comp_moved_ = comp_moved_ || comp_on();
     sink_.push(m);
     pos_ = end;
 }
 
 void Interp::motion_line(const BlockWords& bw, int code, bool machine_coords) {
+    arc_not_allowed_ = false;
     Vec6 end = find_end(bw);
     if (machine_coords) {
         // G53: the words are machine coordinates of the controlled point.
@@ -102,6 +104,8 @@ void Interp::motion_line(const BlockWords& bw, int code, bool machine_coords) {
     if (code == 10 && st_.feed_mode != 930 && feed_ <= 0)
         fail("zero_feed", "Cannot do g1 with zero feed rate", bw.axis_column());
     if (code == 10) check_feed_per_rev(bw.axis_column());
+    if (machine_coords && comp_on() && radius_.radius > 0)
+        fail("comp_g53", "Cannot use g53 with cutter radius comp", bw.g_column[g_nonmodal]);
     double feed = feed_for(bw, code, (end.head<3>() - pos_.head<3>()).norm() * scale());
     straight(code == 0 ? MotionKind::rapid : MotionKind::line, end, feed);
 }
@@ -113,6 +117,7 @@ void Interp::motion_arc(const BlockWords& bw, int code) {
     const char offset_letter[3] = {'I', 'J', 'K'};  // centre word of each axis
     const char a_l = letters[ax.a], b_l = letters[ax.b];
     const char a_off = offset_letter[ax.a], b_off = offset_letter[ax.b], c_off = offset_letter[ax.c];
+    if (arc_not_allowed_) fail("comp_exit_arc", profile_.radius.messages.exit_arc);
     if (st_.feed_mode != 930 && feed_ <= 0) fail("zero_feed", "Cannot make arc with zero feed rate");
     check_feed_per_rev(0);
     const bool r_form = bw.has('R');
@@ -189,6 +194,7 @@ void Interp::motion_arc(const BlockWords& bw, int code) {
     m.center = centre.head<3>();
     m.turns = p - 1;
     m.feed = st_.feed_mode == 930 ? feed_for(bw, code, arc_length(m.arc()) * scale()) : feed_for(bw, code, 0);
+    comp_moved_ = comp_moved_ || comp_on();
     sink_.push(m);
     pos_ = end;
 }

@@ -1,0 +1,43 @@
+"""What LinuxCNC refuses while cutter radius compensation is on, as it works through a block
+(M codes and the plane before G40/G41/G42, the rest after), and its rule that an arc may not
+follow G40 before a straight G0/G1 (G28/G30 and canned cycle moves do not count). The cases
+that need no tool table are in tests/programs/errors/comp_block_*.ngc and comp_exit_arc_*,
+checked against rs274; these need one or are accepted."""
+import pytest
+
+import toolcomp as tc
+
+TOOLS = "T1 P1 D10\nT2 P2 D6\n"
+HEAD = "G21 G90 G94 F300\nG0 X0 Y0 Z0\n"
+
+
+def run(text):
+    return tc.run(tc.Program.parse(HEAD + text + "M2\n"), tools=tc.ToolTable.parse(TOOLS, "linuxcnc"))
+
+
+@pytest.mark.parametrize("block, message", [
+    ("G41 D1 G10 L2 P1 X1", "Cannot change the active coordinate system with cutter radius compensation on"),
+    ("G41 D1 G43 H1", "Cannot change tool offset with cutter radius compensation on"),
+    ("G41 D1 G54", "Cannot change coordinate systems with cutter radius compensation on"),
+    ("G41 D1 G30", "Cannot use g28 or g30 with cutter radius comp"),
+])
+def test_comp_turned_on_in_the_block_refuses_what_follows_it(block, message):
+    with pytest.raises(tc.ProgramError) as e:
+        run(block + "\nG1 X10 Y0\n")
+    assert (e.value.message, e.value.line) == (message, 3)
+
+
+def test_comp_turned_off_in_the_block_allows_what_follows_it():
+    res = run("G41 D1\nG1 X10 Y0\nG1 Y10\nG40 G43 H1 G54 G1 X20 Y10\nG2 X30 Y10 R5\n")
+    assert res.path.kind[-1] == tc.ARC_CW
+
+
+def test_an_arc_right_after_g40_without_a_move_under_compensation_is_allowed():
+    # LinuxCNC sets the rule only when compensation moved the tool (rs274 accepts this)
+    res = run("G41 D1\nG40\nG2 X10 Y0 R5\n")
+    assert res.path.kind[-1] == tc.ARC_CW
+
+
+def test_g53_straight_moves_count():
+    res = run("G41 D1\nG1 X10 Y0\nG40\nG53 G0 X20 Y0\nG2 X30 Y0 R5\n")
+    assert res.path.kind[-1] == tc.ARC_CW
