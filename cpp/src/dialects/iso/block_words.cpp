@@ -5,6 +5,7 @@
 #include <string>
 
 #include "toolcomp/program/text.hpp"
+#include "whole_numbers.hpp"
 
 namespace toolcomp::iso {
 
@@ -21,12 +22,31 @@ std::string code_text(char letter, int code10) {
     return s;
 }
 
+// LinuxCNC's read_g: ten times the value, taken as the integer it is within 0.001 of
+// (rounding up from 0.999 above the one below), else out of range; G99.9 at most.
+int linuxcnc_g_code(const BlockWords& bw, const Word& w) {
+    const double v10 = 10.0 * w.value;
+    double code = std::floor(v10);
+    if (v10 - code > 0.999)
+        code = std::ceil(v10);
+    else if (v10 - code > 0.001)
+        fail("g_code_out_of_range", "G-code out of range", bw.line, w.column);
+    if (code > 999) fail("g_code_out_of_range", "G-code out of range", bw.line, w.column);
+    if (code < 0) fail("negative_g_code", "Negative g code used", bw.line, w.column);
+    return static_cast<int>(code);
+}
+
 void add_g(BlockWords& bw, const Word& w, Dialect d) {
-    double v10 = w.value * 10;
-    if (w.value < 0) fail("negative_g_code", "Negative g code used", bw.line, w.column);
-    int code = int_value(v10);
-    if (code > 9999) fail("g_code_out_of_range", "G-code out of range", bw.line, w.column);
-    if (std::fabs(v10 - code) > 1e-6) fail("unknown_g_code", "Unknown g code used", bw.line, w.column);
+    int code = 0;
+    if (d == Dialect::linuxcnc) {
+        code = linuxcnc_g_code(bw, w);
+    } else {
+        double v10 = w.value * 10;
+        if (w.value < 0) fail("negative_g_code", "Negative g code used", bw.line, w.column);
+        code = int_value(v10);
+        if (code > 9999) fail("g_code_out_of_range", "G-code out of range", bw.line, w.column);
+        if (std::fabs(v10 - code) > 1e-6) fail("unknown_g_code", "Unknown g code used", bw.line, w.column);
+    }
     int group = g_group(code, d);
     if (group == kUnknown) fail("unknown_g_code", "Unknown g code used", bw.line, w.column);
     if (group == kUnsupported)
@@ -49,8 +69,7 @@ void add_g(BlockWords& bw, const Word& w, Dialect d) {
 
 void add_m(BlockWords& bw, const Word& w, Dialect d) {
     if (w.value < 0) fail("negative_m_code", "Negative m code used", bw.line, w.column);
-    if (std::fabs(w.value - std::round(w.value)) > 1e-9)
-        fail("non_integer_value", "Non integer value for integer", bw.line, w.column);
+    if (!whole_word(w.value, d)) fail("non_integer_value", "Non integer value for integer", bw.line, w.column);
     int m = int_value(w.value);
     if (m > 199 && d == Dialect::linuxcnc)
         fail("m_code_out_of_range", "M-code greater than 199: M" + std::to_string(m), bw.line, w.column);
@@ -95,11 +114,11 @@ BlockWords collect_words(std::span<const Word> words, int line, Dialect dialect)
                 fail("multiple_words", std::string("Multiple ") + lower + " words on one line", bw.line, w.column);
             }
             if (w.letter == 'T') {
-                if (std::fabs(w.value - std::round(w.value)) > 1e-9)
+                if (!whole_word(w.value, dialect))
                     fail("non_integer_value", "Non integer value for integer", bw.line, w.column);
                 if (w.value < 0) fail("negative_tool", "Negative tool id (tool not found)", bw.line, w.column);
             }
-            if (w.letter == 'L' && std::fabs(w.value - std::round(w.value)) > 1e-9)
+            if (w.letter == 'L' && !whole_word(w.value, dialect))
                 fail("non_integer_value", "Non integer value for integer", bw.line, w.column);
             if (w.letter == 'F' && w.value < 0) fail("negative_feed", "Negative f word used", bw.line, w.column);
             if (w.letter == 'S' && w.value < 0)

@@ -140,7 +140,8 @@ void Interp::motion_arc(const BlockWords& bw, int code) {
     int p = 1;
     if (bw.has('P')) {
         double pv = bw['P'].value;
-        if (std::fabs(pv - std::round(pv)) > 1e-9)
+        // LinuxCNC refuses a P more than 0.001 from an integer; Fanuc takes it as written.
+        if (std::fabs(std::round(pv) - pv) > (prog_.dialect == Dialect::linuxcnc ? 0.001 : 1e-9))
             fail("arc_p_not_integer", "P value not an integer with M19 G2 or G3", bw['P'].column);
         p = int_value(pv);
         if (p < 1) fail("arc_p_not_positive", "P value should be 1 or greater with G2 or G3", bw['P'].column);

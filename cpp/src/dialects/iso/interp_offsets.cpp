@@ -43,6 +43,12 @@ void Interp::g10(const BlockWords& bw) {
         fail("unsupported_g10", "G10 L" + std::to_string(l) + " (tool table edit) is not supported by toolcomp", col);
     if (l != 2 && l != 20) fail("g10_bad_l", "Line with G10 does not have L0, L1, L10, L11, L2, or L20", col);
     const std::string which = l == 2 ? "G10 L2" : "G10 L20";
+    // LinuxCNC refuses a P more than 0.0001 above the integer it rounds to (below is let be),
+    // then truncates it.
+    if (bw.has('P') && prog_.dialect == Dialect::linuxcnc) {
+        const double pv = bw['P'].value;
+        if ((pv + 0.0001) - std::round(pv) > 0.0002) fail("g10_p_not_integer", "P value not an integer with G10", col);
+    }
     int p = bw.has('P') ? int_value_truncated(bw['P'].value) : -1;  // the control truncates P
     if (!bw.has('P') || p < 0 || p > 9) fail("g10_bad_p", "P value out of range (0-9) with " + which, col);
     if (l == 2 && (bw.has('I') || bw.has('J'))) fail("g10_ij", "I J words not allowed with G10 L2", col);

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "interp.hpp"
+#include "whole_numbers.hpp"
 #include "toolcomp/tools/tool_table.hpp"
 
 namespace toolcomp::iso {
@@ -49,7 +50,7 @@ void Interp::radius_comp(const BlockWords& bw, int code) {
         int tool = tool_;
         if (bw.has('D')) {
             double d = bw['D'].value;
-            if (std::fabs(d - std::round(d)) > 1e-9)
+            if (!near_whole(d, 0.0001, prog_.dialect))
                 fail("comp_d_not_integer", name + " requires D word to be a whole number", bw['D'].column);
             if (d < 0) fail("comp_negative_d", "Negative d word tool radius index used", bw['D'].column);
             tool = int_value(d);
