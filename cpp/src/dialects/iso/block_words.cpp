@@ -120,6 +120,8 @@ BlockWords collect_words(std::span<const Word> words, int line, Dialect dialect)
             }
             if (w.letter == 'L' && !whole_word(w.value, dialect))
                 fail("non_integer_value", "Non integer value for integer", bw.line, w.column);
+            if (w.letter == 'L' && w.value < 0 && dialect == Dialect::linuxcnc)
+                fail("negative_l_word", "Negative l word used", bw.line, w.column);
             if (w.letter == 'F' && w.value < 0) fail("negative_feed", "Negative f word used", bw.line, w.column);
             if (w.letter == 'S' && w.value < 0)
                 fail("negative_spindle_speed", "Negative spindle speed used", bw.line, w.column);

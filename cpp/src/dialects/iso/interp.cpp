@@ -204,7 +204,7 @@ void Interp::check_words(const BlockWords& bw, int motion_to_be) {
     if (bw.has('K') && !(arc || g87 || exit_dir)) fail("unused_word", "K word with no G2, G3, G33, G33.1, G76, or G87 to use it", col('K'));
     if (bw.has('L')) {
         int rc = bw.g[g_radius_comp];
-        if (!(g0 == 100 || cycle_block || rc == 411 || rc == 421))
+        if (!(g0 == 100 || cycle_block || rc >= 410))  // G41, G41.1, G42, G42.1
             fail("unused_word",
                  "L word with no G10, cutter compensation, canned cycle, digital/analog input, M98 or NURBS code",
                  col('L'));

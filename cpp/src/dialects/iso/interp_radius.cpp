@@ -50,9 +50,9 @@ void Interp::radius_comp(const BlockWords& bw, int code) {
         int tool = tool_;
         if (bw.has('D')) {
             double d = bw['D'].value;
-            if (!near_whole(d, 0.0001, prog_.dialect))
+            if (!d_word_whole(d, prog_.dialect))
                 fail("comp_d_not_integer", name + " requires D word to be a whole number", bw['D'].column);
-            if (d < 0) fail("comp_negative_d", "Negative d word tool radius index used", bw['D'].column);
+            if (d < -0.5) fail("comp_negative_d", "Negative d word tool radius index used", bw['D'].column);
             tool = int_value(d);
         }
         if (tool != 0 && tools_) {

@@ -20,9 +20,13 @@ inline bool whole_word(double v, Dialect d) {
     return d == Dialect::linuxcnc ? linuxcnc_whole(v) : std::fabs(v - std::round(v)) <= 1e-9;
 }
 
-// Within `slack` of the nearest integer (LinuxCNC), exactly one otherwise.
-inline bool near_whole(double v, double slack, Dialect d) {
-    return std::fabs(v - std::round(v)) < (d == Dialect::linuxcnc ? slack : 1e-9);
+// G41/G42 D: LinuxCNC's is_near_int, the integer v + 0.5 truncates to, if v is within
+// 0.0001 of it (so a negative D, or one beyond the int range, is no whole number there);
+// exactly one otherwise.
+inline bool d_word_whole(double v, Dialect d) {
+    if (d != Dialect::linuxcnc) return std::fabs(v - std::round(v)) <= 1e-9;
+    if (!(v > -2147483648.0 && v < 2147483647.0)) return false;
+    return std::fabs(std::trunc(v + 0.5) - v) < 0.0001;
 }
 
 }  // namespace toolcomp::iso
