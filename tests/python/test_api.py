@@ -298,3 +298,12 @@ def test_a_path_no_stage_changes_is_the_programmed_path_stored_once():
     assert not bad.ok and bad.path is not bad.nominal
     assert (len(bad.nominal), len(bad.path)) == (3, 2)
     np.testing.assert_allclose(bad.path.end, bad.nominal.end[:2])
+
+
+def test_a_percent_line_after_the_end_is_never_read():
+    # LinuxCNC stops at M2: a "%" after it (without one opening the program) is not reached;
+    # one before it is a bad character when the program gets there (errors/percent_in_the_middle.ngc).
+    assert len(tc.run(tc.Program.parse("G21\nG1 X5 F100\nM2\n%\n")).path) == 1
+    res = tc.run(tc.Program.parse("G21\nG1 X5 F100\n%\nG1 X10\nM2\n"), strict=False)
+    assert len(res.path) == 1
+    assert [(d.code, d.line, d.column) for d in res.diagnostics] == [("bad_character", 3, 1)]

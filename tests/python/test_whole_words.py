@@ -52,3 +52,4 @@ def test_fanuc_takes_the_words_as_written():
 def test_an_l_word_beside_g41_or_g42_is_let_be():
     # LinuxCNC accepts L with G41/G42 (it only reads it with G41.1/G42.1 in G18)
     assert run("G41 D1 L3\nG1 X10 Y0\nG1 X20\nG40 G1 X30\n").path.end[2, 1] == pytest.approx(5)
+
