@@ -7,6 +7,7 @@ int g_group(int c, Dialect d) {
         case 40: case 100: case 280: case 281: case 300: case 301: case 530:
         case 920: case 921: case 922: case 923:
             return g_nonmodal;
+        case 520: return d == Dialect::linuxcnc ? g_nonmodal : kUnsupported;  // G52 local offset (Fanuc: not run)
         case 382: case 383: case 384: case 385:  // probing: refused when run (see interp.cpp)
         case 0: case 10: case 20: case 30: case 730: case 740: case 800: case 810: case 820: case 830:
         case 840: case 850: case 860: case 870: case 880: case 890:

@@ -15,7 +15,7 @@ namespace {
 bool is_cycle(int motion) {
     return motion == 730 || motion == 740 || (motion >= 810 && motion <= 890);
 }
-bool uses_axes_group0(int g0) { return g0 == 100 || g0 == 280 || g0 == 300 || g0 == 920; }
+bool uses_axes_group0(int g0) { return g0 == 100 || g0 == 280 || g0 == 300 || g0 == 920 || g0 == 520; }
 // Codes whose block's axis words are data, not a move: G10, G28, G30, G92 and the tool
 // length offsets given as axis values (G43.1, G43.2).
 bool axes_are_data(const BlockWords& bw) {
@@ -254,7 +254,7 @@ bool Interp::execute(const BlockWords& bw) {
         bool incremental = bw.g[g_distance] >= 0 ? bw.g[g_distance] == 910 : st_.incremental;
         if (incremental) fail("g53_incremental", "Cannot use g53 incremental", bw.g_column[g_nonmodal]);
     }
-    if (g0 == 920 && !axes) fail("g92_no_axes", "All axes missing with g52 or g92", bw.g_column[g_nonmodal]);
+    if ((g0 == 920 || g0 == 520) && !axes) fail("g92_no_axes", "All axes missing with g52 or g92", bw.g_column[g_nonmodal]);
     check_words(bw, motion_to_be);
     if (bw.has('U') || bw.has('V') || bw.has('W')) {
         char l = bw.has('U') ? 'U' : bw.has('V') ? 'V' : 'W';
@@ -318,7 +318,7 @@ bool Interp::execute(const BlockWords& bw) {
             }
             if (g0 == 280 || g0 == 300)
                 fail("comp_home", "Cannot use g28 or g30 with cutter radius comp", bw.g_column[g_nonmodal]);
-            if (g0 == 920 || g0 == 921 || g0 == 922 || g0 == 923)
+            if (g0 == 920 || g0 == 921 || g0 == 922 || g0 == 923 || g0 == 520)
                 fail("comp_axis_offsets", "Cannot change axis offsets with cutter radius comp", bw.g_column[g_nonmodal]);
         }
         if (motion_code >= 382 && motion_code <= 385)
@@ -386,7 +386,7 @@ bool Interp::execute(const BlockWords& bw) {
     switch (g0) {
         case 100: g10(bw); break;
         case 280: case 281: case 300: case 301: home(bw, g0); break;
-        case 920: case 921: case 922: case 923: g92(bw, g0); break;
+        case 920: case 921: case 922: case 923: case 520: g92(bw, g0); break;
         default: break;
     }
     // 20: motion

@@ -97,6 +97,14 @@ void Interp::g92(const BlockWords& bw, int code) {
             g92_saved_ = g92_;
             break;
         }
+        case 520: {  // G52: a local offset of the work coordinate system, G92's storage (LinuxCNC)
+            Vec6 value = g92_;
+            for (int i = 0; i < 6; ++i)
+                if (bw.has(kAxisLetter[i])) value[i] = axis_value(bw, i);
+            change_offset(g92_, value);
+            g92_saved_ = g92_;
+            break;
+        }
         case 921: change_offset(g92_, Vec6::Zero()); g92_saved_.setZero(); break;
         case 922: change_offset(g92_, Vec6::Zero()); break;
         case 923: change_offset(g92_, g92_saved_); break;
