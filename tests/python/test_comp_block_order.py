@@ -41,3 +41,12 @@ def test_an_arc_right_after_g40_without_a_move_under_compensation_is_allowed():
 def test_g53_straight_moves_count():
     res = run("G41 D1\nG1 X10 Y0\nG40\nG53 G0 X20 Y0\nG2 X30 Y0 R5\n")
     assert res.path.kind[-1] == tc.ARC_CW
+
+
+def test_a_tool_table_edit_under_compensation_is_refused_as_not_run():
+    # LinuxCNC allows G10 L1 while compensating (only L2/L20 of the active system are refused);
+    # toolcomp does not run tool table edits, and says so
+    with pytest.raises(tc.ProgramError, match=r"G10 L1 \(tool table edit\) is not supported by toolcomp"):
+        run("G41 D1\nG1 X10 Y0\nG10 L1 P1 R3\nG1 Y10\n")
+    with pytest.raises(tc.ProgramError, match="Cannot change the active coordinate system"):
+        run("G41 D1\nG1 X10 Y0\nG10 L20 P1 X3\nG1 Y10\n")

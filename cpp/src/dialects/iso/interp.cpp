@@ -311,8 +311,10 @@ bool Interp::execute(const BlockWords& bw) {
             if (g0 == 100) {
                 if (!profile_.radius.messages.g10.empty())
                     fail("comp_g10", profile_.radius.messages.g10, bw.g_column[g_nonmodal]);
+                // LinuxCNC refuses G10 L2/L20 of the active system (tool table edits pass)
+                const int l = bw.has('L') ? int_value(bw['L'].value) : -1;
                 const int p = bw.has('P') ? int_value_truncated(bw['P'].value) : -1;
-                if (p == 0 || p == st_.coord_system)
+                if ((l == 2 || l == 20) && (p == 0 || p == st_.coord_system))
                     fail("comp_g10", "Cannot change the active coordinate system with cutter radius compensation on",
                          bw.g_column[g_nonmodal]);
             }
