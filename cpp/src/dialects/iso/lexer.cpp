@@ -132,6 +132,9 @@ void LineLexer::run() {
         }
         Word w{u, 0, col()};
         ++i_;
+        // LinuxCNC reads a line number as unsigned digits
+        if (u == 'N' && prog_.dialect == Dialect::linuxcnc && i_ < s_.size() && (s_[i_] == '+' || s_[i_] == '-'))
+            fail("bad_line_number", "Bad format unsigned integer");
         word_value(w);
         prog_.add_word(w);
         if (u != 'N') first_word_ = false;

@@ -26,6 +26,7 @@ bool lex_plain_line(std::string_view line, int line_no, Program& prog) {
         // blanks would continue the number in LinuxCNC's reading).
         if (u < 'A' || u > 'Z' || !is_word_letter(u, prog.dialect) || (u == 'N' && !first)) break;
         const std::size_t letter = k++;
+        if (u == 'N' && k < n && (s[k] == '+' || s[k] == '-')) break;  // a signed N: the lexer says why
         bool negative = false;
         while (k < n && (s[k] == '+' || s[k] == '-')) negative ^= s[k++] == '-';
         const DecimalRun run = scan_decimal_run(s, k, n);
