@@ -173,7 +173,9 @@ void LineLexer::word_value(Word& w) {
     w.value = number();
 }
 
-// A real number: signs, then a run of digits and points. Messages are LinuxCNC's.
+// A real number, read as LinuxCNC's read_real_value does: a sign followed by anything but a
+// digit or a point is a unary operator; then the number itself, one sign and a run of
+// digits and points. Messages are LinuxCNC's, quoting what the number read.
 // Up to 15 digits the value is taken in the same pass (parse_decimal's fast path).
 double LineLexer::number() {
     const char* const s = s_.data();
@@ -181,24 +183,30 @@ double LineLexer::number() {
     std::size_t i = i_;
     bool negative = false;
     const std::size_t start = i;  // errors point at the number's first character
-    while (i < n && (s[i] == '+' || s[i] == '-')) {
+    if (i >= n) fail_at("bad_number_format", "No characters found in reading real value", start);
+    const auto sign = [&](std::size_t k) { return k < n && (s[k] == '+' || s[k] == '-'); };
+    while (sign(i) && i + 1 < n && !ascii_digit(s[i + 1]) && s[i + 1] != '.') {
+        if (s[i] == '-') negative = !negative;
+        ++i;
+    }
+    const std::size_t own = i;  // the number's own sign, if any, is part of its text
+    if (sign(i)) {
         if (s[i] == '-') negative = !negative;
         ++i;
     }
     const std::size_t first = i;  // the line has no blanks here: the number is one run
     const DecimalRun run = scan_decimal_run(s, i, n);
     i_ = run.end;
-    const std::string_view text(s + first, run.end - first);
-    if (text.empty()) fail_at("bad_number_format", "No characters found in reading real value", start);
+    const std::string_view text(s + first, run.end - first), quoted(s + own, run.end - own);
     if (run.points > 1)
-        fail_at("bad_number_format", "bad number format (trailing characters) parsing '" + std::string(text) + "'", start);
+        fail_at("bad_number_format", "bad number format (trailing characters) parsing '" + std::string(quoted) + "'", start);
     if (!run.digits)
-        fail_at("bad_number_format", "bad number format (conversion failed) parsing '" + std::string(text) + "'", start);
+        fail_at("bad_number_format", "bad number format (conversion failed) parsing '" + std::string(quoted) + "'", start);
     double v = 0;
     if (run.plain())
         v = decimal_value(run.m, run.frac);
     else if (!parse_decimal(text, v) || !std::isfinite(v))
-        fail_at("bad_number_format", "bad number format (conversion failed) parsing '" + std::string(text) + "'", start);
+        fail_at("bad_number_format", "bad number format (conversion failed) parsing '" + std::string(quoted) + "'", start);
     return negative ? -v : v;
 }
 
