@@ -127,8 +127,12 @@ void LineLexer::run() {
         }
         if (u == '$') fail("bad_character", "Unknown word where unary operation could be");
         if (!is_word_letter(u, prog_.dialect) || (u == 'N' && (!first_word_ || prog_.blocks().back().word_count > 0))) {
-            char lower = ascii_lower(c);
-            fail("bad_character", std::string("Bad character '") + lower + "' used");
+            // LinuxCNC writes a byte beyond ASCII as an octal escape ('\303')
+            const auto byte = static_cast<unsigned char>(c);
+            std::string shown(1, ascii_lower(c));
+            if (byte >= 0x80) shown = {'\\', static_cast<char>('0' + (byte >> 6)), static_cast<char>('0' + ((byte >> 3) & 7)),
+                                       static_cast<char>('0' + (byte & 7))};
+            fail("bad_character", "Bad character '" + shown + "' used");
         }
         Word w{u, 0, col()};
         ++i_;
