@@ -41,3 +41,21 @@ def test_feed_per_revolution_needs_a_spindle_speed(move):
             run(f"{speed}G95 F0.1\n{move}\n")
         assert (e.value.code, e.value.line) == ("zero_spindle_speed", 4)
         assert e.value.message == "Cannot feed with zero spindle speed in feed per rev mode"
+
+
+def test_feed_per_revolution_at_constant_surface_speed():
+    # G96 S200 (m/min) D2000 (rev/min at most), G95 F0.2 mm/rev, lathe radius mode: at the
+    # end of each move the spindle turns 200 000 / (2 pi r) rev/min, r the X radius in mm.
+    text = ("G21 G18 G8 G0 X60 Z5\nG96 D2000 S200 M3\nG95 F0.2\nG1 X50 Z0\nG1 X10\nG1 X0\n"
+            "G7 G1 X40\nG97 S1000\nG1 Z-5\nM2\n")
+    feed = tc.run(tc.Program.parse(text)).path.feed
+    import math
+    assert feed[1] == pytest.approx(0.2 * 200_000 / (2 * math.pi * 50))  # 127.32 mm/min
+    assert feed[2] == pytest.approx(0.2 * 2000)  # r = 10: 3183 rev/min, held to 2000
+    assert feed[3] == pytest.approx(0.2 * 2000)  # at the axis
+    assert feed[4] == pytest.approx(0.2 * 200_000 / (2 * math.pi * 20))  # G7: X40 is a radius of 20
+    assert feed[5] == pytest.approx(0.2 * 1000)  # G97: S is rev/min again
+    # in inch: S in ft/min (304.8 mm), F in inch/rev
+    inch = tc.run(tc.Program.parse("G20 G18 G8 G0 X3 Z1\nG96 S500 M3\nG95 F0.01\nG1 X2\nG1 X0\nM2\n")).path.feed
+    assert inch[1] == pytest.approx(0.01 * 25.4 * 500 * 304.8 / (2 * math.pi * 2 * 25.4))
+    assert math.isnan(inch[2])  # at the axis without D the spindle speed is not known

@@ -349,6 +349,10 @@ bool Interp::execute(const BlockWords& bw) {
     }
     if (bw.has('F')) feed_ = bw['F'].value * (st_.feed_mode == 930 ? 1.0 : scale());
     if (bw.has('S')) speed_ = bw['S'].value;
+    if (int sm = bw.g[g_spindle_mode]; sm >= 0) {  // G96 (D: its speed limit) / G97
+        css_ = sm == 960;
+        if (css_ && bw.has('D')) css_max_ = std::fabs(bw['D'].value);
+    }
     // 5-6: tools
     if (bw.has('T')) select_tool(bw);
     if (modal) {

@@ -139,7 +139,8 @@ private:
     void motion_line(const BlockWords& bw, int code, bool machine_coords);
     void motion_arc(const BlockWords& bw, int code);
     void check_feed_per_rev(int column) const;
-    double feed_for(const BlockWords& bw, int code, double length) const;
+    // `x_end`: the X (radius) where the move ends, for the spindle speed of G96.
+    double feed_for(const BlockWords& bw, int code, double length, double x_end) const;
 
     // ---- offsets (interp_offsets.cpp) ------------------------------------------------------
     void set_coord_system(int n);
@@ -196,7 +197,9 @@ private:
     Vec6 tlo_ = Vec6::Zero();
     Vec6 g28_ = Vec6::Zero(), g30_ = Vec6::Zero();  // machine coordinates
     double feed_ = 0;   // mm/min (G94), mm/rev (G95) or 1/min (G93), as last programmed
-    double speed_ = 0;  // S, rev/min
+    double speed_ = 0;  // S, rev/min (G96: surface speed, m/min or ft/min)
+    bool css_ = false;       // G96 constant surface speed
+    double css_max_ = 0;     // G96 D: the spindle speed it may not exceed (0: none given)
     int tool_ = 0;      // tool in the spindle
     int selected_ = -1; // tool prepared by T
     int geometry_offset_ = 0, wear_offset_ = 0;  // lathes with T offsets: the active numbers

@@ -101,7 +101,7 @@ void Interp::cycle(const BlockWords& bw, int code) {
         old_cc = r;
     }
     const double clear = st_.retract_initial ? old_cc : r;
-    const double feed = feed_for(bw, 10, 0);
+    const double feed = feed_for(bw, 10, 0, pos_[0]);
     const double rapid_delta = st_.inch ? 0.010 : 0.010 * kMmPerInch;  // LinuxCNC's G83_RAPID_DELTA
     for (int rep = 0; rep < repeats; ++rep) {
         if (rep > 0) count_block(bw['L'].column);

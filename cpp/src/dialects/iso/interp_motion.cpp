@@ -50,7 +50,7 @@ void Interp::check_feed_per_rev(int column) const {
         fail("zero_spindle_speed", "Cannot feed with zero spindle speed in feed per rev mode", column);
 }
 
-double Interp::feed_for(const BlockWords& bw, int code, double length) const {
+double Interp::feed_for(const BlockWords& bw, int code, double length, double x_end) const {
     if (code == 0) return std::nan("");
     switch (st_.feed_mode) {
         case 930:  // inverse time: the move takes 1/F minutes
@@ -58,8 +58,15 @@ double Interp::feed_for(const BlockWords& bw, int code, double length) const {
                 fail("inverse_time_feed_missing",
                      code == 10 ? "F word missing with inverse time g1 move" : "F word missing with inverse time arc move");
             return bw['F'].value * length;
-        case 950:  // units per revolution
-            return feed_ * speed_;
+        case 950: {  // units per revolution
+            if (!css_) return feed_ * speed_;
+            // G96: the spindle turns to keep the surface speed at the tool's radius, taken
+            // where the move ends, no faster than D. At the axis without D: not known.
+            const double r = std::fabs(x_end) * scale();  // mm
+            double rpm = r > 0 ? speed_ * (st_.inch ? 304.8 : 1000.0) / (2 * kPi * r) : INFINITY;
+            if (css_max_ > 0) rpm = std::min(rpm, css_max_);
+            return std::isfinite(rpm) ? feed_ * rpm : std::nan("");
+        }
         default:
             return feed_;
     }
@@ -106,7 +113,7 @@ void Interp::motion_line(const BlockWords& bw, int code, bool machine_coords) {
     if (code == 10) check_feed_per_rev(bw.axis_column());
     if (machine_coords && comp_on() && radius_.radius > 0)
         fail("comp_g53", "Cannot use g53 with cutter radius comp", bw.g_column[g_nonmodal]);
-    double feed = feed_for(bw, code, (end.head<3>() - pos_.head<3>()).norm() * scale());
+    double feed = feed_for(bw, code, (end.head<3>() - pos_.head<3>()).norm() * scale(), end[0]);
     straight(code == 0 ? MotionKind::rapid : MotionKind::line, end, feed);
 }
 
@@ -194,7 +201,7 @@ void Interp::motion_arc(const BlockWords& bw, int code) {
     Motion m = motion_to(code == 30 ? MotionKind::arc_ccw : MotionKind::arc_cw, end);
     m.center = centre.head<3>();
     m.turns = p - 1;
-    m.feed = st_.feed_mode == 930 ? feed_for(bw, code, arc_length(m.arc()) * scale()) : feed_for(bw, code, 0);
+    m.feed = feed_for(bw, code, st_.feed_mode == 930 ? arc_length(m.arc()) * scale() : 0, end[0]);
     comp_moved_ = comp_moved_ || comp_on();
     sink_.push(m);
     pos_ = end;
