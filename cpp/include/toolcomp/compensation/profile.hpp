@@ -174,6 +174,10 @@ struct ControlProfile {
     // change): the next feed move needs an F word, which may stand in the same block.
     // Whether Fanuc controls do the same is not documented here: off for them.
     bool feed_mode_clears_feed = false;
+    // G41/G42 without D and G43 without H (or H0) in the block of an M6 or M61 take the
+    // tool loaded by it (false), or the one in the spindle before the block (true: what
+    // LinuxCNC's rs274 and gcode module do, their tool data being refreshed after a block).
+    bool spindle_tool_after_block = false;
     // Arc tolerances, in program units ([0] for mm programs, [1] for inch programs), as
     // LinuxCNC 2.9 applies them: an arc given by its centre is refused when its start and
     // end radius differ by more than `arc_spiral_hard_factor`·`arc_spiral_abs`, or by more

@@ -233,6 +233,7 @@ void Interp::check_words(const BlockWords& bw, int motion_to_be) {
 }
 
 bool Interp::execute(const BlockWords& bw) {
+    block_tool_ = tool_;
     const int g0 = bw.g[g_nonmodal];
     const int motion_code = bw.g[g_motion];
     const bool axes = bw.has_axis();

@@ -47,7 +47,7 @@ void Interp::radius_comp(const BlockWords& bw, int code) {
         set_radius_from_offset();
         return;
     } else {
-        int tool = tool_;
+        int tool = spindle_tool();
         if (bw.has('D')) {
             double d = bw['D'].value;
             if (!d_word_whole(d, prog_.dialect))
