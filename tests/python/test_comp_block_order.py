@@ -3,6 +3,7 @@
 follow G40 before a straight G0/G1 (G28/G30 and canned cycle moves do not count). The cases
 that need no tool table are in tests/programs/errors/comp_block_*.ngc and comp_exit_arc_*,
 checked against rs274; these need one or are accepted."""
+import numpy as np
 import pytest
 
 import toolcomp as tc
@@ -56,11 +57,11 @@ def test_g41_and_g43_in_the_block_of_a_tool_change():
     # T2 (D6) in the spindle, then G41 T1 M6 (D10): the new tool's radius 5, or with
     # spindle_tool_after_block the old one's 3 (rs274 and the gcode module: (7, 3), (7, 10))
     text = "T2 M6\nG41 T1 M6\nG1 X10 Y0\nG1 Y10\n"
-    assert run(text).path.end[-2:, :2].tolist() == pytest.approx([[5, 5], [5, 10]])
+    np.testing.assert_allclose(run(text).path.end[-2:, :2], [[5, 5], [5, 10]], atol=1e-9)
     prof = tc.ControlProfile("linuxcnc")
     prof.spindle_tool_after_block = True
     res = tc.run(tc.Program.parse(HEAD + text + "M2\n"), tools=tc.ToolTable.parse(TOOLS, "linuxcnc"), profile=prof)
-    assert res.path.end[-2:, :2].tolist() == pytest.approx([[7, 3], [7, 10]])
+    np.testing.assert_allclose(res.path.end[-2:, :2], [[7, 3], [7, 10]], atol=1e-9)
     lengths = tc.ToolTable.parse("T1 P1 Z10\nT2 P2 Z20\n", "linuxcnc")
     for after, z in ((False, 10), (True, 20)):
         prof.spindle_tool_after_block = after
