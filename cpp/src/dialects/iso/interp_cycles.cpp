@@ -107,9 +107,10 @@ void Interp::cycle(const BlockWords& bw, int code) {
         if (rep > 0) count_block(bw['L'].column);
         a += da;
         b += db;
-        // To the hole at the current level, but never below the clearance level (LinuxCNC
-        // 2.9 moves diagonally up to it when the tool is lower), then to R.
-        const double level = std::max(pos_[ax.c], clear);
+        // To the hole at the level the tool is at when that is above R, else at the clearance
+        // level (LinuxCNC 2.9: after a G99 cycle a G98 one with a lower R moves across at
+        // the old R; a tool below R goes diagonally up), then down to R.
+        const double level = pos_[ax.c] > r ? pos_[ax.c] : clear;
         straight(MotionKind::rapid, at(a, b, level), nan);
         if (level != r) straight(MotionKind::rapid, at(a, b, r), nan);
         // The control checks the spindle when the cycle itself starts, after the approach.
