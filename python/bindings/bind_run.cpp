@@ -189,10 +189,10 @@ void bind_run(py::module_& m) {
                        "G20 (inch) active at program start")
         .def_readwrite("block_limit", &ControlProfile::block_limit, "blocks a program may execute (loops count)")
         .def_readwrite("feed_mode_clears_feed", &ControlProfile::feed_mode_clears_feed,
-                       "G93/G94/G95 set the feed rate to 0, so the next feed move needs an F word (LinuxCNC)")
-        .def_readwrite("spindle_tool_after_block", &ControlProfile::spindle_tool_after_block,
-                       "G41/G42 without D and G43 without H in the block of an M6/M61 take the tool in the spindle "
-                       "before the block (rs274's way) instead of the new one")
+                       "G94/G95 set the feed rate to 0, so the next feed move needs an F word (LinuxCNC)")
+        .def_readwrite("tool_change_after_block", &ControlProfile::tool_change_after_block,
+                       "a tool change counts only after its block: G41/G42 without D and G43 without H beside "
+                       "M6/M61 take the tool in the spindle before it (rs274's way)")
         .def_readwrite("last_comment_only", &ControlProfile::last_comment_only,
                        "only the last comment in parentheses of a block is read for MSG/DEBUG/PRINT, ';' "
                        "comments never (LinuxCNC); False: every comment")

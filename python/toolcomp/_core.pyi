@@ -252,7 +252,7 @@ class ControlProfile:
     call_depth_limit: int
     last_comment_only: bool
     feed_mode_clears_feed: bool
-    spindle_tool_after_block: bool
+    tool_change_after_block: bool
     length_axes: LengthAxes
     length_subtract_word: bool
     radius: RadiusRules

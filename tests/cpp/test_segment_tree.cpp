@@ -105,3 +105,15 @@ TEST_CASE("arc_gap against the arc sampled densely") {
     CHECK(touching > 300);
     CHECK(touching < 2700);
 }
+
+TEST_CASE("arc_gap takes an arc ending within 1e-12 rad of its start as a whole circle") {
+    // a compensated full circle whose end misses its start by rounding, either way round
+    for (const double miss : {1e-13, -1e-13, 0.0}) {
+        for (const int dir : {1, -1}) {
+            const PlaneArc arc{{1, 0}, {std::cos(miss), std::sin(miss)}, {0, 0}, dir, false};
+            const SegmentGap g = arc_gap(arc, {-1.05, -5}, {-1.05, 5});
+            CHECK(g.distance == Approx(0.05));
+            CHECK(g.at.x() == Approx(-1.0));
+        }
+    }
+}

@@ -55,15 +55,15 @@ def test_a_tool_table_edit_under_compensation_is_refused_as_not_run():
 
 def test_g41_and_g43_in_the_block_of_a_tool_change():
     # T2 (D6) in the spindle, then G41 T1 M6 (D10): the new tool's radius 5, or with
-    # spindle_tool_after_block the old one's 3 (rs274 and the gcode module: (7, 3), (7, 10))
+    # tool_change_after_block the old one's 3 (rs274 and the gcode module: (7, 3), (7, 10))
     text = "T2 M6\nG41 T1 M6\nG1 X10 Y0\nG1 Y10\n"
     np.testing.assert_allclose(run(text).path.end[-2:, :2], [[5, 5], [5, 10]], atol=1e-9)
     prof = tc.ControlProfile("linuxcnc")
-    prof.spindle_tool_after_block = True
+    prof.tool_change_after_block = True
     res = tc.run(tc.Program.parse(HEAD + text + "M2\n"), tools=tc.ToolTable.parse(TOOLS, "linuxcnc"), profile=prof)
     np.testing.assert_allclose(res.path.end[-2:, :2], [[7, 3], [7, 10]], atol=1e-9)
     lengths = tc.ToolTable.parse("T1 P1 Z10\nT2 P2 Z20\n", "linuxcnc")
     for after, z in ((False, 10), (True, 20)):
-        prof.spindle_tool_after_block = after
+        prof.tool_change_after_block = after
         res = tc.run(tc.Program.parse(HEAD + "T2 M6\nT1 M6 G43\nG1 X1\nM2\n"), tools=lengths, profile=prof)
         assert res.path.tool_offset[-1, 2] == z

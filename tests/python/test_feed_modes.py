@@ -1,4 +1,4 @@
-"""Feed modes: LinuxCNC sets the feed rate to 0 at every G93/G94/G95 (an F in the same block
+"""Feed modes: LinuxCNC sets the feed rate to 0 at every G94/G95 (an F in the same block
 is read after it), feed per revolution needs a spindle speed; the profile switch, and Fanuc
 keeping its F (tests/programs/errors/feed_* hold the same cases checked against rs274)."""
 import pytest
@@ -59,3 +59,11 @@ def test_feed_per_revolution_at_constant_surface_speed():
     inch = tc.run(tc.Program.parse("G20 G18 G8 G0 X3 Z1\nG96 S500 M3\nG95 F0.01\nG1 X2\nG1 X0\nM2\n")).path.feed
     assert inch[1] == pytest.approx(0.01 * 25.4 * 500 * 304.8 / (2 * math.pi * 2 * 25.4))
     assert math.isnan(inch[2])  # at the axis without D the spindle speed is not known
+
+
+def test_g96_without_d_has_no_speed_limit():
+    import math
+    text = "G21 G18 G8 G0 X60 Z5\nG96 D500 S200 M3\nG95 F0.2\nG1 X10\nG97 S1000\nG96 S200\nG1 X10 Z0\nM2\n"
+    feed = tc.run(tc.Program.parse(text)).path.feed
+    assert feed[1] == pytest.approx(0.2 * 500)  # held to D500
+    assert feed[2] == pytest.approx(0.2 * 200_000 / (2 * math.pi * 10))  # the later G96 has no D

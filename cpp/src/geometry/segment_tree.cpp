@@ -51,7 +51,9 @@ namespace {
 // Whether the direction v from the centre lies within the arc's sweep (cross products with
 // its start and end radius vectors).
 bool in_sweep(const PlaneArc& arc, const Vec2& u, const Vec2& w, const Vec2& v) {
-    if (arc.full || arc.a0 == arc.a1) return true;
+    // A whole circle as the engine takes one (geometry/arc.cpp): an end within 1e-12 rad of
+    // the start, on either side (a compensated circle's end misses its start by rounding).
+    if (arc.full || (u.dot(w) > 0 && std::fabs(cross(u, w)) <= 1e-12 * u.norm() * w.norm())) return true;
     const double s = arc.dir > 0 ? 1.0 : -1.0;
     const bool major = s * cross(u, w) < 0;
     const double from_start = s * cross(u, v), to_end = s * cross(v, w);

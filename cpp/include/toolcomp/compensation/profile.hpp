@@ -170,14 +170,15 @@ struct ControlProfile {
     // parentheses of a block, ';' comments never (LinuxCNC keeps one comment per block), or
     // every comment of the block (false).
     bool last_comment_only = false;
-    // A G93, G94 or G95 word sets the feed rate to 0 (LinuxCNC, even when the mode does not
+    // A G94 or G95 word sets the feed rate to 0 (LinuxCNC, even when the mode does not
     // change): the next feed move needs an F word, which may stand in the same block.
     // Whether Fanuc controls do the same is not documented here: off for them.
     bool feed_mode_clears_feed = false;
-    // G41/G42 without D and G43 without H (or H0) in the block of an M6 or M61 take the
-    // tool loaded by it (false), or the one in the spindle before the block (true: what
-    // LinuxCNC's rs274 and gcode module do, their tool data being refreshed after a block).
-    bool spindle_tool_after_block = false;
+    // A tool change (M6, M61) counts for G41/G42 without D and G43 without H (or H0) in its
+    // own block (false), or only after the block (true: those take the tool that was in the
+    // spindle before it, as LinuxCNC's rs274 and gcode module do, their tool data being
+    // refreshed after a block).
+    bool tool_change_after_block = false;
     // Arc tolerances, in program units ([0] for mm programs, [1] for inch programs), as
     // LinuxCNC 2.9 applies them: an arc given by its centre is refused when its start and
     // end radius differ by more than `arc_spiral_hard_factor`·`arc_spiral_abs`, or by more

@@ -343,7 +343,8 @@ bool Interp::execute(const BlockWords& bw) {
     if (modal) {
         if (bw.g[g_feed_mode] >= 0) {
             st_.feed_mode = bw.g[g_feed_mode];
-            if (profile_.feed_mode_clears_feed) feed_ = 0;  // an F in this block is read after it
+            // (G93 too, unseen: inverse time needs an F in every feed block)
+            if (profile_.feed_mode_clears_feed && st_.feed_mode != 930) feed_ = 0;  // an F in this block is read after it
         }
         if (profile_.t_offsets && bw.g[g_retract] >= 0)  // Fanuc lathes: G98 per minute, G99 per revolution
             st_.feed_mode = bw.g[g_retract] == 980 ? 940 : 950;
@@ -352,7 +353,7 @@ bool Interp::execute(const BlockWords& bw) {
     if (bw.has('S')) speed_ = bw['S'].value;
     if (int sm = bw.g[g_spindle_mode]; sm >= 0) {  // G96 (D: its speed limit) / G97
         css_ = sm == 960;
-        if (css_ && bw.has('D')) css_max_ = std::fabs(bw['D'].value);
+        if (css_) css_max_ = bw.has('D') ? std::fabs(bw['D'].value) : 0;  // no D: no limit
     }
     // 5-6: tools
     if (bw.has('T')) select_tool(bw);

@@ -203,8 +203,8 @@ private:
     int tool_ = 0;      // tool in the spindle
     int block_tool_ = 0;  // and before the block being executed
     // The tool G41/G42 without D and G43 without H (or H0) take: the one in the spindle, or
-    // with ControlProfile::spindle_tool_after_block the one before this block's M6/M61.
-    int spindle_tool() const { return profile_.spindle_tool_after_block ? block_tool_ : tool_; }
+    // with ControlProfile::tool_change_after_block the one before this block's M6/M61.
+    int spindle_tool() const { return profile_.tool_change_after_block ? block_tool_ : tool_; }
     int selected_ = -1; // tool prepared by T
     int geometry_offset_ = 0, wear_offset_ = 0;  // lathes with T offsets: the active numbers
     bool checks_ = true;  // gouge checks on (9/Series M801) or off (M800)
