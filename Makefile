@@ -70,15 +70,16 @@ bench: build
 # UBSan-instrumented core (CMake option TOOLCOMP_FUZZ). Each runs FUZZ_SECONDS; the corpus
 # starts from tests/programs, the tables of tests/ and examples/ and fuzz/seeds, and grows
 # in build/fuzz/corpus across runs. Any crash, sanitizer report, uncaught non-toolcomp
-# exception, timeout or out-of-memory fails; the input is saved as build/fuzz/crashes/<target>-*
-# and replays with `build/fuzz/<target> FILE`.
+# exception, timeout (25 s for one input: a loaded 2-core VM once stalled a 1 ms input past
+# 10 s, which replayed in 0.03 s) or out-of-memory fails; the input is saved as
+# build/fuzz/crashes/<target>-* and replays with `build/fuzz/<target> FILE`.
 FUZZ_SECONDS ?= 60
 JOBS         ?= $(shell nproc)
 FUZZ_DIR     := build/fuzz
 FUZZ_TARGETS := fuzz_iso_parse fuzz_heidenhain_parse fuzz_sinumerik_parse fuzz_pipeline \
                 fuzz_table_linuxcnc fuzz_table_csv fuzz_table_json fuzz_table_heidenhain \
                 fuzz_table_sinumerik fuzz_tc_dp
-FUZZ_FLAGS   := -timeout=10 -rss_limit_mb=2048 -max_len=4096 -print_final_stats=1
+FUZZ_FLAGS   := -timeout=25 -rss_limit_mb=2048 -max_len=4096 -print_final_stats=1
 
 build/.fuzz-apt-stamp: build/.apt-stamp
 	@missing=$$(for p in $(FUZZ_PKGS); do dpkg -s $$p >/dev/null 2>&1 || echo $$p; done); \

@@ -33,8 +33,8 @@ std::string gcode_text(const Path& path, const GcodeStyle& style);
 
 // CSV rows (RFC 4180 line ends "\r\n") of the segments [begin, end), numbered from
 // `first_index` on, appended to `out`: index, kind, line, tool, start, end, center (empty for
-// lines and rapids), feed (empty for rapids), side, generated, tool_offset, a b c. Numbers with
-// 6 decimals (mm, mm/min, degrees).
+// lines and rapids), feed (empty where it is NaN: rapids, G96 at the axis without D), side,
+// generated, tool_offset, a b c. Numbers with 6 decimals (mm, mm/min, degrees).
 void csv_rows(const Path& path, std::size_t begin, std::size_t end, std::size_t first_index, std::string& out);
 // The header row of csv_rows().
 const char* csv_header();
