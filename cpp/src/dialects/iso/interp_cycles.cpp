@@ -52,7 +52,7 @@ void Interp::cycle(const BlockWords& bw, int code) {
         else if (!continuing)
             fail("cycle_p_missing", "Dwell time p word missing with " + gname);
     }
-    if (code == 870) {  // back boring: I J offsets from the hole, K the top of the counterbore
+    if (code == 870) {  // back boring: offsets from the hole and the top of the counterbore (see below)
         const char* names = "IJK";
         for (int n = 0; n < 3; ++n) {
             char c = names[n];
@@ -129,10 +129,12 @@ void Interp::cycle(const BlockWords& bw, int code) {
                 break;
             case 870: {
                 // Back boring: in beside the hole with the spindle oriented, across to the
-                // hole's axis at the bottom, feed up to the counterbore top (K) and back, then
-                // out the same way.
-                const double oa = a + cyc_.i, ob = b + cyc_.j;
-                const double middle = st_.incremental ? bottom + cyc_.k : cyc_.k;
+                // hole's axis at the bottom, feed up to the counterbore top and back, then out
+                // the same way. The words go by axis letter (I X, J Y, K Z): in G17 I J are
+                // the offset and K the top, in G18 K I and J, in G19 J K and I (LinuxCNC).
+                const double word[3] = {cyc_.i, cyc_.j, cyc_.k};
+                const double oa = a + word[ax.a], ob = b + word[ax.b];
+                const double middle = st_.incremental ? bottom + word[ax.c] : word[ax.c];
                 straight(MotionKind::rapid, at(oa, ob, r), nan);
                 straight(MotionKind::rapid, at(oa, ob, bottom), nan);
                 straight(MotionKind::rapid, at(a, b, bottom), nan);
