@@ -37,3 +37,4 @@ def test_g52_in_inch():
 def test_fanuc_g52_is_refused_as_not_run():
     with pytest.raises(tc.ProgramError, match="G52 is not supported by toolcomp"):
         run("G52 X5\n", dialect="fanuc")
+

@@ -94,3 +94,13 @@ def test_lathe_offset_table_csv_round_trip_and_use(tmp_path):
     res = tc.run(tc.Program.parse("G21 G18\nT0101\nG0 X50 Z5\nM30\n", dialect="fanuc"), tools=table,
                  profile=tc.ControlProfile("fanuc", machine="lathe"))
     np.testing.assert_allclose(res.path.tool_offset[0], [-2.5 + 0.02, 0, 1.25 - 0.01])
+
+
+def test_g7_x_words_are_diameters_in_g43_1_and_cycle_depths():
+    # LinuxCNC halves every X word in G7: G43.1 X4 is a 2 mm offset, a G19 cycle's depth X-2
+    # is -1 (both checked against LinuxCNC's gcode module)
+    p = tc.run(tc.Program.parse("G21 G90 G94 F300\nG0 X0 Y0 Z0\nG18 G7\nG43.1 X4\nG1 X20 Z1\nM2\n")).path
+    assert p.tool_offset[-1, 0] == 2
+    p = tc.run(tc.Program.parse("G21 G90 G94 F300\nG0 X0 Y0 Z0\nG19 G7\nG0 X5\nM3 S100\n"
+                                "G81 Y10 Z0 X-2 R1\nG80\nM2\n")).path
+    assert p.end[:, 0].min() == -1

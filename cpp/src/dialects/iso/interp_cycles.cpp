@@ -33,7 +33,7 @@ void Interp::cycle(const BlockWords& bw, int code) {
     else if (!continuing)
         fail("cycle_r_missing", "R clearance plane unspecified in cycle");
     if (bw.has(cl))
-        cyc_.z = bw[cl].value;
+        cyc_.z = axis_value(bw, ax.c);  // G7 and the G19 depth X: a diameter
     else if (!continuing)
         fail("cycle_depth_missing", std::string(1, cl) + " value unspecified in " + plane_name + " plane canned cycle");
     if (code == 730 || code == 830) {

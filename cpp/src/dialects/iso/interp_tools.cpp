@@ -132,7 +132,7 @@ void Interp::length_comp(const BlockWords& bw, int code) {
         case 431: {  // dynamic: the named components are replaced
             Vec6 v = tlo_;
             for (int i = 0; i < 6; ++i)
-                if (bw.has(kAxisLetter[i])) v[i] = bw[kAxisLetter[i]].value;
+                if (bw.has(kAxisLetter[i])) v[i] = axis_value(bw, i);  // G7: an X word is a diameter
             change_offset(tlo_, v);
             break;
         }
@@ -145,7 +145,7 @@ void Interp::length_comp(const BlockWords& bw, int code) {
                 add = tool_offset_of(h_tool(), bw['H'].column);
             } else {
                 for (int i = 0; i < 6; ++i)
-                    if (bw.has(kAxisLetter[i])) add[i] = bw[kAxisLetter[i]].value;
+                    if (bw.has(kAxisLetter[i])) add[i] = axis_value(bw, i);
             }
             change_offset(tlo_, tlo_ + add);
             break;
