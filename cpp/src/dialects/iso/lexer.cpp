@@ -243,21 +243,19 @@ Program PieceParser::parse(std::string_view text, Program prog) {
         ++line_no_;
         pos = nl + 1;
         if (blank_line(line)) continue;
-        if (trimmed(line) == "%" && dialect_ == Dialect::linuxcnc && seen_content_ && !percent_open_) {
-            // A "%" line in a program that did not open with one: LinuxCNC reads it like any
-            // other line, a bad character, when it gets there; a program that ends before it
-            // (M2 / M30 ... %, a common ending) never does. So the program stops here, with the
-            // error kept for a run that reaches it, even when reading strictly.
-            last_line_ = line_no_;
-            const std::size_t at = line.find('%');
-            prog.syntax_error =
-                ParseError("bad_character", "Bad character '%' used", {line_no_, static_cast<int>(at) + 1}).diagnostic();
-            done_ = true;
-            break;
-        }
         if (trimmed(line) == "%") {
-            // "%" on the first non-blank line opens the program; the next one closes it.
             last_line_ = line_no_;
+            if (dialect_ == Dialect::linuxcnc && seen_content_ && !percent_open_) {
+                // A "%" line in a program that did not open with one: LinuxCNC reads it like
+                // any other line, a bad character, when it gets there; a program that ends
+                // before it (M2 / M30 ... %, a common ending) never does. So the program stops
+                // here, with the error kept for a run that reaches it, even when reading strictly.
+                const int at = static_cast<int>(line.find('%')) + 1;
+                prog.syntax_error = ParseError("bad_character", "Bad character '%' used", {line_no_, at}).diagnostic();
+                done_ = true;
+                break;
+            }
+            // "%" on the first non-blank line opens the program; the next one closes it.
             if (percent_open_) {
                 percent_closed_ = done_ = true;
                 break;
