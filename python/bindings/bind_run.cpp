@@ -193,6 +193,14 @@ void bind_run(py::module_& m) {
         .def_readwrite("tool_change_after_block", &ControlProfile::tool_change_after_block,
                        "a tool change counts only after its block: G41/G42 without D and G43 without H beside "
                        "M6/M61 take the tool in the spindle before it (rs274's way)")
+        .def_readwrite("bare_motion_codes", &ControlProfile::bare_motion_codes,
+                       "G0/G1/G2/G3 without axis words move to where the tool is, other motion codes need "
+                       "axis words, I/J/K alone under a modal G2/G3 make an arc (LinuxCNC); False: a motion "
+                       "code alone only sets the mode")
+        .def_readwrite("inverse_time_min_rate", &ControlProfile::inverse_time_min_rate,
+                       "least feed rate of a G93 move, program units a minute (LinuxCNC 0.1)")
+        .def_readwrite("g96_needs_s", &ControlProfile::g96_needs_s,
+                       "G96 needs an S word in its block (LinuxCNC); False: the S in force is the surface speed")
         .def_readwrite("last_comment_only", &ControlProfile::last_comment_only,
                        "only the last comment in parentheses of a block is read for MSG/DEBUG/PRINT, ';' "
                        "comments never (LinuxCNC); False: every comment")

@@ -253,6 +253,9 @@ class ControlProfile:
     last_comment_only: bool
     feed_mode_clears_feed: bool
     tool_change_after_block: bool
+    bare_motion_codes: bool
+    inverse_time_min_rate: float
+    g96_needs_s: bool
     length_axes: LengthAxes
     length_subtract_word: bool
     radius: RadiusRules

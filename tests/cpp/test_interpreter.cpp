@@ -56,7 +56,7 @@ TEST_CASE("errors carry their line and column") {
 
 TEST_CASE("arcs: IJK and R in G17, G18, G19; helix; full circle with turns") {
     auto r = run_text(
-        "G21 G17 G0 X10 Y0 Z0\nG1 F100\n"
+        "G21 G17 G0 X10 Y0 Z0\nF100\n"
         "G3 X0 Y10 I-10 J0\n"          // quarter, centre (0,0)
         "G2 X10 Y0 R10\n"              // back, R>0 short arc clockwise: centre (0,0)
         "G3 X10 Y0 I-10 Z-2 P3\n"      // helix of three full turns

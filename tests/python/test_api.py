@@ -215,7 +215,7 @@ def test_run_accepts_paths(tmp_path):
 
 
 def test_threads_run_in_parallel_safely():
-    text = "G21 G1 F100\n" + "".join(f"X{i % 50} Y{(i * 7) % 30}\n" for i in range(20000)) + "M2\n"
+    text = "G21 G1 F100 X0\n" + "".join(f"X{i % 50} Y{(i * 7) % 30}\n" for i in range(20000)) + "M2\n"
     prog = tc.Program.parse(text)
     out = []
     threads = [threading.Thread(target=lambda: out.append(len(tc.run(prog).path))) for _ in range(4)]
@@ -223,7 +223,7 @@ def test_threads_run_in_parallel_safely():
         t.start()
     for t in threads:
         t.join()
-    assert out == [20000] * 4
+    assert out == [20001] * 4
 
 
 def test_block_delete_switch():

@@ -154,7 +154,7 @@ def test_return_values_and_value_returned():
 
 def test_loops_emit_their_moves():
     res = run("""\
-        G21 G1 F100
+        G21 F100
         #1=0
         o10 while [#1 LT 4]
           #1=[#1+1]

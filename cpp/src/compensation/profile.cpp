@@ -13,6 +13,9 @@ ControlProfile profile_for(Dialect d, Machine machine) {
     if (d == Dialect::linuxcnc) p.call_depth_limit = 9;
     p.last_comment_only = d == Dialect::linuxcnc;
     p.feed_mode_clears_feed = d == Dialect::linuxcnc;
+    p.bare_motion_codes = d == Dialect::linuxcnc;
+    if (d == Dialect::linuxcnc) p.inverse_time_min_rate = 0.1;
+    p.g96_needs_s = d == Dialect::linuxcnc;
     if (d == Dialect::fanuc) p.call_depth_limit = 10;
     switch (d) {
         case Dialect::fanuc: {

@@ -179,6 +179,20 @@ struct ControlProfile {
     // spindle before it, as LinuxCNC's rs274 and gcode module do, their tool data being
     // refreshed after a block).
     bool tool_change_after_block = false;
+    // How a block's motion code and axis words pair up. True (LinuxCNC): G0/G1/G2/G3 without
+    // axis words is a move to where the tool is (a zero-length move; G2/G3 then need I/J/K
+    // for a whole circle), any other motion code without axis words is refused ("All axes
+    // missing with motion code"), I/J/K alone under a modal G2/G3 make an arc, and G43.1
+    // beside a motion code takes its offset from the axis words the move goes to; G10, G28,
+    // G30, G52 or G92 beside a motion code is refused with or without axis words. False: a
+    // motion code without axis words only sets the mode.
+    bool bare_motion_codes = false;
+    // The least feed rate of an inverse-time (G93) move, in program units a minute: LinuxCNC
+    // feeds a move shorter than 0.1/F (a zero-length one too) at 0.1.
+    double inverse_time_min_rate = 0;
+    // G96 needs its surface speed in the same block (LinuxCNC: "S word missing with G96");
+    // false: the S word in force is the surface speed.
+    bool g96_needs_s = false;
     // Arc tolerances, in program units ([0] for mm programs, [1] for inch programs), as
     // LinuxCNC 2.9 applies them: an arc given by its centre is refused when its start and
     // end radius differ by more than `arc_spiral_hard_factor`·`arc_spiral_abs`, or by more

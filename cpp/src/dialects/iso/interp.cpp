@@ -240,11 +240,19 @@ bool Interp::execute(const BlockWords& bw) {
 
     // Which motion the axis words feed (LinuxCNC's "motion_to_be").
     const bool data_axes = axes_are_data(bw);
-    if (data_axes && motion_code >= 0 && motion_code != 800 && axes)
-        fail("two_axis_codes", "Cannot use two g codes that both use axis values", bw.g_column[g_nonmodal]);
+    const bool bare = profile_.bare_motion_codes;
+    if (motion_code >= 0 && motion_code != 800) {
+        if (bare ? uses_axes_group0(g0) : data_axes && axes)
+            fail("two_axis_codes", "Cannot use two g codes that both use axis values", bw.g_column[g_nonmodal]);
+        if (bare && !axes && motion_code != 0 && motion_code != 10 && motion_code != 20 && motion_code != 30)
+            fail("axes_missing", "All axes missing with motion code", bw.g_column[g_motion]);
+    }
     if (motion_code == 800 && axes) fail("axis_with_g80", "Cannot use axis values with g80", bw.axis_column());
     int motion_to_be = motion_code;
     if (motion_to_be < 0 && axes && !data_axes) motion_to_be = st_.motion;
+    if (bare && motion_to_be < 0 && !axes && (st_.motion == 20 || st_.motion == 30) &&
+        (bw.has('I') || bw.has('J') || bw.has('K')))
+        motion_to_be = st_.motion;  // "I1" alone under G2: an arc
     if (motion_to_be == 800 && axes && !data_axes)
         fail("axis_without_motion", "Cannot use axis values without a g code that uses them", bw.axis_column());
     if ((motion_code == 20 || motion_code == 30) && g0 == 40)
@@ -257,6 +265,8 @@ bool Interp::execute(const BlockWords& bw) {
     }
     if ((g0 == 920 || g0 == 520) && !axes) fail("g92_no_axes", "All axes missing with g52 or g92", bw.g_column[g_nonmodal]);
     check_words(bw, motion_to_be);
+    if (bw.g[g_spindle_mode] == 960 && !bw.has('S') && profile_.g96_needs_s)
+        fail("g96_s_missing", "S word missing with G96", bw.g_column[g_spindle_mode]);
     if (bw.has('U') || bw.has('V') || bw.has('W')) {
         char l = bw.has('U') ? 'U' : bw.has('V') ? 'V' : 'W';
         if (!profile_.incremental_uw || l == 'V')
@@ -401,7 +411,11 @@ bool Interp::execute(const BlockWords& bw) {
     prev_motion_ = st_.motion;
     if (motion_code >= 0 && !is_cycle(motion_code)) cycle_il_set_ = false;
     if (motion_code >= 0) st_.motion = motion_code;
-    if (motion_to_be >= 0 && axes && !data_axes) {
+    // A motion code with its axis words (or, bare, without them: a zero-length move or a
+    // whole circle), or axis words that are not data under a modal motion.
+    const bool moves = bare ? motion_to_be >= 0 && motion_to_be != 800 && (motion_code >= 0 || !data_axes)
+                            : motion_to_be >= 0 && axes && !data_axes;
+    if (moves) {
         switch (motion_to_be) {
             case 0: case 10: motion_line(bw, motion_to_be, g0 == 530); break;
             case 20: case 30: motion_arc(bw, motion_to_be); break;

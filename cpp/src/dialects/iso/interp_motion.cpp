@@ -57,7 +57,7 @@ double Interp::feed_for(const BlockWords& bw, int code, double length, double x_
             if (!bw.has('F'))
                 fail("inverse_time_feed_missing",
                      code == 10 ? "F word missing with inverse time g1 move" : "F word missing with inverse time arc move");
-            return bw['F'].value * length;
+            return std::max(profile_.inverse_time_min_rate * scale(), bw['F'].value * length);
         case 950: {  // units per revolution
             if (!css_) return feed_ * speed_;
             // G96: the spindle turns to keep the surface speed at the tool's radius, taken
@@ -113,7 +113,11 @@ void Interp::motion_line(const BlockWords& bw, int code, bool machine_coords) {
     if (code == 10) check_feed_per_rev(bw.axis_column());
     if (machine_coords && comp_on() && radius_.radius > 0)
         fail("comp_g53", "Cannot use g53 with cutter radius comp", bw.g_column[g_nonmodal]);
-    double feed = feed_for(bw, code, (end.head<3>() - pos_.head<3>()).norm() * scale(), end[0]);
+    // The length an inverse-time feed is worked out from: of X, Y, Z, or, when only rotary
+    // axes move, of A, B, C in degrees (LinuxCNC's find_straight_length).
+    double length = (end.head<3>() - pos_.head<3>()).norm() * scale();
+    if (length == 0) length = (end.tail<3>() - pos_.tail<3>()).norm() * scale();
+    double feed = feed_for(bw, code, length, end[0]);
     straight(code == 0 ? MotionKind::rapid : MotionKind::line, end, feed);
 }
 
