@@ -171,7 +171,8 @@ struct ControlProfile {
     // every comment of the block (false).
     bool last_comment_only = false;
     // A G94 or G95 word sets the feed rate to 0 (LinuxCNC, even when the mode does not
-    // change): the next feed move needs an F word, which may stand in the same block.
+    // change): the next feed move needs an F word, which may stand in the same block. In
+    // G93 the feed rate is then that of the last inverse-time move, not the F words.
     // Whether Fanuc controls do the same is not documented here: off for them.
     bool feed_mode_clears_feed = false;
     // A tool change (M6, M61) counts for G41/G42 without D and G43 without H (or H0) in its

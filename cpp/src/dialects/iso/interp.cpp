@@ -336,9 +336,6 @@ bool Interp::execute(const BlockWords& bw) {
         }
         if (motion_code >= 382 && motion_code <= 385)
             fail("comp_probe", "Cannot probe with cutter radius comp on", bw.g_column[g_motion]);
-        if (is_cycle(motion_to_be))
-            fail("comp_canned_cycle", "Cannot use canned cycles with cutter compensation on",
-                 motion_code >= 0 ? bw.g_column[g_motion] : bw.axis_column());
     }
 
     // Real codes of the control that toolcomp does not run (after the control's own refusals
@@ -359,7 +356,10 @@ bool Interp::execute(const BlockWords& bw) {
         if (profile_.t_offsets && bw.g[g_retract] >= 0)  // Fanuc lathes: G98 per minute, G99 per revolution
             st_.feed_mode = bw.g[g_retract] == 980 ? 940 : 950;
     }
-    if (bw.has('F')) feed_ = bw['F'].value * (st_.feed_mode == 930 ? 1.0 : scale());
+    // LinuxCNC's feed rate in G93 is that of the last inverse-time move (motion_line,
+    // motion_arc): an F word there times its own block only.
+    if (bw.has('F') && !(st_.feed_mode == 930 && profile_.feed_mode_clears_feed))
+        feed_ = bw['F'].value * (st_.feed_mode == 930 ? 1.0 : scale());
     if (bw.has('S')) speed_ = bw['S'].value;
     if (int sm = bw.g[g_spindle_mode]; sm >= 0) {  // G96 (D: its speed limit) / G97
         css_ = sm == 960;
@@ -378,7 +378,8 @@ bool Interp::execute(const BlockWords& bw) {
         if (int sp = bw.m[m_spindle]; sp >= 0) spindle_ = sp == 30 ? 1 : sp == 40 ? -1 : 0;
     }
     // 10: dwell
-    if (g0 == 40 && (!bw.has('P') || bw['P'].value < 0))
+    // LinuxCNC keeps -1 for a missing P and reads any other value, negative ones too.
+    if (g0 == 40 && (!bw.has('P') || (prog_.dialect == Dialect::linuxcnc ? bw['P'].value == -1 : bw['P'].value < 0)))
         fail("dwell_missing", "Dwell time missing with g4", bw.g_column[g_nonmodal]);
     if (modal) {
         // 11-12: plane, units (an F in the same block was read in the old units, as LinuxCNC does)

@@ -176,6 +176,7 @@ private:
     bool arc_not_allowed_ = false;
     bool comp_moved_ = false;  // a move made since compensation came on (else G40 sets no rule)
     bool comp_on() const { return radius_.side != 0; }
+    void inverse_time_rate(double feed);
 
     // ---- canned cycles (interp_cycles.cpp) ---------------------------------------------------
     void cycle(const BlockWords& bw, int code);

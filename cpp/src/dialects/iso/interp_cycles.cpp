@@ -21,50 +21,30 @@ void Interp::cycle(const BlockWords& bw, int code) {
         if (bw.has(c))
             fail("cycle_rotary", std::string("Cannot put ") + (c == 'A' ? "an " : "a ") +
                                      static_cast<char>(c - 'A' + 'a') + " in canned cycle", bw[c].column);
+    // LinuxCNC's order: the feed, the feed mode, compensation, R, L, the depth, R against the
+    // depth (below), then each cycle's own words. P and Q of -1 are LinuxCNC's "no word"
+    // (its block keeps -1 for a missing P or Q); other negative values are read as given.
+    if (feed_ <= 0) fail("zero_feed", "Cannot feed with zero feed rate");
     if (st_.feed_mode == 930) fail("cycle_inverse_time", "Cannot use inverse time feed with canned cycles");
+    if (comp_on())
+        fail("comp_canned_cycle", "Cannot use canned cycles with cutter compensation on",
+             bw.g[g_motion] >= 0 ? bw.g_column[g_motion] : bw.axis_column());
+    if (bw.has('R'))
+        cyc_.r = bw['R'].value;
+    else if (!continuing)
+        fail("cycle_r_missing", "R clearance plane unspecified in cycle");
     int repeats = 1;
     if (bw.has('L')) {
         repeats = int_value(bw['L'].value);
         if (repeats < 0) fail("negative_l", "Negative l word used", bw['L'].column);
         if (repeats == 0) fail("zero_repeats", "Cannot do zero repeats of cycle", bw['L'].column);
     }
-    if (bw.has('R'))
-        cyc_.r = bw['R'].value;
-    else if (!continuing)
-        fail("cycle_r_missing", "R clearance plane unspecified in cycle");
     if (bw.has(cl))
         cyc_.z = axis_value(bw, ax.c);  // G7 and the G19 depth X: a diameter
     else if (!continuing)
         fail("cycle_depth_missing", std::string(1, cl) + " value unspecified in " + plane_name + " plane canned cycle");
-    if (code == 730 || code == 830) {
-        if (bw.has('Q')) {
-            if (bw['Q'].value < 0) fail("cycle_q_missing", "Q word missing with " + gname, bw['Q'].column);
-            cyc_.q = bw['Q'].value;
-        } else if (!continuing) {
-            fail("cycle_q_missing", "Q word missing with " + gname);
-        }
-    }
-    if (code == 740 || code == 840) {
-        if (bw.has('P')) cyc_.p = bw['P'].value;  // optional dwell at the bottom
-    } else if (code == 820 || code == 860 || code == 880 || code == 890) {
-        if (bw.has('P'))
-            cyc_.p = bw['P'].value;
-        else if (!continuing)
-            fail("cycle_p_missing", "Dwell time p word missing with " + gname);
-    }
-    if (code == 870) {  // back boring: offsets from the hole and the top of the counterbore (see below)
-        const char* names = "IJK";
-        for (int n = 0; n < 3; ++n) {
-            char c = names[n];
-            if (!bw.has(c) && !continuing)
-                fail("cycle_g87_word_missing", std::string(1, c) + " word missing with g87");
-        }
-        if (bw.has('I')) cyc_.i = bw['I'].value;
-        if (bw.has('J')) cyc_.j = bw['J'].value;
-        if (bw.has('K')) cyc_.k = bw['K'].value;
-    }
-    if (feed_ <= 0) fail("zero_feed", "Cannot feed with zero feed rate");
-
+    const bool q_word = bw.has('Q') && bw['Q'].value != -1;
+    const bool p_word = bw.has('P') && bw['P'].value != -1;
     // Levels along the tool axis. The initial level is that of the first block of the cycle.
     if (!cycle_il_set_) {
         cycle_il_ = pos_[ax.c];
@@ -87,6 +67,31 @@ void Interp::cycle(const BlockWords& bw, int code) {
     if (r < bottom)
         fail("cycle_r_below_depth", std::string("R less than ") + static_cast<char>(cl - 'A' + 'a') +
                                         " in cycle in " + plane_name + " plane");
+    if (code == 730 || code == 830) {
+        if (q_word)
+            cyc_.q = bw['Q'].value;
+        else if (!continuing)
+            fail("cycle_q_missing", "Q word missing with " + gname, bw.has('Q') ? bw['Q'].column : 0);
+    }
+    if (code == 740 || code == 840) {
+        if (p_word) cyc_.p = bw['P'].value;  // optional dwell at the bottom
+    } else if (code == 820 || code == 860 || code == 880 || code == 890) {
+        if (p_word)
+            cyc_.p = bw['P'].value;
+        else if (!continuing)
+            fail("cycle_p_missing", "Dwell time p word missing with " + gname);
+    }
+    if (code == 870) {  // back boring: offsets from the hole and the top of the counterbore (see below)
+        const char* names = "IJK";
+        for (int n = 0; n < 3; ++n) {
+            char c = names[n];
+            if (!bw.has(c) && !continuing)
+                fail("cycle_g87_word_missing", std::string(1, c) + " word missing with g87");
+        }
+        if (bw.has('I')) cyc_.i = bw['I'].value;
+        if (bw.has('J')) cyc_.j = bw['J'].value;
+        if (bw.has('K')) cyc_.k = bw['K'].value;
+    }
 
     const double nan = std::nan("");
     auto at = [&](double aa, double bb, double cc) {

@@ -44,6 +44,12 @@ Vec6 Interp::find_end(const BlockWords& bw) const {
     return end;
 }
 
+// LinuxCNC keeps an inverse-time move's rate as its feed rate (what a canned cycle in G93
+// finds: zero before any such move).
+void Interp::inverse_time_rate(double feed) {
+    if (st_.feed_mode == 930 && profile_.feed_mode_clears_feed) feed_ = feed;
+}
+
 // Feed per revolution needs a spindle speed (S; M5 keeps it).
 void Interp::check_feed_per_rev(int column) const {
     if (st_.feed_mode == 950 && speed_ == 0)
@@ -118,6 +124,7 @@ void Interp::motion_line(const BlockWords& bw, int code, bool machine_coords) {
     double length = (end.head<3>() - pos_.head<3>()).norm() * scale();
     if (length == 0) length = (end.tail<3>() - pos_.tail<3>()).norm() * scale();
     double feed = feed_for(bw, code, length, end[0]);
+    if (code == 10) inverse_time_rate(feed);
     straight(code == 0 ? MotionKind::rapid : MotionKind::line, end, feed);
 }
 
@@ -206,6 +213,7 @@ void Interp::motion_arc(const BlockWords& bw, int code) {
     m.center = centre.head<3>();
     m.turns = p - 1;
     m.feed = feed_for(bw, code, st_.feed_mode == 930 ? arc_length(m.arc()) * scale() : 0, end[0]);
+    inverse_time_rate(m.feed);
     comp_moved_ = comp_moved_ || comp_on();
     sink_.push(m);
     pos_ = end;
