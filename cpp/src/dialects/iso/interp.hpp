@@ -194,7 +194,8 @@ private:
     Vec6 pos_ = Vec6::Zero();
     std::array<Vec6, 9> g5x_;
     std::array<double, 9> rotation_{};  // XY rotation of each coordinate system, degrees
-    Vec6 g92_ = Vec6::Zero(), g92_saved_ = Vec6::Zero();
+    Vec6 g92_ = Vec6::Zero(), g92_saved_ = Vec6::Zero();  // in force; kept (#5211-#5219)
+    bool g92_on_ = false;                                 // #5210
     Vec6 tlo_ = Vec6::Zero();
     Vec6 g28_ = Vec6::Zero(), g30_ = Vec6::Zero();  // machine coordinates
     double feed_ = 0;   // mm/min (G94), mm/rev (G95) or 1/min (G93), as last programmed

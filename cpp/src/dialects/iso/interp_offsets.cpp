@@ -95,6 +95,7 @@ void Interp::g92(const BlockWords& bw, int code) {
                 if (bw.has(kAxisLetter[i])) value[i] = pos_[i] + g92_[i] - axis_value(bw, i);
             change_offset(g92_, value);
             g92_saved_ = g92_;
+            g92_on_ = true;
             break;
         }
         case 520: {  // G52: a local offset of the work coordinate system, G92's storage (LinuxCNC)
@@ -103,11 +104,12 @@ void Interp::g92(const BlockWords& bw, int code) {
                 if (bw.has(kAxisLetter[i])) value[i] = axis_value(bw, i);
             change_offset(g92_, value);
             g92_saved_ = g92_;
+            g92_on_ = true;
             break;
         }
-        case 921: change_offset(g92_, Vec6::Zero()); g92_saved_.setZero(); break;
-        case 922: change_offset(g92_, Vec6::Zero()); break;
-        case 923: change_offset(g92_, g92_saved_); break;
+        case 921: change_offset(g92_, Vec6::Zero()); g92_saved_.setZero(); g92_on_ = false; break;
+        case 922: change_offset(g92_, Vec6::Zero()); g92_on_ = false; break;
+        case 923: change_offset(g92_, g92_saved_); g92_on_ = true; break;
         default: break;
     }
 }

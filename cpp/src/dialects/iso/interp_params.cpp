@@ -40,8 +40,9 @@ bool Interp::system_param(int n, double& v) const {
     auto axis9 = [](const Vec6& p, int j) { return j < 6 ? p[j] : 0.0; };  // U V W: none
     if (n >= 5161 && n <= 5169) return v = axis9(g28_, n - 5161), true;
     if (n >= 5181 && n <= 5189) return v = axis9(g30_, n - 5181), true;
-    if (n >= 5211 && n <= 5219) return v = axis9(g92_, n - 5211), true;
-    if (n == 5210) return v = g92_.isZero() ? 0.0 : 1.0, true;
+    // G92.2 suspends the offsets and keeps these; G92.3 takes them back.
+    if (n >= 5211 && n <= 5219) return v = axis9(g92_saved_, n - 5211), true;
+    if (n == 5210) return v = g92_on_ ? 1.0 : 0.0, true;
     if (n == 5220) return v = st_.coord_system, true;
     if (n >= 5221 && n <= 5400 - 1 && n < 5221 + 9 * 20) {
         const int cs = (n - 5221) / 20, j = (n - 5221) % 20;
@@ -50,10 +51,19 @@ bool Interp::system_param(int n, double& v) const {
         return false;
     }
     if (n == 5400) return v = tool_, true;
-    if (n >= 5401 && n <= 5409) return v = axis9(tlo_, n - 5401), true;
-    if (n >= 5410 && n <= 5413) {
-        const OffsetValues o = offset_values();
-        v = n == 5410 ? 2 * o.radius : n == 5413 ? o.orientation : 0.0;
+    if (n >= 5401 && n <= 5413) {
+        // The tool table's row of the tool in the spindle (whatever offset is applied; none
+        // when there is no tool or no row), in program units.
+        v = 0;
+        const Tool* t = tools_ && tool_ > 0 ? tools_->find(tool_) : nullptr;
+        if (!t) return true;
+        const CuttingEdge& e = t->edge();
+        const double sc = scale();
+        if (n <= 5403) v = e.length[n - 5401] / sc;
+        else if (n <= 5406) v = e.rotary[static_cast<std::size_t>(n - 5404)];
+        else if (n <= 5409) v = e.uvw[static_cast<std::size_t>(n - 5407)] / sc;
+        else if (n == 5410) v = 2 * e.radius / sc;
+        else v = n == 5411 ? e.front_angle : n == 5412 ? e.back_angle : e.orientation;
         return true;
     }
     if (n >= 5420 && n <= 5428) return v = axis9(pos_, n - 5420), true;
