@@ -116,3 +116,12 @@ def test_g96_needs_its_s_word():
     with pytest.raises(tc.ProgramError) as e:
         run(HEAD + "S100 M3\nG96 D1000\nM2\n")
     assert (e.value.message, e.value.line) == ("S word missing with G96", 4)
+
+
+def test_inverse_time_spiral_arc_is_measured_on_its_start_radius():
+    # r 5 at the start, 5.02 at the end (within LinuxCNC's spiral tolerance): half a turn on
+    # r = 5 is 5 pi; with a rise of 3 and two turns more, hypot(5 * 3 pi, 3).
+    p = run(HEAD + "G93 G2 X10.02 Y0 I5 F1\nM2\n").path
+    np.testing.assert_allclose(p.feed[1], 5 * np.pi, rtol=1e-12)
+    p = run(HEAD + "G93 G3 X10.02 Y0 Z3 I5 P2 F2\nM2\n").path
+    np.testing.assert_allclose(p.feed[1], 2 * np.hypot(15 * np.pi, 3), rtol=1e-12)

@@ -212,7 +212,14 @@ void Interp::motion_arc(const BlockWords& bw, int code) {
     Motion m = motion_to(code == 30 ? MotionKind::arc_ccw : MotionKind::arc_cw, end);
     m.center = centre.head<3>();
     m.turns = p - 1;
-    m.feed = feed_for(bw, code, st_.feed_mode == 930 ? arc_length(m.arc()) * scale() : 0, end[0]);
+    // An inverse-time arc's length as LinuxCNC measures it: the start radius times the sweep
+    // (a slight spiral is not averaged), with the helix rise.
+    double length = 0;
+    if (st_.feed_mode == 930) {
+        const Arc a = m.arc();
+        length = std::hypot(arc_start_radius(a) * arc_sweep(a), end[ax.c] - pos_[ax.c]) * scale();
+    }
+    m.feed = feed_for(bw, code, length, end[0]);
     inverse_time_rate(m.feed);
     comp_moved_ = comp_moved_ || comp_on();
     sink_.push(m);
