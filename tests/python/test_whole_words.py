@@ -53,3 +53,18 @@ def test_an_l_word_beside_g41_or_g42_is_let_be():
     # LinuxCNC accepts L with G41/G42 (it only reads it with G41.1/G42.1 in G18)
     assert run("G41 D1 L3\nG1 X10 Y0\nG1 X20\nG40 G1 X30\n").path.end[2, 1] == pytest.approx(5)
 
+
+
+def test_negative_values_that_read_as_zero():
+    # LinuxCNC reads the integer first and tests its sign: -0.00005 is 0, -0.99995 is -1.
+    assert run("T2 M6\nT-0.00005\nG1 X1\n").path.tool[-1] == 2        # T0 selects, no change
+    assert len(run("M-0.00005\nG1 X1\n").path) == 2                    # M0, a stop
+    with pytest.raises(tc.ProgramError) as e:
+        run("G0 Z5\nG81 X1 Z-1 R2 L-0.00005\n")
+    assert (e.value.message, e.value.line) == ("Cannot do zero repeats of cycle", 4)
+    with pytest.raises(tc.ProgramError) as e:
+        run("G0 Z5\nG81 X1 Z-1 R2 L-0.99995\n")
+    assert (e.value.message, e.value.line) == ("Negative l word used", 4)
+    with pytest.raises(tc.ProgramError) as e:
+        run("M-0.5\n")
+    assert e.value.message == "Non integer value for integer"

@@ -68,9 +68,10 @@ void add_g(BlockWords& bw, const Word& w, Dialect d) {
 }
 
 void add_m(BlockWords& bw, const Word& w, Dialect d) {
-    if (w.value < 0) fail("negative_m_code", "Negative m code used", bw.line, w.column);
+    // Whole first, then the sign of the integer it reads as (M-0.00005 is M0 on LinuxCNC).
     if (!whole_word(w.value, d)) fail("non_integer_value", "Non integer value for integer", bw.line, w.column);
     int m = int_value(w.value);
+    if (m < 0) fail("negative_m_code", "Negative m code used", bw.line, w.column);
     if (m > 199 && d == Dialect::linuxcnc)
         fail("m_code_out_of_range", "M-code greater than 199: M" + std::to_string(m), bw.line, w.column);
     if (m > 99999) fail("unknown_m_code", "Unknown m code used: M" + std::to_string(m), bw.line, w.column);
@@ -116,11 +117,12 @@ BlockWords collect_words(std::span<const Word> words, int line, Dialect dialect)
             if (w.letter == 'T') {
                 if (!whole_word(w.value, dialect))
                     fail("non_integer_value", "Non integer value for integer", bw.line, w.column);
-                if (w.value < 0) fail("negative_tool", "Negative tool id (tool not found)", bw.line, w.column);
+                if (int_value(w.value) < 0)
+                    fail("negative_tool", "Negative tool id (tool not found)", bw.line, w.column);
             }
             if (w.letter == 'L' && !whole_word(w.value, dialect))
                 fail("non_integer_value", "Non integer value for integer", bw.line, w.column);
-            if (w.letter == 'L' && w.value < 0 && dialect == Dialect::linuxcnc)
+            if (w.letter == 'L' && int_value(w.value) < 0 && dialect == Dialect::linuxcnc)
                 fail("negative_l_word", "Negative l word used", bw.line, w.column);
             if (w.letter == 'F' && w.value < 0) fail("negative_feed", "Negative f word used", bw.line, w.column);
             if (w.letter == 'S' && w.value < 0)
