@@ -17,6 +17,9 @@ constexpr double kTwoPi = 2 * 3.14159265358979323846;
 constexpr int kPlaneAxes[3][3] = {{0, 1, 2}, {2, 0, 1}, {1, 2, 0}};  // first, second, applicate
 constexpr const char* kPlaneWord[3] = {"G17", "G18", "G19"};
 constexpr char kCentreWord[3] = {'I', 'J', 'K'};
+// Full circles one arc may be written as, a block each (fanuc, grbl): beyond, the text
+// would run to gigabytes.
+constexpr int kMaxCircles = 1000000;
 
 // x mod m with the sign of m (the remainder Python's % gives for floats).
 double floor_mod(double x, double m) {
@@ -151,7 +154,13 @@ private:
         }
         std::string f;
         const double feed = feeds_[i];
-        if (!std::isnan(feed)) {
+        // A feed move whose rate is not known (G96 at the spindle axis without a speed limit
+        // D) would run at the F before it: refused.
+        if (std::isnan(feed))
+            throw std::invalid_argument("the move of line " + std::to_string(line) +
+                                        " has no known feed rate (constant surface speed at the spindle axis "
+                                        "without a speed limit); it cannot be written with an F word");
+        {
             const text::Fixed t = num(feed);
             if (!(t == num(feed_))) {
                 f = " F";
@@ -180,6 +189,10 @@ private:
         // Without P the turns are full circles first, the third axis shared out by angle.
         P3 p = s;
         const int circles = linuxcnc ? 0 : std::max(0, turns);
+        if (circles > kMaxCircles)
+            throw std::invalid_argument("the arc of line " + std::to_string(path_.line[i]) + " makes " +
+                                        std::to_string(turns) + " extra turns, a block each in this dialect; "
+                                        "export it for linuxcnc (one block with P)");
         const double total = circles > 0 ? sweep(s, e, c, plane_, ccw, turns) : 0;
         for (int piece = 0; piece <= circles; ++piece) {
             P3 q = e;

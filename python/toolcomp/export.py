@@ -32,7 +32,8 @@ def to_gcode(path: "_core.Path", dialect: str = "linuxcnc", *, digits: int = 6,
     written, is the segment's start is left out, F and the rotary axes are modal. With
     ``comments``, the blocks of each source line of the original program are preceded by
     ``(line N)``. ``linuxcnc`` writes an arc of several turns as one block with P; ``fanuc``
-    and ``grbl`` write its full circles first. Raises ValueError for a path that jumps.
+    and ``grbl`` write its full circles first. Raises ValueError for a path that jumps, a
+    feed move without a known feed rate, or (fanuc, grbl) an arc of more than a million turns.
     """
     if dialect not in DIALECTS:
         raise ValueError(f"unknown export dialect {dialect!r} (expected one of {', '.join(DIALECTS)})")

@@ -101,7 +101,9 @@ def to_gcode(path: "_core.Path", dialect: str = "linuxcnc", *, digits: int = 6,
             out.append(" ".join(words + ["G0", words_to(start[i], end[i])]) + rot)
             continue
         f = ""
-        if not math.isnan(feed[i]) and _num(feed[i], digits) != _num(cur_feed, digits):
+        if math.isnan(feed[i]):
+            raise ValueError(f"the move of line {int(src[i])} has no known feed rate")
+        if _num(feed[i], digits) != _num(cur_feed, digits):
             f = f" F{_num(feed[i], digits)}"
             cur_feed = float(feed[i])
         if k == _core.LINE:

@@ -89,6 +89,24 @@ def test_a_work_offset_change_is_refused_not_flattened():
         to_gcode(p)
 
 
+def test_a_feed_move_of_unknown_rate_is_refused():
+    # G96 at X0 without a speed limit: the spindle speed, and so the feed, has no value
+    text = "G18 G21 G0 X10 Z0\nS100 M3\nG95 G96 S100 F0.1\nG1 X0\nG1 Z-5\nM2\n"
+    p = tc.run(tc.Program.parse(text, dialect="linuxcnc")).path
+    assert math.isnan(p.feed[-1])
+    with pytest.raises(ValueError, match="the move of line 4 has no known feed rate"):
+        to_gcode(p)
+
+
+def test_an_arc_of_very_many_turns_is_written_with_p_only():
+    p = tc.run(tc.Program.parse("G21 G0 X0 Y0 Z0\nG2 X0 Y0 I1 Z-1 P2000000 F100\nM2\n",
+                                dialect="linuxcnc")).path
+    assert to_gcode(p, comments=False).splitlines()[-2].endswith("P2000000 F100")
+    for dialect in ("fanuc", "grbl"):
+        with pytest.raises(ValueError, match="the arc of line 2 makes 1999999 extra turns"):
+            to_gcode(p, dialect)
+
+
 def test_tool_length_offsets_are_folded_in_or_the_jump_is_refused():
     res = tc.run(tc.Program.parse("G21 G0 Z10\nG43.1 Z25\nG0 X5 Z10\nG1 X10 F100\nM2\n", dialect="linuxcnc"))
     # G43.1 Z25 at Z10: the point is Z-15 in program coordinates, Z10 with the offset.
