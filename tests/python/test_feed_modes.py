@@ -67,3 +67,13 @@ def test_g96_without_d_has_no_speed_limit():
     feed = tc.run(tc.Program.parse(text)).path.feed
     assert feed[1] == pytest.approx(0.2 * 500)  # held to D500
     assert feed[2] == pytest.approx(0.2 * 200_000 / (2 * math.pi * 10))  # the later G96 has no D
+
+
+def test_g96_cycle_feeds_follow_the_hole():
+    # G96 S100 without D, G95 F0.1: drilling at X10 turns at 100 000 / (2 pi 10) rev/min
+    # wherever the tool came from (X0 before the cycle: no speed there).
+    text = "G21 G17 G90 G0 X0 Y0 Z5\nG96 S100 M3\nG95 F0.1\nG81 X10 Y0 Z-1 R2\nG80\nM2\n"
+    p = tc.run(tc.Program.parse(text)).path
+    fed = p.kind == tc.LINE
+    assert fed.sum() == 1
+    assert p.feed[fed][0] == pytest.approx(0.1 * 100_000 / (2 * 3.141592653589793 * 10))

@@ -106,7 +106,8 @@ void Interp::cycle(const BlockWords& bw, int code) {
         old_cc = r;
     }
     const double clear = st_.retract_initial ? old_cc : r;
-    const double feed = feed_for(bw, 10, 0, pos_[0]);
+    // A feed move of the cycle; under G96 its feed follows the X where it ends, as any move's.
+    auto fed = [&](const Vec6& p) { straight(MotionKind::line, p, feed_for(bw, 10, 0, p[0])); };
     const double rapid_delta = st_.inch ? 0.010 : 0.010 * kMmPerInch;  // LinuxCNC's G83_RAPID_DELTA
     for (int rep = 0; rep < repeats; ++rep) {
         if (rep > 0) count_block(bw['L'].column);
@@ -129,8 +130,8 @@ void Interp::cycle(const BlockWords& bw, int code) {
         switch (code) {
             case 740:
             case 840:  // tapping: feed in, reverse the spindle, feed straight out to clearance
-                straight(MotionKind::line, at(a, b, bottom), feed);
-                straight(MotionKind::line, at(a, b, clear), feed);
+                fed(at(a, b, bottom));
+                fed(at(a, b, clear));
                 break;
             case 870: {
                 // Back boring: in beside the hole with the spindle oriented, across to the
@@ -143,8 +144,8 @@ void Interp::cycle(const BlockWords& bw, int code) {
                 straight(MotionKind::rapid, at(oa, ob, r), nan);
                 straight(MotionKind::rapid, at(oa, ob, bottom), nan);
                 straight(MotionKind::rapid, at(a, b, bottom), nan);
-                straight(MotionKind::line, at(a, b, middle), feed);
-                straight(MotionKind::line, at(a, b, bottom), feed);
+                fed(at(a, b, middle));
+                fed(at(a, b, bottom));
                 straight(MotionKind::rapid, at(oa, ob, bottom), nan);
                 straight(MotionKind::rapid, at(oa, ob, clear), nan);
                 straight(MotionKind::rapid, at(a, b, clear), nan);
@@ -153,24 +154,24 @@ void Interp::cycle(const BlockWords& bw, int code) {
             case 880:
                 // Bore, dwell, stop: the operator retracts by hand. The control then takes the
                 // tool to be at the clearance level; the path has no move for that.
-                straight(MotionKind::line, at(a, b, bottom), feed);
+                fed(at(a, b, bottom));
                 pos_ = at(a, b, clear);
                 info("manual_retract", "G88: the operator retracts the tool by hand; the next move starts at the clearance level");
                 break;
             case 810:
             case 820:
             case 860:
-                straight(MotionKind::line, at(a, b, bottom), feed);
+                fed(at(a, b, bottom));
                 straight(MotionKind::rapid, at(a, b, clear), nan);
                 break;
             case 850:
-                straight(MotionKind::line, at(a, b, bottom), feed);
-                straight(MotionKind::line, at(a, b, r), feed);
+                fed(at(a, b, bottom));
+                fed(at(a, b, r));
                 straight(MotionKind::rapid, at(a, b, clear), nan);
                 break;
             case 890:
-                straight(MotionKind::line, at(a, b, bottom), feed);
-                straight(MotionKind::line, at(a, b, clear), feed);
+                fed(at(a, b, bottom));
+                fed(at(a, b, clear));
                 break;
             case 730:
             case 830:
@@ -178,11 +179,11 @@ void Interp::cycle(const BlockWords& bw, int code) {
                     // Every peck counts against the block limit: a huge depth with a tiny Q
                     // (or one that no longer changes the depth) stops there, never hangs.
                     count_block(bw['Q'].column);
-                    straight(MotionKind::line, at(a, b, depth), feed);
+                    fed(at(a, b, depth));
                     if (code == 830) straight(MotionKind::rapid, at(a, b, r), nan);
                     straight(MotionKind::rapid, at(a, b, depth + rapid_delta), nan);
                 }
-                straight(MotionKind::line, at(a, b, bottom), feed);
+                fed(at(a, b, bottom));
                 straight(MotionKind::rapid, at(a, b, clear), nan);
                 break;
             default:
