@@ -295,6 +295,13 @@ bool Interp::execute(const BlockWords& bw) {
         }
         if (bw.m[m_tool_change] == 60)
             fail("comp_tool_change", "Cannot change tools with cutter radius compensation on", bw.m_column[m_tool_change]);
+        // LinuxCNC 2.9 takes M61 here and loses the move held for the next corner (its
+        // position is read back after a tool change): a wrong path, refused instead.
+        if (bw.m[m_tool_change] == 610)
+            fail("comp_m61",
+                 "Cannot set the tool number (M61) with cutter radius compensation on: LinuxCNC would lose the "
+                 "compensated move it holds",
+                 bw.m_column[m_tool_change]);
         if (int ov = bw.m[m_override]; ov >= 0) {
             bool enable = ov == 480 || (ov >= 500 && (!bw.has('P') || bw['P'].value != 0));
             fail("comp_overrides",

@@ -43,14 +43,21 @@ void Interp::g10(const BlockWords& bw) {
         fail("unsupported_g10", "G10 L" + std::to_string(l) + " (tool table edit) is not supported by toolcomp", col);
     if (l != 2 && l != 20) fail("g10_bad_l", "Line with G10 does not have L0, L1, L10, L11, L2, or L20", col);
     const std::string which = l == 2 ? "G10 L2" : "G10 L20";
-    // LinuxCNC refuses a P more than 0.0001 above the integer it rounds to (below is let be),
-    // then truncates it.
-    if (bw.has('P') && prog_.dialect == Dialect::linuxcnc) {
+    // LinuxCNC refuses a P more than 0.0001 above the integer it rounds to (below is let be)
+    // or one that rounds out of 0-9, then takes the system (int)(P + 0.0001): P1.9999 is G55,
+    // P1.5 G54.
+    int p = -1;
+    if (bw.has('P')) {
         const double pv = bw['P'].value;
-        if ((pv + 0.0001) - std::round(pv) > 0.0002) fail("g10_p_not_integer", "P value not an integer with G10", col);
+        if (prog_.dialect == Dialect::linuxcnc) {
+            const double rounded = std::round(pv);
+            if ((pv + 0.0001) - rounded > 0.0002) fail("g10_p_not_integer", "P value not an integer with G10", col);
+            p = rounded < 0 || rounded > 9 ? -1 : int_value_truncated(pv + 0.0001);
+        } else {
+            p = int_value_truncated(pv);
+        }
     }
-    int p = bw.has('P') ? int_value_truncated(bw['P'].value) : -1;  // the control truncates P
-    if (!bw.has('P') || p < 0 || p > 9) fail("g10_bad_p", "P value out of range (0-9) with " + which, col);
+    if (p < 0 || p > 9) fail("g10_bad_p", "P value out of range (0-9) with " + which, col);
     if (l == 2 && (bw.has('I') || bw.has('J'))) fail("g10_ij", "I J words not allowed with G10 L2", col);
     if (l == 20 && bw.has('R')) fail("g10_l20_r", "R not allowed in G10 L20", bw['R'].column);
     int n = p == 0 ? st_.coord_system : p;
@@ -62,19 +69,26 @@ void Interp::g10(const BlockWords& bw) {
         if (bw.has('R')) rotation = bw['R'].value;
     } else {
         // L20: the origin that gives the current point the programmed coordinates in system
-        // n (the machine point is m = rotate_n(t + G92) + origin_n + TLO).
-        Vec6 t = pos_;
+        // n (the machine point is m = rotate_n(t + G92) + origin_n + TLO). An axis not given
+        // keeps the current point's coordinate in system n; in a rotated system X and Y
+        // both move the origin's X and Y (LinuxCNC).
+        const Vec6 m = to_machine(pos_) - tlo_;
+        const double r = rotation * kPi / 180, c = std::cos(r), sn = std::sin(r);
+        Vec6 t = m - value;  // the current point in system n
+        const double tx = t[0], ty = t[1];
+        t[0] = c * tx + sn * ty;
+        t[1] = -sn * tx + c * ty;
+        t -= g92_;
         for (int i = 0; i < 6; ++i)
             if (bw.has(kAxisLetter[i])) t[i] = axis_value(bw, i);
-        Vec6 m = to_machine(pos_) - tlo_;
         Vec6 rt = t + g92_;
-        const double r = rotation * kPi / 180, c = std::cos(r), sn = std::sin(r);
         const double x = rt[0], y = rt[1];
         rt[0] = c * x - sn * y;
         rt[1] = sn * x + c * y;
-        Vec6 full = m - rt;
+        const Vec6 full = m - rt;
+        const bool plane_given = bw.has('X') || bw.has('Y');
         for (int i = 0; i < 6; ++i)
-            if (bw.has(kAxisLetter[i])) value[i] = full[i];
+            if (bw.has(kAxisLetter[i]) || (i < 2 && r != 0 && plane_given)) value[i] = full[i];
     }
     if (n == st_.coord_system) {
         Vec6 m = to_machine(pos_);
@@ -117,6 +131,9 @@ void Interp::g92(const BlockWords& bw, int code) {
 void Interp::home(const BlockWords& bw, int code) {
     Vec6& stored = (code == 280 || code == 281) ? g28_ : g30_;
     if (code == 281 || code == 301) {  // G28.1 / G30.1: remember where the machine is
+        if (comp_on())
+            fail("comp_set_home", "Cannot set reference point with cutter compensation in effect",
+                 bw.g_column[g_nonmodal]);
         stored = to_machine(pos_);
         return;
     }
