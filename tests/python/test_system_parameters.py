@@ -35,3 +35,41 @@ def read(body, names):
 ])
 def test_parameters(body, names, values):
     assert read(body, names) == values
+
+
+def values(body, names):
+    """Like read(), named parameters."""
+    moves = "".join(f"G0 X#<{n}>\n" for n in names)
+    res = tc.run(tc.Program.parse(HEAD + body + "G90 G17\n" + moves + "M2\n"), tools=tc.ToolTable.read(str(TOOLS)))
+    return res.path.end[-len(names):, 0].tolist()
+
+
+def test_mode_parameters():
+    body = "G18 G95 G90.1 G98\nT2 M6\nG43\nM4 S100\nM8\nG59.1\nG0 X2 Z0\nG2 X2 Z0 I2 K1 F1\nG7\n"
+    names = ["_motion_mode", "_coord_system", "_plane", "_ccomp", "_units_per_rev", "_ijk_absolute_mode",
+             "_lathe_diameter_mode", "_tool_offset", "_retract_old_z", "_spindle_on", "_spindle_cw", "_flood",
+             "_mist", "_vmajor", "_task"]
+    # G7: the X words that read them back are diameters, so every value comes out halved
+    got = [2 * v for v in values(body, names)]
+    # parameters are read before their block runs: _motion_mode in the first move is the
+    # arc's; the G17 before the moves makes _plane 170
+    assert got == [20, 591, 170, 400, 1, 1, 1, 1, 1, 1, 0, 1, 0, 2.9, 1]
+
+
+def test_switches_follow_their_m_codes():
+    body = "M49\nM50 P1\nM52\nM53 P0\nM7\n"
+    assert values(body, ["_feed_override", "_speed_override", "_adaptive_feed", "_feed_hold", "_mist",
+                         "_units_per_minute", "_retract_r_plane", "_line"]) == [1, 0, 1, 0, 1, 1, 1, 16]
+
+
+def test_position_parameters_are_refused_under_compensation():
+    text = HEAD + "T1 M6\nG42 D1\nG1 X10 Y10 F100\n#1=#5421\nG40 G1 X0 Y0\nM2\n"
+    with pytest.raises(tc.ProgramError) as e:
+        tc.run(tc.Program.parse(text), tools=tc.ToolTable.read(str(TOOLS)))
+    assert (e.value.message, e.value.line) == ("Cannot read current position with cutter radius compensation on", 6)
+
+
+def test_parameter_numbers_within_a_ten_thousandth():
+    assert read("#2=5\n#[1.99995]=3\n", [2, 1.00005, 5599]) == [3, 0, 1]
+    with pytest.raises(tc.ProgramError, match="Non integer value for integer"):
+        read("", [1.0002])

@@ -383,6 +383,7 @@ bool Interp::execute(const BlockWords& bw) {
         // 7-9: spindle, coolant, overrides: state of the machine, not of the path (the spindle
         // direction matters to the boring cycles).
         if (int sp = bw.m[m_spindle]; sp >= 0) spindle_ = sp == 30 ? 1 : sp == 40 ? -1 : 0;
+        machine_.update(bw);  // coolant and overrides (read by #<_flood>, #<_feed_override>, ...)
     }
     // 10: dwell
     // LinuxCNC keeps -1 for a missing P and reads any other value, negative ones too.

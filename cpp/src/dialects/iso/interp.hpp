@@ -39,6 +39,14 @@ struct ModalState {
     int path_control = 640;
 };
 
+// The machine's switches a program can read back (LinuxCNC #<_mist>, #<_flood>,
+// #<_feed_override>, ...): coolant M7/M8/M9, overrides M48/M49, M50-M53 with P0 (off) or P1.
+struct MachineSwitches {
+    bool mist = false, flood = false;
+    bool feed_override = true, speed_override = true, adaptive_feed = false, feed_hold = true;
+    void update(const BlockWords& bw);
+};
+
 // Values that stick from one canned-cycle block to the next while the cycle continues.
 struct CycleMemory {
     double r = 0, z = 0, q = 0, p = 0;  // r, z, q as written (program units), p seconds
@@ -117,6 +125,8 @@ private:
     void goto_sequence(double n, int column);
     // System parameters (read from the interpreter's state), or nullptr / NaN when n is storage.
     bool system_param(int n, double& v) const;
+    bool mode_param(const std::string& name, double& v) const;
+    double parameter_number(double number, int column) const;
     static bool predefined(const std::string& name);  // LinuxCNC's read-only #<_x>, #<_value>, ...
 
     // ---- units and coordinates -----------------------------------------------------------
@@ -215,6 +225,7 @@ private:
     double cycle_il_ = 0;        // initial level of the running canned cycle
     bool cycle_il_set_ = false;
     int spindle_ = 0;            // 0 stopped, 1 clockwise, -1 counter-clockwise
+    MachineSwitches machine_;    // coolant and overrides
     RadiusRequest radius_;       // cutter radius compensation carried on every move (side 0 = off)
 
     // ---- programs that compute -------------------------------------------------------------

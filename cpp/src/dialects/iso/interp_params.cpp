@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "interp.hpp"
+#include "whole_numbers.hpp"
 #include "toolcomp/program/text.hpp"
 #include "toolcomp/tools/tool_table.hpp"
 
@@ -70,11 +71,22 @@ bool Interp::system_param(int n, double& v) const {
     return false;
 }
 
+// A parameter number: LinuxCNC reads it as any integer word (within 0.0001, whole_numbers.hpp),
+// Fanuc as written.
+double Interp::parameter_number(double number, int column) const {
+    if (std::isnan(number)) fail("bad_parameter_number", "Parameter number must be a whole number", column);
+    if (!params_.fanuc()) {
+        if (!linuxcnc_whole(number)) fail("non_integer_value", "Non integer value for integer", column);
+        return std::round(number);
+    }
+    if (std::fabs(number - std::round(number)) > 1e-9)
+        fail("bad_parameter_number", "Parameter number must be a whole number", column);
+    return std::round(number);
+}
+
 double Interp::param(double number) {
     const bool fanuc = params_.fanuc();
-    if (std::isnan(number) || std::fabs(number - std::round(number)) > 1e-9)
-        fail("bad_parameter_number", "Parameter number must be a whole number");
-    const double r = std::round(number);
+    const double r = parameter_number(number, 0);
     if (fanuc) {
         if (r == 0) return ParameterStore::kVacant;
         if (r < 0 || r > 99999) fail("bad_parameter_number", "Variable number #" + number_text(r) + " out of range");
@@ -82,6 +94,8 @@ double Interp::param(double number) {
         fail("parameter_out_of_range", "Parameter number out of range");
     }
     const int n = static_cast<int>(r);
+    if (!fanuc && n >= 5420 && n <= 5428 && comp_on())
+        fail("comp_position_read", "Cannot read current position with cutter radius compensation on");
     double v;
     if (system_param(n, v)) return v;
     if (!fanuc && n >= 5061 && n <= 5070)
@@ -93,9 +107,7 @@ double Interp::param(double number) {
 
 void Interp::set_param(double number, double v, int column) {
     const bool fanuc = params_.fanuc();
-    if (std::isnan(number) || std::fabs(number - std::round(number)) > 1e-9)
-        fail("bad_parameter_number", "Parameter number must be a whole number", column);
-    const int n = static_cast<int>(std::clamp(std::round(number), -1.0, 1e6));
+    const int n = static_cast<int>(std::clamp(parameter_number(number, column), -1.0, 1e6));
     if (fanuc && n == 3000) {
         // #3000 = n (MESSAGE): the control stops with macro alarm 3000 + n.
         const double a = std::isnan(v) ? 0 : v;
@@ -116,12 +128,79 @@ void Interp::set_param(double number, double v, int column) {
     params_.set(n, v);
 }
 
+void MachineSwitches::update(const BlockWords& bw) {
+    if (int c = bw.m[m_coolant]; c >= 0) {
+        if (c == 70) mist = true;
+        else if (c == 80) flood = true;
+        else mist = flood = false;  // M9
+    }
+    if (int ov = bw.m[m_override]; ov >= 0) {
+        const bool on = !bw.has('P') || bw['P'].value != 0;
+        switch (ov) {
+            case 480: feed_override = speed_override = true; break;
+            case 490: feed_override = speed_override = false; break;
+            case 500: feed_override = on; break;
+            case 510: speed_override = on; break;
+            case 520: adaptive_feed = on; break;
+            case 530: feed_hold = on; break;
+            default: break;
+        }
+    }
+}
+
+namespace {
+// LinuxCNC 2.9's read-only named parameters toolcomp knows (#<_x> etc. by the axis loop).
+constexpr std::string_view kPredefined[] = {
+    "_value", "_value_returned", "_call_level", "_metric", "_imperial", "_absolute", "_incremental",
+    "_current_tool", "_selected_tool", "_feed", "_rpm", "_x", "_y", "_z", "_a", "_b", "_c", "_u", "_v", "_w",
+    "_coord_system", "_motion_mode", "_plane", "_ccomp", "_line", "_task", "_remap_level", "_vmajor", "_vminor",
+    "_spindle_on", "_spindle_cw", "_units_per_minute", "_units_per_rev", "_inverse_time", "_ijk_absolute_mode",
+    "_lathe_diameter_mode", "_lathe_radius_mode", "_tool_offset", "_retract_r_plane", "_retract_old_z", "_mist",
+    "_flood", "_feed_override", "_speed_override", "_adaptive_feed", "_feed_hold"};
+}  // namespace
+
 bool Interp::predefined(const std::string& name) {
-    static const char* const kNames[] = {"_value", "_value_returned", "_call_level", "_metric", "_imperial",
-                                         "_absolute", "_incremental", "_current_tool", "_selected_tool",
-                                         "_feed", "_rpm", "_x", "_y", "_z", "_a", "_b", "_c"};
-    for (const char* n : kNames)
+    for (std::string_view n : kPredefined)
         if (name == n) return true;
+    return false;
+}
+
+// The mode and machine-state parameters: G codes as 10 x their number (G59.1 is 591), the
+// switches 1 or 0.
+bool Interp::mode_param(const std::string& name, double& v) const {
+    auto flag = [&](bool b) { return v = b ? 1.0 : 0.0, true; };
+    if (name == "_coord_system") {
+        const int c = st_.coord_system;
+        return v = c <= 6 ? 530 + 10 * c : 590 + (c - 6), true;
+    }
+    if (name == "_motion_mode") return v = st_.motion, true;
+    if (name == "_plane") return v = st_.plane == Plane::xy ? 170 : st_.plane == Plane::zx ? 180 : 190, true;
+    if (name == "_ccomp") return v = radius_.side == 0 ? 400 : radius_.side > 0 ? 410 : 420, true;
+    if (name == "_line") return v = line_, true;
+    // The interpreter of the running control (milltask), not a preview: programs that leave
+    // things out "in preview" run them here.
+    if (name == "_task") return v = 1, true;
+    if (name == "_remap_level") return v = 0, true;
+    if (name == "_vmajor") return v = 2.9, true;  // LinuxCNC 2.9.0, as the control this profile follows
+    if (name == "_vminor") return v = 0, true;
+    if (name == "_spindle_on") return flag(spindle_ != 0);
+    if (name == "_spindle_cw") return flag(spindle_ > 0);
+    if (name == "_units_per_minute") return flag(st_.feed_mode == 940);
+    if (name == "_units_per_rev") return flag(st_.feed_mode == 950);
+    if (name == "_inverse_time") return flag(st_.feed_mode == 930);
+    if (name == "_ijk_absolute_mode") return flag(st_.arc_absolute);
+    if (name == "_lathe_diameter_mode") return flag(st_.diameter);
+    if (name == "_lathe_radius_mode") return flag(!st_.diameter);
+    if (name == "_tool_offset") return flag(st_.length_mode != 490);
+    if (name == "_retract_r_plane") return flag(!st_.retract_initial);
+    if (name == "_retract_old_z") return flag(st_.retract_initial);
+    if (name == "_mist") return flag(machine_.mist);
+    if (name == "_flood") return flag(machine_.flood);
+    if (name == "_feed_override") return flag(machine_.feed_override);
+    if (name == "_speed_override") return flag(machine_.speed_override);
+    if (name == "_adaptive_feed") return flag(machine_.adaptive_feed);
+    if (name == "_feed_hold") return flag(machine_.feed_hold);
+    if (name == "_u" || name == "_v" || name == "_w") return v = 0, true;  // no such axes
     return false;
 }
 
@@ -144,6 +223,9 @@ double Interp::get(const std::string& name, std::span<const double>) {
         for (int j = 0; j < 6; ++j)
             if (name[1] == kAxes[j]) return pos_[j];
     }
+    if (double v; mode_param(name, v)) return v;
+    if (name == "_current_pocket" || name == "_selected_pocket")
+        fail("unsupported_parameter", "#<" + name + "> (tool changer pockets) is not supported by toolcomp");
     if (const double* v = params_.named(name)) return *v;
     fail("named_parameter_undefined", "Named parameter #<" + name + "> not defined");
 }

@@ -3,7 +3,9 @@
 namespace toolcomp::iso {
 
 ParameterStore::ParameterStore(bool fanuc)
-    : fanuc_(fanuc), numbered_(static_cast<std::size_t>(last_stored()) + 1, fanuc ? kVacant : 0.0) {}
+    : fanuc_(fanuc), numbered_(static_cast<std::size_t>(last_stored()) + 1, fanuc ? kVacant : 0.0) {
+    if (!fanuc) numbered_[5599] = 1;  // LinuxCNC: (DEBUG, ...) output on until a program says 0
+}
 
 double ParameterStore::get(int n) const { return numbered_[static_cast<std::size_t>(n)]; }
 
@@ -53,7 +55,8 @@ ParameterValues ParameterStore::snapshot() const {
     ParameterValues out;
     for (int n = 1; n <= last_stored(); ++n) {
         const double v = numbered_[static_cast<std::size_t>(n)];
-        if (fanuc_ ? !std::isnan(v) : v != 0) out[n] = v;
+        const double unset = n == 5599 ? 1.0 : 0.0;  // LinuxCNC's start values
+        if (fanuc_ ? !std::isnan(v) : v != unset) out[n] = v;
     }
     return out;
 }
