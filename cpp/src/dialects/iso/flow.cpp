@@ -1,5 +1,6 @@
 #include "flow.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace toolcomp::iso {
@@ -52,8 +53,15 @@ FlowInfo scan_flow(const Program& prog) {
                 static constexpr const char* kNames[] = {"", "sub", "", "", "", "if", "", "", "", "while", "", "do", "repeat"};
                 const auto kind = static_cast<std::size_t>(same->kind);
                 const char* found = kind < std::size(kNames) ? kNames[kind] : "";
-                error(std::to_string(b.line) + ": no matching label: '#" + s->label + "' (found '" + found + "' in line " +
-                      std::to_string(prog.blocks()[same->block].line) + "): '" + s->text + "'");
+                const std::string where = std::string(found) + "' in line " + std::to_string(prog.blocks()[same->block].line) + ")";
+                const std::string at = std::to_string(b.line) + ": ";
+                // LinuxCNC's three wordings: endif; else / elseif; the other ends.
+                if (s->kind == Stmt::o_endif)
+                    error(at + "no matching label: '#" + s->label + "' (found '" + where + ": '" + s->text + "'");
+                else if (s->kind == Stmt::o_else || s->kind == Stmt::o_elseif)
+                    error(at + "no matching 'if' label: '" + s->text + "' (found '" + where);
+                else
+                    error(at + "no matching label: '" + s->text + "' (found '" + where);
             } else {
                 error(quoted("undefined O-word label"));
             }
@@ -61,8 +69,10 @@ FlowInfo scan_flow(const Program& prog) {
         };
         switch (s->kind) {
             case Stmt::o_sub:
-                if (!stack.empty()) {
-                    error("Nested subroutine definition");
+                // Within another sub's definition (an if or a loop may hold one). Reported when
+                // the run passes over the outer definition, as LinuxCNC reads it then.
+                if (std::any_of(stack.begin(), stack.end(), [](const Open& o) { return o.kind == Stmt::o_sub; })) {
+                    error(kNestedSub);
                     break;
                 }
                 f.subs.emplace(s->label, k);
@@ -97,22 +107,43 @@ FlowInfo scan_flow(const Program& prog) {
                     stack.pop_back();
                 }
                 break;
-            case Stmt::o_endwhile: case Stmt::o_endrepeat: case Stmt::o_endsub: {
-                const Stmt opener = s->kind == Stmt::o_endwhile ? Stmt::o_while
-                                  : s->kind == Stmt::o_endrepeat ? Stmt::o_repeat : Stmt::o_sub;
+            case Stmt::o_endsub: {
+                // A definition ends at its endsub, whatever is still open inside it (LinuxCNC
+                // reads on from there: an endif after it belongs to nothing).
+                auto sub = std::find_if(stack.rbegin(), stack.rend(), [](const Open& o) { return o.kind == Stmt::o_sub; });
+                if (sub == stack.rend()) {
+                    error(quoted("not in a subroutine definition"));
+                    break;
+                }
+                if (sub->label != s->label) {
+                    close(Stmt::o_sub);
+                    break;
+                }
+                f.links[sub->block].partner = k;
+                f.links[k].partner = sub->block;
+                f.links[k].loop = sub->block;
+                stack.erase(std::prev(sub.base()), stack.end());
+                break;
+            }
+            case Stmt::o_endwhile: case Stmt::o_endrepeat: {
+                const Stmt opener = s->kind == Stmt::o_endwhile ? Stmt::o_while : Stmt::o_repeat;
                 if (Open* o = close(opener)) {
                     f.links[o->block].partner = k;
                     f.links[k].partner = o->block;
-                    if (opener == Stmt::o_sub) f.links[k].loop = o->block;
                     stack.pop_back();
                 }
                 break;
             }
             case Stmt::o_break: case Stmt::o_continue:
-                if (Open* o = innermost(s->label, true))
+                if (Open* o = innermost(s->label, true)) {
                     f.links[k].loop = o->block;
-                else
+                } else if (Open* other = innermost(s->label, false)) {
+                    error(std::to_string(b.line) + ": no matching while/do label: '" + s->text + "' (found '" +
+                          (other->kind == Stmt::o_if ? "if" : "sub") + "' in line " +
+                          std::to_string(prog.blocks()[other->block].line) + ")");
+                } else {
                     error(quoted("undefined O-word label"));
+                }
                 break;
             case Stmt::o_return:
                 if (Open* o = innermost(s->label, false); o && o->kind == Stmt::o_sub)

@@ -39,6 +39,8 @@ struct FlowInfo {
     std::map<long, std::size_t> programs;       // Fanuc O number -> its block
 };
 
+inline constexpr const char* kNestedSub = "Nested subroutine definition";
+
 FlowInfo scan_flow(const Program& prog);
 
 // The control statement of a block (O-word, Fanuc WHILE/END/GOTO...), or nullptr.

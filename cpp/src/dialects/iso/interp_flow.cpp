@@ -204,14 +204,41 @@ void Interp::control(const Statement& s, std::size_t k) {
     auto missing = [&](const char* what) {
         fail("o_word_structure", "o" + s.label + " has no matching " + what, s.column);
     };
+    // Jumping over blocks to `to`: LinuxCNC reads the blocks it skips for the end it looks
+    // for, so a block of the same label that does not fit there, or a sub defined inside the
+    // sub passed over, is its error.
+    auto skip_to = [&](std::size_t to) {
+        for (auto e = flow.errors.upper_bound(k); e != flow.errors.end() && e->first < to; ++e) {
+            const Statement* c = control_statement(f.prog(), f.prog().blocks()[e->first]);
+            if (e->second == kNestedSub ? s.kind == Stmt::o_sub : c && c->label == s.label) {
+                line_ = f.prog().blocks()[e->first].line;
+                fail("o_word_structure", e->second, c ? c->column : 0);
+            }
+        }
+        f.pc = to;
+    };
+    // An if, while, do or repeat opened on another line with the same label, in this call.
+    auto opened = [&] {
+        auto [it, fresh] = f.opened.emplace(s.label, k);
+        if (fresh || it->second == k) return;
+        const std::string first = std::to_string(f.prog().blocks()[it->second].line);
+        fail("o_word_structure",
+             s.kind == Stmt::o_if
+                 ? std::to_string(line_) + ": duplicate O-word label - already defined in line " + first + ": '" + s.text + "'"
+                 : std::to_string(line_) + ": duplicate O-word label: '" + s.text + "' - defined in line " + first);
+    };
     switch (s.kind) {
-        case Stmt::o_sub:  // a definition met in the flow: recorded and skipped
+        case Stmt::o_sub: {  // a definition met in the flow: recorded and skipped
             if (!recorded_subs_.insert({f.at, k}).second)
                 fail("o_word_structure", "File:" + f.prog().name + " line:" + std::to_string(line_) + " sub: o|" +
                                              s.label + "| found in illegal location");
+            if (auto first = flow.subs.find(s.label); first != flow.subs.end() && first->second != k)
+                fail("o_word_structure", "File:" + f.prog().name + " line:" + std::to_string(line_) +
+                                             " redefining sub: o|" + s.label + "| already defined in file:" + f.prog().name);
             if (links.partner == npos) unclosed();
-            f.pc = links.partner + 1;
+            skip_to(links.partner + 1);
             break;
+        }
         case Stmt::o_endsub: case Stmt::o_return:
             return_from_sub(s);
             break;
@@ -219,6 +246,7 @@ void Interp::control(const Statement& s, std::size_t k) {
             call_sub(s);
             break;
         case Stmt::o_if: {
+            opened();
             std::size_t at = k;
             bool take = condition(s.value, s.column);
             while (!take) {
@@ -243,14 +271,17 @@ void Interp::control(const Statement& s, std::size_t k) {
             if (links.endif == npos) unclosed();
             f.pc = links.endif + 1;
             break;
-        case Stmt::o_endif: case Stmt::o_do: case Stmt::program_number:
+        case Stmt::o_endif: case Stmt::o_do: case Stmt::program_number:  // (LinuxCNC lets do labels repeat)
             break;
         case Stmt::o_while:
             if (links.closes_do) {
                 if (condition(s.value, s.column)) f.pc = links.partner + 1;
-            } else if (!condition(s.value, s.column)) {
+                break;
+            }
+            opened();
+            if (!condition(s.value, s.column)) {
                 if (links.partner == npos) unclosed();
-                f.pc = links.partner + 1;
+                skip_to(links.partner + 1);
             }  // a while without endwhile that runs goes on (LinuxCNC: no error)
             break;
         case Stmt::o_endwhile:
@@ -258,11 +289,11 @@ void Interp::control(const Statement& s, std::size_t k) {
             f.pc = links.partner;
             break;
         case Stmt::o_repeat: {
+            opened();
             // The count rounds half to even ([2.5]: two passes), as LinuxCNC reads it.
             const double n = std::nearbyint(eval(s.value, s.column));
-            if (n >= 1) {
-                if (links.partner == npos) missing("endrepeat");
-                f.repeat_counts[k] = static_cast<long>(std::min(n, 1e15));
+            if (n >= 1) {  // without its endrepeat the body runs on to whatever fails to close it
+                if (links.partner != npos) f.repeat_counts[k] = static_cast<long>(std::min(n, 1e15));
             } else {
                 if (links.partner == npos) unclosed();
                 f.pc = links.partner + 1;
