@@ -389,3 +389,10 @@ def test_compensation_warnings_in_a_subroutine_file_name_that_file(tmp_path):
     cut = str(tmp_path / "cut.ngc")
     assert [(d.code, d.line, d.file) for d in res.diagnostics] == [
         ("comp_overcut", 4, cut), ("comp_overcut", 4, cut), ("comp_gouge", 3, None)]
+
+
+@pytest.mark.parametrize("arg, value", [("#1", 1), ("#0", 0), ("#5601", 1), ("#5602", 0), ("##2", 1),
+                                        ("#[2+3]", 1), ("#[0-3]", 0), ("#<a>", 0), ("#<_x>", 1)])
+def test_exists_takes_numbered_parameters_too(arg, value):
+    # LinuxCNC 2.9 (gcode module): a number of 1-5601 is a parameter; #2 = 7 names #7
+    assert ends(run(f"G21\n#2=7\nG0 X[EXISTS[{arg}]]\nM2\n"))[-1][0] == value

@@ -213,12 +213,14 @@ private:
 
     // '#' then what names the parameter: a number, another '#', a bracketed expression, or
     // (LinuxCNC) <name>.
-    void parameter(int depth) {
+    // `op`: Op::param reads the parameter, Op::exists_number asks whether it exists.
+    void parameter(int depth, Op op = Op::param) {
         if (depth > kMaxDepth) error("Expression nested too deeply");
         ++p_;
         blanks();
         if (p_ < t_.size() && t_[p_] == '<' && (s_.family & family_linuxcnc)) {
-            emit_named(Op::variable, named_parameter());
+            std::string n = named_parameter();
+            emit_named(op == Op::param ? Op::variable : Op::exists, n);
             return;
         }
         if (p_ >= t_.size()) error("Parameter number expected after '#'");
@@ -236,7 +238,7 @@ private:
         } else {
             error("Bad parameter number");
         }
-        emit(Op::param);
+        emit(op);
     }
     // <name> of a LinuxCNC named parameter (blanks inside are dropped, case folded); p_ at '<'.
     std::string named_parameter() {
@@ -269,15 +271,11 @@ private:
             if (p_ >= t_.size() || t_[p_] != s_.open) error("'[' expected after EXISTS");
             ++p_;
             blanks();
-            if (p_ + 1 >= t_.size() || t_[p_] != '#') error("EXISTS takes a named parameter");
-            ++p_;
+            if (p_ + 1 >= t_.size() || t_[p_] != '#') error("Expected # reading parameter");
+            parameter(depth + 1, Op::exists_number);  // #<name>, or a numbered one: #1, ##2, #[2+3]
             blanks();
-            if (p_ >= t_.size() || t_[p_] != '<') error("EXISTS takes a named parameter");
-            std::string n = named_parameter();
-            blanks();
-            if (p_ >= t_.size() || t_[p_] != s_.close) error(std::string("'") + s_.close + "' expected");
+            if (p_ >= t_.size() || t_[p_] != s_.close) error("Expected ] reading bracketed parameter");
             ++p_;
-            emit_named(Op::exists, n);
             return;
         }
         if (name == "ATAN" && s_.atan_slash) {
@@ -511,6 +509,11 @@ int run(const Expr& e, Env& env, double* stack, const Syntax* syn) {
                 break;
             }
             case Op::exists: push(env.exists(e.names[in.name]) ? 1.0 : 0.0); break;
+            case Op::exists_number: {  // LinuxCNC: any number of 1-5601 is a parameter
+                const double n = std::round(value_of(stack[--sp], syn));
+                push(n >= 1 && n <= 5601 ? 1.0 : 0.0);
+                break;
+            }
             case Op::call: {
                 sp -= in.argc;
                 for (int k = 0; k < in.argc; ++k) stack[sp + k] = value_of(stack[sp + k], syn);

@@ -25,6 +25,7 @@ enum class Op : std::uint8_t {
     number, variable, call,
     param,   // ISO '#': pops a parameter number, pushes its value
     exists,  // LinuxCNC EXISTS[#<name>]: 1 when the named parameter is defined
+    exists_number,  // LinuxCNC EXISTS[#n]: pops a parameter number, 1 when it is one (1-5601)
     neg, logical_not, bit_not,
     add, sub, mul, div, int_div, mod, pow,
     eq, ne, lt, le, gt, ge,
