@@ -396,3 +396,13 @@ def test_compensation_warnings_in_a_subroutine_file_name_that_file(tmp_path):
 def test_exists_takes_numbered_parameters_too(arg, value):
     # LinuxCNC 2.9 (gcode module): a number of 1-5601 is a parameter; #2 = 7 names #7
     assert ends(run(f"G21\n#2=7\nG0 X[EXISTS[{arg}]]\nM2\n"))[-1][0] == value
+
+
+def test_named_parameters_are_declared_as_the_line_is_read():
+    # LinuxCNC 2.9 (gcode module): an assignment declares its name (value 0) where it stands
+    # in the line; what is read before it finds nothing, what is read after it finds 0.
+    with pytest.raises(tc.ProgramError) as e:
+        run("G21\nG0 X#<n2> #<n2>=4\nM2\n")
+    assert (e.value.message, e.value.line) == ("Named parameter #<n2> not defined", 2)
+    assert ends(run("G21\n#1=EXISTS[#<n>] #<n>=2\nG0 X[#1+1]\nM2\n"))[-1][0] == 1
+    assert ends(run("G21\n#<n>=4 G0 X#<n>\nG0 Y#<n>\nM2\n")).tolist()[-2:] == [[0, 0, 0], [0, 4, 0]]

@@ -116,12 +116,12 @@ void Interp::run_blocks() {
         line_ = block.line;
         file_ = f.at->file;
         count_block();
+        block_ = &block;
         if (block.statement_count)
             if (const Statement* s = control_statement(p, block)) {
                 control(*s, k);
                 continue;
             }
-        if (block.statement_count) declare_named(block);
         const std::span<const Word> words = syntax_ ? block_words(block) : p.words(block);
         if (fanuc) {
             bool g65 = false;

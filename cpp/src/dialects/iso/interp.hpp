@@ -109,7 +109,7 @@ private:
     // is left out); the block's own words when nothing is computed.
     std::span<const Word> block_words(const Block& b);
     void assignments(const Block& b);  // #n = ... of the block, all read first, then set
-    void declare_named(const Block& b);
+    bool declared_before(const std::string& name) const;
     void run_blocks();
     void set_param(double number, double v, int column);
     std::string substitute(const std::string& text);  // DEBUG / PRINT messages: #n, #<name> values
@@ -238,6 +238,8 @@ private:
     std::map<std::string, const LoadedProgram*> by_file_;
     std::vector<std::string> files_;                 // main program first
     std::vector<Frame> frames_;
+    const Block* block_ = nullptr;  // the block being executed
+    int eval_column_ = 0;           // column of the value being evaluated
     int file_ = 0;                                   // file of the running block
     std::vector<Word> scratch_words_;
     std::vector<double> scratch_values_;

@@ -31,6 +31,7 @@ constexpr std::size_t npos = FlowInfo::npos;
 }  // namespace
 
 double Interp::eval(std::int32_t e, int column) {
+    eval_column_ = column;
     try {
         return expr::evaluate(frames_.back().prog().expression(e), *this, syntax_);
     } catch (const expr::MathError& err) {
@@ -87,12 +88,13 @@ void Interp::assignments(const Block& b) {
     }
 }
 
-void Interp::declare_named(const Block& b) {
-    // LinuxCNC declares a named parameter (value 0) as it reads its assignment, before the
-    // words of the line are evaluated: "#<b> = 4 G1 X#<b>" moves to X0.
-    for (const Statement& s : frames_.back().prog().statements(b))
-        if (s.kind == Stmt::assign && !s.label.empty() && !predefined(s.label) && !params_.named(s.label))
-            params_.set_named(s.label, 0);
+// LinuxCNC declares a named parameter (value 0) as it reads its assignment, left to right:
+// "#<b> = 4 G1 X#<b>" moves to X0, "G1 X#<b> #<b> = 4" reads #<b> before it is declared.
+bool Interp::declared_before(const std::string& name) const {
+    if (!block_ || !block_->statement_count) return false;
+    for (const Statement& s : frames_.back().prog().statements(*block_))
+        if (s.kind == Stmt::assign && s.label == name && s.column <= eval_column_) return true;  // its own value too
+    return false;
 }
 
 void Interp::push_frame(Frame f) {

@@ -227,10 +227,13 @@ double Interp::get(const std::string& name, std::span<const double>) {
     if (name == "_current_pocket" || name == "_selected_pocket")
         fail("unsupported_parameter", "#<" + name + "> (tool changer pockets) is not supported by toolcomp");
     if (const double* v = params_.named(name)) return *v;
+    if (declared_before(name)) return 0;
     fail("named_parameter_undefined", "Named parameter #<" + name + "> not defined");
 }
 
-bool Interp::exists(const std::string& name) { return params_.named(name) || predefined(name); }
+bool Interp::exists(const std::string& name) {
+    return params_.named(name) || predefined(name) || declared_before(name);
+}
 
 namespace {
 std::string lower_prefix(const std::string& s, std::size_t n) {
