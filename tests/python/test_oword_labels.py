@@ -51,3 +51,16 @@ def test_refused(body, message, line):
 ])
 def test_accepted(body, x):
     assert run(body).path.end[-1][0] == x
+
+
+@pytest.mark.parametrize("call, end", [("#1=100\no#1 call [4]", [5, 0, 0]), ("o[100+1] call", [0, 5, 0]),
+                                       ("#1=100.00005\no#1 call [2]", [3, 0, 0])])
+def test_a_call_may_compute_its_number(call, end):
+    # LinuxCNC (gcode module): the number is read as an integer word when the call runs
+    subs = "o100 sub\nG0 X[#1+1]\no100 endsub\no101 sub\nG0 Y5\no101 endsub\n"
+    assert run(subs + call + "\nM2").path.end[-1].tolist() == end
+
+
+def test_a_computed_number_elsewhere_is_refused_explicitly():
+    with pytest.raises(tc.ParseError, match="computed O-word number is supported by toolcomp with call only"):
+        run("o[1+1] if [1]\no2 endif\nM2")

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "interp.hpp"
+#include "whole_numbers.hpp"
 #include "toolcomp/dialects/iso/lexer.hpp"
 #include "toolcomp/program/input_limits.hpp"
 
@@ -144,21 +145,29 @@ void Interp::call_sub(const Statement& s) {
     std::vector<double> args;
     args.reserve(s.args.size());
     for (std::int32_t a : s.args) args.push_back(eval(a, s.column));
+    // "o#1 call": the number the expression gives (an integer word, LinuxCNC's slack).
+    std::string computed;
+    if (s.target >= 0) {
+        const double v = eval(s.target, s.column);
+        if (!linuxcnc_whole(v)) fail("non_integer_value", "Non integer value for integer", s.column);
+        computed = std::to_string(std::lround(v));
+    }
+    const std::string& label = s.target >= 0 ? computed : s.label;
     // The sub: a file <label>.ngc on the search path (LinuxCNC looks there first), else a
     // definition in the running file, else one in the main program.
-    const std::string name = s.label.front() == '<' ? s.label.substr(1, s.label.size() - 2) : s.label;
+    const std::string name = label.front() == '<' ? label.substr(1, label.size() - 2) : label;
     // A subroutine name names a file in a search directory, never a path out of it.
     if (name.find_first_of("/\\") != std::string::npos || name.find("..") != std::string::npos)
         fail("bad_o_word", "Subroutine name o<" + name + "> cannot name a file: '/', '\\' and '..' are not allowed",
              s.column);
     const LoadedProgram* where = load(name + ".ngc");
-    if (where && !where->flow.subs.count(s.label))
+    if (where && !where->flow.subs.count(label))
         fail("unknown_o_word", "EOF in file:" + where->prog->name + " seeking o-word: o<" + name + "> from line: 0");
     if (!where) where = frames_.back().at;
-    auto found = where->flow.subs.find(s.label);
+    auto found = where->flow.subs.find(label);
     if (found == where->flow.subs.end() && where != &main_) {
         where = &main_;
-        found = where->flow.subs.find(s.label);
+        found = where->flow.subs.find(label);
     }
     if (found == where->flow.subs.end())
         fail("unknown_o_word", "EOF in file:" + frames_.back().prog().name + " seeking o-word: o<" + name +

@@ -99,6 +99,8 @@ void LineLexer::o_word() {
         st.label += ">";
         ++i_;
         if (st.label.size() == 2) fail_at("bad_o_word", "O-word name is empty", open);
+    } else if (!at_end() && (s_[i_] == '#' || s_[i_] == '[') && prog_.dialect == Dialect::linuxcnc) {
+        st.target = expression(true);  // a computed number ("o#1 call"): worked out when the block runs
     } else {
         std::string n;
         while (!at_end() && digit(s_[i_])) n.push_back(s_[i_++]);
@@ -126,6 +128,10 @@ void LineLexer::o_word() {
         }
     if (!found) fail("unknown_control_command", "Unknown control command in o word");
     st.kind = found->kind;
+    // Structures are matched by their labels before the program runs: a computed number only
+    // names the subroutine a call runs.
+    if (st.target >= 0 && st.kind != Stmt::o_call)
+        fail("unsupported_o_word", "A computed O-word number is supported by toolcomp with call only");
     st.text = std::string(raw_.substr(0, raw_.find_last_not_of("\r") + 1));
     auto bracket = [&](bool required) {
         if (!at_end() && s_[i_] == '[') return expression(true);
