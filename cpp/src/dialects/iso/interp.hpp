@@ -70,7 +70,7 @@ struct Frame {
     long repeats_left = 0;      // M98 / G65 L: passes still to run after this one
     int call_line = 0;          // line of the calling block (in the caller's file)
     std::map<std::size_t, long> repeat_counts;  // o-repeat block -> passes left
-    std::map<std::string, std::size_t> opened;  // LinuxCNC: if/while/do/repeat label -> its block, this call
+    std::map<std::string, std::size_t> opened;  // LinuxCNC: if/while/repeat label -> its block, this call
     const Program& prog() const { return *at->prog; }
 };
 

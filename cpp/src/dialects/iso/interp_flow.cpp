@@ -228,7 +228,8 @@ void Interp::control(const Statement& s, std::size_t k) {
         }
         f.pc = to;
     };
-    // An if, while, do or repeat opened on another line with the same label, in this call.
+    // An if, while or repeat opened on another line with the same label, in this call (do
+    // labels may repeat).
     auto opened = [&] {
         auto [it, fresh] = f.opened.emplace(s.label, k);
         if (fresh || it->second == k) return;
