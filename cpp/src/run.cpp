@@ -55,12 +55,8 @@ public:
     SegmentLimit(MotionSink& out, std::size_t limit, const char* what) : out_(out), limit_(limit), what_(what) {}
     void push(const Motion& m) override {
         if (tripped_) return;
-        if (count_ == limit_) {
-            tripped_ = true;
-            throw ProgramError("memory_limit", std::string("The ") + what_ + " path would hold more than " +
-                                                   std::to_string(limit_) + " segments (max_segments)",
-                               {m.line, 0, {}, m.file});
-        }
+        if (count_ == limit_) [[unlikely]]
+            trip(m);
         ++count_;
         out_.push(m);
     }
@@ -70,6 +66,14 @@ public:
     void finish() override { out_.finish(); }
 
 private:
+    // Out of line: the message's strings would give every push() their stack frame.
+    [[noreturn, gnu::noinline, gnu::cold]] void trip(const Motion& m) {
+        tripped_ = true;
+        throw ProgramError("memory_limit", std::string("The ") + what_ + " path would hold more than " +
+                                               std::to_string(limit_) + " segments (max_segments)",
+                           {m.line, 0, {}, m.file});
+    }
+
     MotionSink& out_;
     std::size_t limit_;
     const char* what_;

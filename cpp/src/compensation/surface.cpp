@@ -5,11 +5,14 @@
 namespace toolcomp {
 
 void SurfaceCompensation::push(const Motion& m) {
-    if (!shifted_ && !m.surface.active()) {  // the common case: nothing to change, no copy
-        last_ = m.end;
-        out_.push(m);
-        return;
-    }
+    if (shifted_ || m.surface.active()) [[unlikely]]
+        return displace(m);
+    last_ = m.end;  // the common case: nothing to change, no copy
+    out_.push(m);
+}
+
+// Kept out of push(): its copy of the move would give every move push()'s stack frame.
+[[gnu::noinline]] void SurfaceCompensation::displace(const Motion& m) {
     Motion o = m;
     if (shifted_) o.start = last_;
     shifted_ = false;

@@ -13,6 +13,8 @@ public:
     void finish() override { out_.finish(); }
 
 private:
+    void displace(const Motion& m);  // a move with a surface normal, or the one after it
+
     MotionSink& out_;
     bool shifted_ = false;  // the last move ended displaced
     Vec3 last_ = Vec3::Zero();
