@@ -1,5 +1,7 @@
 #include "bindings.hpp"
 
+#include <cmath>
+
 #include <pybind11/stl.h>
 
 #include <pybind11/numpy.h>
@@ -31,6 +33,14 @@ RunOptions run_options(bool strict, bool block_delete, std::optional<ControlProf
             progress(n);  // a Python exception (Ctrl-C) stops the run
         };
     return o;
+}
+}  // namespace
+
+namespace {
+// A tolerance a program's arcs are measured against: a finite number, not negative.
+double tolerance(const char* name, double v) {
+    if (!std::isfinite(v) || v < 0) throw py::value_error(std::string(name) + " must be a finite number >= 0");
+    return v;
 }
 }  // namespace
 
@@ -201,6 +211,36 @@ void bind_run(py::module_& m) {
                        "least feed rate of a G93 move, program units a minute (LinuxCNC 0.1)")
         .def_readwrite("g96_needs_s", &ControlProfile::g96_needs_s,
                        "G96 needs an S word in its block (LinuxCNC); False: the S in force is the surface speed")
+        .def_property(
+            "arc_spiral_abs",
+            [](const ControlProfile& p) { return std::make_pair(p.arc_spiral_abs[0], p.arc_spiral_abs[1]); },
+            [](ControlProfile& p, std::pair<double, double> v) {
+                const double mm = tolerance("arc_spiral_abs", v.first), inch = tolerance("arc_spiral_abs", v.second);
+                p.arc_spiral_abs[0] = mm;
+                p.arc_spiral_abs[1] = inch;
+            },
+            "an arc by its centre is refused when its start and end radius differ by more than this and by "
+            "more than arc_spiral_rel of the larger radius, as (mm programs in mm, inch programs in inch); "
+            "LinuxCNC 2.9: (0.0283, 0.00283)")
+        .def_property(
+            "arc_spiral_rel", [](const ControlProfile& p) { return p.arc_spiral_rel; },
+            [](ControlProfile& p, double v) { p.arc_spiral_rel = tolerance("arc_spiral_rel", v); },
+            "see arc_spiral_abs: the relative part of the test (LinuxCNC 2.9: 0.001)")
+        .def_property(
+            "arc_spiral_hard_factor", [](const ControlProfile& p) { return p.arc_spiral_hard_factor; },
+            [](ControlProfile& p, double v) { p.arc_spiral_hard_factor = tolerance("arc_spiral_hard_factor", v); },
+            "an arc whose start and end radius differ by more than this times arc_spiral_abs is refused "
+            "whatever its radius (LinuxCNC 2.9: 100)")
+        .def_property(
+            "arc_min_radius",
+            [](const ControlProfile& p) { return std::make_pair(p.arc_min_radius[0], p.arc_min_radius[1]); },
+            [](ControlProfile& p, std::pair<double, double> v) {
+                const double mm = tolerance("arc_min_radius", v.first), inch = tolerance("arc_min_radius", v.second);
+                p.arc_min_radius[0] = mm;
+                p.arc_min_radius[1] = inch;
+            },
+            "arcs of a smaller radius are zero-radius arcs, and an R-format chord may exceed 2|R| by this, "
+            "as (mm programs in mm, inch programs in inch); LinuxCNC 2.9: (0.00127, 0.00005)")
         .def_readwrite("last_comment_only", &ControlProfile::last_comment_only,
                        "only the last comment in parentheses of a block is read for MSG/DEBUG/PRINT, ';' "
                        "comments never (LinuxCNC); False: every comment")

@@ -256,6 +256,10 @@ class ControlProfile:
     bare_motion_codes: bool
     inverse_time_min_rate: float
     g96_needs_s: bool
+    arc_spiral_abs: tuple[float, float]
+    arc_spiral_rel: float
+    arc_spiral_hard_factor: float
+    arc_min_radius: tuple[float, float]
     length_axes: LengthAxes
     length_subtract_word: bool
     radius: RadiusRules
