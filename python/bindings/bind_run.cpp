@@ -112,6 +112,9 @@ void bind_run(py::module_& m) {
         .def_readwrite("lct_tangency_tool_space", &RadiusRules::lct_tangency_tool_space,
                        "Heidenhain APPR/DEP LCT: tangency in tool-centre space when True, on the contour "
                        "circle when False")
+        .def_readwrite("exit_direction_words", &RadiusRules::exit_direction_words,
+                       "I/K (I/J) in the cancel block give the direction in which the contour is taken to go on, "
+                       "for the last compensated move's end (9/Series); False: they need an arc to use them")
         .def_readwrite("exit_must_be_straight", &RadiusRules::exit_must_be_straight,
                        "the move after the cancel (G40) may not be an arc")
         .def_readwrite("entry_length_check", &RadiusRules::entry_length_check,

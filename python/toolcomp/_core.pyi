@@ -220,6 +220,7 @@ class RadiusRules:
     extension_min_length: float
     ct_radius_on_contour: bool
     lct_tangency_tool_space: bool
+    exit_direction_words: bool
     exit_must_be_straight: bool
     entry_length_check: bool
     outside_corner: OutsideCorner

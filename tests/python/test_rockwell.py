@@ -123,6 +123,17 @@ def test_exit_modified_with_i_k():
     np.testing.assert_allclose(mod.path.end[-1][[0, 2]], [15, -12])
 
 
+def test_exit_direction_words_are_a_setting():
+    # Without the setting I/K in a G40 block have no code to use them, as on LinuxCNC.
+    text = "G21 G18 G0 X20 Z5\nT0016\nG42 G1 X20 Z0 F100\nZ-10\nG40 X30 Z-12 I1 K-1\nM30\n"
+    prof = tc.ControlProfile("rockwell")
+    assert prof.radius.exit_direction_words
+    prof.radius.exit_direction_words = False
+    with pytest.raises(tc.ProgramError) as e:
+        tc.run(tc.Program.parse(text, dialect="rockwell"), tools=tc.ToolTable.parse(TABLE, "csv"), profile=prof)
+    assert e.value.code == "unused_word" and e.value.line == 5
+
+
 def test_extension_blocks_and_the_minimum_length_rule():
     # An acute outside corner for G42: along -Z, then back out towards +Z and smaller X (a
     # left turn of 167.5 degrees): three extension blocks.
