@@ -221,9 +221,15 @@ def test_appr_worked_examples(appr, nxt, ph, pa):
     res = pgm(APPR.format(appr=appr, next=nxt))
     p = res.path
     appr_moves = np.flatnonzero(p.line == 5)
-    np.testing.assert_allclose(p.end[appr_moves[0], :2], ph, atol=1e-3)       # PS -> PH in the plane
-    np.testing.assert_allclose(p.end[appr_moves[1]], [*ph, -10], atol=1e-3)  # then to depth at PH
-    np.testing.assert_allclose(p.end[appr_moves[-1], :2], pa, atol=1e-3)     # PH -> PA (tool centre)
+    if appr.startswith("APPR LCT"):
+        # spec 2.5.1: LCT with X, Y and Z moves from PS to PH in all three axes, then in the plane
+        assert len(appr_moves) == 2
+        np.testing.assert_allclose(p.start[appr_moves[0]], [40, 10, 0], atol=1e-9)
+        np.testing.assert_allclose(p.end[appr_moves[0]], [*ph, -10], atol=1e-3)
+    else:
+        np.testing.assert_allclose(p.end[appr_moves[0], :2], ph, atol=1e-3)       # PS -> PH in the plane
+        np.testing.assert_allclose(p.end[appr_moves[1]], [*ph, -10], atol=1e-3)  # then to depth at PH
+    np.testing.assert_allclose(p.end[appr_moves[-1]], [*pa, -10], atol=1e-3)     # PH -> PA (tool centre)
     assert (p.side[appr_moves] == 0).all()
     first = np.flatnonzero(p.line == 6)[0]  # the first contour element starts at PA_tool
     np.testing.assert_allclose(p.start[first, :2], pa, atol=1e-3)
@@ -255,6 +261,30 @@ L X+10 Y+20
         np.testing.assert_allclose(p.end[dep_moves[0], :2], [16.216, 22.412], atol=1e-3)
     if dep.startswith("DEP CT"):
         np.testing.assert_allclose(p.center[dep_moves[0], :2], [18, 20], atol=1e-9)
+
+
+def test_appr_lct_three_axes_only_when_all_three_are_given():
+    # The tool circle of the spec 2.5.4 LCT example: centre (18.3205, 14.4530) (PA + 10 n_R,
+    # n_R the right normal of (10, 15)), radius 10 - 5. PH is where the line from PS = (40, 10)
+    # touches it.
+    c = np.array([10, 20]) + 10 * np.array([15, -10]) / np.hypot(10, 15)
+    base = "TOOL DEF 1 L+0 R+5\nTOOL CALL 1 Z\nL X+40 Y+10 Z+0 R0 FMAX\n{appr}\nL X+20 Y+35\nL X+40 Y+60\nDEP LT LEN5\n"
+    three = pgm(base.format(appr="APPR LCT X+10 Y+20 Z-10 R10 RR F100")).path
+    lead = np.flatnonzero(three.line == 5)[0]
+    ph = three.end[lead, :2]
+    assert np.hypot(*(ph - c)) == pytest.approx(5, abs=1e-9)
+    assert np.dot(ph - [40, 10], ph - c) == pytest.approx(0, abs=1e-9)  # tangent
+    assert three.end[lead, 2] == -10 and three.start[lead, 2] == 0
+    assert three.kind[lead + 1] == tc.ARC_CW  # then the arc at depth, no plunge at PH
+    # Incremental words count: IX/IY/IZ reach the same points.
+    inc = pgm(base.format(appr="APPR LCT IX-30 IY+10 IZ-10 R10 RR F100")).path
+    np.testing.assert_allclose(inc.end, three.end, atol=1e-12)
+    # Without Y the block gives no full point: PH in the plane first, then the depth.
+    two = pgm(base.replace("Y+10 Z+0", "Y+20 Z+0").format(appr="APPR LCT X+10 Z-10 R10 RR F100")).path
+    moves = np.flatnonzero(two.line == 5)
+    assert two.end[moves[0], 2] == 0
+    np.testing.assert_allclose(two.end[moves[1], :2], two.end[moves[0], :2], atol=1e-12)
+    assert two.end[moves[1], 2] == -10
 
 
 def test_appr_lct_needs_a_feed_and_ct_radius_too_large():

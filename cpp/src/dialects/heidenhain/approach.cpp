@@ -81,6 +81,15 @@ void Interp::approach(Tokens t) {
     p.a.radius = number(t, "R").value_or(0);
     p.ps = pos_;
     p.depth = pa[axes(plane_).c];
+    // TNC 426 / iTNC 530: APPR LCT with X, Y and Z all programmed moves from PS to PH in all
+    // three axes, then in the plane to PA; every other APPR reaches PH in the plane first.
+    if (kind == ApproachKind::LCT) {
+        static constexpr std::string_view abs_axis[3] = {"X", "Y", "Z"}, inc_axis[3] = {"IX", "IY", "IZ"};
+        bool given[3] = {false, false, false};
+        for (std::size_t i = 2; i < t.size(); ++i)
+            for (int a = 0; a < 3; ++a) given[a] = given[a] || ((t[i].is(abs_axis[a]) || t[i].is(inc_axis[a])) && t[i].has_value);
+        p.depth_with_lead = given[0] && given[1] && given[2];
+    }
     p.feed_arc = feed_;
     p.feed_lead = kind == ApproachKind::LCT ? feed_ : (rapid_before ? std::nan("") : feed_before);
     p.line = line_;
@@ -90,10 +99,13 @@ void Interp::approach(Tokens t) {
 }
 
 // Tool-centre pieces as moves without compensation; the tool axis goes to depth h after
-// piece `depth_after` (APPR: at PH, in the plane first; DEP: at the end).
+// piece `depth_after` (APPR: at PH, in the plane first; DEP: at the end), or with the first
+// piece (kDepthWithFirst).
 void Interp::emit_pieces(const std::vector<PathPiece>& pieces, double h, double feed_first, double feed_rest,
                          std::size_t depth_after) {
     auto ax = axes(plane_);
+    const bool with_first = depth_after == kDepthWithFirst;
+    if (with_first) depth_after = 0;  // a first piece without plane motion: straight to depth
     Vec3 at = pos_;
     for (std::size_t i = 0; i < pieces.size(); ++i) {
         const PathPiece& pc = pieces[i];
@@ -101,6 +113,7 @@ void Interp::emit_pieces(const std::vector<PathPiece>& pieces, double h, double 
         Motion m = motion_to(pc.arc ? (pc.dir > 0 ? MotionKind::arc_ccw : MotionKind::arc_cw) : MotionKind::line, at);
         m.start = with_plane(at, pc.start);
         m.end = with_plane(at, pc.end);
+        if (with_first && i == 0 && !pc.arc) m.end[ax.c] = h;
         if (pc.arc) m.center = with_plane(at, pc.centre);
         const double f = i == 0 ? feed_first : feed_rest;
         if (std::isnan(f)) m.kind = MotionKind::rapid;
@@ -159,7 +172,7 @@ void Interp::emit_approach(const Motion& first) {
     const int line = line_;
     line_ = p.line;
     pos_ = p.ps;
-    emit_pieces(pieces, p.depth, p.feed_lead, p.feed_arc, 0);
+    emit_pieces(pieces, p.depth, p.feed_lead, p.feed_arc, p.depth_with_lead ? kDepthWithFirst : 0);
     // Compensation starts at PA_tool: a zero-length activation move the radius stage ends
     // where the first element's equidistant starts.
     if (side_ != 0) {
@@ -174,10 +187,12 @@ void Interp::emit_approach(const Motion& first) {
 
 // Puts APPR/DEP pieces computed on the contour (tool radius 0) as contour elements of the
 // current block, compensated as the active RL/RR requests; the tool axis goes to `h` after
-// piece `depth_after`.
+// piece `depth_after`, or with the first piece (kDepthWithFirst).
 void Interp::put_contour_pieces(const std::vector<PathPiece>& pieces, const Vec3& from, double h,
                                 double feed_first, double feed_rest, std::size_t depth_after) {
     const int c = axes(plane_).c;
+    const bool with_first = depth_after == kDepthWithFirst;
+    if (with_first) depth_after = 0;
     Vec3 at = from;
     for (std::size_t i = 0; i < pieces.size(); ++i) {
         const PathPiece& pc = pieces[i];
@@ -188,6 +203,7 @@ void Interp::put_contour_pieces(const std::vector<PathPiece>& pieces, const Vec3
                                  at);
             m.start = with_plane(at, pc.start);
             m.end = with_plane(at, pc.end);
+            if (with_first && i == 0 && !pc.arc) m.end[c] = h;
             if (pc.arc) m.center = with_plane(at, pc.centre);
             m.feed = m.kind == MotionKind::rapid ? std::nan("") : f;
             ++plane_moves_;
@@ -219,7 +235,7 @@ void Interp::emit_connecting_approach(const Motion& first) {
     const Vec3 pa_programmed = pos_;
     const int line = line_;
     line_ = p.line;
-    put_contour_pieces(pieces, p.ps, p.depth, p.feed_lead, p.feed_arc, 0);
+    put_contour_pieces(pieces, p.ps, p.depth, p.feed_lead, p.feed_arc, p.depth_with_lead ? kDepthWithFirst : 0);
     pos_ = pa_programmed;
     line_ = line;
 }

@@ -73,6 +73,9 @@ private:
     // APPR while RL/RR is active: the approach path computed on the contour (radius 0) and
     // put as compensated contour elements, before `first`.
     void emit_connecting_approach(const Motion& first);
+    // `depth_after`: the piece after which the tool axis goes to `h`, or kDepthWithFirst: the
+    // first piece (PS -> PH) goes there itself, in all three axes.
+    static constexpr std::size_t kDepthWithFirst = static_cast<std::size_t>(-1);
     void emit_pieces(const std::vector<PathPiece>& pieces, double h, double feed_first, double feed_rest,
                      std::size_t depth_after);
     void put_contour_pieces(const std::vector<PathPiece>& pieces, const Vec3& from, double h, double feed_first,
@@ -134,6 +137,7 @@ private:
         Approach a;
         Vec3 ps = Vec3::Zero();  // where the tool is (tool centre)
         double depth = 0;        // tool-axis coordinate of the APPR block
+        bool depth_with_lead = false;  // APPR LCT with X, Y and Z: PS -> PH in all three axes
         double feed_lead = 0, feed_arc = 0;
         int line = 0;
         bool connecting = false;  // compensation was already active: a connecting element
