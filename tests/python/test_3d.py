@@ -44,6 +44,18 @@ def test_ln_block_format_errors(block):
     assert e.value.code == "ln_block_format" and e.value.line == 5
 
 
+@pytest.mark.parametrize("word", ["TX+Q1 TY+0 TZ+1", "TX+0 TY-Q1 TZ+1", "TX+0 TY+0 TZ+Q1"])
+def test_ln_tool_orientation_must_be_numbers(word):
+    # spec 2.6: TX/TY/TZ are numbers, a Q parameter there is a block format error; in X..NZ
+    # a Q parameter is a value like any other.
+    q = ["Q1 = 0.5"]
+    with pytest.raises(tc.ProgramError) as e:
+        ln_program(q + [f"LN X+1 Y+0 Z+0 NX+0 NY+0 NZ+1 {word} F100"], extra=" M128")
+    assert e.value.code == "ln_block_format" and e.value.line == 6 and "Q parameters" in e.value.message
+    res = ln_program(q + ["LN X+Q1 Y+0 Z+0 NX+0 NY+0 NZ+1 TX+0 TY+0 TZ+1 F100"], extra=" M128")
+    assert res.nominal.end[-1, 0] == 0.5
+
+
 def test_m128_tool_axis_and_contact_points():
     # Toroid R 4, R2 1 tilted along T with M128; the contact point of the nominal tool at PT and
     # of the actual tool at the compensated point are the same surface point.

@@ -316,6 +316,12 @@ void Interp::polar_arc(Tokens t) {
     pos_ = end;
 }
 
+void Interp::check_surface_line(Tokens raw) const {
+    for (const Token& k : raw)
+        if ((k.is("TX") || k.is("TY") || k.is("TZ")) && k.param > 0)
+            fail("ln_block_format", "LN block format: TX, TY and TZ must be numbers, not Q parameters", k.column);
+}
+
 // LN X Y Z NX NY NZ [TX TY TZ]: a line to the datum point PT computed by CAM, with the surface
 // normal N; the tool is displaced along N by the deltas of the tool called (3D compensation).
 void Interp::surface_line(Tokens t) {

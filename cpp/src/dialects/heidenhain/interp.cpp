@@ -332,6 +332,7 @@ bool Interp::run_blocks(const Program& prog, int depth) {
             ++pc;
             continue;
         }
+        if (raw[0].is("LN")) check_surface_line(raw);
         const Tokens t = resolve(raw, scratch);
         const std::string_view k0 = t[0].key;
         if (k0 == "LBL") {

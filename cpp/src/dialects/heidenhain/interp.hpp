@@ -67,6 +67,8 @@ private:
     void rounding(Tokens t);
     void chamfer(Tokens t);
     void surface_line(Tokens t);  // LN
+    // LN's tool orientation TX TY TZ as the block is written: numbers, never Q parameters.
+    void check_surface_line(Tokens raw) const;
     void approach(Tokens t);
     void departure(Tokens t);
     void emit_approach(const Motion& first);  // once the first contour element is known
