@@ -258,6 +258,23 @@ def test_trafo5_equals_toolholder():
     assert err.value.code == "trafo5_bad_type"
 
 
+@pytest.mark.parametrize("axes, what", [
+    (((0, 0, 0), (0, 1, 0)), "TRAFO5_AXIS1 is zero"),
+    (((1, 0, 0), (0, 0, 0)), "TRAFO5_AXIS2 is zero"),
+    (((1, 0, 0), (2, 0, 0)), "parallel"),
+    (((0, 0, 1), (0, 0, -3)), "parallel"),
+    (((1, 0, 0), (0, math.nan, 1)), "not a number"),
+])
+def test_trafo5_machine_data_alarm_4342(axes, what):
+    # spec 3.7: alarm 4342 for invalid transformation data (an axis vector zero, parallel axes).
+    for typ in (24, 56):
+        t = sn.Trafo5(typ, base_tool=(0, 0, 40), axis1=axes[0], axis2=axes[1])
+        for call in (lambda: t.to_toolholder(0, 30), lambda: t.tool_length(30, 45, (0, 0, 100))):
+            with pytest.raises(tc.CompensationError, match=what) as err:
+                call()
+            assert err.value.code == "4342"
+
+
 def test_lentoax_gives_the_axes_of_the_length_components():
     # spec 3.2: standard milling in G17: _AXIND = (3, 2, 1), L1 -> Z, L2 -> Y, L3 -> X.
     status, axind, matrix = sn.lentoax(120, 17)

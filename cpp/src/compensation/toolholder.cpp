@@ -92,6 +92,21 @@ Vec3 table_zero_offset(const Toolholder& h) {
     }
 }
 
+namespace {
+// Alarm 4342: machine data the control refuses for the transformation (a rotary axis of no
+// direction, two parallel axes, a value that is not a number).
+void check_trafo5(const Trafo5Data& t) {
+    auto bad = [](const std::string& what) {
+        throw CompensationError("4342", "4342 Invalid machine data for the 5-axis transformation: " + what);
+    };
+    for (const Vec3* v : {&t.base_tool, &t.joint_offset, &t.joint_offset_part, &t.part_offset, &t.axis1, &t.axis2})
+        if (!v->allFinite()) bad("a vector is not a number");
+    if (t.axis1.norm() == 0) bad("TRAFO5_AXIS1 is zero");
+    if (t.axis2.norm() == 0) bad("TRAFO5_AXIS2 is zero");
+    if (t.axis1.normalized().cross(t.axis2.normalized()).norm() < 1e-9) bad("TRAFO5_AXIS1 and TRAFO5_AXIS2 are parallel");
+}
+}  // namespace
+
 Toolholder to_toolholder(const Trafo5Data& t, double a1_deg, double a2_deg) {
     Toolholder h;
     if (t.type == 24) h.kind = 'T';
@@ -99,6 +114,7 @@ Toolholder to_toolholder(const Trafo5Data& t, double a1_deg, double a2_deg) {
     else
         throw CompensationError("trafo5_bad_type", "TRAFO_TYPE " + std::to_string(t.type) +
                                                        " has no toolholder equivalent here (24 or 56)");
+    check_trafo5(t);
     h.l1 = t.joint_offset;
     h.l2 = t.base_tool;
     h.l3 = t.joint_offset_part;
@@ -111,6 +127,7 @@ Toolholder to_toolholder(const Trafo5Data& t, double a1_deg, double a2_deg) {
 }
 
 Vec3 trafo5_tool_length(const Trafo5Data& t, double a1_deg, double a2_deg, const Vec3& tool_length) {
+    if (t.type == 24 || t.type == 56) check_trafo5(t);
     if (t.type == 24) {
         const Vec3 inner = rotate_about_axis(t.joint_offset_part + tool_length, t.axis2, a2_deg);
         return t.joint_offset + rotate_about_axis(t.base_tool + inner, t.axis1, a1_deg);

@@ -77,11 +77,13 @@ struct Trafo5Data {
 };
 
 // The equivalent toolholder at axis positions a1, a2 (degrees). Throws
-// CompensationError("trafo5_bad_type") for types other than 24 and 56.
+// CompensationError("trafo5_bad_type") for types other than 24 and 56, and "4342" (alarm
+// 4342) for an axis of zero length, parallel axes or a vector that is not a number.
 Toolholder to_toolholder(const Trafo5Data& t, double a1_deg, double a2_deg);
 
 // The tool length through the machine data directly (type 24: J + R1(B + R2(JP + L));
-// type 56: J + R1(B + L)); equals resulting_tool_length(to_toolholder(t, a1, a2), L).
+// type 56: J + R1(B + L)); equals resulting_tool_length(to_toolholder(t, a1, a2), L). The
+// same errors as to_toolholder.
 Vec3 trafo5_tool_length(const Trafo5Data& t, double a1_deg, double a2_deg, const Vec3& tool_length);
 
 }  // namespace toolcomp
