@@ -144,6 +144,10 @@ void bind_run(py::module_& m) {
             "(mm programs, inch programs)")
         .def_readwrite("max_non_plane_moves", &RadiusRules::max_non_plane_moves,
                        "consecutive blocks without plane motion the control looks past; -1 = no limit")
+        .def_readwrite("count_blocks_without_motion", &RadiusRules::count_blocks_without_motion,
+                       "blocks that move nothing (M8, S500, G4, F alone; not assignments, calls or comments) "
+                       "count among the blocks without plane motion (Fanuc, 9/Series, Sinumerik); False: only "
+                       "moves without plane motion count (LinuxCNC, Heidenhain)")
         .def_readwrite("non_plane_reaction", &RadiusRules::non_plane_reaction,
                        "NonPlaneReaction: what happens beyond max_non_plane_moves")
         .def_readwrite("lookahead", &RadiusRules::lookahead,

@@ -229,6 +229,7 @@ class RadiusRules:
     side_change: bool
     corner_tolerance: float
     arc_sweep_tolerance: Tuple[float, float]
+    count_blocks_without_motion: bool
     max_non_plane_moves: int
     non_plane_reaction: NonPlaneReaction
     lookahead: int

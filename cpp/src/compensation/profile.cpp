@@ -34,6 +34,7 @@ ControlProfile profile_for(Dialect d, Machine machine) {
             r.corner_limit = kPi / 2;
             // Two blocks without plane motion are looked past; more may overcut (warning).
             r.max_non_plane_moves = 2;
+            r.count_blocks_without_motion = true;
             r.non_plane_reaction = NonPlaneReaction::overcut;
             r.messages.entry_arc = "PS0034 NO CIRC ALLOWED IN ST-UP/EXT BLK";
             r.messages.exit_arc = "PS0034 NO CIRC ALLOWED IN ST-UP/EXT BLK";
@@ -93,6 +94,7 @@ ControlProfile profile_for(Dialect d, Machine machine) {
             r.corner_limit = kPi / 2;
             r.tip_convention = TipConvention::fanuc;
             r.max_non_plane_moves = 2;
+            r.count_blocks_without_motion = true;
             r.non_plane_reaction = NonPlaneReaction::overcut;
             r.exit_direction_words = true;
             r.messages.entry_arc = "Block format error: TTRC entry in a circular block";
@@ -130,6 +132,7 @@ ControlProfile profile_for(Dialect d, Machine machine) {
             r.gouge = GougeReaction::skip;
             r.lookahead = 3;
             r.max_non_plane_moves = 3;
+            r.count_blocks_without_motion = true;
             r.non_plane_reaction = NonPlaneReaction::error;
             r.messages.entry_arc = "10753 TRC selection only possible in a linear block";
             r.messages.exit_arc = "10754 TRC deselection only possible in a linear block";

@@ -284,6 +284,9 @@ void RadiusCompensation::control(const ControlEvent& e) {
             if (active_) move_end_and_flush(plane2(current_), e.line);
             release(0);
             break;
+        case ControlKind::no_motion:
+            if (active_ && !exit_open_) count_non_plane_block(e.line);
+            break;
         case ControlKind::program_end:
             if (exit_open_) {
                 exit_open_ = false;

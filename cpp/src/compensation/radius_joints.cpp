@@ -179,25 +179,27 @@ void RadiusCompensation::bridge(const Element2& next, int line) {
     if (!skip_unreachable(next, line)) fail("comp_arc_too_small", profile_.radius.messages.arc_too_small, line);
 }
 
+void RadiusCompensation::count_non_plane_block(int line) {
+    const RadiusRules& rr = profile_.radius;
+    if (rr.max_non_plane_moves < 0 || ++non_plane_run_ <= rr.max_non_plane_moves) return;
+    if (rr.non_plane_reaction == NonPlaneReaction::error) fail("comp_non_plane_moves", rr.messages.too_many_non_plane, line);
+    // The control stops looking ahead: the held move ends perpendicular to its programmed
+    // end, which can leave material or cut into an inside corner.
+    if (!queue_.empty()) {
+        diags_.push_back({"comp_overcut", Severity::warning,
+                          "Too many blocks without plane motion: the previous move ends perpendicular "
+                          "to its end point, which may overcut",
+                          {line, 0, {}, file_of(line)}});
+        flush();
+    }
+}
+
 void RadiusCompensation::next_line(const Motion& m) {
     const RadiusRules& rules = profile_.radius;
     const double small = rules.corner_tolerance;
     const Vec2 P = plane2(program_), C = plane2(current_), p = plane2(m.end);
     if (p == P) {  // no motion in the plane: held at the compensated point
-        const RadiusRules& rr = profile_.radius;
-        if (rr.max_non_plane_moves >= 0 && ++non_plane_run_ > rr.max_non_plane_moves) {
-            if (rr.non_plane_reaction == NonPlaneReaction::error)
-                fail("comp_non_plane_moves", rr.messages.too_many_non_plane, m.line);
-            // The control stops looking ahead: the held move ends perpendicular to its
-            // programmed end, which can leave material or cut into an inside corner.
-            if (!queue_.empty()) {
-                diags_.push_back({"comp_overcut", Severity::warning,
-                                  "Too many blocks without plane motion: the previous move ends perpendicular "
-                                  "to its end point, which may overcut",
-                                  {m.line, 0}});
-                flush();
-            }
-        }
+        count_non_plane_block(m.line);
         current_ = hold(m, Vec2::Zero(), 0).m.end = with_plane(m.end, C);
         program_ = m.end;
         return;

@@ -132,6 +132,10 @@ struct RadiusRules {
     // Consecutive blocks without plane motion the control looks past; -1 = no limit
     // (LinuxCNC holds them all back with the plane move before them).
     int max_non_plane_moves = -1;
+    // Blocks that move nothing at all (M8, S500, G4, F alone; not assignments, calls or
+    // comments) count among them (Fanuc, 9/Series, Sinumerik "empty blocks"); false: only
+    // moves without plane motion count.
+    bool count_blocks_without_motion = false;
     // Plane moves looked at when an element turns out unreachable (LinuxCNC: 1).
     int lookahead = 1;
     GougeReaction gouge = GougeReaction::error;

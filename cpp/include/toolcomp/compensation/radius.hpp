@@ -71,6 +71,9 @@ private:
     bool open_corner(const Motion& m, const Vec2& mid);
     void turn_off(int line, bool cancel = true);
     void change_side(const Motion& m);
+    // One more block without plane motion in a row: past the profile's limit its reaction (an
+    // error, or the held moves end perpendicular with an overcut warning).
+    void count_non_plane_block(int line);
     void bridge(const Element2& next, int line);
     void rescale(double new_unit);
     [[noreturn]] void fail(const char* code, const std::string& msg, int line) const;

@@ -74,8 +74,11 @@ struct Motion {
 
 // Points in the program where a compensation stage must settle what it holds back: the
 // block that cancels radius compensation (G40), a program stop (M0/M1/M60) and the program
-// end (M2/M30). Errors found there are reported at that block's line.
-enum class ControlKind : std::uint8_t { radius_off, stop, program_end };
+// end (M2/M30). Errors found there are reported at that block's line. `no_motion`: a block
+// that moves nothing (M8, S500, G4, a frame) while radius compensation is on, which controls
+// that count blocks without plane motion count too (RadiusRules::count_blocks_without_motion;
+// interpreters send it only for such profiles).
+enum class ControlKind : std::uint8_t { radius_off, stop, program_end, no_motion };
 struct ControlEvent {
     ControlKind kind;
     std::int32_t line;

@@ -155,10 +155,17 @@ void Interp::run_blocks() {
             bw.remove('P');
             bw.remove('L');
         }
+        const std::size_t moves_before = moves_;
         if (!execute(bw)) {
             sink_.finish();
             return;
         }
+        // A block that moved nothing under compensation (not the one that switched it, a stop,
+        // whose events settle the stage anyway, or a subprogram call), for controls that count
+        // such blocks.
+        if (moves_ == moves_before && comp_on() && !words.empty() && profile_.radius.count_blocks_without_motion &&
+            bw.g[g_radius_comp] < 0 && bw.m[m_stop] < 0 && sub_m < 0)
+            sink_.control({ControlKind::no_motion, line_, Vec3::Zero(), file_});
         if (sub_m >= 0) subprogram(sub_m, p_word, l_word, bw.m_column[m_subprogram]);
     }
     sink_.finish();

@@ -186,6 +186,7 @@ private:
     // canned cycles do not count (the stage alone would take them as straight moves).
     bool arc_not_allowed_ = false;
     bool comp_moved_ = false;  // a move made since compensation came on (else G40 sets no rule)
+    std::size_t moves_ = 0;    // moves given to the sink (a block that adds none moves nothing)
     bool comp_on() const { return radius_.side != 0; }
     void inverse_time_rate(double feed);
 

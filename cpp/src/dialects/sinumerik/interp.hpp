@@ -225,6 +225,7 @@ private:
                                            // take effect at the next T/D selection)
     bool ended_ = false;
     bool warned_blending_ = false;
+    std::size_t moves_ = 0;  // moves given to the sink (a block that adds none moves nothing)
 };
 
 }  // namespace toolcomp::sinumerik

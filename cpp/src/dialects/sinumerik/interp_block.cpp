@@ -70,6 +70,7 @@ void Interp::block(std::span<const Token> t) {
     }
     c.executable_seen = true;
     BlockData b;
+    bool words = false;
     std::string call_name;
     int call_column = 0;
     for (const Token& x : t) {
@@ -92,6 +93,7 @@ void Interp::block(std::span<const Token> t) {
             const long n = std::lround(eval_text(x.text, x.column));
             fail("setal", "Alarm " + std::to_string(n) + " set by the program (SETAL)", x.column);
         }
+        words = true;  // an address, G/M function, keyword or call: more than a computation
         if (is_unsupported(k) || (x.is("G") && (x.value == 110 || x.value == 111 || x.value == 112)))
             fail("unsupported_word", (x.is("G") ? "G" + std::to_string(int_value(x.value)) : k) +
                                          " is not supported by toolcomp", x.column);
@@ -147,7 +149,16 @@ void Interp::block(std::span<const Token> t) {
         call_name = k;
         call_column = x.column;
     }
+    const std::size_t moves_before = moves_;
+    const bool comp_before = st_.side != 0;
     execute(b, t[0].column);
+    // A block that moved nothing while TRC stays on (not the one that selects it, a stop or a
+    // call): one of the "empty blocks" the control counts (alarm 10762).
+    bool stop = false;
+    for (auto [m, column] : b.m) stop = stop || m == 0 || m == 1;
+    if (words && moves_ == moves_before && comp_before && st_.side != 0 && call_name.empty() && !ended_ && !stop &&
+        profile_.radius.count_blocks_without_motion)
+        sink_.control({ControlKind::no_motion, line_, Vec3::Zero(), file()});
     if (!call_name.empty() && !ended_) {
         int passes = 1;
         if (b.has('P')) {

@@ -286,6 +286,7 @@ void Interp::execute(BlockData& b, int first_column) {
             const Vec2 d = in_plane(e - program_pos(), st_.plane);
             if (d.norm() > 1e-12) last_tangent_ = d.normalized();
             pos_ = out;
+            ++moves_;
             sink_.push(m);
         }
     }
@@ -439,6 +440,7 @@ void Interp::arc(const BlockData& b, const Vec3& end_prog) {
     const Vec2 re2 = e - c;
     last_tangent_ = (dir > 0 ? left_normal(re2) : Vec2(-left_normal(re2))).normalized();
     pos_ = out_end;
+    ++moves_;
     sink_.push(m);
 }
 
