@@ -64,10 +64,10 @@ def test_kont_goes_round_the_start_point_when_it_lies_behind():
     assert kont[1] == (1, (0.0, -10.0), (-5.0, 0.0), False)
     assert kont[2] == (tc.ARC_CW, (-5.0, 0.0), (0.0, 5.0), True)
     kont451 = segments(run(text, entry=KONT, outside_corner=tc.OutsideCorner.intersection).path)
-    # KONT with G451: the approach (0,-10) -> (-5,0), extended, meets the equidistant y = 5
-    # at -10 + 10t = 5, t = 1.5: x = -7.5.
-    assert kont451[1] == (1, (0.0, -10.0), (-7.5, 5.0), False)
-    assert kont451[2] == (1, (-7.5, 5.0), (50.0, 5.0), False)
+    # KONT with G451: the intersection of the equidistants (spec 3.3), the approach line
+    # x = 0 moved to the tool's side (left of +Y: x = -5) and the first element's y = 5.
+    assert kont451[1] == (1, (0.0, -10.0), (-5.0, 5.0), False)
+    assert kont451[2] == (1, (-5.0, 5.0), (50.0, 5.0), False)
 
 
 def test_direct_side_change_links_the_perpendiculars():

@@ -13,14 +13,19 @@ namespace toolcomp {
 
 using namespace radius_math;
 
-// The held plane move as a compensated element (its start is endpoint_, its end C).
+// The held plane move as a compensated element (its start is endpoint_, its end C). A
+// straight entry move is its equidistant, the entry line moved by the tool's offset at its
+// end (C - P): the outside-corner rules meet that line (Fanuc start-up type B, Sinumerik
+// KONT with G451), while the move itself runs from the uncompensated start.
 std::optional<Element2> RadiusCompensation::held_element() const {
     if (queue_.empty() || !endpoint_valid_) return std::nullopt;
-    const Motion& f = queue_.front().m;
+    const Held& h = queue_.front();
+    const Motion& f = h.m;
     const Vec2 c = plane2(current_);
     if (f.is_arc()) return Element2::arc(endpoint_, c, plane2(f.center), f.kind == MotionKind::arc_ccw ? 1 : -1);
-    if ((c - endpoint_).norm() < tol::length) return std::nullopt;
-    return Element2::line(endpoint_, c);
+    const Vec2 start = h.approach ? Vec2(endpoint_ + (c - plane2(program_))) : endpoint_;
+    if ((c - start).norm() < tol::length) return std::nullopt;
+    return Element2::line(start, c);
 }
 
 // Fill the gap of an outside corner between the held element (ending at C) and the next
