@@ -115,6 +115,10 @@ void bind_run(py::module_& m) {
         .def_readwrite("exit_direction_words", &RadiusRules::exit_direction_words,
                        "I/K (I/J) in the cancel block give the direction in which the contour is taken to go on, "
                        "for the last compensated move's end (9/Series); False: they need an arc to use them")
+        .def_readwrite("offset_change_reenters", &RadiusRules::offset_change_reenters,
+                       "a work offset change under compensation (G54-G59.3, G92...) ends it for the moment: the "
+                       "last move is the exit, the first move in the new system an entry (9/Series); False: "
+                       "refused (LinuxCNC, Fanuc)")
         .def_readwrite("exit_must_be_straight", &RadiusRules::exit_must_be_straight,
                        "the move after the cancel (G40) may not be an arc")
         .def_readwrite("entry_length_check", &RadiusRules::entry_length_check,

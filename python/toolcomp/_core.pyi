@@ -221,6 +221,7 @@ class RadiusRules:
     ct_radius_on_contour: bool
     lct_tangency_tool_space: bool
     exit_direction_words: bool
+    offset_change_reenters: bool
     exit_must_be_straight: bool
     entry_length_check: bool
     outside_corner: OutsideCorner

@@ -134,6 +134,28 @@ def test_exit_direction_words_are_a_setting():
     assert e.value.code == "unused_word" and e.value.line == 5
 
 
+@pytest.mark.parametrize("change", ["G55", "G92 Z-10"])
+def test_a_work_offset_change_exits_and_enters_again(change):
+    # spec 5.3: a change of the work coordinate system under TTRC uses the last move as an
+    # exit and the first move in the new system as an entry. Along -Z at radius 20 under G42
+    # with a nose radius of 1 (tip 3: the centre shifted by (-1, -1)), then out along +X at
+    # Z-20. Z-10 ends perpendicular: centre (21, -10). Z-20 is a type A entry: it ends
+    # perpendicular to the X move at its start, centre (20, -19), where the tool would
+    # otherwise have run on at radius 21 to the inside corner (21, -19).
+    text = f"G21 G18 G54 G0 X50 Z5\nT0001\nG42 G1 X40 Z0 F0.2\nZ-10\n{change}\nZ-20\nX50\nG40 G0 X80 Z5\nM30\n"
+    table = tc.ToolTable.parse("tool,edge,x,z,radius,orientation\n1,1,0,0,1,3\n", "csv")
+    p = tc.run(tc.Program.parse(text, "rockwell"), tools=table, profile=tc.ControlProfile("rockwell")).path
+    tip = p.end[:, [0, 2]]
+    np.testing.assert_allclose(tip[np.flatnonzero(p.line == 4)[-1]], [21 - 1, -10 - 1], atol=1e-9)
+    np.testing.assert_allclose(tip[np.flatnonzero(p.line == 6)[-1]], [20 - 1, -19 - 1], atol=1e-9)
+    np.testing.assert_allclose(tip[np.flatnonzero(p.line == 7)[-1]], [25 - 1, -19 - 1], atol=1e-9)
+    # LinuxCNC and Fanuc refuse the change instead.
+    with pytest.raises(tc.ProgramError) as e:
+        tc.run(tc.Program.parse(text.replace("T0001", "T1 M6\nG43 H1"), "fanuc"),
+               tools=tc.ToolTable.parse("T1 P1 D2 Z0\n", "linuxcnc"))
+    assert e.value.code in ("comp_coord_system", "comp_axis_offsets") and e.value.line == 6
+
+
 def test_extension_blocks_and_the_minimum_length_rule():
     # An acute outside corner for G42: along -Z, then back out towards +Z and smaller X (a
     # left turn of 167.5 degrees): three extension blocks.

@@ -97,6 +97,7 @@ ControlProfile profile_for(Dialect d, Machine machine) {
             r.count_blocks_without_motion = true;
             r.non_plane_reaction = NonPlaneReaction::overcut;
             r.exit_direction_words = true;
+            r.offset_change_reenters = true;
             r.messages.entry_arc = "Block format error: TTRC entry in a circular block";
             r.messages.exit_arc = "Block format error: TTRC exit in a circular block";
             r.messages.gouge_feed = r.messages.gouge_traverse = r.messages.gouge_arc =

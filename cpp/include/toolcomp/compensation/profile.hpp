@@ -113,6 +113,10 @@ struct RadiusRules {
     // I/K (or I/J) in the cancel block give the direction in which the contour is taken to
     // go on, for the last move's end (9/Series exit modified with I/K).
     bool exit_direction_words = false;
+    // A work offset change under compensation (G54-G59.3, G92...) ends compensation for the
+    // moment: the last move ends as an exit, the first move in the new system is an entry
+    // (9/Series). false: refused (LinuxCNC, Fanuc).
+    bool offset_change_reenters = false;
     // Lathe tools: how the table's tip numbers are read (the imaginary tip's direction).
     TipConvention tip_convention = TipConvention::linuxcnc;
     OutsideCorner outside_corner = OutsideCorner::arc;

@@ -324,9 +324,19 @@ bool Interp::execute(const BlockWords& bw) {
             if (bw.g[g_length_comp] >= 0)
                 fail("comp_tool_offset", "Cannot change tool offset with cutter radius compensation on",
                      bw.g_column[g_length_comp]);
-            if (bw.g[g_coord_system] >= 0)
+            const bool offsets = bw.g[g_coord_system] >= 0 || g0 == 920 || g0 == 921 || g0 == 922 || g0 == 923 ||
+                                 g0 == 520;
+            if (offsets && profile_.radius.offset_change_reenters) {
+                // 9/Series: compensation ends here for the moment (the last move its exit) and
+                // the first move in the new system is an entry.
+                if (comp_before) {
+                    sink_.control({ControlKind::radius_off, line_, Vec3::Zero(), file_});
+                    comp_moved_ = false;
+                }
+            } else if (bw.g[g_coord_system] >= 0) {
                 fail("comp_coord_system", "Cannot change coordinate systems with cutter radius compensation on",
                      bw.g_column[g_coord_system]);
+            }
             if (bw.g[g_path_control] >= 0)
                 fail("comp_control_mode", "Cannot change control mode with cutter radius compensation on",
                      bw.g_column[g_path_control]);
@@ -345,7 +355,7 @@ bool Interp::execute(const BlockWords& bw) {
             }
             if (g0 == 280 || g0 == 300)
                 fail("comp_home", "Cannot use g28 or g30 with cutter radius comp", bw.g_column[g_nonmodal]);
-            if (g0 == 920 || g0 == 921 || g0 == 922 || g0 == 923 || g0 == 520)
+            if ((g0 == 920 || g0 == 921 || g0 == 922 || g0 == 923 || g0 == 520) && !profile_.radius.offset_change_reenters)
                 fail("comp_axis_offsets", "Cannot change axis offsets with cutter radius comp", bw.g_column[g_nonmodal]);
         }
         if (motion_code >= 382 && motion_code <= 385)
