@@ -116,3 +116,30 @@ def test_errors_have_code_and_position():
     with pytest.raises(tc.ToolTableError) as err:
         tc.ToolTable.parse("BEGIN TOOL .T MM\nT    NAME\n5.1  A\n[END]\n", "t")
     assert err.value.code == "heidenhain_tool_index_unsupported"
+
+
+def locked_table(tl, rt):
+    """tnc426.t with tool 1's TL and RT fields set (written at their columns)."""
+    lines = (TABLES / "tnc426.t").read_text().split("\n")
+    header = lines[1]
+    row = next(i for i, line in enumerate(lines) if line.startswith("1 "))
+    text = list(lines[row])
+    for title, value in (("TL", tl), ("RT", rt)):
+        col = header.index(" " + title + " ") + 1
+        text[col:col + len(value)] = value
+    lines[row] = "".join(text)
+    return tc.ToolTable.parse("\n".join(lines), "heidenhain")
+
+
+@pytest.mark.parametrize("rt, tail", [("2", "replacement tool 2 (RT) is not modelled"), ("", "no replacement tool")])
+def test_a_locked_tool_is_refused(rt, tail):
+    # TL = L: the control does not use the tool; toolcomp never cuts with its data.
+    table = locked_table("L", rt)
+    prog = "0 BEGIN PGM T MM\n1 TOOL CALL 1 Z\n2 L X+0 Y+0 Z+10 R0 FMAX\n3 END PGM T MM\n"
+    with pytest.raises(tc.ProgramError) as e:
+        tc.run(tc.Program.parse(prog, "heidenhain"), tools=table)
+    assert e.value.code == "tool_locked" and e.value.line == 2 and tail in e.value.message  # file line 2
+    ok = tc.run(tc.Program.parse(prog.replace("CALL 1", "CALL 2"), "heidenhain"), tools=table)
+    assert ok.path.tool[-1] == 2
+    unlocked = tc.run(tc.Program.parse(prog, "heidenhain"), tools=locked_table(" ", rt))
+    assert unlocked.path.tool[-1] == 1

@@ -564,6 +564,24 @@ ToolTable read_heidenhain_table(std::string_view text, LengthUnit units) {
     return table;
 }
 
+std::optional<std::string> heidenhain_field(const ToolTable& table, int number, std::string_view title) {
+    const auto* src = dynamic_cast<const HhSource*>(table.source());
+    if (!src) return std::nullopt;
+    const std::string want = to_upper_ascii(title);
+    std::size_t k = 0;
+    while (k < src->columns.size() && to_upper_ascii(src->columns[k].title) != want) ++k;
+    if (k == src->columns.size()) return std::nullopt;
+    for (const Row& r : src->rows) {
+        if (r.tool != number) continue;
+        if (k >= r.fields.size()) return std::string();
+        std::string_view f = r.fields[k];
+        while (!f.empty() && is_blank(f.front())) f.remove_prefix(1);
+        while (!f.empty() && is_blank(f.back())) f.remove_suffix(1);
+        return std::string(f);
+    }
+    return std::nullopt;
+}
+
 // ---- writing -------------------------------------------------------------------------------
 
 std::string write_heidenhain_table(const ToolTable& table) {

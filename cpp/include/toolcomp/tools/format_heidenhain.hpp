@@ -63,11 +63,20 @@
 //   an orientation or front/back angles, a line break in NAME or DOC, or a non-zero value
 //   (non-empty text) for a mapped column the file's header does not have. The pocket number
 //   is not a TOOL.T column (the TNC keeps pockets in TOOL_P.TCH): it is dropped.
+#include <optional>
+#include <string>
+#include <string_view>
+
 #include "toolcomp/tools/tool_table.hpp"
 
 namespace toolcomp {
 
 ToolTable read_heidenhain_table(std::string_view text, LengthUnit units);
 std::string write_heidenhain_table(const ToolTable& table);
+
+// The text of tool `number`'s field in the TOOL.T column `title` (matched case-insensitively;
+// for the columns the model does not map: TL, RT, TIME1, ...) as read, without the blanks
+// around it; nullopt when the table was not read from TOOL.T, or has no such column or row.
+std::optional<std::string> heidenhain_field(const ToolTable& table, int number, std::string_view title);
 
 }  // namespace toolcomp

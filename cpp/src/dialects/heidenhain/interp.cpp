@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "interp.hpp"
+#include "toolcomp/tools/format_heidenhain.hpp"
 #include "toolcomp/program/input_limits.hpp"
 #include "toolcomp/program/int_value.hpp"
 #include "qparams.hpp"
@@ -181,6 +182,17 @@ void Interp::tool_call(Tokens t) {
     if (number_ > 0) {
         if (!table_tool && tools_) table_tool = tools_->find(number_);
         if (table_tool) {
+            // TL = L in TOOL.T: the control does not use a locked tool (it takes the replacement
+            // RT in its place, with checks toolcomp does not model): refused, never cut with
+            // the locked tool's data.
+            if (const auto tl = heidenhain_field(*tools_, number_, "TL"); tl && (*tl == "L" || *tl == "l")) {
+                const auto rt = heidenhain_field(*tools_, number_, "RT");
+                fail("tool_locked",
+                     "Tool " + std::to_string(number_) + " is locked (TL = L in the tool table)" +
+                         (rt && !rt->empty() ? "; its replacement tool " + *rt + " (RT) is not modelled by toolcomp"
+                                             : " and has no replacement tool (RT)"),
+                     t[0].column);
+            }
             const CuttingEdge& e = table_tool->edge();
             length = (e.length.z() + e.length_wear.z()) / unit_;
             radius = (e.radius + e.radius_wear) / unit_;
