@@ -247,11 +247,13 @@ Result run_main(const Program& program, const ToolTable* tools, const RunOptions
 }  // namespace
 
 Result run(const Program& program, const ToolTable* tools, const RunOptions& options) {
+    if (options.profile) check_profile(*options.profile);
     return run_main(program, tools, options, {}, program.size());
 }
 
 Result run_file(const std::string& path, std::optional<Dialect> dialect, const ToolTable* tools,
                 const RunOptions& options, const ReadLimits& limits) {
+    if (options.profile) check_profile(*options.profile);
     ProgramSource src(path, dialect_of_file(path, dialect), limits, kPieceBytes, /*limit_pieces=*/true, {},
                       options.threads);
     PipelineHooks hooks;

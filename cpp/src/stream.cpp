@@ -67,6 +67,7 @@ PathStream::~PathStream() { close(); }
 
 void PathStream::start() {
     if (options_.chunk == 0) throw ProgramError("bad_chunk", "A stream's chunk must hold at least one segment");
+    if (options_.run.profile) check_profile(*options_.run.profile);
     thread_ = std::thread([this] { produce(); });
 }
 

@@ -1,5 +1,10 @@
 #include "toolcomp/compensation/profile.hpp"
 
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
 #include "toolcomp/geometry/vec.hpp"
 
 namespace toolcomp {
@@ -149,6 +154,40 @@ ControlProfile profile_for(Dialect d, Machine machine) {
             break;
     }
     return p;
+}
+
+void check_profile(const ControlProfile& p) {
+    auto bad = [](const char* field, const std::string& rule, double v) {
+        std::ostringstream os;
+        os << "ControlProfile." << field << " must be " << rule << " (got " << v << ")";
+        throw std::invalid_argument(os.str());
+    };
+    auto at_least = [&](const char* field, double v, double lo) {
+        if (!std::isfinite(v) || v < lo) bad(field, lo == 0 ? "a finite number >= 0" : "a finite number >= " + std::to_string(lo), v);
+    };
+    auto within = [&](const char* field, double v, double lo, double hi, const char* rule) {
+        if (!(v >= lo && v <= hi)) bad(field, rule, v);
+    };
+    const RadiusRules& r = p.radius;
+    within("radius.corner_limit", r.corner_limit, 0, kPi, "an angle from 0 to pi (radians)");
+    within("radius.corner_tolerance", r.corner_tolerance, 0, kPi / 2, "an angle from 0 to pi/2 (radians)");
+    within("radius.disc", r.disc, 0, 100, "from 0 to 100");
+    for (double v : r.arc_sweep_tolerance) at_least("radius.arc_sweep_tolerance", v, 0);
+    at_least("radius.overcut_tolerance", r.overcut_tolerance, 0);
+    at_least("radius.extension_min_length", r.extension_min_length, 0);
+    if (r.max_non_plane_moves < -1) bad("radius.max_non_plane_moves", "-1 (no limit) or a count >= 0", r.max_non_plane_moves);
+    if (r.overcut_neighbours < 0) bad("radius.overcut_neighbours", "a count >= 0 (0: the watch off)", r.overcut_neighbours);
+    if (r.lookahead < 0) bad("radius.lookahead", "a count >= 0", r.lookahead);
+    for (double v : p.arc_spiral_abs) at_least("arc_spiral_abs", v, 0);
+    at_least("arc_spiral_rel", p.arc_spiral_rel, 0);
+    at_least("arc_spiral_hard_factor", p.arc_spiral_hard_factor, 0);
+    for (double v : p.arc_min_radius) at_least("arc_min_radius", v, 0);
+    at_least("inverse_time_min_rate", p.inverse_time_min_rate, 0);
+    if (!std::isfinite(p.wear_sign)) bad("wear_sign", "a finite number (1 adds the wear, -1 subtracts it)", p.wear_sign);
+    if (p.t_format < 0 || p.t_format > 6) bad("t_format", "0 (Fanuc) or a 9/Series format 1-6", p.t_format);
+    if (p.tool_length_type < 0 || p.tool_length_type > 2) bad("tool_length_type", "0, 1 or 2", p.tool_length_type);
+    const int c = p.tool_length_const < 0 ? -p.tool_length_const : p.tool_length_const;
+    if (c != 0 && c != 17 && c != 18 && c != 19) bad("tool_length_const", "0, +-17, +-18 or +-19", p.tool_length_const);
 }
 
 }  // namespace toolcomp

@@ -243,4 +243,11 @@ struct ControlProfile {
 
 ControlProfile profile_for(Dialect d, Machine machine = Machine::mill);
 
+// Throws std::invalid_argument naming the field when a setting cannot describe a control: a
+// tolerance, angle or length that is not a finite number or is negative, DISC outside
+// 0..100, a count or format out of its range. (A NaN tolerance would turn every comparison
+// false: corners taken as tangent, a wrong path without a word.) run(), run_file() and
+// PathStream check the profile they are given.
+void check_profile(const ControlProfile& p);
+
 }  // namespace toolcomp
