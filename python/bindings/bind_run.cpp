@@ -305,7 +305,7 @@ void bind_run(py::module_& m) {
                 throw py::value_error("points and normals must be (N, 3) arrays of the same length");
             if (tool_axes && (!shape_ok(*tool_axes) || tool_axes->shape(0) != points.shape(0)))
                 throw py::value_error("tool_axes must be an (N, 3) array like points");
-            if (!(R >= 0) || !(R2 >= 0) || R2 > R) throw py::value_error("need 0 <= R2 <= R");
+            if (!(R >= 0) || !(R2 >= 0) || R2 > R || !std::isfinite(R)) throw py::value_error("need 0 <= R2 <= R, finite");
             const auto n = static_cast<std::size_t>(points.shape(0));
             // The result goes into `out` itself (no hidden copy), or a new array.
             py::array result = out.is_none() ? py::array(py::array_t<double>({points.shape(0), py::ssize_t(3)}))
@@ -313,14 +313,22 @@ void bind_run(py::module_& m) {
             if (!result.dtype().is(py::dtype::of<double>()) || !(result.flags() & py::array::c_style) ||
                 !result.writeable() || !shape_ok(result) || static_cast<std::size_t>(result.shape(0)) != n)
                 throw py::value_error("out must be a writeable C-contiguous float64 array of shape (N, 3)");
+            if (!std::isfinite(DR) || !std::isfinite(DR2)) throw py::value_error("DR and DR2 must be finite numbers");
             const double* p = points.data();
             const double* q = normals.data();
             const double* t = tool_axes ? tool_axes->data() : nullptr;
             double* o = static_cast<double*>(result.mutable_data());
+            std::size_t bad = n;
             {
                 py::gil_scoped_release nogil;
-                compensate_3d(p, q, t, n, DR, DR2, o);
+                // Checked before anything is written: `out` may be `points`.
+                bad = first_bad_row(q, t, n);
+                if (bad == n) compensate_3d(p, q, t, n, DR, DR2, o);
             }
+            if (bad != n)
+                throw py::value_error("row " + std::to_string(bad) +
+                                      ": the normal and the tool axis must be directions (finite, not of zero "
+                                      "length); nothing was written");
             return result;
         },
         py::arg("points"), py::arg("normals"), py::arg("tool_axes") = py::none(), py::kw_only(), py::arg("R"),

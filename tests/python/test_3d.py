@@ -90,6 +90,22 @@ def test_compensate_3d_zero_copy_and_same_code_as_ln():
         tc.compensate_3d(pts, nrm[:5], R=3, R2=1)
 
 
+@pytest.mark.parametrize("bad", [(0, 0, 0), (np.nan, 0, 1), (0, np.inf, 1), (1e-200, 0, 0)])
+@pytest.mark.parametrize("where", ["normals", "tool_axes"])
+def test_compensate_3d_refuses_a_normal_or_axis_that_is_not_a_direction(bad, where):
+    # A zero normal would leave its point uncompensated without a word; nothing is written,
+    # not even into `out` when it is `points`.
+    pts = np.arange(12.0).reshape(4, 3)
+    arrays = {"normals": np.tile([0.0, 0.0, 1.0], (4, 1)), "tool_axes": np.tile([0.0, 0.0, 1.0], (4, 1))}
+    arrays[where][2] = bad
+    before = pts.copy()
+    with pytest.raises(ValueError, match="row 2"):
+        tc.compensate_3d(pts, arrays["normals"], arrays["tool_axes"], R=3, R2=1, DR=-0.2, DR2=-0.05, out=pts)
+    np.testing.assert_array_equal(pts, before)
+    with pytest.raises(ValueError, match="finite"):
+        tc.compensate_3d(pts, np.ones((4, 3)), R=3, R2=1, DR=np.nan)
+
+
 def test_peripheral_milling_with_m128_uses_the_deltas_only():
     # CAM wrote the tool-centre path for the nominal tool; with RL and M128 the TNC displaces
     # it by sum DR only: an undersize of 0.2 moves the tool 0.2 towards the contour (right of +X).

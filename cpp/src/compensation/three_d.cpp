@@ -1,6 +1,7 @@
 #include "toolcomp/compensation/three_d.hpp"
 
 #include <cmath>
+#include <limits>
 
 namespace toolcomp {
 
@@ -48,6 +49,21 @@ void compensate_3d(const double* points, const double* normals, const double* to
         const Vec3 d = delta_3d(Vec3(q[0], q[1], q[2]), t, d_r, d_r2);
         o[0] = p[0] + d.x(), o[1] = p[1] + d.y(), o[2] = p[2] + d.z();
     }
+}
+
+std::size_t first_bad_row(const double* normals, const double* tool_axes, std::size_t n) {
+    for (std::size_t i = 0; i < n; ++i) {
+        const double* q = normals + 3 * i;
+        const double len2 = q[0] * q[0] + q[1] * q[1] + q[2] * q[2];
+        // Not finite components give a NaN or infinite square (or an overflow to infinity).
+        if (!(len2 >= 1e-30 && len2 <= std::numeric_limits<double>::max())) return i;
+        if (tool_axes) {
+            const double* t = tool_axes + 3 * i;
+            const double t2 = t[0] * t[0] + t[1] * t[1] + t[2] * t[2];
+            if (!(t2 >= 1e-30 && t2 <= std::numeric_limits<double>::max())) return i;
+        }
+    }
+    return n;
 }
 
 }  // namespace toolcomp

@@ -21,8 +21,12 @@ Vec3 delta_3d(const Vec3& n, const Vec3& t, double d_r, double d_r2);
 Vec3 contact_point(const Vec3& pt, const Vec3& n, const Vec3& t, double r, double r2);
 
 // Batch form for CAM data: points, normals (and tool axes, or nullptr for +Z) as n rows of
-// three doubles; out may alias points. Normals are normalised; a zero normal leaves the point.
+// three doubles; out may alias points. Normals are normalised; a zero normal leaves the point
+// (callers refuse such data first: first_bad_row).
 void compensate_3d(const double* points, const double* normals, const double* tool_axes, std::size_t n, double d_r,
                    double d_r2, double* out);
+// The first row whose normal or tool axis is not a direction (a component not finite, or of
+// zero length); n when every row is good.
+std::size_t first_bad_row(const double* normals, const double* tool_axes, std::size_t n);
 
 }  // namespace toolcomp
