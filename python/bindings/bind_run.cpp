@@ -192,6 +192,9 @@ void bind_run(py::module_& m) {
         .def_readwrite("t_offsets", &ControlProfile::t_offsets,
                        "lathe: a T word is tool and offset number (T0313: tool 3, offset 13) and applies the "
                        "offset at once (geometry + wear X and Z, nose radius and tip; no D word)")
+        .def_readwrite("g_code_system_a", &ControlProfile::g_code_system_a,
+                       "Fanuc lathe G-code system A: G90, G92 and G94 are the turning, threading and facing cycles "
+                       "(refused), G91 does not exist (U and W are the increments)")
         .def_readwrite("t_format", &ControlProfile::t_format,
                        "how a T word splits into tool, geometry and wear offset numbers: 0 T<tool><two offset "
                        "digits> (Fanuc); 1-3 geometry and wear from the last 1, 2 or 3 digits; 4-6 wear from "

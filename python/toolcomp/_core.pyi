@@ -244,6 +244,7 @@ class ControlProfile:
     x_diameter: bool
     incremental_uw: bool
     t_offsets: bool
+    g_code_system_a: bool
     t_format: int
     wear_sign: float
     tool_length_const: int

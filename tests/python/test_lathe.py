@@ -104,3 +104,34 @@ def test_g7_x_words_are_diameters_in_g43_1_and_cycle_depths():
     p = tc.run(tc.Program.parse("G21 G90 G94 F300\nG0 X0 Y0 Z0\nG19 G7\nG0 X5\nM3 S100\n"
                                 "G81 Y10 Z0 X-2 R1\nG80\nM2\n")).path
     assert p.end[:, 0].min() == -1
+
+
+FANUC_LATHE_START = "O1\nG21 G18 G99\nG0 X50 Z5\n"
+
+
+@pytest.mark.parametrize("block, mid, home", [
+    ("G28 U0 W0", (25, 5), (0, 0)),   # home from where the tool is, both axes
+    ("G28 U0", (25, 5), (0, 5)),      # X only
+    ("G28 U10 W0", (30, 5), (0, 0)),  # through X60 (radius 30), U a diameter increment
+])
+def test_g28_with_u_and_w_sends_x_and_z_home(block, mid, home):
+    prof = tc.ControlProfile("fanuc", machine="lathe")
+    p = tc.run(tc.Program.parse(FANUC_LATHE_START + block + "\nM30\n", "fanuc"), profile=prof).path
+    np.testing.assert_allclose(p.end[-2][[0, 2]], mid, atol=1e-12)
+    np.testing.assert_allclose(p.end[-1][[0, 2]], home, atol=1e-12)
+
+
+@pytest.mark.parametrize("block, code, what", [
+    ("G90 X45 Z-10 F0.2", "unsupported_g_code", "turning cycle"),
+    ("G92 X45 Z-10 F1.5", "unsupported_g_code", "threading cycle"),
+    ("G94 X20 Z-2 F0.2", "unsupported_g_code", "facing cycle"),
+    ("G91 G0 U-2", "unknown_g_code", "does not exist"),
+])
+def test_fanuc_lathe_g_code_system_a(block, code, what):
+    # G90/G92/G94 are box cycles on a system-A lathe, not distance mode, coordinate setting
+    # and feed per minute: refused, never read as the mill's codes.
+    prof = tc.ControlProfile("fanuc", machine="lathe")
+    assert prof.g_code_system_a and not tc.ControlProfile("fanuc").g_code_system_a
+    with pytest.raises(tc.ProgramError) as e:
+        tc.run(tc.Program.parse(FANUC_LATHE_START + block + "\nM30\n", "fanuc"), profile=prof)
+    assert e.value.code == code and e.value.line == 4 and what in e.value.message

@@ -56,6 +56,7 @@ ControlProfile profile_for(Dialect d, Machine machine) {
                 p.t_offsets = true;
                 p.length_axes = LengthAxes::all;
                 r.tip_convention = TipConvention::fanuc;
+                p.g_code_system_a = true;
             }
             break;
         }

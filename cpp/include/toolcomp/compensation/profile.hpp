@@ -219,6 +219,10 @@ struct ControlProfile {
     bool x_diameter = false;
     bool incremental_uw = false;
     bool t_offsets = false;
+    // Fanuc lathe G-code system A: G90, G92 and G94 are the turning, threading and facing
+    // cycles (refused: toolcomp does not run them), G91 does not exist (U and W are the
+    // increments). false: G90/G91 distance modes, G92 coordinate setting, G94 feed per minute.
+    bool g_code_system_a = false;
     // How a T word splits into tool, geometry offset and wear offset numbers. 0: T<tool><offset>
     // with two offset digits, the offset giving geometry and wear (Fanuc). 1..6: the 9/Series
     // installer formats: 1-3 geometry and wear from the last 1, 2 or 3 digits; 4-6 wear from

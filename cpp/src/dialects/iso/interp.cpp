@@ -135,6 +135,7 @@ void Interp::run_blocks() {
             }
         }
         BlockWords bw = collect_words(words, block.line, p.dialect);
+        if (fanuc && bw.g[g_nonmodal] == 40) fanuc_dwell(bw);
         alarm_text_.clear();
         if (fanuc && block.comment_count) alarm_text_ = p.comments(block)[0].text;
         if (block.statement_count) assignments(block);  // messages show the values after them
@@ -239,11 +240,40 @@ void Interp::check_words(const BlockWords& bw, int motion_to_be) {
         fail("unused_word", "R word with no g code that uses it", col('R'));
 }
 
+// Fanuc G04 X1.5 / U1.5 (lathes): the dwell in seconds, the X or U word not a move. Only one
+// of X, U and P may give it.
+void Interp::fanuc_dwell(BlockWords& bw) const {
+    for (char c : {'X', 'U'}) {
+        if (!bw.has(c) || (c == 'U' && !profile_.incremental_uw)) continue;  // U: lathes only
+        if (bw.has('P') || (c == 'U' && bw.has('X')))
+            fail("dwell_twice", "G4 with two dwell times (X, U or P): give it once", bw[c].column);
+        bw.set('P', bw[c].value * 1000, bw[c].column);  // P is in milliseconds
+        bw.remove(c);
+    }
+}
+
+// Fanuc lathes, G-code system A: G90, G92 and G94 name cycles there, not the mill's modes.
+void Interp::system_a_codes(const BlockWords& bw) const {
+    if (bw.g[g_distance] == 900)
+        fail("unsupported_g_code", "G90 is the turning cycle in G-code system A: not supported by toolcomp",
+             bw.g_column[g_distance]);
+    if (bw.g[g_distance] == 910)
+        fail("unknown_g_code", "G91 does not exist in G-code system A (U and W are the incremental words)",
+             bw.g_column[g_distance]);
+    if (bw.g[g_nonmodal] == 920)
+        fail("unsupported_g_code", "G92 is the threading cycle in G-code system A: not supported by toolcomp",
+             bw.g_column[g_nonmodal]);
+    if (bw.g[g_feed_mode] == 940)
+        fail("unsupported_g_code", "G94 is the facing cycle in G-code system A: not supported by toolcomp",
+             bw.g_column[g_feed_mode]);
+}
+
 bool Interp::execute(const BlockWords& bw) {
     block_tool_ = tool_;
     const int g0 = bw.g[g_nonmodal];
     const int motion_code = bw.g[g_motion];
     const bool axes = bw.has_axis();
+    if (profile_.g_code_system_a && bw.modal_codes()) system_a_codes(bw);
 
     // Which motion the axis words feed (LinuxCNC's "motion_to_be").
     const bool data_axes = axes_are_data(bw);

@@ -2,6 +2,7 @@
 // calls and returns, subprogram files on the search path, the computed values of words and
 // the parameter assignments of a block.
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -434,7 +435,10 @@ void Interp::call_program(Frame::Kind kind, const WordSlot& p_word, const WordSl
 
 void Interp::macro_call(std::span<const Word> words, int column) {
     // Argument specification I: A B C -> #1 #2 #3, I J K -> #4 #5 #6, D E F -> #7 #8 #9,
-    // H -> #11, M -> #13, Q R S T U V W X Y Z -> #17 ... #26. Unset arguments stay vacant.
+    // H -> #11, M -> #13, Q R S T U V W X Y Z -> #17 ... #26. Specification II: the n-th I, J
+    // and K (up to ten of each) -> #(4 + 3(n-1)), #(5 + 3(n-1)), #(6 + 3(n-1)); where the two
+    // name the same variable the later word wins. Unset arguments stay vacant; any other
+    // letter given twice is refused.
     static constexpr std::pair<char, int> kArgs[] = {
         {'A', 1}, {'B', 2}, {'C', 3}, {'I', 4}, {'J', 5}, {'K', 6}, {'D', 7}, {'E', 8}, {'F', 9}, {'H', 11},
         {'M', 13}, {'Q', 17}, {'R', 18}, {'S', 19}, {'T', 20}, {'U', 21}, {'V', 22}, {'W', 23}, {'X', 24},
@@ -442,6 +446,8 @@ void Interp::macro_call(std::span<const Word> words, int column) {
     std::array<double, 34> locals;
     locals.fill(ParameterStore::kVacant);
     WordSlot p_word, l_word;
+    int ijk_count[3] = {0, 0, 0};
+    std::uint32_t seen = 0;  // letters other than I, J, K
     for (const Word& w : words) {
         if (w.letter == 'N') continue;
         if (w.letter == 'G') {
@@ -454,9 +460,22 @@ void Interp::macro_call(std::span<const Word> words, int column) {
             slot = {.value = w.value, .column = w.column, .set = true};
             continue;
         }
+        if (w.letter == 'I' || w.letter == 'J' || w.letter == 'K') {
+            const int k = w.letter - 'I';
+            if (ijk_count[k] == 10)
+                fail("bad_macro_argument", std::string("More than ten ") + w.letter + " arguments in one G65 block",
+                     w.column);
+            locals[static_cast<std::size_t>(4 + k + 3 * ijk_count[k]++)] = w.value;
+            continue;
+        }
         bool ok = false;
         for (auto [letter, n] : kArgs)
             if (letter == w.letter) {
+                const std::uint32_t bit = std::uint32_t{1} << (letter - 'A');
+                if (seen & bit)
+                    fail("multiple_words", std::string("Multiple ") + static_cast<char>(w.letter + 32) + " words on one line",
+                         w.column);
+                seen |= bit;
                 locals[static_cast<std::size_t>(n)] = w.value;
                 ok = true;
             }

@@ -58,14 +58,26 @@ void Interp::g10(const BlockWords& bw) {
         }
     }
     if (p < 0 || p > 9) fail("g10_bad_p", "P value out of range (0-9) with " + which, col);
+    if (prog_.dialect == Dialect::fanuc) {
+        // Fanuc's G10 L20 sets the additional systems G54.1 P1-P48 and L2 P0 the external
+        // offset that shifts every system: neither is LinuxCNC's, neither is run here.
+        if (l == 20)
+            fail("unsupported_g10", "G10 L20 (the additional work coordinate systems G54.1) is not supported by toolcomp",
+                 col);
+        if (p == 0) fail("unsupported_g10", "G10 L2 P0 (the external work offset) is not supported by toolcomp", col);
+        if (p > 6) fail("g10_bad_p", "P value out of range (1-6) with G10 L2", col);
+        if (bw.has('R')) fail("unused_word", "R word with no code that uses it (G10 L2 sets no rotation here)",
+                              bw['R'].column);
+    }
     if (l == 2 && (bw.has('I') || bw.has('J'))) fail("g10_ij", "I J words not allowed with G10 L2", col);
     if (l == 20 && bw.has('R')) fail("g10_l20_r", "R not allowed in G10 L20", bw['R'].column);
     int n = p == 0 ? st_.coord_system : p;
     Vec6 value = g5x_[n - 1];
     double rotation = rotation_[n - 1];
-    if (l == 2) {  // the offset itself (absolute even in G91) and the rotation
+    if (l == 2) {  // the offset itself (LinuxCNC: absolute even in G91; Fanuc adds it in G91)
+        const bool add = st_.incremental && prog_.dialect == Dialect::fanuc;
         for (int i = 0; i < 6; ++i)
-            if (bw.has(kAxisLetter[i])) value[i] = axis_value(bw, i);
+            if (bw.has(kAxisLetter[i])) value[i] = (add ? value[i] : 0) + axis_value(bw, i);
         if (bw.has('R')) rotation = bw['R'].value;
     } else {
         // L20: the origin that gives the current point the programmed coordinates in system
@@ -138,14 +150,17 @@ void Interp::home(const BlockWords& bw, int code) {
         return;
     }
     // Through the intermediate point (axis words as usual) to the stored machine position;
-    // only the named axes go home, all of them when none is named.
+    // only the named axes go home, all of them when none is named. On lathes U and W name X
+    // and Z (G28 U0 W0: home from where the tool is).
     Vec6 mid = find_end(bw);
     straight(MotionKind::rapid, mid, std::nan(""));
     Vec6 target = mid;
     Vec6 home_prog = from_machine(stored);
     bool any = bw.has_axis();
+    const bool uw = profile_.incremental_uw;
     for (int i = 0; i < 6; ++i)
-        if (!any || bw.has(kAxisLetter[i])) target[i] = home_prog[i];
+        if (!any || bw.has(kAxisLetter[i]) || (uw && ((i == 0 && bw.has('U')) || (i == 2 && bw.has('W')))))
+            target[i] = home_prog[i];
     straight(MotionKind::rapid, target, std::nan(""));
 }
 
