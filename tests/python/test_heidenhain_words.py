@@ -1,6 +1,7 @@
 """Words of Heidenhain path blocks: a word the function does not take, an axis given twice
 (X twice, or X with IX), a TNC word toolcomp does not model, a Q number out of range, and a
 circle of radius 0 are errors at their line, never ignored or silently resolved."""
+import numpy as np
 import pytest
 
 import toolcomp as tc
@@ -56,8 +57,12 @@ def test_valid_words_are_accepted(body):
 
 
 def test_q_parameter_numbers_have_at_most_five_digits():
-    res = tc.run(tc.Program.parse(pgm("Q12345 = 7\nL X+Q12345 F100"), dialect="heidenhain"))
+    res = tc.run(tc.Program.parse(pgm("Q1999 = 7\nL X+Q1999 F100"), dialect="heidenhain"))
     assert res.path.end[-1, 0] == 7
+    # Q0 to Q1999 exist: a higher number is refused where it is used
+    assert error_of("Q12345 = 7")[:2] == ("q_out_of_range", 5)
+    assert error_of("Q1 = Q2000 + 1")[:2] == ("q_out_of_range", 5)
+    assert error_of("L X+Q2000 F100")[:2] == ("q_out_of_range", 5)
     assert error_of("Q123456 = 5")[:2] == ("q_syntax", 5)
     assert error_of("Q1 = Q123456 + 1")[:2] == ("q_syntax", 5)
     assert error_of("FN 0: Q123456 = +5")[:2] == ("q_syntax", 5)
@@ -83,3 +88,33 @@ def test_bad_number_is_an_error_with_its_text(body, shown):
         tc.run(tc.Program.parse(pgm(body), dialect="heidenhain"))
     assert (e.value.code, e.value.line) == ("bad_number_format", 5)
     assert f"Bad number '{shown}'" in e.value.message
+
+
+def test_q0_is_a_parameter_like_any_other():
+    # X+Q0 was read as X+1 (the sign alone).
+    res = tc.run(tc.Program.parse(pgm("Q0 = 5\nQ1 = 7\nL X+Q0 Y-Q1 F100"), dialect="heidenhain"))
+    np.testing.assert_allclose(res.path.end[-1, :2], [5, -7])
+
+
+@pytest.mark.parametrize("body", ["L X+Q108 F100", "Q1 = Q114 + 1", "FN 0: Q1 = +Q109"])
+def test_the_controls_own_q_parameters_are_not_read_as_zero(body):
+    # Q100-Q199 are set by the control (Q108 the tool radius, Q109 the tool axis, ...).
+    with pytest.raises(tc.ProgramError, match="set by the control") as e:
+        tc.run(tc.Program.parse(pgm(body), dialect="heidenhain"))
+    assert (e.value.code, e.value.line) == ("q_system", 5)
+
+
+def test_tool_call_without_a_number_keeps_the_tool():
+    # TOOL CALL Z S2000 changes the speed only: the tool (R2 here, DR-0.5 from its call) and
+    # its length stay. With DR given, the new delta replaces the old one.
+    head = "0 BEGIN PGM T MM\n1 TOOL DEF 1 L+10 R+2\n2 TOOL CALL 1 Z S1000 DR-0.5\n3 L X+0 Y-10 Z+0 R0 F100\n"
+    tail = "5 L X+0 Y+0 RL\n6 L X+10\n7 L X+20 Y+10 R0\n8 END PGM T MM\n"
+
+    def y_along(call):
+        p = tc.run(tc.Program.parse(head + f"4 {call}\n" + tail, dialect="heidenhain")).path
+        k = np.flatnonzero(p.line == 6)[-1]
+        return p.end[k, 1], p.tool_offset[k, 2]
+
+    assert y_along("TOOL CALL Z S2000") == (pytest.approx(1.5), 10)  # RL along +X: y = R + DR
+    assert y_along("TOOL CALL Z DR-0.2") == (pytest.approx(1.8), 10)
+    assert y_along("TOOL CALL Z DL+1") == (pytest.approx(1.5), 11)

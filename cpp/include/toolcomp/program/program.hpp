@@ -60,7 +60,8 @@ struct Token {
     bool has_value = false;  // a number was written
     bool sign_only = false;  // "DR+" / "DR-"
     std::string text;        // a quoted name, without the quotes; the text of a Q statement
-    int param = 0;           // a Q parameter in place of the number (X+Q5): its number
+    int param = 0;           // Heidenhain: a Q parameter in place of the number (X+Q5): its number + 1
+                             // (0: none); Sinumerik: see its lexer
     int column = 0;
     std::int32_t expr = -1;  // a computed value: index of its expression (Program::expression)
 

@@ -176,8 +176,14 @@ void Interp::tool_call(Tokens t) {
         else if (k == "F" && t[i].has_value)
             feed_ = t[i].value * (prog_.inch ? 2.54 : 1.0);
     }
-    const double dl = number(t, "DL").value_or(0), dr = number(t, "DR").value_or(0);
-    const double dr2 = number(t, "DR2").value_or(0);
+    // Without a tool number the tool in the spindle stays (S, F, the axis or deltas change):
+    // its data again, and the deltas of the TOOL CALL before unless this block gives new ones.
+    const bool same_tool = number_ < 0;
+    if (same_tool) number_ = tool_;
+    const double dl = number(t, "DL").value_or(same_tool ? call_dl_ : 0);
+    const double dr = number(t, "DR").value_or(same_tool ? call_dr_ : 0);
+    const double dr2 = number(t, "DR2").value_or(same_tool ? call_dr2_ : 0);
+    call_dl_ = dl, call_dr_ = dr, call_dr2_ = dr2;
     double length = 0, radius = 0, dr_tab = 0, dr2_tab = 0;
     if (number_ > 0) {
         if (!table_tool && tools_) table_tool = tools_->find(number_);
@@ -283,11 +289,26 @@ Interp::Tokens Interp::resolve(Tokens t, std::vector<Token>& scratch) const {
     scratch.assign(t.begin(), t.end());
     for (Token& k : scratch)
         if (k.param > 0) {
-            auto it = q_.find(k.param);
-            k.value = k.value * (it == q_.end() ? 0.0 : it->second);
+            k.value = k.value * q_value(k.param - 1, k.column);
             k.param = 0;
         }
     return scratch;
+}
+
+// A Q parameter's value (0 until set). Q0-Q1999 exist (iTNC 530 / TNC 640; the TNC 426 has
+// Q0-Q399); Q100-Q199 are set by the control itself (tool radius, tool axis, probe results,
+// ...), which toolcomp does not model: reading one is refused rather than read as 0.
+double Interp::q_value(int n, int column) const {
+    check_q(n, column);
+    if (n >= 100 && n <= 199)
+        fail("q_system", "Q" + std::to_string(n) + " is set by the control (Q100 to Q199): not modelled by toolcomp",
+             column);
+    auto it = q_.find(n);
+    return it == q_.end() ? 0.0 : it->second;
+}
+
+void Interp::check_q(int n, int column) const {
+    if (n < 0 || n > 1999) fail("q_out_of_range", "Q" + std::to_string(n) + " does not exist (Q0 to Q1999)", column);
 }
 
 // Runs the blocks with the program's own flow: labels (LBL n), subprogram calls (CALL LBL
@@ -326,10 +347,8 @@ bool Interp::run_blocks(const Program& prog, int depth) {
         if (it == labels.end()) fail("label_not_found", "LBL " + std::to_string(n) + " not found", at.column);
         return it->second;
     };
-    auto q = [this](int n) {
-        auto it = q_.find(n);
-        return it == q_.end() ? 0.0 : it->second;
-    };
+    int q_column = 0;  // the statement being run
+    auto q = [this, &q_column](int n) { return q_value(n, q_column); };
     std::vector<std::size_t> returns;
     std::map<std::size_t, int> repeats;  // CALL LBL .. REP m blocks: passes left
     std::vector<Token> scratch;          // a block's tokens with Q parameters replaced
@@ -380,6 +399,7 @@ bool Interp::run_blocks(const Program& prog, int depth) {
         }
         if (k0 == "FN" || k0 == "Q=") {
             QResult r;
+            q_column = t[0].column;
             try {
                 r = run_statement(t[0].text, q);
             } catch (const std::domain_error& e) {
@@ -388,7 +408,10 @@ bool Interp::run_blocks(const Program& prog, int depth) {
                 fail("q_syntax", std::string("Q parameter statement: ") + e.what(), t[0].column);
             }
             if (r.error) fail("fn14_error", "FN 14: ERROR " + std::to_string(*r.error), t[0].column);
-            if (r.assign) q_[*r.assign] = r.value;
+            if (r.assign) {
+                check_q(*r.assign, t[0].column);
+                q_[*r.assign] = r.value;
+            }
             pc = r.jump ? label(*r.jump, t[0]) : pc + 1;
             continue;
         }

@@ -66,6 +66,8 @@ private:
     void polar_arc(Tokens t);
     void rounding(Tokens t);
     void chamfer(Tokens t);
+    double q_value(int n, int column) const;  // a Q parameter read (refused where it is the control's)
+    void check_q(int n, int column) const;     // Q0-Q1999
     void surface_line(Tokens t);  // LN
     // LN's tool orientation TX TY TZ as the block is written: numbers, never Q parameters.
     void check_surface_line(Tokens raw) const;
@@ -126,6 +128,7 @@ private:
     bool m128_ = false;        // M128: tool orientation follows the program (TCPM)
     bool m107_ = false;        // M107: positive deltas allowed with 3D compensation
     double sum_dr_ = 0, sum_dr2_ = 0;  // ΣDR, ΣDR2 of the called tool (TOOL CALL + table)
+    double call_dl_ = 0, call_dr_ = 0, call_dr2_ = 0;  // the deltas of the last TOOL CALL block
     bool warned_normal_ = false;
     bool ended_ = false;               // M2 / M30
     std::map<int, double> q_;          // Q parameters (unset read as 0)

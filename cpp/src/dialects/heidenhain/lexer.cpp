@@ -134,7 +134,7 @@ private:
             std::string digits;
             while (i_ < s_.size() && ascii_digit(s_[i_])) digits.push_back(s_[i_++]);
             if (digits.size() > 5) fail("bad_word", "Q parameter number Q" + digits + " out of range", col());
-            t.param = std::stoi(digits);
+            t.param = std::stoi(digits) + 1;  // the Q number + 1: Q0 is a parameter too
             t.value = sign;
             t.has_value = true;
             if (i_ < s_.size() && !blank(s_[i_]) && s_[i_] != ';')
