@@ -109,6 +109,7 @@ struct BlockData {
 
 struct Modal {
     int motion = 0;  // 0 G0, 1 G1, 2 G2, 3 G3, 5 CIP, 6 CT
+    int feed_mode = 94;  // G94 mm/min, G95 mm/rev, G96 mm/rev at a constant cutting speed
     Plane plane = Plane::xy;
     bool incremental = false;
     bool inch = false;       // G70 / G700: geometry in inches
@@ -186,6 +187,8 @@ private:
     void move(MotionKind kind, const Vec3& end, const BlockData& b);
     void arc(const BlockData& b, const Vec3& end_prog);
     Motion motion_(MotionKind kind, const Vec3& end) const;
+    double feed_rate(const Vec3& end) const;  // mm/min of a feed move ending at `end`
+    double css_speed(double x) const;         // G96: rev/min at X (radius, mm); inf at the axis
     RadiusRequest radius_request() const;
     bool mirrored() const;  // the frame mirrors the working plane
     int file() const { return stack_.empty() ? 0 : stack_.back().file; }  // of the block being run
@@ -210,7 +213,9 @@ private:
     std::array<double, 3> abc_{0, 0, 0};
     Frame frame_;
     Vec3 zero_shift_ = Vec3::Zero();  // type P toolholder: table rotation
-    double feed_ = 0;                 // mm/min
+    double feed_ = 0;                 // F: mm/min (G94) or mm/rev (G95, G96)
+    double speed_ = 0;                // S: spindle speed, rev/min
+    double cutting_speed_ = 0;        // S under G96: m/min
     std::optional<Vec2> last_tangent_;  // direction at the end of the last plane move (CT)
 
     std::array<double, 1000> r_{};  // R0..R999

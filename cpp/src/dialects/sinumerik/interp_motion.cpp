@@ -57,7 +57,7 @@ Motion Interp::motion_(MotionKind kind, const Vec3& end) const {
     m.start = pos_;
     m.end = end;
     m.abc = abc_;
-    m.feed = kind == MotionKind::rapid ? std::numeric_limits<double>::quiet_NaN() : feed_;
+    m.feed = kind == MotionKind::rapid ? std::numeric_limits<double>::quiet_NaN() : feed_rate(end);
     m.line = line_;
     m.file = file();
     m.tool = tool_;
@@ -66,6 +66,26 @@ Motion Interp::motion_(MotionKind kind, const Vec3& end) const {
     m.radius = radius_request();
     m.unit = 1.0;
     return m;
+}
+
+// G95: F (mm/rev) times S; G96: times the speed that keeps the cutting speed at the X where
+// the move ends (LIMS, the speed limit, is refused elsewhere). Not known (NaN) with the
+// spindle at rest or at the axis under G96.
+double Interp::feed_rate(const Vec3& end) const {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    switch (st_.feed_mode) {
+        case 95: return speed_ > 0 ? feed_ * speed_ : nan;
+        case 96: {
+            const double rpm = css_speed(end.x());
+            return std::isfinite(rpm) && rpm > 0 ? feed_ * rpm : nan;
+        }
+        default: return feed_;
+    }
+}
+
+double Interp::css_speed(double x) const {
+    const double r = std::fabs(x);
+    return r > 0 ? cutting_speed_ * 1000 / (2 * kPi * r) : std::numeric_limits<double>::infinity();
 }
 
 RadiusRequest Interp::radius_request() const {
@@ -89,6 +109,12 @@ RadiusRequest Interp::radius_request() const {
 void Interp::frame_statement(const BlockData& b, const std::string& which, int column) {
     const bool additive = which[0] == 'A';
     const std::string base = additive ? which.substr(1) : which;
+    // Frames here act on the geometry axes X, Y, Z; a rotary axis in a frame statement (TRANS
+    // A10, SCALE B2, ROT takes none) would be left out without a word: refused.
+    for (const char a : {'A', 'B', 'C'})
+        if (b.has(a))
+            fail("unsupported_word", which + " on the rotary axis " + std::string(1, a) + " is not supported by toolcomp",
+                 b[a].column);
     Frame f = additive ? frame_ : Frame{};
     if (base == "TRANS") {
         Vec3 v = Vec3::Zero();
@@ -124,7 +150,8 @@ void Interp::frame_statement(const BlockData& b, const std::string& which, int c
 
 void Interp::execute(BlockData& b, int first_column) {
     // ---- G codes by group -----------------------------------------------------------------
-    int motion = -1, plane = -1, comp = -1, corner = -1, dist = -1, units = -1, nonmodal = -1, workoffset = -1;
+    int motion = -1, plane = -1, comp = -1, corner = -1, dist = -1, units = -1, nonmodal = -1, workoffset = -1,
+        feedmode = -1;
     auto setg = [&](int& slot, int code, int column) {
         if (slot >= 0 && slot != code)
             fail("12190", "12190 G functions G" + std::to_string(slot) + " and G" + std::to_string(code) +
@@ -141,7 +168,8 @@ void Interp::execute(BlockData& b, int first_column) {
             case 70: case 71: case 700: case 710: setg(units, g, column); break;
             case 4: case 9: case 53: case 153: case 25: case 26: setg(nonmodal, g, column); break;
             case 500: case 54: case 55: case 56: case 57: setg(workoffset, g, column); break;
-            case 60: case 64: case 94: case 95: case 96: case 97: case 601: case 602: case 603: break;
+            case 94: case 95: case 96: case 97: setg(feedmode, g, column); break;
+            case 60: case 64: case 601: case 602: case 603: break;
             case 641: case 642: case 643: case 644: case 645:
                 if (!warned_blending_) {
                     info("blending_not_modelled", "G" + std::to_string(g) +
@@ -181,6 +209,21 @@ void Interp::execute(BlockData& b, int first_column) {
     }
     // ---- feed, speed, tools ------------------------------------------------------------------
     if (b.has('F') && nonmodal != 4) feed_ = b['F'].v * (st_.inch_feed ? kMmPerInch : 1.0);
+    // ---- feed mode and spindle speed: G96's S is the cutting speed (m/min), else rev/min;
+    // G97 keeps the speed G96 had reached where the tool stands --------------------------------
+    if (feedmode == 97 && st_.feed_mode == 96) {
+        const double rpm = css_speed(pos_.x());
+        if (std::isfinite(rpm)) speed_ = rpm;
+    }
+    if (feedmode == 97) {
+        if (st_.feed_mode == 96) st_.feed_mode = 95;
+    } else if (feedmode >= 0) {
+        st_.feed_mode = feedmode;
+    }
+    if (b.has('S') && nonmodal != 4) {
+        if (b['S'].v < 0) fail("negative_spindle_speed", "Negative spindle speed S", b['S'].column);
+        (st_.feed_mode == 96 ? cutting_speed_ : speed_) = b['S'].v;
+    }
     if (b.has('T')) select_tool(b);
     bool m6 = false, stop = false, end = false, sub_end = false;
     for (auto [m, column] : b.m) {
@@ -265,6 +308,11 @@ void Interp::execute(BlockData& b, int first_column) {
         fail("unused_word", "I, J, K, CR=, AR=, I1=, TURN= need G2, G3, CIP or CT", first_column);
     if (nonmodal == 4) {
         if (!b.has('F') && !b.has('S')) fail("dwell_missing", "G4 needs the dwell time F (seconds) or S (revolutions)", first_column);
+        // G4 stands in a block of its own: axis words beside it would be a move the control
+        // does not make.
+        for (const char a : {'X', 'Y', 'Z', 'A', 'B', 'C'})
+            if (b.has(a)) fail("12190", "12190 G4 must be programmed in a block of its own", b[a].column);
+        if (motion >= 0) fail("12190", "12190 G4 must be programmed in a block of its own", first_column);
     } else if (!data_axes && (axes || rotary || (st_.motion >= 2 && arc_words))) {
         std::array<double, 3> abc = abc_;
         for (int i = 0; i < 3; ++i) {
