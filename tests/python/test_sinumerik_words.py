@@ -40,3 +40,14 @@ def test_frames_on_rotary_axes_are_refused(block):
     with pytest.raises(tc.ProgramError) as e:
         run(f"G17 G90 G71\nG0 X0 A0\n{block}\nG0 X0 A0\nM30\n")
     assert e.value.code == "unsupported_word" and e.value.line == 3
+
+
+@pytest.mark.parametrize("attrs, body, x", [
+    ("SAVE", "G91 G0 X1", 5.0),          # G90 again after the return: X5
+    ("", "G91 G0 X1", 6.0),              # without SAVE G91 stays: X5 is 5 more than X1
+    ("SAVE DISPLOF", "TRANS X100\nG90 G0 X0", 5.0),  # the frame comes back too
+])
+def test_proc_save_restores_the_callers_g_functions_and_frame(tmp_path, attrs, body, x):
+    (tmp_path / "SVB.SPF").write_text(f"PROC SVB {attrs}\n{body}\nM17\n")
+    p = tc.run(tc.Program.parse("G17 G90 G71\nSVB\nG0 X5\nM30\n", "sinumerik"), search_path=[tmp_path]).path
+    assert p.end[-1, 0] == x

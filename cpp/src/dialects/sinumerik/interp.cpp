@@ -321,6 +321,12 @@ bool Interp::ret() {
         return false;
     }
     Context& c = stack_.back();
+    if (c.saved) {  // PROC ... SAVE: the caller's G functions and frame again
+        if (st_.side != 0 && c.saved->first.side == 0)  // G40 again: the compensation ends here
+            sink_.control({ControlKind::radius_off, line_, Vec3::Zero(), file()});
+        st_ = c.saved->first;
+        frame_ = c.saved->second;
+    }
     if (c.passes_left > 0) {
         --c.passes_left;
         c.pc = 0;

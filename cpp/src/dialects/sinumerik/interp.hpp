@@ -143,6 +143,8 @@ private:
         int passes_left = 0;           // L.. P n: further passes
         int call_line = 0;
         int file = 0;  // Path::files index of prog
+        // PROC ... SAVE: the caller's modal G functions and frame, restored at the return.
+        std::optional<std::pair<Modal, Frame>> saved;
     };
 
     // ---- execution (interp.cpp) ----------------------------------------------------------

@@ -66,6 +66,7 @@ void Interp::block(std::span<const Token> t) {
     if (t[0].is("PROC")) {
         if (c.pc != 1 && c.executable_seen)
             fail("14500", "14500 Illegal DEF or PROC instruction in the program", t[0].column);
+        if (t[0].param == 1 && stack_.size() > 1) c.saved.emplace(st_, frame_);  // PROC ... SAVE
         return;
     }
     c.executable_seen = true;

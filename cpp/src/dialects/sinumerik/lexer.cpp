@@ -260,9 +260,16 @@ private:
                                      {line_, column});
                 }
             }
+            // Attributes after PROC: SAVE (the caller's modal G functions and frame come back at
+            // the return: param 1); DISPLOF and the like do nothing to the path.
+            while (i_ < s_.size() && s_[i_] != ';') {
+                if (ident_char(s_[i_])) {
+                    if (ident() == "SAVE") t.param = 1;
+                } else {
+                    ++i_;
+                }
+            }
             prog_.add_token(std::move(t));
-            // SAVE, DISPLOF ... attributes after PROC: nothing to do for the path.
-            while (i_ < s_.size() && s_[i_] != ';') ++i_;
             return;
         }
         skip();
