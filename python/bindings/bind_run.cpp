@@ -195,6 +195,9 @@ void bind_run(py::module_& m) {
         .def_readwrite("g_code_system_a", &ControlProfile::g_code_system_a,
                        "Fanuc lathe G-code system A: G90, G92 and G94 are the turning, threading and facing cycles "
                        "(refused), G91 does not exist (U and W are the increments)")
+        .def_readwrite("modal_offset_numbers", &ControlProfile::modal_offset_numbers,
+                       "H and D are modal offset numbers (Fanuc): G43/G44 without H take the last H, G41/G42 without "
+                       "D the last D, both 0 at the start (no offset); False: the tool in the spindle (LinuxCNC)")
         .def_readwrite("t_format", &ControlProfile::t_format,
                        "how a T word splits into tool, geometry and wear offset numbers: 0 T<tool><two offset "
                        "digits> (Fanuc); 1-3 geometry and wear from the last 1, 2 or 3 digits; 4-6 wear from "

@@ -245,6 +245,7 @@ class ControlProfile:
     incremental_uw: bool
     t_offsets: bool
     g_code_system_a: bool
+    modal_offset_numbers: bool
     t_format: int
     wear_sign: float
     tool_length_const: int

@@ -74,3 +74,32 @@ def test_linuxcnc_abort_comment():
     assert len(res.path) == 0 and res.diagnostics[-1].message == "x"
     # Fanuc has no such comment: a comment like any other.
     assert len(run("O1\nG21 G90\nG0 X1\n(ABORT, no)\nG0 X5\nM30\n").path) == 2
+
+
+TOOLS = tc.ToolTable.parse("T1 P1 Z25 D10\nT2 P2 Z40 D6\n", "linuxcnc")
+
+
+@pytest.mark.parametrize("blocks, z_offset", [
+    ("T1 M6\nG43 G0 Z5", 0),            # no H yet: H0, no offset (LinuxCNC: the tool's 25)
+    ("T1 M6\nG43 H1 G0 Z5", 25),
+    ("G43 H2 G0 Z5\nG49\nG43 G0 Z5", 40),  # the last H stays
+    ("T1 M6\nG43 H0 G0 Z5", 0),          # H0 is no offset (LinuxCNC: the tool in the spindle)
+])
+def test_fanuc_h_numbers_are_modal(blocks, z_offset):
+    p = tc.run(tc.Program.parse(f"O1\nG21 G90\n{blocks}\nM30\n", "fanuc"), tools=TOOLS).path
+    assert p.tool_offset[-1, 2] == z_offset
+
+
+def test_linuxcnc_takes_the_spindle_tool_without_h():
+    p = tc.run(tc.Program.parse("G21 G90\nT1 M6\nG43 G0 Z5\nM2\n", "linuxcnc"), tools=TOOLS).path
+    assert p.tool_offset[-1, 2] == 25
+
+
+@pytest.mark.parametrize("first, y", [("G41 D2 G1 X0 Y0 F100", 3.0), ("G41 G1 X0 Y0 F100", 0.0)])
+def test_fanuc_d_numbers_are_modal(first, y):
+    # Along +X under G41 the tool centre is r to the left (+Y): D2 gives r 3; without any D
+    # the radius is D0's, none. After G40 a G41 without D takes the last D again.
+    text = f"O1\nG21 G90\nT1 M6\nG0 X-10 Y-10\n{first}\nX50\nG40 G1 X60 Y-10\nG41 G1 X70 Y0\nX100\nG40 X110 Y-10\nM30\n"
+    p = tc.run(tc.Program.parse(text, "fanuc"), tools=TOOLS).path
+    assert p.end[np.flatnonzero(p.line == 6)[-1], 1] == pytest.approx(y)
+    assert p.end[np.flatnonzero(p.line == 9)[-1], 1] == pytest.approx(y)

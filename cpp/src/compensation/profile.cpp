@@ -27,6 +27,7 @@ ControlProfile profile_for(Dialect d, Machine machine) {
             // Fanuc "tool length compensation type A": the H value acts on Z; G44 subtracts.
             p.length_axes = LengthAxes::z_only;
             p.length_subtract_word = true;
+            p.modal_offset_numbers = true;
             // Cutter compensation C: start-up type A, intersections at inside and obtuse
             // outside corners, extension blocks at acute outside corners, any plane, no arc
             // in the start-up block. Alarm texts as printed by 0i/30i series controls.

@@ -223,6 +223,10 @@ struct ControlProfile {
     // cycles (refused: toolcomp does not run them), G91 does not exist (U and W are the
     // increments). false: G90/G91 distance modes, G92 coordinate setting, G94 feed per minute.
     bool g_code_system_a = false;
+    // H and D are modal offset numbers (Fanuc): G43/G44 without H take the last H, G41/G42
+    // without D the last D, both 0 at the start, and H0/D0 are no offset. false: without H or D
+    // the tool in the spindle gives them, and H0 is that tool too (LinuxCNC).
+    bool modal_offset_numbers = false;
     // How a T word splits into tool, geometry offset and wear offset numbers. 0: T<tool><offset>
     // with two offset digits, the offset giving geometry and wear (Fanuc). 1..6: the 9/Series
     // installer formats: 1-3 geometry and wear from the last 1, 2 or 3 digits; 4-6 wear from

@@ -47,13 +47,16 @@ void Interp::radius_comp(const BlockWords& bw, int code) {
         set_radius_from_offset();
         return;
     } else {
-        int tool = spindle_tool();
+        // The D number: modal on Fanuc (D0 at the start, no radius), else the spindle's tool
+        // when the block has none.
+        int tool = profile_.modal_offset_numbers ? last_d_ : spindle_tool();
         if (bw.has('D')) {
             double d = bw['D'].value;
             if (!d_word_whole(d, prog_.dialect))
                 fail("comp_d_not_integer", name + " requires D word to be a whole number", bw['D'].column);
             if (d < -0.5) fail("comp_negative_d", "Negative d word tool radius index used", bw['D'].column);
             tool = int_value(d);
+            if (profile_.modal_offset_numbers) last_d_ = tool;
         }
         if (tool != 0 && tools_) {
             const Tool* t = tools_->find(tool);

@@ -123,8 +123,14 @@ void Interp::length_comp(const BlockWords& bw, int code) {
             break;
         case 430:
         case 440: {
-            int t = bw.has('H') ? h_tool() : spindle_tool();
-            if (t == 0 && bw.has('H')) t = spindle_tool();  // H0: the tool in the spindle
+            int t = 0;
+            if (profile_.modal_offset_numbers) {  // Fanuc: the H number is modal, H0 no offset
+                if (bw.has('H')) last_h_ = h_tool();
+                t = last_h_;
+            } else {
+                t = bw.has('H') ? h_tool() : spindle_tool();
+                if (t == 0 && bw.has('H')) t = spindle_tool();  // H0: the tool in the spindle
+            }
             Vec6 v = tool_offset_of(t, bw.has('H') ? bw['H'].column : col);
             change_offset(tlo_, code == 440 ? Vec6(-v) : v);
             break;
