@@ -103,3 +103,13 @@ def test_fanuc_d_numbers_are_modal(first, y):
     p = tc.run(tc.Program.parse(text, "fanuc"), tools=TOOLS).path
     assert p.end[np.flatnonzero(p.line == 6)[-1], 1] == pytest.approx(y)
     assert p.end[np.flatnonzero(p.line == 9)[-1], 1] == pytest.approx(y)
+
+
+@pytest.mark.parametrize("dialect", ["linuxcnc", "fanuc"])
+def test_g64_blending_is_said_once(dialect):
+    text = "O1\nG21 G90\nG64 P0.01\nG1 X1 F100\nG64\nG1 X2\nG61\nM30\n"
+    if dialect == "linuxcnc":
+        text = text.replace("O1\n", "").replace("M30", "M2")
+    res = run(text, dialect)
+    infos = [(d.code, d.severity, d.line) for d in res.diagnostics]
+    assert infos == [("blending_not_modelled", "info", 3 if dialect == "fanuc" else 2)]

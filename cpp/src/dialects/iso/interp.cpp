@@ -451,7 +451,15 @@ bool Interp::execute(const BlockWords& bw) {
             set_coord_system(c < 590 ? (c - 530) / 10 : 6 + (c - 590));
         }
         // 16-18: path control, distance modes, retract mode
-        if (bw.g[g_path_control] >= 0) st_.path_control = bw.g[g_path_control];
+        if (bw.g[g_path_control] >= 0) {
+            st_.path_control = bw.g[g_path_control];
+            if (st_.path_control == 640 && !warned_blending_) {  // once a run
+                info("blending_not_modelled",
+                     "G64 blending is a tolerance of the executed path: toolcomp returns the programmed path",
+                     bw.g_column[g_path_control]);
+                warned_blending_ = true;
+            }
+        }
         if (bw.g[g_distance] >= 0) st_.incremental = bw.g[g_distance] == 910;
         if (bw.g[g_arc_distance] >= 0) st_.arc_absolute = bw.g[g_arc_distance] == 901;
         if (bw.g[g_retract] >= 0 && !profile_.t_offsets) st_.retract_initial = bw.g[g_retract] == 980;

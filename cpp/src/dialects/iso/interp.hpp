@@ -188,6 +188,7 @@ private:
     bool comp_moved_ = false;  // a move made since compensation came on (else G40 sets no rule)
     std::size_t moves_ = 0;    // moves given to the sink (a block that adds none moves nothing)
     int last_h_ = 0, last_d_ = 0;  // the modal H and D numbers (ControlProfile::modal_offset_numbers)
+    bool warned_blending_ = false;  // G64's info given
     bool comp_on() const { return radius_.side != 0; }
     void system_a_codes(const BlockWords& bw) const;  // Fanuc lathes: G90/G92/G94 are cycles
     void fanuc_dwell(BlockWords& bw) const;           // G04 X / U: the dwell, not a move
