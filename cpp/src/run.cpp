@@ -1,5 +1,6 @@
 #include "toolcomp/run.hpp"
 
+#include <cmath>
 #include <algorithm>
 #include <new>
 #include <optional>
@@ -25,11 +26,31 @@ namespace {
                      "The " + std::string(dialect_name(d)) + " dialect is not supported by toolcomp yet");
 }
 
-// Sends every move to two consumers.
+// Whether every number of a move the Paths keep is finite (x * 0 is 0 for a finite x, NaN
+// else; the feed may be NaN, "not known", but not infinite).
+bool finite_move(const Motion& m) {
+    // In millimetres, as the Paths keep them (a G20 program's values times 25.4).
+    const double u = m.unit;
+    double z = 0;
+    for (int i = 0; i < 3; ++i) z += (m.start[i] * u) * 0 + (m.end[i] * u) * 0 + (m.tool_offset[i] * u) * 0 + m.abc[i] * 0;
+    if (m.is_arc()) z += (m.center.x() * u) * 0 + (m.center.y() * u) * 0 + (m.center.z() * u) * 0;
+    return z == 0 && !std::isinf(m.feed);
+}
+
+[[noreturn]] void refuse_not_finite(const Motion& m) {
+    throw ProgramError("not_finite",
+                       "A position, offset or feed rate of this move is not a finite number (an overflow of "
+                       "the program's values)",
+                       {m.line, 0, {}, m.file});
+}
+
+// Sends every move to two consumers, once its numbers are known to be finite.
 class Tee : public MotionSink {
 public:
     Tee(MotionSink& a, MotionSink& b) : a_(a), b_(b) {}
     void push(const Motion& m) override {
+        if (!finite_move(m)) [[unlikely]]
+            refuse_not_finite(m);
         a_.push(m);
         b_.push(m);
     }

@@ -1,5 +1,7 @@
 #include "toolcomp/stream.hpp"
 
+#include <algorithm>
+
 #include <unistd.h>
 
 #include <utility>
@@ -38,7 +40,9 @@ public:
 private:
     void fresh() {
         cur_ = Path();
-        cur_.reserve(s_.options_.chunk);
+        // Room for a chunk, up to a million rows: a larger chunk grows as it fills (a huge
+        // `chunk` must not ask for its whole size before the first segment).
+        cur_.reserve(std::min<std::size_t>(s_.options_.chunk, std::size_t{1} << 20));
     }
     void hand_over() {
         cur_.files = files_;

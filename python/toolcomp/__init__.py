@@ -138,6 +138,8 @@ def iter_run(program, tools=None, *, chunk=1_000_000, dialect=None, strict=True,
     ``files`` once it has ended; ``close()`` (or leaving a ``with`` block) stops the run."""
     if chunk < 1:
         raise ValueError("chunk must be at least 1")
+    if not 1 <= piece_bytes <= 2**30:
+        raise ValueError("piece_bytes must be from 1 to 2**30 (1 GiB)")
     tools, search_path, parameters = _run_inputs(tools, units, search_path, parameters)
     if isinstance(program, (str, _os.PathLike)):
         return _core.iter_run_file(_os.fspath(program), dialect, tools, strict=strict, block_delete=block_delete,

@@ -185,7 +185,9 @@ void check_profile(const ControlProfile& p) {
     at_least("arc_spiral_hard_factor", p.arc_spiral_hard_factor, 0);
     for (double v : p.arc_min_radius) at_least("arc_min_radius", v, 0);
     at_least("inverse_time_min_rate", p.inverse_time_min_rate, 0);
-    if (!std::isfinite(p.wear_sign)) bad("wear_sign", "a finite number (1 adds the wear, -1 subtracts it)", p.wear_sign);
+    if (p.wear_sign != 1 && p.wear_sign != -1) bad("wear_sign", "1 (the wear added) or -1 (subtracted)", p.wear_sign);
+    if (r.overcut_neighbours > 1000) bad("radius.overcut_neighbours", "at most 1000", r.overcut_neighbours);
+    if (r.lookahead > 1000) bad("radius.lookahead", "at most 1000", r.lookahead);
     if (p.t_format < 0 || p.t_format > 6) bad("t_format", "0 (Fanuc) or a 9/Series format 1-6", p.t_format);
     if (p.tool_length_type < 0 || p.tool_length_type > 2) bad("tool_length_type", "0, 1 or 2", p.tool_length_type);
     const int c = p.tool_length_const < 0 ? -p.tool_length_const : p.tool_length_const;

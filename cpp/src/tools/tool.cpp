@@ -59,6 +59,19 @@ void validate_tool(const Tool& t) {
         if (e.orientation < 0 || e.orientation > 9)
             throw ToolTableError("tool_bad_orientation",
                                  who + ": orientation " + std::to_string(e.orientation) + " is outside 0..9");
+        // Every number finite, the sums the runs use too (a NaN radius would compensate nothing
+        // without a word).
+        double z = 0;
+        for (int k = 0; k < 3; ++k)
+            z += e.length[k] * 0 + e.length_wear[k] * 0 + (e.length[k] + e.length_wear[k]) * 0 + e.rotary[k] * 0 +
+                 e.uvw[k] * 0;
+        for (double v : {e.radius, e.corner_radius, e.radius_wear, e.corner_radius_wear, e.front_angle, e.back_angle,
+                         e.effective_radius(), e.effective_corner_radius()})
+            z += v * 0;
+        if (z != 0)
+            throw ToolTableError("tool_bad_value",
+                                 who + " D" + std::to_string(e.number) + ": a value (or its sum with the wear) is not a "
+                                                                          "finite number");
         for (std::size_t j = 0; j < i; ++j)
             if (t.edges[j].number == e.number)
                 throw ToolTableError("tool_duplicate_edge",
