@@ -13,6 +13,7 @@ the order), so a file users own is never rewritten differently than asked.
 """
 from __future__ import annotations
 
+import math
 import os
 import re
 import tempfile
@@ -21,23 +22,26 @@ from ._errors import ParseError
 
 __all__ = ["read_var", "write_var"]
 
-_LINE = re.compile(r"^\s*(\d+)\s+([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*$")
+_LINE = re.compile(r"^\s*(\d+)\s+([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*$", re.ASCII)
 
 
 def _parse(text: str, path: str) -> list[tuple[int | None, str]]:
     rows: list[tuple[int | None, str]] = []
     last = 0
     for lineno, line in enumerate(text.splitlines(), 1):
-        m = _LINE.match(line)
+        m = _LINE.match(line.lstrip("\ufeff") if lineno == 1 else line)  # a UTF-8 byte order mark
         if not m:
             rows.append((None, line))
             continue
         n = int(m.group(1))
+        if not math.isfinite(float(m.group(2))):
+            raise ParseError(f"Parameter #{n} is not a finite number ({m.group(2)}) in {path}", "parameter_bad_value",
+                             lineno, 1)
+        if n < 1 or n > 5601:
+            raise ParseError(f"Parameter number out of range: {n} in {path}", "parameter_out_of_range", lineno, 1)
         if n <= last:
             raise ParseError(f"Parameter file out of order: #{n} after #{last} in {path}", "parameter_file_order",
                              lineno, 1)
-        if n > 5601:
-            raise ParseError(f"Parameter number out of range: {n} in {path}", "parameter_out_of_range", lineno, 1)
         last = n
         rows.append((n, line))
     return rows
@@ -61,7 +65,7 @@ def read_var(path, max_bytes=MAX_VAR_BYTES) -> dict[int, float]:
     out = {}
     for n, line in _parse(text, path):
         if n is not None:
-            out[n] = float(line.split()[1])
+            out[n] = float(_LINE.match(line.lstrip("\ufeff")).group(2))
     return out
 
 
@@ -81,9 +85,11 @@ def write_var(path, values: dict[int, float]) -> None:
     newline = "\r\n" if "\r\n" in text else "\n"
     rows = _parse(text, path)
     todo = {int(k): float(v) for k, v in values.items()}
-    for n in todo:
+    for n, v in todo.items():
         if not 1 <= n <= 5601:
             raise ValueError(f"parameter number out of range: {n}")
+        if not math.isfinite(v):
+            raise ValueError(f"parameter #{n} is not a finite number: {v}")
     out: list[str] = []
     for n, line in rows:
         if n is not None:
@@ -95,12 +101,19 @@ def write_var(path, values: dict[int, float]) -> None:
     for m in sorted(todo):
         out.append(f"{m}\t{todo[m]:f}")
     body = newline.join(out) + (newline if out else "")
-    folder = os.path.dirname(os.path.abspath(path))
+    path = os.path.realpath(path)  # a link stays a link: its target is the file written
+    folder = os.path.dirname(path)
+    try:
+        mode = os.stat(path).st_mode & 0o7777
+    except FileNotFoundError:
+        mode = None
     fd, tmp = tempfile.mkstemp(prefix=".toolcomp-", suffix=".var", dir=folder)
     try:
         with os.fdopen(fd, "w", encoding="utf-8", errors="surrogateescape", newline="") as f:
             f.write(body)
             f.flush()
+            if mode is not None:  # the file keeps its permissions
+                os.fchmod(f.fileno(), mode)
             os.fsync(f.fileno())
         os.replace(tmp, path)
     except BaseException:

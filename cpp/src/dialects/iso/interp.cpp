@@ -4,6 +4,7 @@
 // modes, retract mode, G10/G28/G30/G92, motion, program stop/end.
 #include <cctype>
 #include <cmath>
+#include <stdexcept>
 
 #include "interp.hpp"
 #include "toolcomp/program/source_files.hpp"
@@ -30,10 +31,56 @@ Interp::Interp(const Program& prog, const ToolTable* tools, const ControlProfile
       params_(prog.dialect == Dialect::fanuc) {
     if (prog.dialect == Dialect::linuxcnc) syntax_ = &expr::linuxcnc_syntax();
     if (prog.dialect == Dialect::fanuc) syntax_ = &expr::fanuc_syntax();
-    params_.load(opts.parameters);
     for (auto& o : g5x_) o.setZero();
     st_.inch = profile.startup_inch;
     st_.diameter = profile.x_diameter;
+    load_parameters(opts.parameters);
+}
+
+// The start values of the numbered parameters (a .var file). LinuxCNC keeps the machine's
+// state there too, and takes it back at start: the G28/G30 positions (#5161-#5166,
+// #5181-#5186), the G92 offsets (#5210, #5211-#5216), the coordinate system in use (#5220)
+// and the G54-G59.3 origins and XY rotations (#5221 + 20 n ... +9), in the units the program
+// starts in; the machine stands at its zero. A value that is not finite, or a number the
+// dialect does not keep, is refused, never dropped.
+void Interp::load_parameters(const ParameterValues& values) {
+    for (const auto& [n, v] : values) {
+        if (!std::isfinite(v))
+            throw std::invalid_argument("parameters: #" + std::to_string(n) + " is not a finite number");
+        if (!params_.stored(n))
+            throw std::invalid_argument("parameters: #" + std::to_string(n) + " is not a parameter of the " +
+                                        std::string(dialect_name(prog_.dialect)) + " dialect");
+    }
+    params_.load(values);
+    if (params_.fanuc()) return;
+    auto value = [&](int n) {
+        auto it = values.find(n);
+        return it == values.end() ? 0.0 : it->second;
+    };
+    for (int j = 0; j < 6; ++j) {
+        g28_[j] = value(5161 + j);
+        g30_[j] = value(5181 + j);
+        g92_saved_[j] = value(5211 + j);
+        for (int cs = 0; cs < 9; ++cs) g5x_[static_cast<std::size_t>(cs)][j] = value(5221 + 20 * cs + j);
+    }
+    for (int cs = 0; cs < 9; ++cs) rotation_[static_cast<std::size_t>(cs)] = value(5230 + 20 * cs);
+    for (int n : {5167, 5168, 5169, 5187, 5188, 5189, 5217, 5218, 5219})
+        if (value(n) != 0)
+            throw std::invalid_argument("parameters: #" + std::to_string(n) + " is a U, V or W axis value, which toolcomp does not run");
+    for (int cs = 0; cs < 9; ++cs)
+        for (int j = 6; j < 9; ++j)
+            if (value(5221 + 20 * cs + j) != 0)
+                throw std::invalid_argument("parameters: #" + std::to_string(5221 + 20 * cs + j) +
+                                            " is a U, V or W axis value, which toolcomp does not run");
+    g92_on_ = value(5210) != 0;
+    g92_ = g92_on_ ? g92_saved_ : Vec6::Zero();
+    if (values.count(5220)) {
+        const double c = value(5220);
+        if (c != std::floor(c) || c < 1 || c > 9)
+            throw std::invalid_argument("parameters: #5220 (the coordinate system in use) must be 1 to 9");
+        st_.coord_system = static_cast<int>(c);
+    }
+    pos_ = from_machine(Vec6::Zero());
 }
 
 // G20/G21: everything the interpreter keeps in program units is converted, so the machine

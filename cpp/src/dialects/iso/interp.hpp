@@ -191,6 +191,7 @@ private:
     bool warned_blending_ = false;  // G64's info given
     bool comp_on() const { return radius_.side != 0; }
     void system_a_codes(const BlockWords& bw) const;  // Fanuc lathes: G90/G92/G94 are cycles
+    void load_parameters(const ParameterValues& values);  // start values, the machine's state among them
     void fanuc_dwell(BlockWords& bw) const;           // G04 X / U: the dwell, not a move
     void inverse_time_rate(double feed);
 
