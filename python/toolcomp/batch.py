@@ -33,6 +33,8 @@ def run_many(programs: Iterable[Any], tools: Any = None, *, workers: Optional[in
     ``return_exceptions`` is true: then the error object takes that program's place."""
     from . import ToolTable, run  # the package's own run (paths, units, search path)
 
+    if isinstance(programs, (str, bytes, os.PathLike)):
+        raise TypeError("run_many takes a list of programs or paths; for one program use toolcomp.run")
     programs = list(programs)
     if isinstance(tools, (str, os.PathLike)):
         tools = ToolTable.read(os.fspath(tools), units=kwargs.pop("units", "mm"))

@@ -52,7 +52,11 @@ def cmd_convert(args) -> int:
     if os.path.exists(args.output) and not args.force:
         print(f"toolcomp tools convert: {args.output} exists (use --force to replace it)", file=sys.stderr)
         return 2
-    table.write(args.output)  # temporary file, fsync, rename: the old file is never half-written
+    try:
+        table.write(args.output)  # temporary file, fsync, rename: the old file is never half-written
+    except (tc.Error, ValueError, OSError) as exc:  # a format that cannot hold it, an unknown suffix, no folder
+        print(f"toolcomp tools convert: cannot write {args.output}: {exc}", file=sys.stderr)
+        return 1
     return 0
 
 

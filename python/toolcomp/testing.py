@@ -14,6 +14,8 @@ from __future__ import annotations
 
 from typing import Optional
 
+import math
+
 import numpy as np
 
 from . import _core
@@ -30,6 +32,15 @@ def assert_no_errors(res: "_core.Result", warnings: bool = False) -> None:
         raise AssertionError("program diagnostics:\n" + "\n".join(_format(d) for d in bad))
 
 
+def _check(name: str, value, *, positive: bool = False) -> float:
+    """A tolerance or radius the assertion can test against: finite, >= 0 (> 0 if
+    ``positive``). A NaN would make every comparison false: the assertion would pass."""
+    v = float(value)
+    if not math.isfinite(v) or v < 0 or (positive and v == 0):
+        raise ValueError(f"{name} must be a finite number {'> 0' if positive else '>= 0'}, not {value!r}")
+    return v
+
+
 def _points(path: "_core.Path", tolerance: float, tool_offset: bool):
     pts, seg = path.sample(tolerance)
     if tool_offset and len(seg):
@@ -42,7 +53,9 @@ def assert_within(path: "_core.Path", box, *, tolerance: float = 0.001, tool_off
     ((xmin, ymin, zmin), (xmax, ymax, zmax)) in path coordinates (plus the tool length
     offset with ``tool_offset=True``)."""
     lo, hi = (np.asarray(b, dtype=float) for b in box)
-    pts, seg = _points(path, tolerance, tool_offset)
+    if not (np.isfinite(lo).all() and np.isfinite(hi).all()) or (lo > hi).any():
+        raise ValueError(f"box must be two finite corners, the first not above the second: {box!r}")
+    pts, seg = _points(path, _check("tolerance", tolerance, positive=True), tool_offset)
     out = np.any((pts < lo - 1e-9) | (pts > hi + 1e-9), axis=1)
     if out.any():
         i = int(np.argmax(out))
@@ -109,6 +122,8 @@ def assert_no_gouge(res: "_core.Result", contour, radius: float, *, tol: float =
     compensation on are checked; the first one that comes too close (in path order) is
     reported with its line and the point where it comes closest."""
     path = res.path if hasattr(res, "path") else res
+    radius, tol = _check("radius", radius, positive=True), _check("tol", tol)
+    tolerance = _check("tolerance", tolerance, positive=True)
     c = _polyline(contour)
     a, b, centre, turn, seg = _xy_elements(path, tolerance)
     keep = np.asarray(path.side)[seg] != 0
@@ -130,6 +145,7 @@ def assert_no_gouge(res: "_core.Result", contour, radius: float, *, tol: float =
 def assert_paths_close(a: "_core.Path", b: "_core.Path", tol: float = 1e-6, *,
                        what: Optional[str] = None) -> None:
     """Same segments (kind, end points, arc centres, turns) within ``tol`` mm."""
+    tol = _check("tol", tol)
     name = f"{what}: " if what else ""
     if len(a) != len(b):
         raise AssertionError(f"{name}{len(a)} segments against {len(b)}")
