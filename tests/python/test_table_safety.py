@@ -200,3 +200,29 @@ def test_reading_never_modifies_the_file_or_the_folder(tmp_path, name):
     for _ in range(3):
         tc.ToolTable.read(path)
     assert (path.read_bytes(), os.stat(path).st_mtime_ns, sorted(os.listdir(tmp_path))) == before
+
+
+def test_a_table_does_not_overwrite_a_file_changed_since_it_was_read(tmp_path):
+    path = tmp_path / "tools.tbl"
+    path.write_text("T1 P1 Z25 D10 ;mill\n")
+    table = tc.ToolTable.read(path)
+    with open(path, "a") as f:  # an operator adds a tool meanwhile
+        f.write("T9 P9 Z99 D1 ;operator\n")
+    with pytest.raises(tc.ToolTableError) as e:
+        table.write(path)
+    assert e.value.code == "table_changed_on_disk"
+    assert "T9 P9" in path.read_text()  # their change is still there
+    again = tc.ToolTable.read(path)  # read again: the write goes through, twice in a row
+    again.write(path)
+    again.write(path)
+    assert 9 in tc.ToolTable.read(path).numbers
+
+
+def test_writing_through_a_link_keeps_the_link(tmp_path):
+    real = tmp_path / "real.tbl"
+    real.write_text("T1 P1 Z25 D10 ;mill\n")
+    link = tmp_path / "link.tbl"
+    link.symlink_to(real)
+    table = tc.ToolTable.read(link)
+    table.write(link)
+    assert link.is_symlink() and tc.ToolTable.read(real).numbers == [1]

@@ -13,8 +13,12 @@
 #include "toolcomp/tools/tool_table.hpp"
 
 #include <cerrno>
+#include <climits>
+#include <cstdint>
+#include <optional>
 #include <cstdio>
 #include <cstring>
+#include <cstdlib>
 #include <fcntl.h>
 #include <string>
 #include <sys/file.h>
@@ -27,6 +31,20 @@ namespace {
 
 [[noreturn]] void fail(const std::string& what, const std::string& path, int err) {
     throw ToolTableError("table_file_error", what + " '" + path + "': " + std::strerror(err));
+}
+
+// The file a path names, links resolved (the path itself when it does not exist yet).
+std::string real_path(const std::string& path) {
+    char buf[PATH_MAX];
+    return ::realpath(path.c_str(), buf) ? std::string(buf) : path;
+}
+
+std::optional<ToolTable::FileStamp> stamp_of(const std::string& real) {
+    struct stat st {};
+    if (::stat(real.c_str(), &st) != 0) return std::nullopt;
+    return ToolTable::FileStamp{real, static_cast<std::uint64_t>(st.st_dev), static_cast<std::uint64_t>(st.st_ino),
+                                static_cast<std::uint64_t>(st.st_size),
+                                static_cast<std::int64_t>(st.st_mtim.tv_sec) * 1'000'000'000 + st.st_mtim.tv_nsec};
 }
 
 std::string read_all(const std::string& path, std::uint64_t max_bytes) {
@@ -95,8 +113,12 @@ private:
 ToolTable read_tool_table_file(const std::string& path, std::optional<TableFormat> format, LengthUnit units,
                                std::uint64_t max_bytes) {
     const TableFormat f = format ? *format : table_format_from_path(path);
+    const std::string real = real_path(path);
+    const auto stamp = stamp_of(real);
     const std::string text = read_all(path, max_bytes);
-    return read_tool_table(text, f, units);
+    ToolTable table = read_tool_table(text, f, units);
+    table.set_file_stamp(stamp);
+    return table;
 }
 
 void write_tool_table_file(const ToolTable& table, const std::string& path, std::optional<TableFormat> format) {
@@ -104,10 +126,21 @@ void write_tool_table_file(const ToolTable& table, const std::string& path, std:
     // Format first: an unrepresentable table must not touch the file system at all.
     const std::string data = write_tool_table(table, f);
 
-    const auto slash = path.find_last_of('/');
-    const std::string dir = slash == std::string::npos ? "." : (slash == 0 ? "/" : path.substr(0, slash));
-    const std::string base = slash == std::string::npos ? path : path.substr(slash + 1);
-    const WriterLock lock(path);
+    // A link stays a link: the file it names is replaced.
+    const std::string target = real_path(path);
+    const auto slash = target.find_last_of('/');
+    const std::string dir = slash == std::string::npos ? "." : (slash == 0 ? "/" : target.substr(0, slash));
+    const std::string base = slash == std::string::npos ? target : target.substr(slash + 1);
+    const WriterLock lock(target);
+    // The file this table was read from, changed since by someone else: writing would lose
+    // their change.
+    if (const auto& was = table.file_stamp(); was && was->path == target) {
+        const auto now = stamp_of(target);
+        if (now && !(*now == *was))
+            throw ToolTableError("table_changed_on_disk",
+                                 "'" + path + "' was changed since the table was read from it: read it again "
+                                 "(or write to another file)");
+    }
     // One temporary name per table: under the lock nobody else uses it, and a file left
     // there by a writer that was killed is simply replaced.
     const std::string tmp = dir + "/." + base + ".tmp";
@@ -118,7 +151,7 @@ void write_tool_table_file(const ToolTable& table, const std::string& path, std:
     try {
         // Keep the permissions of the file being replaced (the temporary file starts as 0600).
         struct stat st {};
-        if (::stat(path.c_str(), &st) == 0) {
+        if (::stat(target.c_str(), &st) == 0) {
             ::fchmod(fd, st.st_mode & 07777);
         } else {
             const mode_t mask = ::umask(0);
@@ -134,7 +167,7 @@ void write_tool_table_file(const ToolTable& table, const std::string& path, std:
         ::unlink(tmp.c_str());
         throw;
     }
-    if (::rename(tmp.c_str(), path.c_str()) != 0) {
+    if (::rename(tmp.c_str(), target.c_str()) != 0) {
         const int err = errno;
         ::unlink(tmp.c_str());
         fail("cannot replace tool table", path, err);
@@ -145,6 +178,9 @@ void write_tool_table_file(const ToolTable& table, const std::string& path, std:
         ::fsync(dfd);
         ::close(dfd);
     }
+    // A table read from this file now knows it as written (its next save is not a conflict);
+    // a table built in memory, or read from another file, keeps what it had.
+    if (const auto& was = table.file_stamp(); was && was->path == target) table.set_file_stamp(stamp_of(target));
 }
 
 }  // namespace toolcomp

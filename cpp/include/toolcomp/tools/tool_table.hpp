@@ -13,6 +13,7 @@
 #include "toolcomp/tools/tool.hpp"
 #include "toolcomp/tools/units.hpp"
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -64,6 +65,18 @@ public:
     const detail::TableSource* source() const { return source_.get(); }
     void set_source(std::shared_ptr<const detail::TableSource> s) { source_ = std::move(s); }
 
+    // Internal, used by the file reader and writer: the file the table was read from as it was
+    // then (or as this table last wrote it), so that a write over that file changed since by
+    // anyone else is refused.
+    struct FileStamp {
+        std::string path;  // with links resolved
+        std::uint64_t dev = 0, ino = 0, size = 0;
+        std::int64_t mtime_ns = 0;
+        friend bool operator==(const FileStamp&, const FileStamp&) = default;
+    };
+    const std::optional<FileStamp>& file_stamp() const { return stamp_; }
+    void set_file_stamp(std::optional<FileStamp> s) const { stamp_ = std::move(s); }
+
 private:
     std::vector<Tool> tools_;
     // tool number -> position in tools_: find() and set() in constant time, so reading and
@@ -71,6 +84,7 @@ private:
     std::unordered_map<int, std::size_t> index_;
     LengthUnit units_ = LengthUnit::mm;
     std::shared_ptr<const detail::TableSource> source_;
+    mutable std::optional<FileStamp> stamp_;
 };
 
 // Parse a table. `units` is the unit of the lengths in the text (a JSON file's own
