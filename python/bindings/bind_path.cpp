@@ -3,6 +3,8 @@
 // Result owning it) alive.
 #include "bindings.hpp"
 
+#include <cmath>
+
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
@@ -142,6 +144,8 @@ void bind_path(py::module_& m) {
         .def(
             "contact_points",
             [](const Path& p, double r, double r2) {
+                if (!std::isfinite(r) || !(r2 >= 0) || r2 > r)
+                    throw py::value_error("contact_points: need 0 <= r2 <= r, finite");
                 auto* v = new std::vector<double>();
                 p.contact_points(r, r2, *v);
                 py::capsule c(v, [](void* x) { delete static_cast<std::vector<double>*>(x); });

@@ -120,3 +120,20 @@ def test_peripheral_milling_with_m128_uses_the_deltas_only():
 def test_tool_shape_from_the_radii():
     t = tc.ToolTable.parse("tool,radius,corner_radius,corner_radius_wear\n1,5,5,0\n2,5,1,0\n3,5,0,0\n4,5,4.9,0.1\n", "csv")
     assert [x.edge().shape for x in t] == ["ball", "toroid", "end_mill", "ball"]
+
+
+def test_ln_tool_axis_of_zero_length():
+    # TX TY TZ of zero length under M128 is refused (the tool axis came out as (0, 0, 0)).
+    with pytest.raises(tc.ProgramError) as e:
+        ln_program(["LN X+1 Y+0 Z+0 NX+0 NY+0 NZ+1 TX+0 TY+0 TZ+0 F100"], extra=" M128")
+    assert e.value.code == "ln_tool_axis_zero" and e.value.line == 5
+
+
+def test_tool_def_r2_at_most_r_and_contact_point_radii():
+    with pytest.raises(tc.ProgramError) as e:
+        ln_program([], tool="TOOL DEF 1 L+0 R+4 R2+5\nTOOL CALL 1 Z")
+    assert e.value.code == "tool_def"
+    res = ln_program(["LN X+1 Y+0 Z+0 NX+0 NY+0 NZ+1 F100"])
+    for r, r2 in ((-4, 1), (1, 4), (np.nan, 1)):
+        with pytest.raises(ValueError):
+            res.path.contact_points(r, r2)

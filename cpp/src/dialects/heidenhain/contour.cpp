@@ -343,10 +343,16 @@ void Interp::surface_line(Tokens t) {
     const Vec3 pt(v[0], v[1], v[2]);
     Vec3 n(v[3], v[4], v[5]);
     const bool has_t = i >= 10;
-    if (n.norm() < 1e-12) fail("ln_normal_zero", "LN: the normal vector is zero", t[0].column);
-    if (!warned_normal_ && std::fabs(n.norm() - 1) > 1e-3) {
+    const double n_len = n.stableNorm();  // no overflow of the squares for large components
+    if (!(n_len >= 1e-12) || !std::isfinite(n_len)) fail("ln_normal_zero", "LN: the normal vector is zero", t[0].column);
+    if (has_t && m128_) {
+        const double t_len = Vec3(v[6], v[7], v[8]).stableNorm();
+        if (!(t_len >= 1e-12) || !std::isfinite(t_len))
+            fail("ln_tool_axis_zero", "LN: the tool orientation TX TY TZ is zero", t[0].column);
+    }
+    if (!warned_normal_ && std::fabs(n_len - 1) > 1e-3) {
         diags_.push_back({"ln_normal_not_unit", Severity::warning,
-                          "LN normal vectors are not of unit length (|N| = " + std::to_string(n.norm()) +
+                          "LN normal vectors are not of unit length (|N| = " + std::to_string(n_len) +
                               "); they are normalised",
                           {line_, t[0].column}});
         warned_normal_ = true;
@@ -356,10 +362,10 @@ void Interp::surface_line(Tokens t) {
              t[0].column);
     if (!rapid_ && feed_ <= 0) fail("no_feed", "No feed rate programmed");
     Motion m = motion_to(rapid_ ? MotionKind::rapid : MotionKind::line, pt);
-    m.surface.normal = n.normalized();
+    m.surface.normal = n.stableNormalized();
     m.surface.d_r = sum_dr_;
     m.surface.d_r2 = sum_dr2_;
-    if (m128_) m.tool_axis = has_t ? Vec3(Vec3(v[6], v[7], v[8]).normalized()) : m.surface.normal;  // T only with M128
+    if (m128_) m.tool_axis = has_t ? Vec3(Vec3(v[6], v[7], v[8]).stableNormalized()) : m.surface.normal;  // T only with M128
     put(m);
     pos_ = pt;
 }

@@ -143,6 +143,8 @@ void Interp::tool_def(Tokens t) {
     d.length = number(t, "L").value_or(0);
     d.radius = number(t, "R").value_or(0);
     d.r2 = number(t, "R2").value_or(0);
+    if (d.r2 < 0 || (d.radius >= 0 && d.r2 > d.radius))
+        fail("tool_def", "TOOL DEF: R2 must lie between 0 and R (the corner radius of the tool)", t[0].column);
     if (!(t[2].value >= 0 && t[2].value <= 32767))
         fail("tool_def", "TOOL DEF: tool number out of range 0..32767", t[2].column);
     defs_[int_value(t[2].value)] = d;
