@@ -54,30 +54,57 @@ def from_pandas(df, base: Optional["_core.ToolTable"] = None, units: str = "mm")
     if missing:
         raise ValueError("from_pandas needs a 'tool' column")
     for rec in df.to_dict("records"):
-        number = int(rec["tool"])
+        if _isnan(rec["tool"]):
+            raise ValueError("from_pandas: a row without a tool number")
+        number = _whole(rec, "tool")
         tool = table.get(number) or _core.Tool(number)
         for field in ("pocket", "name", "comment"):
             if field in rec and not _isnan(rec[field]):
-                setattr(tool, field, int(rec[field]) if field == "pocket" else str(rec[field]))
-        d = int(rec.get("edge", 1))
+                setattr(tool, field, _whole(rec, field, number) if field == "pocket" else str(rec[field]))
+        d = _whole(rec, "edge", number) if "edge" in rec and not _isnan(rec["edge"]) else 1
         edge = tool.edge(d) if tool.has_edge(d) else _core.CuttingEdge(number=d)
         for field, cols in _VEC.items():
             if any(c in rec for c in cols):
                 v = np.array(getattr(edge, field), dtype=float)
                 for i, c in enumerate(cols):
                     if c in rec and not _isnan(rec[c]):
-                        v[i] = float(rec[c])
+                        v[i] = _number(rec, c, number)
                 setattr(edge, field, v)
         for field in _SCALAR:
             if field in rec and not _isnan(rec[field]):
-                setattr(edge, field, int(rec[field]) if field == "orientation" else float(rec[field]))
+                setattr(edge, field, _whole(rec, field, number) if field == "orientation" else _number(rec, field, number))
         tool.set_edge(edge)
         table.set(tool)
     return table
 
 
 def _isnan(v) -> bool:
-    return isinstance(v, float) and math.isnan(v)
+    """A missing value: NaN, None or pandas' NA."""
+    if v is None:
+        return True
+    try:
+        return bool(v != v)  # NaN; pd.NA compares as NA, which bool() refuses
+    except TypeError:
+        return True
+
+
+def _number(rec, field, tool=None) -> float:
+    try:
+        v = float(rec[field])
+    except (TypeError, ValueError):
+        where = f" (tool {tool})" if tool is not None else ""
+        raise ValueError(f"from_pandas: {field}{where} is not a number: {rec[field]!r}") from None
+    if not math.isfinite(v):
+        raise ValueError(f"from_pandas: {field} (tool {tool}) is not a finite number: {v}")
+    return v
+
+
+def _whole(rec, field, tool=None) -> int:
+    """A tool, pocket, edge or orientation number: a whole number, never cut down."""
+    v = _number(rec, field, tool)
+    if not v.is_integer():
+        raise ValueError(f"from_pandas: {field} must be a whole number, not {rec[field]!r}")
+    return int(v)
 
 
 class Change(NamedTuple):

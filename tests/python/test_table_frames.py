@@ -1,5 +1,6 @@
 """ToolTable.to_pandas / from_pandas / diff: bulk edits keep comments and unknown columns, and
 a save changes only the edited lines."""
+import math
 import pathlib
 
 import pytest
@@ -54,3 +55,25 @@ def test_from_pandas_without_base_builds_a_table_and_diff_sees_added_and_removed
                                                     (7, "added"), (8, "added")]
     with pytest.raises(ValueError, match="'tool' column"):
         tc.ToolTable.from_pandas(pd.DataFrame({"z": [1.0]}))
+
+
+@pytest.mark.parametrize("col, val, what", [
+    ("tool", 1.7, "whole number"), ("orientation", 2.7, "whole number"), ("edge", 2.9, "whole number"),
+    ("pocket", 2.5, "whole number"), ("z", math.inf, "finite"), ("radius", "abc", "not a number"),
+])
+def test_from_pandas_refuses_values_it_would_have_cut_down(col, val, what):
+    base = tc.ToolTable.parse("T1 P1 Z25 D10\n", "linuxcnc")
+    df = base.to_pandas()
+    df[col] = df[col].astype(object)
+    df.loc[0, col] = val
+    with pytest.raises(ValueError, match=what):
+        tc.ToolTable.from_pandas(df, base=base)
+
+
+def test_from_pandas_missing_values_keep_the_base():
+    base = tc.ToolTable.parse("T1 P1 Z25 D10 ;mill\n", "linuxcnc")
+    df = base.to_pandas().astype(object)
+    df.loc[0, "comment"] = None
+    df.loc[0, "radius"] = pd.NA
+    new = tc.ToolTable.from_pandas(df, base=base)
+    assert new.get(1).comment == "mill" and new.get(1).edge(1).radius == 5
