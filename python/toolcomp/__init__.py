@@ -89,6 +89,10 @@ def run(program, tools=None, *, dialect=None, strict=True, block_delete=False, p
     calling thread, for batches whose runs keep every core busy anyway (:func:`run_many` does
     this when its workers and programs are at least as many as the cores). The result is the same either way.
     """
+    _whole_at_least("max_segments", max_segments, 1)
+    _whole_at_least("max_bytes", max_bytes, 1)
+    _whole_at_least("max_line_length", max_line_length, 1)
+    _whole_at_least("progress_every", progress_every, 1)
     tools, search_path, parameters = _run_inputs(tools, units, search_path, parameters)
     if isinstance(program, (str, _os.PathLike)):
         # Read leniently: a syntax error is raised (or reported) when the run reaches its
@@ -101,6 +105,16 @@ def run(program, tools=None, *, dialect=None, strict=True, block_delete=False, p
     return _core.run(program, tools, strict=strict, block_delete=block_delete, profile=profile,
                      progress=progress, progress_every=progress_every, search_path=search_path,
                      parameters=parameters, max_segments=max_segments, threads=threads)
+
+
+def _whole_at_least(name, value, least):
+    """A count or size argument: a whole number (not a bool, not 1.5), at least `least`."""
+    import numbers
+
+    if isinstance(value, bool) or not isinstance(value, numbers.Integral):
+        raise TypeError(f"{name} must be a whole number, not {value!r}")
+    if value < least:
+        raise ValueError(f"{name} must be at least {least}, not {value}")
 
 
 def _run_inputs(tools, units, search_path, parameters):
@@ -136,9 +150,11 @@ def iter_run(program, tools=None, *, chunk=1_000_000, dialect=None, strict=True,
     holds the segments before it; with ``strict=False`` it ends the stream and is in
     ``stream.diagnostics``. The returned :class:`PathStream` also gives ``blocks`` and
     ``files`` once it has ended; ``close()`` (or leaving a ``with`` block) stops the run."""
-    if chunk < 1:
-        raise ValueError("chunk must be at least 1")
-    if not 1 <= piece_bytes <= 2**30:
+    _whole_at_least("chunk", chunk, 1)
+    _whole_at_least("piece_bytes", piece_bytes, 1)
+    _whole_at_least("max_bytes", max_bytes, 1)
+    _whole_at_least("max_line_length", max_line_length, 1)
+    if piece_bytes > 2**30:
         raise ValueError("piece_bytes must be from 1 to 2**30 (1 GiB)")
     tools, search_path, parameters = _run_inputs(tools, units, search_path, parameters)
     if isinstance(program, (str, _os.PathLike)):

@@ -38,3 +38,15 @@ def test_tools_convert_reports_a_table_it_cannot_write(tmp_path):
         r = subprocess.run([sys.executable, "-m", "toolcomp", "tools", "convert", str(src), str(tmp_path / out)],
                            capture_output=True, text=True)
         assert r.returncode == 1 and "cannot write" in r.stderr and "Traceback" not in r.stderr
+
+
+@pytest.mark.parametrize("call, error", [
+    (lambda p: tc.iter_run(p, chunk=1.5), TypeError),
+    (lambda p: tc.iter_run(p, chunk=True), TypeError),
+    (lambda p: tc.run(p, max_segments=-1), ValueError),
+    (lambda p: tc.run(p, progress_every=0), ValueError),
+    (lambda p: tc.iter_run(p, piece_bytes=-1), ValueError),
+])
+def test_counts_and_sizes_are_whole_numbers(call, error):
+    with pytest.raises(error, match="must be"):
+        call(tc.Program.parse("G21 G0 X1\nM2\n"))
