@@ -37,10 +37,29 @@ RunOptions run_options(bool strict, bool block_delete, std::optional<ControlProf
 }  // namespace
 
 namespace {
-// A tolerance a program's arcs are measured against: a finite number, not negative.
+// A tolerance a program's arcs are measured against: a finite number, not negative (refused
+// when set, by name; check_profile refuses it again when a run starts).
 double tolerance(const char* name, double v) {
     if (!std::isfinite(v) || v < 0) throw py::value_error(std::string(name) + " must be a finite number >= 0");
     return v;
+}
+// Properties of ControlProfile tolerances, refused by name when set badly: one value, or a
+// pair (mm programs, inch programs) set together or not at all.
+void def_tolerance(py::class_<ControlProfile>& cls, const char* name, double ControlProfile::*f, const char* doc) {
+    cls.def_property(
+        name, [f](const ControlProfile& p) { return p.*f; },
+        [f, name](ControlProfile& p, double v) { p.*f = tolerance(name, v); }, doc);
+}
+void def_tolerance_pair(py::class_<ControlProfile>& cls, const char* name, double (ControlProfile::*f)[2],
+                        const char* doc) {
+    cls.def_property(
+        name, [f](const ControlProfile& p) { return std::make_pair((p.*f)[0], (p.*f)[1]); },
+        [f, name](ControlProfile& p, std::pair<double, double> v) {
+            const double mm = tolerance(name, v.first), inch = tolerance(name, v.second);
+            (p.*f)[0] = mm;
+            (p.*f)[1] = inch;
+        },
+        doc);
 }
 }  // namespace
 
@@ -174,10 +193,11 @@ void bind_run(py::module_& m) {
         .value("lathe", Machine::lathe,
                "lathe (in the Fanuc profile: X diameters, incremental U/W, T-word offsets, Fanuc tip numbers)");
 
-    py::class_<ControlProfile>(
+    py::class_<ControlProfile> profile(
         m, "ControlProfile",
         "How a particular control behaves, as plain data: the profile of a dialect ('linuxcnc', 'fanuc', ...) "
-        "and machine ('mill' or 'lathe'), whose fields may be adjusted and passed as run(..., profile=...).")
+        "and machine ('mill' or 'lathe'), whose fields may be adjusted and passed as run(..., profile=...).");
+    profile
         .def(py::init([](const std::string& dialect, const std::string& machine) {
                  if (machine != "mill" && machine != "lathe") throw py::value_error("machine must be 'mill' or 'lathe'");
                  return profile_for(dialect_from_name(dialect), machine == "lathe" ? Machine::lathe : Machine::mill);
@@ -228,36 +248,6 @@ void bind_run(py::module_& m) {
                        "least feed rate of a G93 move, program units a minute (LinuxCNC 0.1)")
         .def_readwrite("g96_needs_s", &ControlProfile::g96_needs_s,
                        "G96 needs an S word in its block (LinuxCNC); False: the S in force is the surface speed")
-        .def_property(
-            "arc_spiral_abs",
-            [](const ControlProfile& p) { return std::make_pair(p.arc_spiral_abs[0], p.arc_spiral_abs[1]); },
-            [](ControlProfile& p, std::pair<double, double> v) {
-                const double mm = tolerance("arc_spiral_abs", v.first), inch = tolerance("arc_spiral_abs", v.second);
-                p.arc_spiral_abs[0] = mm;
-                p.arc_spiral_abs[1] = inch;
-            },
-            "an arc by its centre is refused when its start and end radius differ by more than this and by "
-            "more than arc_spiral_rel of the larger radius, as (mm programs in mm, inch programs in inch); "
-            "LinuxCNC 2.9: (0.0283, 0.00283)")
-        .def_property(
-            "arc_spiral_rel", [](const ControlProfile& p) { return p.arc_spiral_rel; },
-            [](ControlProfile& p, double v) { p.arc_spiral_rel = tolerance("arc_spiral_rel", v); },
-            "see arc_spiral_abs: the relative part of the test (LinuxCNC 2.9: 0.001)")
-        .def_property(
-            "arc_spiral_hard_factor", [](const ControlProfile& p) { return p.arc_spiral_hard_factor; },
-            [](ControlProfile& p, double v) { p.arc_spiral_hard_factor = tolerance("arc_spiral_hard_factor", v); },
-            "an arc whose start and end radius differ by more than this times arc_spiral_abs is refused "
-            "whatever its radius (LinuxCNC 2.9: 100)")
-        .def_property(
-            "arc_min_radius",
-            [](const ControlProfile& p) { return std::make_pair(p.arc_min_radius[0], p.arc_min_radius[1]); },
-            [](ControlProfile& p, std::pair<double, double> v) {
-                const double mm = tolerance("arc_min_radius", v.first), inch = tolerance("arc_min_radius", v.second);
-                p.arc_min_radius[0] = mm;
-                p.arc_min_radius[1] = inch;
-            },
-            "arcs of a smaller radius are zero-radius arcs, and an R-format chord may exceed 2|R| by this, "
-            "as (mm programs in mm, inch programs in inch); LinuxCNC 2.9: (0.00127, 0.00005)")
         .def_readwrite("last_comment_only", &ControlProfile::last_comment_only,
                        "only the last comment in parentheses of a block is read for MSG/DEBUG/PRINT, ';' "
                        "comments never (LinuxCNC); False: every comment")
@@ -270,6 +260,18 @@ void bind_run(py::module_& m) {
         .def_readwrite("radius", &ControlProfile::radius,
                        "RadiusRules: the cutter radius compensation rules")
         .def("__repr__", [](const ControlProfile& p) { return "ControlProfile('" + p.name + "')"; });
+    def_tolerance_pair(profile, "arc_spiral_abs", &ControlProfile::arc_spiral_abs,
+                       "an arc by its centre is refused when its start and end radius differ by more than this and "
+                       "by more than arc_spiral_rel of the larger radius, as (mm programs in mm, inch programs in "
+                       "inch); LinuxCNC 2.9: (0.0283, 0.00283)");
+    def_tolerance(profile, "arc_spiral_rel", &ControlProfile::arc_spiral_rel,
+                  "see arc_spiral_abs: the relative part of the test (LinuxCNC 2.9: 0.001)");
+    def_tolerance(profile, "arc_spiral_hard_factor", &ControlProfile::arc_spiral_hard_factor,
+                  "an arc whose start and end radius differ by more than this times arc_spiral_abs is refused "
+                  "whatever its radius (LinuxCNC 2.9: 100)");
+    def_tolerance_pair(profile, "arc_min_radius", &ControlProfile::arc_min_radius,
+                       "arcs of a smaller radius are zero-radius arcs, and an R-format chord may exceed 2|R| by "
+                       "this, as (mm programs in mm, inch programs in inch); LinuxCNC 2.9: (0.00127, 0.00005)");
 
     py::class_<Result, std::shared_ptr<Result>>(
         m, "Result", "The outcome of run(): programmed and compensated paths, diagnostics and block count.")

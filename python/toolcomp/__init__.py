@@ -7,6 +7,7 @@ and get the programmed and compensated paths as numpy arrays.
 """
 from __future__ import annotations
 
+import numbers as _numbers
 import os as _os
 import sys as _sys
 
@@ -109,9 +110,7 @@ def run(program, tools=None, *, dialect=None, strict=True, block_delete=False, p
 
 def _whole_at_least(name, value, least):
     """A count or size argument: a whole number (not a bool, not 1.5), at least `least`."""
-    import numbers
-
-    if isinstance(value, bool) or not isinstance(value, numbers.Integral):
+    if isinstance(value, bool) or not isinstance(value, _numbers.Integral):
         raise TypeError(f"{name} must be a whole number, not {value!r}")
     if value < least:
         raise ValueError(f"{name} must be at least {least}, not {value}")

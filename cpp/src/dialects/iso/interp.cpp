@@ -301,18 +301,18 @@ void Interp::fanuc_dwell(BlockWords& bw) const {
 
 // Fanuc lathes, G-code system A: G90, G92 and G94 name cycles there, not the mill's modes.
 void Interp::system_a_codes(const BlockWords& bw) const {
-    if (bw.g[g_distance] == 900)
-        fail("unsupported_g_code", "G90 is the turning cycle in G-code system A: not supported by toolcomp",
-             bw.g_column[g_distance]);
-    if (bw.g[g_distance] == 910)
-        fail("unknown_g_code", "G91 does not exist in G-code system A (U and W are the incremental words)",
-             bw.g_column[g_distance]);
-    if (bw.g[g_nonmodal] == 920)
-        fail("unsupported_g_code", "G92 is the threading cycle in G-code system A: not supported by toolcomp",
-             bw.g_column[g_nonmodal]);
-    if (bw.g[g_feed_mode] == 940)
-        fail("unsupported_g_code", "G94 is the facing cycle in G-code system A: not supported by toolcomp",
-             bw.g_column[g_feed_mode]);
+    struct Refused {
+        int group, code;
+        const char *error, *message;
+    };
+    static constexpr Refused kRefused[] = {
+        {g_distance, 900, "unsupported_g_code", "G90 is the turning cycle in G-code system A: not supported by toolcomp"},
+        {g_distance, 910, "unknown_g_code", "G91 does not exist in G-code system A (U and W are the incremental words)"},
+        {g_nonmodal, 920, "unsupported_g_code", "G92 is the threading cycle in G-code system A: not supported by toolcomp"},
+        {g_feed_mode, 940, "unsupported_g_code", "G94 is the facing cycle in G-code system A: not supported by toolcomp"},
+    };
+    for (const Refused& r : kRefused)
+        if (bw.g[r.group] == r.code) fail(r.error, r.message, bw.g_column[r.group]);
 }
 
 bool Interp::execute(const BlockWords& bw) {

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "interp.hpp"
+#include "toolcomp/motion/spindle.hpp"
 
 namespace toolcomp::iso {
 
@@ -69,7 +70,7 @@ double Interp::feed_for(const BlockWords& bw, int code, double length, double x_
             // G96: the spindle turns to keep the surface speed at the tool's radius, taken
             // where the move ends, no faster than D. At the axis without D: not known.
             const double r = std::fabs(x_end) * scale();  // mm
-            double rpm = r > 0 ? speed_ * (st_.inch ? 304.8 : 1000.0) / (2 * kPi * r) : INFINITY;
+            double rpm = css_rpm(speed_ * (st_.inch ? 304.8 : 1000.0), r);  // S in ft/min or m/min
             if (css_max_ > 0) rpm = std::min(rpm, css_max_);
             return std::isfinite(rpm) ? feed_ * rpm : std::nan("");
         }

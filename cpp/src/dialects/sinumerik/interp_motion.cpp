@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "interp.hpp"
+#include "toolcomp/motion/spindle.hpp"
 #include "toolcomp/program/int_value.hpp"
 #include "toolcomp/geometry/arc.hpp"
 
@@ -83,10 +84,7 @@ double Interp::feed_rate(const Vec3& end) const {
     }
 }
 
-double Interp::css_speed(double x) const {
-    const double r = std::fabs(x);
-    return r > 0 ? cutting_speed_ * 1000 / (2 * kPi * r) : std::numeric_limits<double>::infinity();
-}
+double Interp::css_speed(double x) const { return css_rpm(cutting_speed_ * 1000, std::fabs(x)); }  // S in m/min
 
 RadiusRequest Interp::radius_request() const {
     RadiusRequest r;
