@@ -64,13 +64,13 @@ void Interp::load_parameters(const ParameterValues& values) {
         for (int cs = 0; cs < 9; ++cs) g5x_[static_cast<std::size_t>(cs)][j] = value(5221 + 20 * cs + j);
     }
     for (int cs = 0; cs < 9; ++cs) rotation_[static_cast<std::size_t>(cs)] = value(5230 + 20 * cs);
-    for (int n : {5167, 5168, 5169, 5187, 5188, 5189, 5217, 5218, 5219})
-        if (value(n) != 0)
-            throw std::invalid_argument("parameters: #" + std::to_string(n) + " is a U, V or W axis value, which toolcomp does not run");
-    for (int cs = 0; cs < 9; ++cs)
-        for (int j = 6; j < 9; ++j)
-            if (value(5221 + 20 * cs + j) != 0)
-                throw std::invalid_argument("parameters: #" + std::to_string(5221 + 20 * cs + j) +
+    // U, V, W (the 7th to 9th value of each group): axes toolcomp does not run.
+    std::vector<int> uvw{5161, 5181, 5211};
+    for (int cs = 0; cs < 9; ++cs) uvw.push_back(5221 + 20 * cs);
+    for (int first : uvw)
+        for (int n = first + 6; n < first + 9; ++n)
+            if (value(n) != 0)
+                throw std::invalid_argument("parameters: #" + std::to_string(n) +
                                             " is a U, V or W axis value, which toolcomp does not run");
     g92_on_ = value(5210) != 0;
     g92_ = g92_on_ ? g92_saved_ : Vec6::Zero();
@@ -401,9 +401,8 @@ bool Interp::execute(const BlockWords& bw) {
             if (bw.g[g_length_comp] >= 0)
                 fail("comp_tool_offset", "Cannot change tool offset with cutter radius compensation on",
                      bw.g_column[g_length_comp]);
-            const bool offsets = bw.g[g_coord_system] >= 0 || g0 == 920 || g0 == 921 || g0 == 922 || g0 == 923 ||
-                                 g0 == 520;
-            if (offsets && profile_.radius.offset_change_reenters) {
+            const bool axis_offsets = g0 == 920 || g0 == 921 || g0 == 922 || g0 == 923 || g0 == 520;
+            if ((axis_offsets || bw.g[g_coord_system] >= 0) && profile_.radius.offset_change_reenters) {
                 // 9/Series: compensation ends here for the moment (the last move its exit) and
                 // the first move in the new system is an entry.
                 if (comp_before) {
@@ -432,7 +431,7 @@ bool Interp::execute(const BlockWords& bw) {
             }
             if (g0 == 280 || g0 == 300)
                 fail("comp_home", "Cannot use g28 or g30 with cutter radius comp", bw.g_column[g_nonmodal]);
-            if ((g0 == 920 || g0 == 921 || g0 == 922 || g0 == 923 || g0 == 520) && !profile_.radius.offset_change_reenters)
+            if (axis_offsets && !profile_.radius.offset_change_reenters)
                 fail("comp_axis_offsets", "Cannot change axis offsets with cutter radius comp", bw.g_column[g_nonmodal]);
         }
         if (motion_code >= 382 && motion_code <= 385)
