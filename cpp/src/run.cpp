@@ -1,6 +1,7 @@
 #include "toolcomp/run.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <algorithm>
 #include <new>
 #include <optional>
@@ -44,13 +45,26 @@ bool finite_move(const Motion& m) {
                        {m.line, 0, {}, m.file});
 }
 
-// Sends every move to two consumers, once its numbers are known to be finite.
+[[noreturn, gnu::cold]] void refuse_arc(const Motion& m, const char* why) {
+    char radius[64];
+    const Vec2 u = in_plane(m.start, m.plane) - in_plane(m.center, m.plane);
+    std::snprintf(radius, sizeof radius, "%.6g", std::hypot(u.x(), u.y()) * m.unit);
+    throw ProgramError("arc_radius_too_large",
+                       std::string("This arc cannot be cut as written (radius ") + radius + " mm): " + why,
+                       {m.line, 0, {}, m.file});
+}
+
+// Sends every move to two consumers, once its numbers are known to be finite and an arc's
+// geometry sound.
 class Tee : public MotionSink {
 public:
     Tee(MotionSink& a, MotionSink& b) : a_(a), b_(b) {}
     void push(const Motion& m) override {
         if (!finite_move(m)) [[unlikely]]
             refuse_not_finite(m);
+        if (m.is_arc())
+            if (const char* why = arc_defect(m.arc(), m.unit)) [[unlikely]]
+                refuse_arc(m, why);
         a_.push(m);
         b_.push(m);
     }

@@ -353,8 +353,9 @@ void bind_run(py::module_& m) {
            bool threads) {
             RunOptions o = run_options(strict, block_delete, std::move(profile), progress, progress_every,
                                        std::move(search_path), std::move(parameters), max_segments, threads);
+            const auto table = snapshot(tools);
             py::gil_scoped_release nogil;
-            return std::make_shared<Result>(run(program, tools, o));
+            return std::make_shared<Result>(run(program, ptr(table), o));
         },
         py::arg("program"), py::arg("tools") = nullptr, py::arg("strict") = true, py::arg("block_delete") = false,
         py::arg("profile") = py::none(), py::arg("progress") = py::none(), py::arg("progress_every") = 1 << 16,
@@ -378,8 +379,9 @@ void bind_run(py::module_& m) {
                                        std::move(search_path), std::move(parameters), max_segments, threads);
             std::optional<Dialect> d;
             if (dialect) d = dialect_from_name(*dialect);
+            const auto table = snapshot(tools);
             py::gil_scoped_release nogil;
-            return std::make_shared<Result>(run_file(path, d, tools, o, ReadLimits{max_bytes, max_line_length}));
+            return std::make_shared<Result>(run_file(path, d, ptr(table), o, ReadLimits{max_bytes, max_line_length}));
         },
         py::arg("path"), py::arg("dialect"), py::arg("tools"), py::arg("strict"), py::arg("block_delete"),
         py::arg("profile"), py::arg("progress"), py::arg("progress_every"), py::arg("search_path"),

@@ -26,8 +26,6 @@ StreamOptions stream_options(bool strict, bool block_delete, std::optional<Contr
     o.read.max_line_length = max_line_length;
     return o;
 }
-
-std::optional<ToolTable> table(const ToolTable* t) { return t ? std::optional<ToolTable>(*t) : std::nullopt; }
 }  // namespace
 
 void bind_stream(py::module_& m) {
@@ -86,7 +84,7 @@ void bind_stream(py::module_& m) {
            std::size_t max_line_length) {
             std::optional<Dialect> d;
             if (dialect) d = dialect_from_name(*dialect);
-            return std::make_shared<PathStream>(path, d, table(tools),
+            return std::make_shared<PathStream>(path, d, snapshot(tools),
                                                 stream_options(strict, block_delete, std::move(profile),
                                                                std::move(search_path), std::move(parameters), chunk,
                                                                piece_bytes, max_bytes, max_line_length));
@@ -99,7 +97,7 @@ void bind_stream(py::module_& m) {
         [](std::shared_ptr<Program> program, const ToolTable* tools, bool strict, bool block_delete,
            std::optional<ControlProfile> profile, std::vector<std::string> search_path,
            std::map<int, double> parameters, std::size_t chunk) {
-            return std::make_shared<PathStream>(std::shared_ptr<const Program>(std::move(program)), table(tools),
+            return std::make_shared<PathStream>(std::shared_ptr<const Program>(std::move(program)), snapshot(tools),
                                                 stream_options(strict, block_delete, std::move(profile),
                                                                std::move(search_path), std::move(parameters), chunk,
                                                                kPieceBytes, kDefaultMaxProgramBytes, kDefaultMaxLineLength));

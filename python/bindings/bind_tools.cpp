@@ -179,8 +179,12 @@ void bind_tools(py::module_& m) {
             "write",
             [](const ToolTable& t, const std::filesystem::path& path, std::optional<std::string> format) {
                 const auto f = format_arg(format);
-                py::gil_scoped_release nogil;
-                write_tool_table_file(t, path.string(), f);
+                const ToolTable copy = t;
+                {
+                    py::gil_scoped_release nogil;
+                    write_tool_table_file(copy, path.string(), f);
+                }
+                t.set_file_stamp(copy.file_stamp());  // what the file on disk now is
             },
             py::arg("path"), py::arg("format") = py::none(),
             "Write the table (temporary file, fsync, rename: the file is always the complete old or new "
@@ -190,8 +194,9 @@ void bind_tools(py::module_& m) {
             "dumps",
             [](const ToolTable& t, const std::string& format) {
                 const TableFormat f = table_format_from_string(format);
+                const ToolTable copy = t;
                 py::gil_scoped_release nogil;
-                return write_tool_table(t, f);
+                return write_tool_table(copy, f);
             },
             py::arg("format"), "The table as text in the given format.")
         .def("__getitem__", &ToolTable::at, py::arg("number"), py::return_value_policy::copy,

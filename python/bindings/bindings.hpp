@@ -3,7 +3,19 @@
 // names only, no logic.
 #include <pybind11/pybind11.h>
 
+#include <optional>
+
+#include "toolcomp/tools/tool_table.hpp"
+
 namespace py = pybind11;
+
+// What the engine reads with the GIL released is its own copy, taken while the GIL is held:
+// another Python thread may change the caller's ToolTable meanwhile (set, remove), and a run
+// or a write must see one consistent table, never a vector being resized under it.
+inline std::optional<toolcomp::ToolTable> snapshot(const toolcomp::ToolTable* t) {
+    return t ? std::optional<toolcomp::ToolTable>(*t) : std::nullopt;
+}
+inline const toolcomp::ToolTable* ptr(const std::optional<toolcomp::ToolTable>& t) { return t ? &*t : nullptr; }
 
 void bind_errors(py::module_& m);
 void bind_program(py::module_& m);

@@ -11,17 +11,14 @@ import toolcomp as tc
 HEAD = "G17 G90 G71\nG0 X0 Y0 Z5\nG1 Z-1 F100\n"
 
 
-def test_cr_1ex300_has_a_finite_centre():
-    # Chord (0,0)-(10,0), G2 with CR > 0 (at most 180 degrees): centre right of the chord,
-    # h = R*sqrt(1 - (5/R)^2) = 1e300 -> centre (5, -1e300).
-    res = tc.run(tc.Program.parse(HEAD + "G2 X10 Y0 CR=1EX300\nM30\n", dialect="sinumerik"))
-    arc = np.flatnonzero(res.path.kind == tc.ARC_CW)
-    assert len(arc) == 1
-    c = res.path.center[arc[0]]
-    assert np.isfinite(c).all()
-    assert c[0] == pytest.approx(5)
-    assert c[1] == pytest.approx(-1e300)
-    np.testing.assert_array_equal(res.path.end[arc[0], :2], [10, 0])
+def test_cr_1ex300_is_refused():
+    # Chord (0,0)-(10,0), G2 with CR=1e300: the centre (5, -1e300) is a finite number, but
+    # the ends lie 1e-299 rad apart on the circle, which the angle cannot resolve: the arc
+    # would be cut as a full circle of 6e300 mm.
+    text = HEAD + "G2 X10 Y0 CR=1EX300\nM30\n"
+    with pytest.raises(tc.ProgramError) as e:
+        tc.run(tc.Program.parse(text, dialect="sinumerik"))
+    assert (e.value.code, e.value.line) == ("arc_radius_too_large", 4)
 
 
 @pytest.mark.parametrize("text, line, column", [

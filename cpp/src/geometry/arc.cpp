@@ -48,6 +48,18 @@ double arc_length(const Arc& a) {
     return std::hypot(planar, h);
 }
 
+const char* arc_defect(const Arc& a, double unit) {
+    const Vec2 c = in_plane(a.center, a.plane);
+    const Vec2 u = in_plane(a.start, a.plane) - c;
+    const double r = std::hypot(u.x(), u.y()) * unit, sweep = arc_sweep(a);
+    if (!std::isfinite(r) || !std::isfinite(sweep) || !std::isfinite(r * sweep))
+        return "its radius, sweep or length is not a finite number";
+    if (a.turns == 0 && sweep >= 2 * kPi && (in_plane(a.end, a.plane) - in_plane(a.start, a.plane)).norm() * unit > 1e-6)
+        return "its start and end are distinct points that its circle cannot tell apart (it would be "
+               "taken as a full circle)";
+    return nullptr;
+}
+
 int arc_chords(const Arc& a, double tolerance) {
     double r = std::max(arc_start_radius(a), arc_end_radius(a));
     double sweep = arc_sweep(a);

@@ -7,6 +7,11 @@
 
 namespace toolcomp {
 
+// Extra full turns an arc may make: the Sinumerik's TURN limit (0..999999). A count beyond it
+// no control runs, and the Path's turns column (int32) could not hold every count a program
+// can write; every dialect refuses it at its block.
+inline constexpr int kMaxArcTurns = 999'999;
+
 struct Arc {
     Vec3 start, end, center;  // center: its applicate coordinate is the start's
     Plane plane = Plane::xy;
@@ -24,6 +29,12 @@ double arc_sweep(const Arc& a);
 Vec3 arc_point(const Arc& a, double u);
 // Length of the (possibly helical) arc.
 double arc_length(const Arc& a);
+// Why an arc cannot be cut as written, or nullptr. `unit`: mm per program unit. Its radius,
+// sweep or length in mm is not a finite number (an absurd R word: R1e300 for a 1 mm chord),
+// or its start and end are distinct points (more than 1e-6 mm apart) that the circle cannot
+// tell apart, so that it would be taken as a full circle (a radius of kilometres for a chord
+// of microns: only radii beyond 1 km reach this).
+const char* arc_defect(const Arc& a, double unit);
 // Number of chords so that no chord deviates more than `tolerance` from the arc; throws
 // Error("sample_too_fine") beyond 50 million chords.
 int arc_chords(const Arc& a, double tolerance);

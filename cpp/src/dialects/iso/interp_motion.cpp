@@ -163,6 +163,10 @@ void Interp::motion_arc(const BlockWords& bw, int code) {
         // LinuxCNC refuses a P more than 0.001 from an integer; Fanuc takes it as written.
         if (std::fabs(std::round(pv) - pv) > (prog_.dialect == Dialect::linuxcnc ? 0.001 : 1e-9))
             fail("arc_p_not_integer", "P value not an integer with M19 G2 or G3", bw['P'].column);
+        if (pv > kMaxArcTurns + 1.5)
+            fail("arc_too_many_turns",
+                 "P value of G2 or G3 is more than " + std::to_string(kMaxArcTurns + 1) + " turns",
+                 bw['P'].column);
         p = int_value(pv);
         if (p < 1) fail("arc_p_not_positive", "P value should be 1 or greater with G2 or G3", bw['P'].column);
     }

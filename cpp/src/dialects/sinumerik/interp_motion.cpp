@@ -473,7 +473,7 @@ void Interp::arc(const BlockData& b, const Vec3& end_prog) {
     }
     int turns = 0;
     if (b.turn.set) {
-        if (!(b.turn.v >= 0 && b.turn.v <= 999999) || b.turn.v != std::floor(b.turn.v))
+        if (!(b.turn.v >= 0 && b.turn.v <= kMaxArcTurns) || b.turn.v != std::floor(b.turn.v))
             fail("14040", "14040 TURN= must be a whole number of turns (0..999999)", b.turn.column);
         turns = int_value(b.turn.v);
     }
