@@ -3,6 +3,7 @@
 // programmed path (`nominal`) and the compensation stages -> the compensated path. run()
 // collects both into Paths; a PathStream hands the compensated one over in chunks.
 #include <functional>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -23,5 +24,18 @@ struct PipelineHooks {
 void run_pipeline(const Program& program, const ToolTable* tools, const RunOptions& options,
                   const ControlProfile& profile, MotionSink& nominal, MotionSink& compensated,
                   std::vector<Diagnostic>& diagnostics, iso::InterpretOutput& out, const PipelineHooks& hooks = {});
+
+// Memory exhausted anywhere in a run (a Path's columns, a called file's text, the
+// interpreter's state) is the run's error with a stable code, ProgramError("out_of_memory"),
+// not std::bad_alloc (which Python raises as a bare MemoryError).
+[[noreturn]] void throw_out_of_memory();
+template <class F>
+auto out_of_memory_as_error(F&& f) -> decltype(f()) {
+    try {
+        return f();
+    } catch (const std::bad_alloc&) {
+        throw_out_of_memory();
+    }
+}
 
 }  // namespace toolcomp

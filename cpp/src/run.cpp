@@ -143,6 +143,8 @@ bool name_file(SourcePos& pos, const std::vector<std::string>& files) {
     return true;
 }
 
+SearchPath search_of(const RunOptions& o) { return {o.search_path, o.follow_links, o.limits}; }
+
 sinumerik::InterpretOptions sinumerik_options(const RunOptions& o, const ControlProfile& p) {
     sinumerik::InterpretOptions s;
     s.lengths.tool_length_const = p.tool_length_const;
@@ -152,7 +154,7 @@ sinumerik::InterpretOptions sinumerik_options(const RunOptions& o, const Control
     s.block_delete = o.block_delete;
     s.progress = o.progress;
     s.progress_every = o.progress_every ? o.progress_every : 1;
-    s.search_path = o.search_path;
+    s.search = search_of(o);
     return s;
 }
 }  // namespace
@@ -173,6 +175,12 @@ Program read_program(const std::string& path, std::optional<Dialect> dialect, bo
     return parse_program(text, d, path, strict, limits.max_line_length);
 }
 
+void throw_out_of_memory() {
+    throw ProgramError("out_of_memory",
+                       "The run ran out of memory (the machine's memory or the process's limit): see max_segments, "
+                       "max_bytes and ControlProfile.call_depth_limit");
+}
+
 bool Result::ok() const {
     for (const auto& d : diagnostics)
         if (d.severity == Severity::error) return false;
@@ -188,7 +196,7 @@ void run_pipeline(const Program& program, const ToolTable* tools, const RunOptio
     iopts.block_delete = options.block_delete;
     iopts.progress = options.progress;
     iopts.progress_every = options.progress_every ? options.progress_every : 1;
-    iopts.search_path = options.search_path;
+    iopts.search = search_of(options);
     iopts.parameters = options.parameters;
     iopts.next_piece = hooks.next_piece;
     iopts.file_opened = hooks.file_opened;
@@ -197,7 +205,7 @@ void run_pipeline(const Program& program, const ToolTable* tools, const RunOptio
         try {
             if (program.dialect == Dialect::heidenhain)
                 heidenhain::interpret(program, tools, profile, tee, diagnostics, iopts.progress, iopts.progress_every,
-                                      options.search_path, &out.files);
+                                      search_of(options), &out.files);
             else if (program.dialect == Dialect::sinumerik)
                 sinumerik::interpret(program, tools, profile, sinumerik_options(options, profile), tee, diagnostics,
                                      &out.files);
@@ -281,15 +289,10 @@ Result run_main(const Program& program, const ToolTable* tools, const RunOptions
 }
 }  // namespace
 
-Result run(const Program& program, const ToolTable* tools, const RunOptions& options) {
-    if (options.profile) check_profile(*options.profile);
-    return run_main(program, tools, options, {}, program.size());
-}
-
-Result run_file(const std::string& path, std::optional<Dialect> dialect, const ToolTable* tools,
-                const RunOptions& options, const ReadLimits& limits) {
-    if (options.profile) check_profile(*options.profile);
-    ProgramSource src(path, dialect_of_file(path, dialect), limits, kPieceBytes, /*limit_pieces=*/true, {},
+namespace {
+Result run_file_main(const std::string& path, std::optional<Dialect> dialect, const ToolTable* tools,
+                     const RunOptions& options) {
+    ProgramSource src(path, dialect_of_file(path, dialect), options.limits, kPieceBytes, /*limit_pieces=*/true, {},
                       options.threads);
     PipelineHooks hooks;
     hooks.next_piece = src.next_piece();
@@ -300,6 +303,22 @@ Result run_file(const std::string& path, std::optional<Dialect> dialect, const T
     } catch (const ProgramSource::InputError& e) {
         std::rethrow_exception(e.error);
     }
+}
+}  // namespace
+
+Result run(const Program& program, const ToolTable* tools, const RunOptions& options) {
+    if (options.profile) check_profile(*options.profile);
+    check_search_path(options.search_path);
+    return out_of_memory_as_error([&] { return run_main(program, tools, options, {}, program.size()); });
+}
+
+Result run_file(const std::string& path, std::optional<Dialect> dialect, const ToolTable* tools,
+                const RunOptions& options, const ReadLimits& limits) {
+    if (options.profile) check_profile(*options.profile);
+    check_search_path(options.search_path);
+    RunOptions o = options;
+    o.limits = limits;
+    return out_of_memory_as_error([&] { return run_file_main(path, dialect, tools, o); });
 }
 
 }  // namespace toolcomp

@@ -72,6 +72,8 @@ PathStream::~PathStream() { close(); }
 void PathStream::start() {
     if (options_.chunk == 0) throw ProgramError("bad_chunk", "A stream's chunk must hold at least one segment");
     if (options_.run.profile) check_profile(*options_.run.profile);
+    check_search_path(options_.run.search_path);
+    options_.run.limits = options_.read;  // the limits of the main file hold for every file it calls
     thread_ = std::thread([this] { produce(); });
 }
 
@@ -156,6 +158,12 @@ void PathStream::produce() {
     } catch (const Cancelled&) {
     } catch (const ProgramSource::InputError& e) {
         error = e.error;
+    } catch (const std::bad_alloc&) {
+        try {
+            throw_out_of_memory();
+        } catch (...) {
+            error = std::current_exception();
+        }
     } catch (...) {
         error = std::current_exception();
     }

@@ -16,8 +16,10 @@ namespace {
 // `progress` is held by the caller's frame for the whole run.
 RunOptions run_options(bool strict, bool block_delete, std::optional<ControlProfile> profile, py::object& progress,
                        std::size_t progress_every, std::vector<std::string> search_path,
-                       std::map<int, double> parameters, std::size_t max_segments, bool threads) {
+                       std::map<int, double> parameters, std::size_t max_segments, bool threads,
+                       bool follow_links) {
     RunOptions o;
+    o.follow_links = follow_links;
     o.max_segments = max_segments;
     o.threads = threads;
     o.parameters = std::move(parameters);
@@ -350,9 +352,11 @@ void bind_run(py::module_& m) {
         [](const Program& program, const ToolTable* tools, bool strict, bool block_delete,
            std::optional<ControlProfile> profile, py::object progress, std::size_t progress_every,
            std::vector<std::string> search_path, std::map<int, double> parameters, std::size_t max_segments,
-           bool threads) {
+           bool threads, bool follow_links, std::uint64_t max_bytes, std::size_t max_line_length) {
             RunOptions o = run_options(strict, block_delete, std::move(profile), progress, progress_every,
-                                       std::move(search_path), std::move(parameters), max_segments, threads);
+                                       std::move(search_path), std::move(parameters), max_segments, threads,
+                                       follow_links);
+            o.limits = ReadLimits{max_bytes, max_line_length};
             const auto table = snapshot(tools);
             py::gil_scoped_release nogil;
             return std::make_shared<Result>(run(program, ptr(table), o));
@@ -360,7 +364,8 @@ void bind_run(py::module_& m) {
         py::arg("program"), py::arg("tools") = nullptr, py::arg("strict") = true, py::arg("block_delete") = false,
         py::arg("profile") = py::none(), py::arg("progress") = py::none(), py::arg("progress_every") = 1 << 16,
         py::arg("search_path") = std::vector<std::string>{}, py::arg("parameters") = std::map<int, double>{},
-        py::arg("max_segments") = kDefaultMaxSegments, py::arg("threads") = true,
+        py::arg("max_segments") = kDefaultMaxSegments, py::arg("threads") = true, py::arg("follow_links") = false,
+        py::arg("max_bytes") = kDefaultMaxProgramBytes, py::arg("max_line_length") = kDefaultMaxLineLength,
         "Interpret a Program with an optional ToolTable and apply tool compensation; returns a Result. strict=True "
         "raises the first error, strict=False returns the path up to it; block_delete skips '/' blocks; profile "
         "overrides the dialect's ControlProfile; progress(blocks_read) is called every progress_every blocks; "
@@ -368,15 +373,18 @@ void bind_run(py::module_& m) {
         "gives numbered parameters their start values ({number: value}, e.g. a LinuxCNC .var file); a run "
         "whose programmed or compensated path would hold more than max_segments segments stops with "
         "ProgramError 'memory_limit' at the line of the block that crossed it; threads=False keeps the "
-        "overcut watch on the run's thread (for batches that keep every core busy). The GIL is released while the program runs.");
+        "overcut watch on the run's thread (for batches that keep every core busy); follow_links lets a called file be a "
+        "link out of its search directory; max_bytes and max_line_length bound every called file. The GIL is "
+        "released while the program runs.");
     m.def(
         "run_file",
         [](const std::string& path, std::optional<std::string> dialect, const ToolTable* tools, bool strict,
            bool block_delete, std::optional<ControlProfile> profile, py::object progress, std::size_t progress_every,
            std::vector<std::string> search_path, std::map<int, double> parameters, std::size_t max_segments,
-           std::uint64_t max_bytes, std::size_t max_line_length, bool threads) {
+           std::uint64_t max_bytes, std::size_t max_line_length, bool threads, bool follow_links) {
             RunOptions o = run_options(strict, block_delete, std::move(profile), progress, progress_every,
-                                       std::move(search_path), std::move(parameters), max_segments, threads);
+                                       std::move(search_path), std::move(parameters), max_segments, threads,
+                                       follow_links);
             std::optional<Dialect> d;
             if (dialect) d = dialect_from_name(*dialect);
             const auto table = snapshot(tools);
@@ -386,7 +394,7 @@ void bind_run(py::module_& m) {
         py::arg("path"), py::arg("dialect"), py::arg("tools"), py::arg("strict"), py::arg("block_delete"),
         py::arg("profile"), py::arg("progress"), py::arg("progress_every"), py::arg("search_path"),
         py::arg("parameters"), py::arg("max_segments"), py::arg("max_bytes"), py::arg("max_line_length"),
-        py::arg("threads") = true,
+        py::arg("threads") = true, py::arg("follow_links") = false,
         "run() on a program file, read leniently; a LinuxCNC / Fanuc file without control flow is read and "
         "parsed a piece at a time as it runs (see toolcomp.run).");
 }

@@ -13,8 +13,9 @@ namespace {
 StreamOptions stream_options(bool strict, bool block_delete, std::optional<ControlProfile> profile,
                              std::vector<std::string> search_path, std::map<int, double> parameters,
                              std::size_t chunk, std::size_t piece_bytes, std::uint64_t max_bytes,
-                             std::size_t max_line_length) {
+                             std::size_t max_line_length, bool follow_links) {
     StreamOptions o;
+    o.run.follow_links = follow_links;
     o.run.strict = strict;
     o.run.block_delete = block_delete;
     o.run.profile = std::move(profile);
@@ -81,28 +82,31 @@ void bind_stream(py::module_& m) {
         [](const std::string& path, std::optional<std::string> dialect, const ToolTable* tools, bool strict,
            bool block_delete, std::optional<ControlProfile> profile, std::vector<std::string> search_path,
            std::map<int, double> parameters, std::size_t chunk, std::size_t piece_bytes, std::uint64_t max_bytes,
-           std::size_t max_line_length) {
+           std::size_t max_line_length, bool follow_links) {
             std::optional<Dialect> d;
             if (dialect) d = dialect_from_name(*dialect);
             return std::make_shared<PathStream>(path, d, snapshot(tools),
                                                 stream_options(strict, block_delete, std::move(profile),
                                                                std::move(search_path), std::move(parameters), chunk,
-                                                               piece_bytes, max_bytes, max_line_length));
+                                                               piece_bytes, max_bytes, max_line_length, follow_links));
         },
         py::arg("path"), py::arg("dialect"), py::arg("tools"), py::arg("strict"), py::arg("block_delete"),
         py::arg("profile"), py::arg("search_path"), py::arg("parameters"), py::arg("chunk"), py::arg("piece_bytes"),
-        py::arg("max_bytes"), py::arg("max_line_length"), "A PathStream over a program file (see toolcomp.iter_run).");
+        py::arg("max_bytes"), py::arg("max_line_length"), py::arg("follow_links") = false,
+        "A PathStream over a program file (see toolcomp.iter_run).");
     m.def(
         "iter_run_program",
         [](std::shared_ptr<Program> program, const ToolTable* tools, bool strict, bool block_delete,
            std::optional<ControlProfile> profile, std::vector<std::string> search_path,
-           std::map<int, double> parameters, std::size_t chunk) {
+           std::map<int, double> parameters, std::size_t chunk, std::uint64_t max_bytes, std::size_t max_line_length,
+           bool follow_links) {
             return std::make_shared<PathStream>(std::shared_ptr<const Program>(std::move(program)), snapshot(tools),
                                                 stream_options(strict, block_delete, std::move(profile),
                                                                std::move(search_path), std::move(parameters), chunk,
-                                                               kPieceBytes, kDefaultMaxProgramBytes, kDefaultMaxLineLength));
+                                                               kPieceBytes, max_bytes, max_line_length, follow_links));
         },
         py::arg("program"), py::arg("tools"), py::arg("strict"), py::arg("block_delete"), py::arg("profile"),
         py::arg("search_path"), py::arg("parameters"), py::arg("chunk"),
-        "A PathStream over a parsed Program (see toolcomp.iter_run).");
+        py::arg("max_bytes") = kDefaultMaxProgramBytes, py::arg("max_line_length") = kDefaultMaxLineLength,
+        py::arg("follow_links") = false, "A PathStream over a parsed Program (see toolcomp.iter_run).");
 }

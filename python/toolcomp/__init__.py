@@ -54,7 +54,7 @@ _sys.modules[__name__ + ".sinumerik"] = sinumerik  # type: ignore[assignment]  #
 
 def run(program, tools=None, *, dialect=None, strict=True, block_delete=False, profile=None,
         units="mm", progress=None, progress_every=65536, search_path=(), parameters=None,
-        max_segments=20_000_000, max_bytes=2**31, max_line_length=2**20, threads=True):
+        max_segments=20_000_000, max_bytes=2**31, max_line_length=2**20, threads=True, follow_links=False):
     """Interpret ``program`` and apply tool compensation.
 
     ``program`` is a :class:`Program` or a path to a program file (dialect from the suffix
@@ -71,19 +71,23 @@ def run(program, tools=None, *, dialect=None, strict=True, block_delete=False, p
     file. LinuxCNC ``o<name> call`` looks for ``name.ngc`` there (before the program's own
     definitions, as LinuxCNC does), Fanuc ``M98 P1000`` / ``G65 P1000`` for ``O1000.nc``,
     ``O1000`` or ``1000.nc`` when the program file holds no ``O1000``; every segment's
-    ``file`` column indexes ``path.files``. ``parameters`` gives numbered parameters their
+    ``file`` column indexes ``path.files``. A called file found through a symbolic link whose
+    real path lies outside its search directory is refused (``outside_search_path``) unless
+    ``follow_links=True``; an entry of the name that is a FIFO, device or directory is refused
+    (``not_a_regular_file``); an empty directory name is refused (ValueError). ``parameters`` gives numbered parameters their
     start values: a ``{number: value}`` dict, or the path of a LinuxCNC ``.var`` file (read
     with :func:`toolcomp.params.read_var`); ``result.parameters`` holds the values at the
     end. The GIL is released while the program runs.
 
     Limits (each raises a :class:`Error` subclass with a stable ``code``): a program file
-    larger than ``max_bytes`` is refused before it is read (``input_too_large``, as is a
-    called program file over 2 GiB; a FIFO, device or directory: ``not_a_regular_file``), a
-    line longer than ``max_line_length`` bytes is refused with its line (``line_too_long``),
+    larger than ``max_bytes`` is refused before it is read (``input_too_large``, as is every
+    file it calls; a FIFO, device or directory: ``not_a_regular_file``), a line longer than
+    ``max_line_length`` bytes, in it or in a called file, is refused with its line (``line_too_long``),
     and a run whose programmed or compensated path would hold more than ``max_segments``
     segments (about 120 bytes each) stops at the block that crossed it (``memory_limit``;
     with ``strict=False`` the path up to it is returned). ``ControlProfile.block_limit`` and
-    ``call_depth_limit`` bound executed blocks and nested calls.
+    ``call_depth_limit`` bound executed blocks and nested calls. A run that exhausts the
+    memory anyway raises ``ProgramError`` ``out_of_memory``.
 
     ``threads``: a run puts its overcut watch, and the reading of the next piece of a program
     file, on threads of their own (the other core). ``threads=False`` keeps everything on the
@@ -102,10 +106,12 @@ def run(program, tools=None, *, dialect=None, strict=True, block_delete=False, p
         return _core.run_file(_os.fspath(program), dialect, tools, strict=strict, block_delete=block_delete,
                               profile=profile, progress=progress, progress_every=progress_every,
                               search_path=search_path, parameters=parameters, max_segments=max_segments,
-                              max_bytes=max_bytes, max_line_length=max_line_length, threads=threads)
+                              max_bytes=max_bytes, max_line_length=max_line_length, threads=threads,
+                              follow_links=follow_links)
     return _core.run(program, tools, strict=strict, block_delete=block_delete, profile=profile,
                      progress=progress, progress_every=progress_every, search_path=search_path,
-                     parameters=parameters, max_segments=max_segments, threads=threads)
+                     parameters=parameters, max_segments=max_segments, threads=threads,
+                     follow_links=follow_links, max_bytes=max_bytes, max_line_length=max_line_length)
 
 
 def _whole_at_least(name, value, least):
@@ -123,6 +129,9 @@ def _run_inputs(tools, units, search_path, parameters):
     if isinstance(search_path, (str, bytes, _os.PathLike)):
         search_path = [search_path]
     search_path = [_os.fsdecode(d) for d in search_path]
+    if any(d == "" for d in search_path):
+        raise ValueError("search_path: an empty directory name would mean the working directory, which a run "
+                         "never searches; name the directory (e.g. '.')")
     if isinstance(parameters, (str, _os.PathLike)):
         from .params import read_var
 
@@ -133,7 +142,7 @@ def _run_inputs(tools, units, search_path, parameters):
 
 def iter_run(program, tools=None, *, chunk=1_000_000, dialect=None, strict=True, block_delete=False,
              profile=None, units="mm", search_path=(), parameters=None, max_bytes=2**31,
-             max_line_length=2**20, piece_bytes=1 << 20):
+             max_line_length=2**20, piece_bytes=1 << 20, follow_links=False):
     """Run ``program`` like :func:`run` and yield its compensated path in chunks of ``chunk``
     segments (:class:`Path` objects; the last may be shorter). The chunks joined are the
     ``path`` that :func:`run` returns, segment for segment: the compensation look-ahead runs
@@ -143,7 +152,8 @@ def iter_run(program, tools=None, *, chunk=1_000_000, dialect=None, strict=True,
     LinuxCNC or Fanuc program file without control flow (no O-words, GOTO, loops, program
     numbers or M99: CAM output) is read ``piece_bytes`` at a time, so memory does not grow
     with its length; other programs (and Heidenhain, Sinumerik) are read whole, up to
-    ``max_bytes``, their path still streamed. ``max_segments`` does not apply.
+    ``max_bytes``, their path still streamed; ``max_bytes`` and ``max_line_length`` bound the
+    files it calls too, and ``follow_links`` is :func:`run`'s. ``max_segments`` does not apply.
 
     Errors: with ``strict=True`` the run's error is raised by the loop after the chunk that
     holds the segments before it; with ``strict=False`` it ends the stream and is in
@@ -159,9 +169,11 @@ def iter_run(program, tools=None, *, chunk=1_000_000, dialect=None, strict=True,
     if isinstance(program, (str, _os.PathLike)):
         return _core.iter_run_file(_os.fspath(program), dialect, tools, strict=strict, block_delete=block_delete,
                                    profile=profile, search_path=search_path, parameters=parameters, chunk=chunk,
-                                   piece_bytes=piece_bytes, max_bytes=max_bytes, max_line_length=max_line_length)
+                                   piece_bytes=piece_bytes, max_bytes=max_bytes, max_line_length=max_line_length,
+                                   follow_links=follow_links)
     return _core.iter_run_program(program, tools, strict=strict, block_delete=block_delete, profile=profile,
-                                  search_path=search_path, parameters=parameters, chunk=chunk)
+                                  search_path=search_path, parameters=parameters, chunk=chunk, max_bytes=max_bytes,
+                                  max_line_length=max_line_length, follow_links=follow_links)
 
 
 def _result_plot(self, ax=None, **kwargs):

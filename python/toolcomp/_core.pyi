@@ -295,7 +295,8 @@ def run(program: Program, tools: Optional[ToolTable] = None, strict: bool = True
         block_delete: bool = False, profile: Optional[ControlProfile] = None,
         progress: Optional[Callable[[int], None]] = None, progress_every: int = 65536,
         search_path: Sequence[str] = (), parameters: Mapping[int, float] = ...,
-        max_segments: int = 20000000) -> Result: ...
+        max_segments: int = 20000000, threads: bool = True, follow_links: bool = False,
+        max_bytes: int = 2147483648, max_line_length: int = 1048576) -> Result: ...
 
 class PathStream:
     """Iterator over a run's compensated path in chunks; see toolcomp.iter_run."""
@@ -320,16 +321,17 @@ class PathStream:
 def iter_run_file(path: str, dialect: Optional[str], tools: Optional[ToolTable], *, strict: bool,
                   block_delete: bool, profile: Optional[ControlProfile], search_path: Sequence[str],
                   parameters: Mapping[int, float], chunk: int, piece_bytes: int, max_bytes: int,
-                  max_line_length: int) -> PathStream: ...
+                  max_line_length: int, follow_links: bool = False) -> PathStream: ...
 
 def iter_run_program(program: Program, tools: Optional[ToolTable], *, strict: bool, block_delete: bool,
                      profile: Optional[ControlProfile], search_path: Sequence[str],
-                     parameters: Mapping[int, float], chunk: int) -> PathStream: ...
+                     parameters: Mapping[int, float], chunk: int, max_bytes: int = 2147483648,
+                     max_line_length: int = 1048576, follow_links: bool = False) -> PathStream: ...
 
 def run_file(path: str, dialect: Optional[str], tools: Optional[ToolTable], *, strict: bool, block_delete: bool,
              profile: Optional[ControlProfile], progress: Optional[Callable[[int], None]], progress_every: int,
              search_path: Sequence[str], parameters: Mapping[int, float], max_segments: int, max_bytes: int,
-             max_line_length: int) -> Result: ...
+             max_line_length: int, threads: bool = True, follow_links: bool = False) -> Result: ...
 
 _Plane = Union[int, str]  # 17, 18, 19 or "G17", "G18", "G19"
 _EdgeMap = dict[Tuple[int, int], "sinumerik.Edge"]

@@ -397,3 +397,26 @@ def test_a_run_under_an_address_space_limit_grows_the_paths_it_could_not_reserve
                        text=True, timeout=300)
     assert p.returncode == 0, p.stderr[-2000:]
     assert p.stdout.split() == [str(rows), str(rows)]
+
+
+_OOM_CHILD = """
+import resource, sys
+import toolcomp as tc
+resource.setrlimit(resource.RLIMIT_AS, (2 * 2**30, 2 * 2**30))
+prog = tc.Program.parse("G21 G0 X0\\no1 repeat [100000000]\\nG1 X1 F100\\nG1 X0\\no1 endrepeat\\nM2\\n")
+try:
+    tc.run(prog, max_segments=10**9, threads=sys.argv[1] == "1")
+except tc.ProgramError as e:
+    print(e.code)
+"""
+
+
+@pytest.mark.skipif("asan" in os.environ.get("LD_PRELOAD", ""),
+                    reason="AddressSanitizer reserves terabytes of address space: no address-space limit")
+@pytest.mark.parametrize("threads", ["0", "1"])
+def test_memory_exhausted_is_a_toolcomp_error(threads):
+    # 200 million segments asked for within 2 GiB of address space: the Paths' columns
+    # cannot grow; the run raises ProgramError out_of_memory, not a bare MemoryError.
+    p = subprocess.run([sys.executable, "-c", _OOM_CHILD, threads], capture_output=True, text=True, timeout=300)
+    assert p.returncode == 0, p.stderr
+    assert p.stdout.split() == ["out_of_memory"]

@@ -25,11 +25,6 @@ class ToolTable;
 Program parse_program(std::string_view text, Dialect dialect, std::string name = "<string>", bool strict = true,
                       std::size_t max_line_length = kDefaultMaxLineLength);
 
-// Limits on reading a program file (see input_limits.hpp).
-struct ReadLimits {
-    std::uint64_t max_bytes = kDefaultMaxProgramBytes;  // larger files: ParseError("input_too_large")
-    std::size_t max_line_length = kDefaultMaxLineLength;
-};
 // Read a program file; the dialect comes from the suffix when not given. Only a regular file
 // is read ("not_a_regular_file" otherwise), and its size is checked before it is read.
 Program read_program(const std::string& path, std::optional<Dialect> dialect = std::nullopt, bool strict = true,
@@ -56,9 +51,14 @@ struct RunOptions {
     std::size_t progress_every = 1 << 16;
     // Directories where programs called by name (Heidenhain CALL PGM, Sinumerik
     // subprograms, LinuxCNC o<name> call, Fanuc M98 / G65) are looked up, in order, and
-    // nowhere else. Moves of a called program carry line numbers of its own file and its
-    // index in Path::files.
+    // nowhere else (none may be empty: Error "search_path_empty"). Moves of a called program
+    // carry line numbers of its own file and its index in Path::files.
     std::vector<std::string> search_path;
+    // A called file whose real path leaves its search directory (through a symbolic link) is
+    // refused ("outside_search_path") unless this is set (program/search_path.hpp).
+    bool follow_links = false;
+    // Limits every called file is read within (run_file applies its own `limits` to them).
+    ReadLimits limits;
     // Numbered parameters the run starts from (LinuxCNC, Fanuc): a .var file's values.
     std::map<int, double> parameters;
     // Segments the programmed path and the compensated path may each hold: the segment
@@ -94,7 +94,8 @@ Result run(const Program& program, const ToolTable* tools, const RunOptions& opt
 inline constexpr std::size_t kPieceBytes = std::size_t{1} << 20;
 
 // Reads and runs a program file (dialect from the suffix unless given), read leniently (a
-// syntax error is raised when the run reaches its line). A LinuxCNC / Fanuc file in which
+// syntax error is raised when the run reaches its line); `limits` apply to it and to every
+// file it calls (they replace options.limits). A LinuxCNC / Fanuc file in which
 // nothing steers across blocks (no O-words, GOTO, loops, program numbers, M99: CAM output) is
 // read and parsed a piece at a time as it runs, so only the Paths grow with its length.
 Result run_file(const std::string& path, std::optional<Dialect> dialect, const ToolTable* tools,

@@ -31,7 +31,7 @@ struct StreamOptions {
     RunOptions run;                     // max_segments does not apply: a stream has no total
     std::size_t chunk = 1'000'000;      // segments per chunk (the last may hold fewer)
     std::size_t piece_bytes = kPieceBytes;  // text read at a time
-    ReadLimits read;                    // max_bytes: for a program read whole
+    ReadLimits read;                    // max_bytes: for a program read whole; every called file too
 };
 
 class PathStream {

@@ -23,6 +23,16 @@ const char* file_kind(mode_t m) {
     return "not a regular file";
 }
 
+}  // namespace
+
+const char* file_kind_text(const std::string& path) {
+    struct stat st;
+    if (::stat(path.c_str(), &st) != 0 || S_ISREG(st.st_mode)) return nullptr;
+    return file_kind(st.st_mode);
+}
+
+namespace {
+
 FileText failed(FileText::Status s, std::string detail, std::uint64_t size = 0) {
     FileText r;
     r.status = s;

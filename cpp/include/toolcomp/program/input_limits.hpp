@@ -14,6 +14,12 @@ inline constexpr std::uint64_t kDefaultMaxProgramBytes = std::uint64_t{2} << 30;
 inline constexpr std::uint64_t kDefaultMaxTableBytes = std::uint64_t{256} << 20;  // 256 MiB
 inline constexpr std::size_t kDefaultMaxLineLength = std::size_t{1} << 20;        // 1 MiB
 
+// Limits on reading a program file: a run's main program and every file it calls.
+struct ReadLimits {
+    std::uint64_t max_bytes = kDefaultMaxProgramBytes;  // larger files: ParseError("input_too_large")
+    std::size_t max_line_length = kDefaultMaxLineLength;
+};
+
 // What reading a file whole found. On anything but `ok`, `text` is empty and `detail` says
 // why: strerror() for cannot_open / cannot_read, the kind of file ("a FIFO", "a directory",
 // ...) for not_regular, nothing for too_large (`size` holds the size found).
@@ -35,6 +41,10 @@ FileText read_file_limited(const std::string& path, std::uint64_t max_bytes);
 // (10.0 GiB), more than the limit of ... (max_bytes)").
 const char* read_error_code(const FileText& f);
 std::string read_error_text(const FileText& f, std::uint64_t max_bytes);
+
+// What `path` names (links followed) when it is there and not a regular file: "a directory",
+// "a FIFO (named pipe)", "a character device", ...; nullptr for a regular file or nothing.
+const char* file_kind_text(const std::string& path);
 
 // "2147483648 bytes (2.0 GiB)": a byte count for messages.
 std::string byte_count_text(std::uint64_t n);

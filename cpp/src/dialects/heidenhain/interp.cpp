@@ -20,8 +20,8 @@
 namespace toolcomp::heidenhain {
 
 Interp::Interp(const Program& prog, const ToolTable* tools, const ControlProfile& profile, MotionSink& sink,
-               std::vector<Diagnostic>& diags, std::vector<std::string> search_path)
-    : prog_(prog), search_path_(std::move(search_path)), tools_(tools), profile_(profile), sink_(sink), diags_(diags), unit_(prog.inch ? kMmPerInch : 1.0) {}
+               std::vector<Diagnostic>& diags, SearchPath search)
+    : prog_(prog), search_(std::move(search)), tools_(tools), profile_(profile), sink_(sink), diags_(diags), unit_(prog.inch ? kMmPerInch : 1.0) {}
 
 void Interp::fail(const char* code, const std::string& msg, int column) const {
     throw ProgramError(code, msg, {line_, column, file_ > 0 ? files_.names()[static_cast<std::size_t>(file_)] : std::string()});
@@ -453,7 +453,8 @@ std::optional<std::filesystem::path> entry_in(const std::filesystem::path& dir, 
                                               bool directory) {
     namespace fs = std::filesystem;
     std::error_code ec;
-    auto kind_ok = [&](const fs::path& p) { return directory ? fs::is_directory(p, ec) : fs::is_regular_file(p, ec); };
+    // A file entry of any kind: look_in() tells a FIFO or a directory of the program's name.
+    auto kind_ok = [&](const fs::path& p) { return directory ? fs::is_directory(p, ec) : fs::exists(fs::symlink_status(p, ec)); };
     if (const fs::path exact = dir / name; kind_ok(exact)) return exact;
     if (!fs::is_directory(dir, ec)) return std::nullopt;
     const std::string want = to_upper_ascii(name);
@@ -490,18 +491,23 @@ std::string Interp::find_program(const std::string& name, int column) const {
     if (parts.empty()) fail("call_pgm_bad_name", "CALL PGM needs a program name", column);
     std::vector<std::string> names{parts.back()};
     if (parts.back().find('.') == std::string::npos) names.push_back(parts.back() + ".h");
-    for (const std::string& d : search_path_) {
+    for (const std::string& d : search_.dirs) {
         std::optional<fs::path> dir = fs::path(d);
         for (std::size_t k = 0; k + 1 < parts.size() && dir; ++k) dir = entry_in(*dir, parts[k], /*directory=*/true);
         if (!dir) continue;
         for (const std::string& n : names)
-            if (auto f = entry_in(*dir, n, /*directory=*/false)) return f->string();
+            if (auto f = entry_in(*dir, n, /*directory=*/false)) {
+                // Within the search directory `d`, not just the subdirectory the name gave.
+                const CalledEntry entry = look_in(search_, d, *f);
+                if (entry.kind == CalledEntry::refused) fail(entry.code.c_str(), "CALL PGM " + name + ": " + entry.message, column);
+                return entry.path.string();
+            }
     }
     std::string where;
-    for (const std::string& d : search_path_) where += (where.empty() ? "" : ", ") + d;
+    for (const std::string& d : search_.dirs) where += (where.empty() ? "" : ", ") + d;
     fail("call_pgm_not_found",
          "CALL PGM " + name + ": program not found" +
-             (search_path_.empty() ? std::string(" (no search path given: RunOptions::search_path, search_path=)")
+             (search_.dirs.empty() ? std::string(" (no search path given: RunOptions::search_path, search_path=)")
                                    : " in the search path (" + where + ")"),
          column);
 }
@@ -534,18 +540,8 @@ void Interp::call_program(Tokens t, int depth) {
     lookahead_ = 0;
     auto& sub = called_[file];
     if (!sub) {
-        FileText f = read_file_limited(file, kDefaultMaxProgramBytes);
-        if (f.status == FileText::cannot_open || f.status == FileText::cannot_read)
-            fail("call_pgm_not_found", "CALL PGM " + text + ": cannot read " + file, t[0].column);
-        if (f.status != FileText::ok)
-            fail(read_error_code(f), "CALL PGM " + text + ": cannot read " + file + ": " +
-                                         read_error_text(f, kDefaultMaxProgramBytes),
-                 t[0].column);
-        try {
-            check_line_lengths(f.text, kDefaultMaxLineLength, true);
-        } catch (const ParseError& e) {
-            fail(e.code().c_str(), "CALL PGM " + text + ": " + file + ": " + e.what(), t[0].column);
-        }
+        CalledText f = read_called(search_, file, true);
+        if (!f.ok()) fail(f.code.c_str(), "CALL PGM " + text + ": " + f.message, t[0].column);
         sub = std::make_shared<const Program>(parse(f.text, file, /*strict=*/false));
     }
     if (sub->inch != prog_.inch)
@@ -561,9 +557,9 @@ void Interp::call_program(Tokens t, int depth) {
 
 void interpret(const Program& program, const ToolTable* tools, const ControlProfile& profile, MotionSink& sink,
                std::vector<Diagnostic>& diagnostics, const std::function<void(std::size_t)>& progress,
-               std::size_t progress_every, const std::vector<std::string>& search_path,
+               std::size_t progress_every, const SearchPath& search,
                std::vector<std::string>* files) {
-    Interp interp(program, tools, profile, sink, diagnostics, search_path);
+    Interp interp(program, tools, profile, sink, diagnostics, search);
     if (progress) interp.on_progress(progress, progress_every);
     run_reporting(interp, files, [](const Interp& i) { return i.files(); });
 }

@@ -22,7 +22,7 @@ struct ToolDef {
 class Interp {
 public:
     Interp(const Program& prog, const ToolTable* tools, const ControlProfile& profile, MotionSink& sink,
-           std::vector<Diagnostic>& diags, std::vector<std::string> search_path = {});
+           std::vector<Diagnostic>& diags, SearchPath search = {});
     void run();
     const std::vector<std::string>& files() const { return files_.names(); }
     // Called with the number of blocks executed so far, every `every` blocks.
@@ -98,7 +98,7 @@ private:
     Element2 plane_element(const Motion& m) const;  // the move in the working plane
 
     const Program& prog_;
-    const std::vector<std::string> search_path_;  // directories for CALL PGM
+    const SearchPath search_;  // directories for CALL PGM, and the limits of the files read
     std::map<std::string, std::shared_ptr<const Program>> called_;  // parsed called programs, by file
     std::size_t executed_ = 0;  // blocks executed, called programs included (block limit)
     const ToolTable* tools_;

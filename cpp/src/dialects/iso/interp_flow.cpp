@@ -110,20 +110,13 @@ void Interp::push_frame(Frame f) {
 
 const LoadedProgram* Interp::load(const std::string& file_name) {
     if (auto it = by_file_.find(file_name); it != by_file_.end()) return it->second;
-    for (const std::string& dir : opts_.search_path) {
-        const std::filesystem::path path = std::filesystem::path(dir) / file_name;
-        std::error_code ec;
-        if (!std::filesystem::is_regular_file(path, ec)) continue;
-        FileText text = read_file_limited(path.string(), kDefaultMaxProgramBytes);
-        if (text.status == FileText::cannot_open || text.status == FileText::cannot_read) continue;
-        if (text.status != FileText::ok)
-            fail(read_error_code(text),
-                 "Cannot read " + path.string() + ": " + read_error_text(text, kDefaultMaxProgramBytes));
-        try {
-            check_line_lengths(text.text, kDefaultMaxLineLength, false);
-        } catch (const ParseError& e) {
-            fail(e.code().c_str(), path.string() + ": " + e.what());
-        }
+    for (const std::string& dir : opts_.search.dirs) {
+        const CalledEntry entry = look_in(opts_.search, dir, std::filesystem::path(dir) / file_name);
+        if (entry.kind == CalledEntry::absent) continue;
+        if (entry.kind == CalledEntry::refused) fail(entry.code.c_str(), entry.message);
+        const std::filesystem::path& path = entry.path;
+        CalledText text = read_called(opts_.search, path, false);
+        if (!text.ok()) fail(text.code.c_str(), text.message);
         try {
             loaded_programs_.push_back(parse(text.text, prog_.dialect, path.string(), true));
         } catch (const ParseError& e) {  // a syntax error in the called file: its line there
@@ -421,7 +414,7 @@ void Interp::call_program(Frame::Kind kind, const WordSlot& p_word, const WordSl
     if (!lp)
         fail("program_not_found",
              "Program O" + std::to_string(number) + " not found" +
-                 (opts_.search_path.empty() ? " (no search path given)" : " (not in the file nor on the search path)"),
+                 (opts_.search.dirs.empty() ? " (no search path given)" : " (not in the file nor on the search path)"),
              p_word.column);
     Frame f;
     f.kind = kind;

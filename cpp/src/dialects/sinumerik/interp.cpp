@@ -5,6 +5,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <optional>
+#include <utility>
 #include <sstream>
 
 #include "interp.hpp"
@@ -278,33 +280,31 @@ void Interp::call(const std::string& name, int passes, int column) {
     if (!p) {
         namespace fs = std::filesystem;
         std::string found;
-        for (const std::string& dir : opts_.search_path) {
+        for (const std::string& dir : opts_.search.dirs) {
+            // NAME.SPF before NAME.MPF before NAME, in any case; several spellings: the first
+            // in byte order (a directory lists its entries in no fixed order).
+            const std::string wanted[] = {name + ".SPF", name + ".MPF", name};
+            std::optional<std::pair<int, std::string>> best;
             std::error_code ec;
-            for (const auto& entry : fs::directory_iterator(dir, ec)) {
-                std::string file = entry.path().filename().string();
+            for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+                const std::string file = it->path().filename().string();
                 std::string up;
                 for (char ch : file) up.push_back(ascii_upper(ch));
-                if (up == name + ".SPF" || up == name + ".MPF" || up == name) {
-                    found = entry.path().string();
-                    break;
-                }
+                for (int rank = 0; rank < 3; ++rank)
+                    if (up == wanted[rank] && (!best || std::make_pair(rank, file) < *best)) best.emplace(rank, file);
             }
-            if (!found.empty()) break;
+            if (!best) continue;
+            const CalledEntry entry = look_in(opts_.search, dir, fs::path(dir) / best->second);
+            if (entry.kind == CalledEntry::refused) fail(entry.code, "Program " + name + ": " + entry.message, column);
+            found = entry.path.string();
+            break;
         }
         if (found.empty())
             fail("14011", "14011 Program " + name + " not existing or will be edited" +
-                              (opts_.search_path.empty() ? " (no search path given)" : " (not on the search path)"),
+                              (opts_.search.dirs.empty() ? " (no search path given)" : " (not on the search path)"),
                  column);
-        FileText f = read_file_limited(found, kDefaultMaxProgramBytes);
-        if (f.status != FileText::ok)
-            fail(read_error_code(f), "Program " + name + ": cannot read " + found + ": " +
-                                         read_error_text(f, kDefaultMaxProgramBytes),
-                 column);
-        try {
-            check_line_lengths(f.text, kDefaultMaxLineLength, true);
-        } catch (const ParseError& e) {
-            fail(e.code(), "Program " + name + ": " + found + ": " + e.what(), column);
-        }
+        CalledText f = read_called(opts_.search, found, true);
+        if (!f.ok()) fail(f.code, "Program " + name + ": " + f.message, column);
         loaded_.push_back(parse(f.text, found, false));
         p = &loaded_.back();
         loaded_by_name_[name] = p;

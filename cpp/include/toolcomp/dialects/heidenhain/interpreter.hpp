@@ -9,6 +9,7 @@
 #include "toolcomp/motion/motion.hpp"
 #include "toolcomp/program/diagnostic.hpp"
 #include "toolcomp/program/program.hpp"
+#include "toolcomp/program/search_path.hpp"
 
 namespace toolcomp {
 class ToolTable;
@@ -17,7 +18,7 @@ class ToolTable;
 namespace toolcomp::heidenhain {
 
 // `progress` (optional) is called with the blocks executed so far every `progress_every`.
-// `search_path`: the directories where CALL PGM looks for the called program (`name`, or
+// `search`: the directories where CALL PGM looks for the called program (`name`, or
 // `name.h` when the name has no suffix), in order; no other place is searched, and with an
 // empty search path every CALL PGM fails with "not found". The called program runs inline:
 // Q parameters and modal state are shared, radius compensation is cancelled by the call
@@ -25,7 +26,7 @@ namespace toolcomp::heidenhain {
 // in `files` (optional: the main program first, then each called file as first entered).
 void interpret(const Program& program, const ToolTable* tools, const ControlProfile& profile, MotionSink& sink,
                std::vector<Diagnostic>& diagnostics, const std::function<void(std::size_t)>& progress = {},
-               std::size_t progress_every = 1 << 16, const std::vector<std::string>& search_path = {},
+               std::size_t progress_every = 1 << 16, const SearchPath& search = {},
                std::vector<std::string>* files = nullptr);
 
 }  // namespace toolcomp::heidenhain

@@ -10,6 +10,7 @@
 #include "toolcomp/motion/motion.hpp"
 #include "toolcomp/program/diagnostic.hpp"
 #include "toolcomp/program/program.hpp"
+#include "toolcomp/program/search_path.hpp"
 
 namespace toolcomp {
 class ToolTable;
@@ -26,8 +27,9 @@ struct InterpretOptions {
     std::function<void(std::size_t)> progress;  // blocks read so far, every progress_every
     std::size_t progress_every = 1 << 16;
     // Directories where called subprogram files are looked up, in order, and nowhere else
-    // (LinuxCNC o<name> call: name.ngc; Fanuc M98/G65 P1000: O1000.nc, O1000, 1000.nc).
-    std::vector<std::string> search_path;
+    // (LinuxCNC o<name> call: name.ngc; Fanuc M98/G65 P1000: O1000.nc, O1000, 1000.nc), and
+    // the limits they are read within (program/search_path.hpp).
+    SearchPath search;
     ParameterValues parameters;  // start values
     // A main program read in pieces (streaming): called when the blocks of the piece run out,
     // it returns the next piece, or nullptr at the end of the file. The piece stays valid

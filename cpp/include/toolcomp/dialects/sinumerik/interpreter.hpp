@@ -17,6 +17,7 @@
 #include "toolcomp/motion/motion.hpp"
 #include "toolcomp/program/diagnostic.hpp"
 #include "toolcomp/program/program.hpp"
+#include "toolcomp/program/search_path.hpp"
 #include "toolcomp/tools/sinumerik_edge.hpp"
 
 namespace toolcomp {
@@ -30,8 +31,9 @@ struct InterpretOptions {
     std::function<void(std::size_t)> progress;  // blocks executed so far, every progress_every
     std::size_t progress_every = 1 << 16;
     // Directories searched, in order, for subprograms called by name or L number ("L10" looks
-    // for L10.spf / L10.SPF / L10.mpf / L10 there); nothing else is ever opened.
-    std::vector<std::string> search_path;
+    // for L10.spf / L10.SPF / L10.mpf / L10 there); nothing else is ever opened. With the
+    // limits called files are read within (program/search_path.hpp).
+    SearchPath search;
     // $TC_DP edges known before the program starts (the program's own $TC_DP assignments add
     // to them). An edge here takes precedence over the ToolTable's tool of the same number.
     SinumerikEdgeMap tool_data;
