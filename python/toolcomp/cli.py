@@ -80,6 +80,13 @@ def _int_or_none(v):
         return None
 
 
+def _directory_name(v):
+    """A --search-path value: a directory's name (an empty one would mean the working directory)."""
+    if not v:
+        raise argparse.ArgumentTypeError("an empty directory name; name the directory (e.g. '.')")
+    return v
+
+
 def _severity_name(sev) -> str:
     """'error' from 'error', Severity.error or an enum member; also used for dialects."""
     name = getattr(sev, "name", None) or str(sev)
@@ -531,6 +538,7 @@ def build_parser() -> argparse.ArgumentParser:
         sp.add_argument("--units-table", choices=("mm", "inch"), dest="units_table",
                         help="units of the tool table's lengths (default: the table's own)")
         sp.add_argument("--search-path", metavar="DIR", action="append", default=[], dest="search_path",
+                        type=_directory_name,
                         help="directory where called programs are looked for (Heidenhain CALL PGM, "
                              "Sinumerik L10 / named subprograms, LinuxCNC o<name> call, Fanuc M98/G65); "
                              "repeatable, searched in order")

@@ -189,3 +189,13 @@ def test_sinumerik_picks_the_same_file_whatever_the_directory_order(tmp_path):
     res = tc.run(_main("sinumerik"), search_path=[tmp_path])
     assert os.path.basename(res.nominal.files[1]) == "L10.Spf"
     np.testing.assert_array_equal(res.nominal.end[-1], [4, 0, 0])
+
+
+def test_the_command_line_refuses_an_empty_search_directory_as_a_usage_error(tmp_path):
+    import subprocess
+    import sys
+
+    (tmp_path / "p.ngc").write_text("G0 X1\nM2\n")
+    r = subprocess.run([sys.executable, "-m", "toolcomp", "run", str(tmp_path / "p.ngc"), "--search-path", ""],
+                       capture_output=True, text=True)
+    assert r.returncode == 2 and "empty directory name" in r.stderr
