@@ -253,8 +253,22 @@ void bind_run(py::module_& m) {
         .def_readwrite("last_comment_only", &ControlProfile::last_comment_only,
                        "only the last comment in parentheses of a block is read for MSG/DEBUG/PRINT, ';' "
                        "comments never (LinuxCNC); False: every comment")
-        .def_readwrite("call_depth_limit", &ControlProfile::call_depth_limit,
-                       "nested subprogram calls a program may make (LinuxCNC 9, Fanuc 10, default 100)")
+        .def_property(
+            "call_depth_limit", [](const ControlProfile& p) { return p.call_depth_limit; },
+            [](ControlProfile& p, std::size_t v) {
+                if (v > kMaxCallDepthLimit)
+                    throw py::value_error("call_depth_limit must be at most " + std::to_string(kMaxCallDepthLimit));
+                p.call_depth_limit = v;
+            },
+            "nested subprogram calls a program may make (LinuxCNC 9, Fanuc 10, default 100; at most 10000)")
+        .def_property(
+            "no_motion_limit", [](const ControlProfile& p) { return p.no_motion_limit; },
+            [](ControlProfile& p, std::size_t v) {
+                if (v < 1) throw py::value_error("no_motion_limit must be at least 1");
+                p.no_motion_limit = v;
+            },
+            "blocks executed in a row without a move before the run stops with 'no_progress' (an endless loop "
+            "that never moves the tool; default 10 000 000)")
         .def_readwrite("length_axes", &ControlProfile::length_axes,
                        "LengthAxes: which axes a tool length offset (G43 H) acts on")
         .def_readwrite("length_subtract_word", &ControlProfile::length_subtract_word,

@@ -255,6 +255,7 @@ class ControlProfile:
     startup_inch: bool
     block_limit: int
     call_depth_limit: int
+    no_motion_limit: int
     last_comment_only: bool
     feed_mode_clears_feed: bool
     tool_change_after_block: bool

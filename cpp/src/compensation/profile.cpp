@@ -188,6 +188,10 @@ void check_profile(const ControlProfile& p) {
     if (p.wear_sign != 1 && p.wear_sign != -1) bad("wear_sign", "1 (the wear added) or -1 (subtracted)", p.wear_sign);
     if (r.overcut_neighbours > 1000) bad("radius.overcut_neighbours", "at most 1000", r.overcut_neighbours);
     if (r.lookahead > 1000) bad("radius.lookahead", "at most 1000", r.lookahead);
+    if (p.call_depth_limit > kMaxCallDepthLimit)
+        bad("call_depth_limit", "at most " + std::to_string(kMaxCallDepthLimit), static_cast<double>(p.call_depth_limit));
+    if (p.no_motion_limit < 1) bad("no_motion_limit", "a count >= 1", 0);
+    if (p.block_limit < 1) bad("block_limit", "a count >= 1", 0);
     if (p.t_format < 0 || p.t_format > 6) bad("t_format", "0 (Fanuc) or a 9/Series format 1-6", p.t_format);
     if (p.tool_length_type < 0 || p.tool_length_type > 2) bad("tool_length_type", "0, 1 or 2", p.tool_length_type);
     const int c = p.tool_length_const < 0 ? -p.tool_length_const : p.tool_length_const;

@@ -163,6 +163,10 @@ struct RadiusRules {
 
 enum class Machine { mill = 0, lathe = 1 };
 
+// The deepest call nesting a profile may allow: each level holds a frame of the interpreter
+// (a few hundred bytes, more with local parameters); 10000 levels are a few MB.
+inline constexpr std::size_t kMaxCallDepthLimit = 10'000;
+
 struct ControlProfile {
     std::string name = "linuxcnc";
     Machine machine = Machine::mill;
@@ -173,7 +177,11 @@ struct ControlProfile {
     // stops with an error instead of hanging. Subprogram calls nested deeper than
     // `call_depth_limit` (recursion without end) stop it the same way.
     std::size_t block_limit = 100'000'000;
-    std::size_t call_depth_limit = 100;
+    std::size_t call_depth_limit = 100;  // at most kMaxCallDepthLimit
+    // Blocks executed in a row without a move: beyond it the run stops with "no_progress"
+    // (a loop that never moves the tool; dialects/idle_watch.hpp). Loops that cut are bounded
+    // by block_limit and max_segments only.
+    std::size_t no_motion_limit = 10'000'000;
     // Comments read for (MSG, ...), (DEBUG, ...), (PRINT, ...): only the last one in
     // parentheses of a block, ';' comments never (LinuxCNC keeps one comment per block), or
     // every comment of the block (false).

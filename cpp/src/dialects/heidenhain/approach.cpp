@@ -105,7 +105,8 @@ void Interp::emit_pieces(const std::vector<PathPiece>& pieces, double h, double 
                          std::size_t depth_after) {
     auto ax = axes(plane_);
     const bool with_first = depth_after == kDepthWithFirst;
-    if (with_first) depth_after = 0;  // a first piece without plane motion: straight to depth
+    if (with_first) depth_after = 0;
+    ++moves_;  // a first piece without plane motion: straight to depth
     Vec3 at = pos_;
     for (std::size_t i = 0; i < pieces.size(); ++i) {
         const PathPiece& pc = pieces[i];

@@ -108,6 +108,7 @@ void Interp::settle_pending() {
 
 // Emits the held element (after a RND or CHF between it and m has cut it back) and holds m.
 void Interp::put(Motion m) {
+    ++moves_;
     if (approach_ && approach_->connecting) {
         emit_connecting_approach(m);  // puts the approach pieces first (approach_ is reset)
     } else if (approach_) {

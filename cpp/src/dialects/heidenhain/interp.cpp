@@ -361,6 +361,8 @@ bool Interp::run_blocks(const Program& prog, int depth) {
         if (++executed_ > profile_.block_limit)
             fail("block_limit", "More than " + std::to_string(profile_.block_limit) +
                                     " blocks executed: an endless loop? (ControlProfile.block_limit)");
+        if (idle_.too_long(moves_, profile_.no_motion_limit)) [[unlikely]]
+            fail("no_progress", no_progress_text(profile_.no_motion_limit));
         if (raw.empty()) {
             ++pc;
             continue;

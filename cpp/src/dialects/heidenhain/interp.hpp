@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "../idle_watch.hpp"
 #include "toolcomp/program/source_files.hpp"
 #include "toolcomp/compensation/approach.hpp"
 #include "toolcomp/geometry/element.hpp"
@@ -101,6 +102,8 @@ private:
     const SearchPath search_;  // directories for CALL PGM, and the limits of the files read
     std::map<std::string, std::shared_ptr<const Program>> called_;  // parsed called programs, by file
     std::size_t executed_ = 0;  // blocks executed, called programs included (block limit)
+    std::size_t moves_ = 0;     // moves put (put(), put_contour_pieces())
+    IdleWatch idle_;            // blocks in a row without a move
     const ToolTable* tools_;
     const ControlProfile& profile_;
     MotionSink& sink_;

@@ -114,6 +114,8 @@ void Interp::count_block(int column) {
         fail("block_limit", "More than " + std::to_string(profile_.block_limit) +
                                 " blocks executed, canned cycle repeats included (ControlProfile.block_limit)",
              column);
+    if (idle_.too_long(moves_, profile_.no_motion_limit)) [[unlikely]]
+        fail("no_progress", no_progress_text(profile_.no_motion_limit), column);
 }
 
 void Interp::run() {

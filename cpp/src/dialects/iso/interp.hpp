@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "../idle_watch.hpp"
 #include "block_words.hpp"
 #include "flow.hpp"
 #include "params.hpp"
@@ -207,6 +208,7 @@ private:
 
     int line_ = 0;  // current block's source line
     std::size_t executed_ = 0;  // blocks executed, cycle repeats included (count_block)
+    IdleWatch idle_;            // blocks in a row without a move (count_block)
     ModalState st_;
     Vec6 pos_ = Vec6::Zero();
     std::array<Vec6, 9> g5x_;

@@ -178,6 +178,8 @@ bool Interp::step() {
     if (++executed_ > profile_.block_limit)
         fail("block_limit", "Block limit of " + std::to_string(profile_.block_limit) +
                                 " executed blocks exceeded (endless loop?)");
+    if (idle_.too_long(moves_, profile_.no_motion_limit)) [[unlikely]]
+        fail("no_progress", no_progress_text(profile_.no_motion_limit));
     if (opts_.progress && executed_ % opts_.progress_every == 0) opts_.progress(executed_);
     auto t = statements(c.prog->tokens(b));
     if (t.empty()) return true;

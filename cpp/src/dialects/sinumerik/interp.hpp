@@ -17,6 +17,7 @@
 #include <utility>
 #include <vector>
 
+#include "../idle_watch.hpp"
 #include "toolcomp/program/source_files.hpp"
 #include "toolcomp/dialects/sinumerik/interpreter.hpp"
 
@@ -208,6 +209,7 @@ private:
     std::deque<Program> loaded_;  // subprograms read from the search path
     std::map<std::string, const Program*> loaded_by_name_;
     std::size_t executed_ = 0;
+    IdleWatch idle_;  // blocks in a row without a move
     int line_ = 0;
 
     Modal st_;
