@@ -23,14 +23,23 @@ from ._errors import ParseError
 __all__ = ["read_var", "write_var"]
 
 _LINE = re.compile(r"^\s*(\d+)\s+([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*$", re.ASCII)
+# Values LinuxCNC's reader (C's strtod) takes that are no decimal number: nan, inf, infinity
+# and hexadecimal floats. Refused with their line, never skipped as unreadable (the parameter
+# would stay 0 where LinuxCNC has a value).
+_NOT_DECIMAL = re.compile(r"^\s*(\d+)\s+([-+]?(?:nan|inf|0x)\S*)", re.ASCII | re.IGNORECASE)
 
 
 def _parse(text: str, path: str) -> list[tuple[int | None, str]]:
     rows: list[tuple[int | None, str]] = []
     last = 0
     for lineno, line in enumerate(text.splitlines(), 1):
-        m = _LINE.match(line.lstrip("\ufeff") if lineno == 1 else line)  # a UTF-8 byte order mark
+        text_line = line.lstrip("\ufeff") if lineno == 1 else line  # a UTF-8 byte order mark
+        m = _LINE.match(text_line)
         if not m:
+            odd = _NOT_DECIMAL.match(text_line)
+            if odd:
+                raise ParseError(f"Parameter #{int(odd.group(1))} is not a finite decimal number ({odd.group(2)}) "
+                                 f"in {path}", "parameter_bad_value", lineno, 1)
             rows.append((None, line))
             continue
         n = int(m.group(1))

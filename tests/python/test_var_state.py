@@ -60,3 +60,17 @@ def test_var_files_read_and_written_faithfully(tmp_path):
     write_var(link, {31: 4.0})
     assert link.is_symlink() and read_var(f) == {31: 4.0, 40: 2.0}
     assert (os.stat(f).st_mode & 0o777) == 0o640
+
+
+@pytest.mark.parametrize("value", ["nan", "NaN", "-inf", "inf", "Infinity", "+INF", "nan(0x1)", "0x1p3", "-0X10"])
+def test_values_strtod_reads_but_no_decimal_number_are_refused_with_their_line(tmp_path, value):
+    # LinuxCNC reads the value column with C's strtod, which takes these: skipping the line
+    # would leave #40 at 0 where LinuxCNC has a value (or NaN).
+    f = tmp_path / "sim.var"
+    f.write_text(f"31\t1.5\n40\t{value}\n5220\t1\n")
+    with pytest.raises(tc.ParseError) as e:
+        read_var(f)
+    assert (e.value.code, e.value.line) == ("parameter_bad_value", 2)
+    assert "#40" in e.value.message
+    with pytest.raises(tc.ParseError):
+        tc.run(tc.Program.parse("G21 G0 X5\nM2\n"), parameters=f)
