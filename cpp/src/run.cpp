@@ -161,8 +161,7 @@ sinumerik::InterpretOptions sinumerik_options(const RunOptions& o, const Control
 
 Program parse_program(std::string_view text, Dialect dialect, std::string name, bool strict,
                       std::size_t max_line_length) {
-    // Sinumerik and Heidenhain end a line with a lone CR too; ISO dialects only with LF.
-    check_line_lengths(text, max_line_length, dialect == Dialect::sinumerik || dialect == Dialect::heidenhain);
+    check_line_lengths(text, max_line_length, cr_ends_line(dialect));
     if (dialect == Dialect::heidenhain) return heidenhain::parse(text, std::move(name), strict);
     if (dialect == Dialect::sinumerik) return sinumerik::parse(text, std::move(name), strict);
     if (!is_iso(dialect)) dialect_not_supported(dialect);

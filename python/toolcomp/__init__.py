@@ -7,6 +7,7 @@ and get the programmed and compensated paths as numpy arrays.
 """
 from __future__ import annotations
 
+import collections.abc as _abc
 import numbers as _numbers
 import os as _os
 import sys as _sys
@@ -136,6 +137,9 @@ def _run_inputs(tools, units, search_path, parameters):
         from .params import read_var
 
         parameters = read_var(parameters)
+    if parameters is not None and not isinstance(parameters, _abc.Mapping):
+        raise TypeError("parameters must be a {number: value} mapping or the path of a .var file, not "
+                        f"{type(parameters).__name__}")
     parameters = {int(k): float(v) for k, v in (parameters or {}).items()}
     return tools, search_path, parameters
 

@@ -48,7 +48,11 @@ def _copy(table: "_core.ToolTable") -> "_core.ToolTable":
 def from_pandas(df, base: Optional["_core.ToolTable"] = None, units: str = "mm") -> "_core.ToolTable":
     """A table from a DataFrame shaped like :func:`to_pandas`'s; with ``base``, a copy of it
     with the rows' values written over (tools not in ``df`` are kept). Missing columns keep
-    the base's values (or the defaults)."""
+    the base's values (or the defaults). A missing value (NaN, None, pd.NA) in a number
+    column keeps the base's value; where no base value exists (no ``base``, or a tool or edge
+    that is not in it) it is refused with ValueError naming the tool and the column, rather
+    than becoming 0 (a 6 mm cutter whose radius was lost in column arithmetic would be
+    taken as radius 0)."""
     table = _copy(base) if base is not None else _core.ToolTable(units)
     missing = {"tool"} - set(df.columns)
     if missing:
@@ -62,20 +66,32 @@ def from_pandas(df, base: Optional["_core.ToolTable"] = None, units: str = "mm")
             if field in rec and not _isnan(rec[field]):
                 setattr(tool, field, _whole(rec, field, number) if field == "pocket" else str(rec[field]))
         d = _whole(rec, "edge", number) if "edge" in rec and not _isnan(rec["edge"]) else 1
+        given = base.get(number) if base is not None else None
+        known = given is not None and given.has_edge(d)  # the base gives this edge's values
         edge = tool.edge(d) if tool.has_edge(d) else _core.CuttingEdge(number=d)
         for field, cols in _VEC.items():
             if any(c in rec for c in cols):
                 v = np.array(getattr(edge, field), dtype=float)
                 for i, c in enumerate(cols):
-                    if c in rec and not _isnan(rec[c]):
+                    if c in rec and not _missing(rec, c, number, d, known):
                         v[i] = _number(rec, c, number)
                 setattr(edge, field, v)
         for field in _SCALAR:
-            if field in rec and not _isnan(rec[field]):
+            if field in rec and not _missing(rec, field, number, d, known):
                 setattr(edge, field, _whole(rec, field, number) if field == "orientation" else _number(rec, field, number))
         tool.set_edge(edge)
         table.set(tool)
     return table
+
+
+def _missing(rec, field, tool, edge, known) -> bool:
+    """Whether a number cell is missing, which only a base value may fill."""
+    if not _isnan(rec[field]):
+        return False
+    if not known:
+        raise ValueError(f"from_pandas: {field} of tool {tool} (edge {edge}) is missing (NaN) and no base table "
+                         "gives it; fill it in (0 where 0 is meant)")
+    return True
 
 
 def _isnan(v) -> bool:

@@ -28,7 +28,7 @@ TEST_CASE("FilePieces: 64 kB first, then twice the one before up to the piece si
     for (int i = 0; text.size() < 1'500'000; ++i) text += "G1 X" + std::to_string(i % 977) + " Y" + std::to_string(i) + "\n";
     text += "M2";  // no newline at the end
     std::ofstream(path, std::ios::binary) << text;
-    FilePieces f(path.string(), 256 * 1024, 1 << 20);
+    FilePieces f(path.string(), 256 * 1024, 1 << 20, false);
     for (int pass = 0; pass < 2; ++pass) {  // the second after rewind()
         const std::vector<std::string> p = pieces_of(f);
         REQUIRE(p.size() >= 6);

@@ -130,3 +130,17 @@ def test_bad_input(name, exp):
     if "dialect" in exp and not exp.get("crash"):
         problem = lenient_outcome(name, exp)
         assert problem is None, problem
+
+
+@pytest.mark.parametrize("dialect, text", [
+    ("linuxcnc", "G0 X1\nG1 X2 \x00 F10\nM2\n"),
+    ("linuxcnc", "G0 X1\no<a\x00b> call\nM2\n"),
+    ("heidenhain", "0 BEGIN PGM A MM\n1 L X+1\x00 R0 FMAX\n2 END PGM A MM\n"),
+])
+def test_a_nul_byte_is_shown_escaped_in_the_message(dialect, text):
+    # A C string ends at a NUL: the message was cut there ("Bad character '").
+    with pytest.raises(tc.Error) as e:
+        tc.run(tc.Program.parse(text, dialect=dialect))
+    assert "\x00" not in e.value.message
+    before, after = e.value.message.split("\\x00", 1)
+    assert after  # the message goes on past the byte

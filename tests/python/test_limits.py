@@ -213,12 +213,17 @@ def test_line_ends_count_as_each_dialect_reads_them():
     assert (e.value.line, e.value.message) == (4, "Line 4 is 201 bytes long, more than the limit of 200 bytes "
                                                    "(max_line_length)")
     assert len(tc.Program.parse(text, dialect="sinumerik", max_line_length=201)) == 4
-    # ISO: a CR is no end of block, so "G0 X1\rG0 X2" is one line (line 2 here).
+    # LinuxCNC: a CR is no end of block, so "G0 X1\r(...)" is one line (line 2 here).
     iso = "G0 X0\r\nG0 X1\r(" + "a" * 200 + ")\nM2\n"
     with pytest.raises(tc.ParseError) as e:
-        tc.Program.parse(iso, dialect="fanuc", max_line_length=200)
+        tc.Program.parse(iso, dialect="linuxcnc", max_line_length=200)
     assert (e.value.line, e.value.code) == (2, "line_too_long")
     assert "208 bytes long" in e.value.message
+    # Fanuc: the lone CR ends line 2; the comment is line 3.
+    with pytest.raises(tc.ParseError) as e:
+        tc.Program.parse(iso, dialect="fanuc", max_line_length=200)
+    assert (e.value.line, e.value.code) == (3, "line_too_long")
+    assert "202 bytes long" in e.value.message
 
 
 def test_a_called_file_with_a_line_over_1_mib_is_refused_at_the_call(tmp_path):

@@ -3,6 +3,7 @@ a save changes only the edited lines."""
 import math
 import pathlib
 
+import numpy as np
 import pytest
 
 import toolcomp as tc
@@ -77,3 +78,25 @@ def test_from_pandas_missing_values_keep_the_base():
     df.loc[0, "radius"] = pd.NA
     new = tc.ToolTable.from_pandas(df, base=base)
     assert new.get(1).comment == "mill" and new.get(1).edge(1).radius == 5
+
+
+def test_a_missing_number_without_a_base_value_is_refused():
+    # Column arithmetic lost tool 2's radius (NaN): without a base it would become radius 0.
+    df = pd.DataFrame({"tool": [1, 2], "radius": [3.0, np.nan], "z": [40.0, 50.0]})
+    with pytest.raises(ValueError, match="radius of tool 2 .* missing"):
+        tc.ToolTable.from_pandas(df)
+    df = pd.DataFrame({"tool": [1, 2], "radius": [3.0, 5.0], "z": [40.0, None]})
+    with pytest.raises(ValueError, match="z of tool 2"):
+        tc.ToolTable.from_pandas(df)
+
+
+def test_a_missing_number_keeps_the_base_value():
+    base = tc.ToolTable()
+    base.set(tc.Tool(2, edges=[tc.CuttingEdge(radius=3.0, length=[0.0, 0.0, 40.0])]))
+    df = pd.DataFrame({"tool": [2, 7], "radius": [np.nan, 1.5], "z": [45.0, 30.0]})
+    table = tc.ToolTable.from_pandas(df, base=base)
+    assert table[2].edges[0].radius == 3.0 and table[2].edges[0].length[2] == 45.0
+    assert table[7].edges[0].radius == 1.5
+    df.loc[1, "radius"] = np.nan  # tool 7 is not in the base
+    with pytest.raises(ValueError, match="radius of tool 7"):
+        tc.ToolTable.from_pandas(df, base=base)

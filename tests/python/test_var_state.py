@@ -74,3 +74,9 @@ def test_values_strtod_reads_but_no_decimal_number_are_refused_with_their_line(t
     assert "#40" in e.value.message
     with pytest.raises(tc.ParseError):
         tc.run(tc.Program.parse("G21 G0 X5\nM2\n"), parameters=f)
+
+
+@pytest.mark.parametrize("params", [[1, 2], (3.0,), 5])
+def test_parameters_that_are_no_mapping_are_a_type_error(params):
+    with pytest.raises(TypeError, match="parameters must be a"):
+        tc.run(tc.Program.parse("G21 G0 X5\nM2\n"), parameters=params)

@@ -13,7 +13,7 @@ std::size_t check_program_file(const std::string& path, std::optional<Dialect> d
     const Dialect d = dialect_of_file(path, dialect);
     if (!is_iso(d)) return read_program(path, d, /*strict=*/true, limits).size();  // read whole by a run too
     ::close(open_program_file(path));  // a missing file, a FIFO or a directory: as read_program says
-    FilePieces pieces(path, kPieceBytes, limits.max_line_length);
+    FilePieces pieces(path, kPieceBytes, limits.max_line_length, cr_ends_line(d));
     iso::PieceParser parser(d, path, /*strict=*/true, kPieceBytes);
     std::size_t blocks = 0;
     Program piece;  // each piece parsed over the one before (its memory written already)

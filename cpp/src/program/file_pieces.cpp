@@ -12,9 +12,10 @@
 
 namespace toolcomp {
 
-FilePieces::FilePieces(const std::string& path, std::size_t piece_bytes, std::size_t max_line_length)
+FilePieces::FilePieces(const std::string& path, std::size_t piece_bytes, std::size_t max_line_length,
+                       bool cr_ends_line)
     : path_(path), fd_(open_program_file(path)), piece_bytes_(std::max<std::size_t>(piece_bytes, 1)),
-      max_line_length_(max_line_length), want_(first_piece_bytes()) {}
+      max_line_length_(max_line_length), want_(first_piece_bytes()), cr_ends_line_(cr_ends_line) {}
 
 std::size_t FilePieces::first_piece_bytes() const { return std::min<std::size_t>(piece_bytes_, std::size_t{1} << 16); }
 
@@ -26,12 +27,13 @@ void FilePieces::rewind() {
     if (::lseek(fd_, 0, SEEK_SET) < 0)
         throw ParseError("file_read_error", "Cannot read program file '" + path_ + "': " + std::strerror(errno));
     buf_.clear();
-    carry_ = lines_ = 0;
+    carry_ = lines_ = decided_ = 0;
     eof_ = false;
     want_ = first_piece_bytes();
 }
 
 std::string_view FilePieces::next() {
+    if (cr_ends_line_) decided_ -= buf_.size() - carry_;
     buf_.erase(0, buf_.size() - carry_);  // the piece handed out last time
     // Read until a piece's worth ending with a newline is there, or the file ends.
     const std::size_t want = want_;
@@ -46,6 +48,8 @@ std::string_view FilePieces::next() {
             throw ParseError("file_read_error", "Cannot read program file '" + path_ + "': " + std::strerror(errno));
         }
         eof_ = n == 0;
+        if (cr_ends_line_)
+            decided_ += cr_line_ends_to_lf(buf_.data() + decided_, buf_.size() - decided_, eof_);
         // A line with no end within the limit is too long, whatever follows: stop reading it.
         const std::size_t last_nl = buf_.rfind('\n');
         const std::size_t from = last_nl == std::string::npos ? 0 : last_nl + 1;

@@ -12,7 +12,8 @@ namespace toolcomp {
 
 class FilePieces {
 public:
-    FilePieces(const std::string& path, std::size_t piece_bytes, std::size_t max_line_length);
+    // `cr_ends_line`: lone CRs end lines (program/dialect.hpp); they are handed out as LF.
+    FilePieces(const std::string& path, std::size_t piece_bytes, std::size_t max_line_length, bool cr_ends_line);
     ~FilePieces();
     FilePieces(const FilePieces&) = delete;
     FilePieces& operator=(const FilePieces&) = delete;
@@ -34,6 +35,8 @@ private:
     std::size_t carry_ = 0; // bytes after the piece handed out (a line not yet complete)
     std::size_t lines_ = 0; // line ends before the piece handed out
     bool eof_ = false;
+    bool cr_ends_line_;
+    std::size_t decided_ = 0;  // CR line ends before it in buf_ are LF already
 };
 
 }  // namespace toolcomp

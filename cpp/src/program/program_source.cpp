@@ -19,7 +19,7 @@ ProgramSource::ProgramSource(const std::string& path, Dialect dialect, const Rea
                                                 " (max_bytes)");
     bool whole = !is_iso(dialect);
     if (!whole) {
-        pieces_.emplace(path, piece_bytes, limits.max_line_length);
+        pieces_.emplace(path, piece_bytes, limits.max_line_length, cr_ends_line(dialect));
         for (std::string_view t = pieces_->next(); !t.empty() && !whole; t = pieces_->next()) {
             whole = iso::may_steer(t);
             if (check_) check_();

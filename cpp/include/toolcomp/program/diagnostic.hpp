@@ -32,10 +32,15 @@ struct Diagnostic {
 // CompensationError, ToolTableError (all deriving from toolcomp.Error).
 enum class ErrorKind { generic, parse, program, compensation, tool_table };
 
+// `message` with each NUL byte written as "\x00": what() is a C string, which a NUL (quoted
+// from a program or a file name) would cut short.
+std::string without_nul(const std::string& message);
+
 class Error : public std::runtime_error {
 public:
     Error(ErrorKind kind, std::string code, const std::string& message, SourcePos pos = {})
-        : std::runtime_error(message), kind_(kind), code_(std::move(code)), pos_(pos) {}
+        : std::runtime_error(message.find('\0') == std::string::npos ? message : without_nul(message)),
+          kind_(kind), code_(std::move(code)), pos_(pos) {}
     ErrorKind kind() const noexcept { return kind_; }
     const std::string& code() const noexcept { return code_; }
     SourcePos pos() const noexcept { return pos_; }

@@ -11,6 +11,11 @@ enum class Dialect { linuxcnc, fanuc, sinumerik, heidenhain, rockwell };
 std::string_view dialect_name(Dialect d);
 // The word-address dialects the ISO front end reads (LinuxCNC, Fanuc, Rockwell).
 inline bool is_iso(Dialect d) { return d == Dialect::linuxcnc || d == Dialect::fanuc || d == Dialect::rockwell; }
+// Whether a lone CR (a run of CRs not followed by LF) ends a line, each CR one, as LF does
+// ("\r\n" and "\r\r\n" are one line end everywhere). LinuxCNC reads a line up to LF only: a
+// file with CR line ends is one long line there (checked against rs274). The other
+// dialects' files come from editors and DNC programs that write CR, LF or CRLF.
+inline bool cr_ends_line(Dialect d) { return d != Dialect::linuxcnc; }
 // Parses "linuxcnc", "fanuc", ...; throws ParseError("unknown_dialect") otherwise.
 Dialect dialect_from_name(std::string_view name);
 // .ngc linuxcnc, .nc/.tap fanuc, .mpf/.spf sinumerik, .h heidenhain; nullopt when unknown.

@@ -24,6 +24,33 @@ inline std::size_t line_ends(std::string_view text) {
     return n;
 }
 
+// Writes each line-ending CR of text[0, n) as LF: a run of CRs followed by LF stays (one line
+// end, the CRs blanks), a run of CRs followed by anything else becomes that many LFs. A run
+// at the end of the text is decided only when `at_end` (more text may bring its LF).
+// Returns the length of the part decided: from there on, call again with more text.
+inline std::size_t cr_line_ends_to_lf(char* text, std::size_t n, bool at_end) {
+    for (std::size_t i = 0; i < n; ++i) {
+        if (text[i] != '\r') continue;
+        std::size_t j = i;
+        while (j < n && text[j] == '\r') ++j;
+        if (j == n && !at_end) return i;
+        if (j == n || text[j] != '\n')
+            for (std::size_t k = i; k < j; ++k) text[k] = '\n';
+        i = j - 1;
+    }
+    return n;
+}
+// Whether text holds a CR that is not part of a CR...LF line end.
+inline bool has_lone_cr(std::string_view text) {
+    for (std::size_t i = text.find('\r'); i != std::string_view::npos; i = text.find('\r', i)) {
+        std::size_t j = i;
+        while (j < text.size() && text[j] == '\r') ++j;
+        if (j == text.size() || text[j] != '\n') return true;
+        i = j;
+    }
+    return false;
+}
+
 inline std::string_view skip_bom(std::string_view text) {
     if (text.size() >= 3 && static_cast<unsigned char>(text[0]) == 0xEF && static_cast<unsigned char>(text[1]) == 0xBB &&
         static_cast<unsigned char>(text[2]) == 0xBF)

@@ -115,7 +115,7 @@ const LoadedProgram* Interp::load(const std::string& file_name) {
         if (entry.kind == CalledEntry::absent) continue;
         if (entry.kind == CalledEntry::refused) fail(entry.code.c_str(), entry.message);
         const std::filesystem::path& path = entry.path;
-        CalledText text = read_called(opts_.search, path, false);
+        CalledText text = read_called(opts_.search, path, cr_ends_line(prog_.dialect));
         if (!text.ok()) fail(text.code.c_str(), text.message);
         try {
             loaded_programs_.push_back(parse(text.text, prog_.dialect, path.string(), true));

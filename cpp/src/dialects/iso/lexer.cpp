@@ -219,6 +219,11 @@ Program parse(std::string_view text, Dialect dialect, std::string name, bool str
 }
 
 Program PieceParser::parse(std::string_view text, Program prog) {
+    if (cr_ends_line(dialect_) && has_lone_cr(text)) {  // CR line ends (file pieces come as LF)
+        std::string lf(text);
+        cr_line_ends_to_lf(lf.data(), lf.size(), true);
+        return parse(std::string_view(lf), std::move(prog));
+    }
     if (first_) text = skip_bom(text);
     first_ = false;
     prog.clear();
