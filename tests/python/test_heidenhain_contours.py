@@ -43,3 +43,21 @@ def test_appr_ct_with_compensation_on_is_a_connecting_element():
     assert p.kind[appr[1]] == tc.ARC_CCW
     np.testing.assert_allclose(p.center[appr[1], :2], [35, 10], atol=1e-9)
     assert (p.side[appr] == 1).all()
+
+
+@pytest.mark.parametrize("cc, column", [("CC X+10 Z+5", 11), ("CC IX+10 IZ+5", 12), ("CC Z+5", 6)])
+def test_a_pole_outside_the_working_plane_is_refused(cc, column):
+    # CC X.. Z.. under the Z tool axis: the TNC cuts the following C in the ZX plane (as
+    # Fusion 360 writes lead-in arcs); drawing it in XY moved the tool in Y without a word.
+    text = f"0 BEGIN PGM A MM\n1 L X+0 Y+0 Z+10 R0 FMAX\n2 {cc}\n3 C X+20 Z+5 DR+ F100\n4 END PGM A MM\n"
+    with pytest.raises(tc.ProgramError) as e:
+        tc.run(tc.Program.parse(text, dialect="heidenhain"))
+    assert (e.value.code, e.value.line, e.value.column) == ("cc_outside_plane", 3, column)
+
+
+def test_a_pole_in_the_plane_still_runs():
+    # From (0, 0) around (10, 5) to (20, 0): radius sqrt(125), counter-clockwise.
+    text = "0 BEGIN PGM A MM\n1 L X+0 Y+0 Z+10 R0 FMAX\n2 CC X+10 Y+5\n3 C X+20 Y+0 DR+ F100\n4 END PGM A MM\n"
+    res = tc.run(tc.Program.parse(text, dialect="heidenhain"))
+    np.testing.assert_allclose(res.nominal.center[-1], [10, 5, 10])
+    np.testing.assert_allclose(res.nominal.end[-1], [20, 0, 10])

@@ -176,6 +176,14 @@ void Interp::circle_centre(Tokens t) {
     static constexpr std::string_view inc[3] = {"IX", "IY", "IZ"};
     Vec2 c = plane2(pos_);
     for (const Token& k : t) {
+        // A pole in another plane (CC X.. Z.. under TOOL CALL Z, as CAM posts write lead-in
+        // arcs in the ZX plane) makes the TNC cut the following circle in that plane: refused
+        // until circles out of the working plane are read, rather than drawn in the plane.
+        if (k.key == names[ax.c] || k.key == inc[ax.c])
+            fail("cc_outside_plane",
+                 "CC " + std::string(k.key) + ": a pole outside the working plane (" + std::string(names[ax.a]) +
+                     std::string(names[ax.b]) + ") sets circles in another plane, which toolcomp does not read yet",
+                 k.column);
         for (int i : {ax.a, ax.b}) {
             const double base = i == ax.a ? pos_[ax.a] : pos_[ax.b];
             double& v = i == ax.a ? c.x() : c.y();
