@@ -236,6 +236,16 @@ void bind_run(py::module_& m) {
                        "profile name (the dialect's name for built-in profiles)")
         .def_readwrite("startup_inch", &ControlProfile::startup_inch,
                        "G20 (inch) active at program start")
+        .def_property(
+            "startup_plane",
+            [](const ControlProfile& p) { return p.startup_plane == Plane::xy ? 17 : p.startup_plane == Plane::zx ? 18 : 19; },
+            [](ControlProfile& p, int g) {
+                if (g != 17 && g != 18 && g != 19) throw py::value_error("startup_plane must be 17, 18 or 19");
+                p.startup_plane = g == 17 ? Plane::xy : g == 18 ? Plane::zx : Plane::yz;
+            },
+            "the working plane at program start: 17 (XY, mills), 18 (ZX, lathes) or 19")
+        .def_readwrite("startup_feed_per_rev", &ControlProfile::startup_feed_per_rev,
+                       "feed per revolution at program start (Fanuc lathes: G99 at power on)")
         .def_readwrite("block_limit", &ControlProfile::block_limit, "blocks a program may execute (loops count)")
         .def_readwrite("feed_mode_clears_feed", &ControlProfile::feed_mode_clears_feed,
                        "G94/G95 set the feed rate to 0, so the next feed move needs an F word (LinuxCNC)")

@@ -253,6 +253,8 @@ class ControlProfile:
     tool_parameter_def_mask: int
     name: str
     startup_inch: bool
+    startup_plane: int
+    startup_feed_per_rev: bool
     block_limit: int
     call_depth_limit: int
     no_motion_limit: int

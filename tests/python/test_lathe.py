@@ -135,3 +135,27 @@ def test_fanuc_lathe_g_code_system_a(block, code, what):
     with pytest.raises(tc.ProgramError) as e:
         tc.run(tc.Program.parse(FANUC_LATHE_START + block + "\nM30\n", "fanuc"), profile=prof)
     assert e.value.code == code and e.value.line == 4 and what in e.value.message
+
+
+@pytest.mark.parametrize("dialect", ["fanuc", "rockwell"])
+def test_a_lathe_starts_in_the_zx_plane(dialect):
+    # No G18 in the program: an R arc from (X50 Z-10) to (X60 Z-15), X in diameter, is cut in
+    # ZX as the lathe powers up in G18. G2 seen from +Y, R5 on the 7.07 mm chord: the centre
+    # lies 3.54 mm right of the chord's middle (Z-12.5, X radius 27.5) in (Z, X): Z-10, X30.
+    profile = tc.ControlProfile(dialect, machine="lathe")
+    assert profile.startup_plane == 18
+    text = "G21 G0 X50 Z0 T0101 S500 M3\nG1 Z-10 F0.2\nG2 X60 Z-15 R5\nM30\n"
+    res = tc.run(tc.Program.parse(text, dialect=dialect), profile=profile)
+    np.testing.assert_allclose(res.nominal.center[-1], [30, 0, -10], atol=1e-12)
+    np.testing.assert_allclose(res.nominal.end[-1], [30, 0, -15])
+    assert tc.ControlProfile(dialect, machine="mill").startup_plane == 17 or dialect == "rockwell"
+
+
+def test_a_fanuc_lathe_feeds_per_revolution_at_power_on():
+    # G99 is the T series' power-on state: F0.2 at S500 is 100 mm/min.
+    profile = tc.ControlProfile("fanuc", machine="lathe")
+    assert profile.startup_feed_per_rev
+    text = "G21 G18 G0 X50 Z0 T0101 S500 M3\nG1 Z-10 F0.2\nG98 G1 Z-20 F80\nM30\n"
+    res = tc.run(tc.Program.parse(text, dialect="fanuc"), profile=profile)
+    np.testing.assert_allclose(res.nominal.feed[1:], [100, 80])
+    assert not tc.ControlProfile("fanuc").startup_feed_per_rev

@@ -34,7 +34,7 @@ def test_programs_in_the_configured_folder_are_tests(tmp_path):
     # Per-folder settings: a Fanuc lathe with its offset table.
     (nc / "lathe" / "toolcomp.toml").write_text('dialect = "fanuc"\nmachine = "lathe"\ntools = "offsets.csv"\n')
     (nc / "lathe" / "offsets.csv").write_text("offset,x,z,nose_radius,tip\n1,0,0,0.8,3\n")
-    (nc / "lathe" / "od.nc").write_text("G21 G18 G40 T0101\nG0 X50 Z2\nG42 G1 X40 Z0 F0.2\nZ-20\nG40 G0 X60 Z5\nM30\n")
+    (nc / "lathe" / "od.nc").write_text("G21 G18 G40 T0101 S800 M3\nG0 X50 Z2\nG42 G1 X40 Z0 F0.2\nZ-20\nG40 G0 X60 Z5\nM30\n")
     r = run_pytest(tmp_path)
     assert "1 failed, 2 passed" in r.stdout, r.stdout
     assert "nc/gouge.ngc:6:0: error" in r.stdout

@@ -13,6 +13,7 @@ ControlProfile profile_for(Dialect d, Machine machine) {
     ControlProfile p;
     p.name = std::string(dialect_name(d));
     p.machine = machine;
+    if (machine == Machine::lathe) p.startup_plane = Plane::zx;
     // Nested subprogram levels: LinuxCNC allows 9 (the 10th call is "Too many subroutine
     // levels"), Fanuc 10 (M98 and G65 together, 0i/30i).
     if (d == Dialect::linuxcnc) p.call_depth_limit = 9;
@@ -55,6 +56,7 @@ ControlProfile profile_for(Dialect d, Machine machine) {
                 p.x_diameter = true;
                 p.incremental_uw = true;
                 p.t_offsets = true;
+                p.startup_feed_per_rev = true;  // G99 at power on (parameter FPM of the T series)
                 p.length_axes = LengthAxes::all;
                 r.tip_convention = TipConvention::fanuc;
                 p.g_code_system_a = true;
@@ -87,6 +89,7 @@ ControlProfile profile_for(Dialect d, Machine machine) {
             // in the entry or exit block, checks switchable with M800/M801. The texts of the
             // control's messages are not in the manual excerpt: these name the condition.
             p.machine = Machine::lathe;
+            p.startup_plane = Plane::zx;
             p.x_diameter = true;
             p.incremental_uw = true;
             p.t_offsets = true;

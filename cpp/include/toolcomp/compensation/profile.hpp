@@ -173,6 +173,13 @@ struct ControlProfile {
 
     // ---- interpreter ------------------------------------------------------------------
     bool startup_inch = false;  // G20 active at program start
+    // The working plane at program start: G17 (XY) on mills, G18 (ZX) on lathes (Fanuc T,
+    // 9/Series and Sinumerik lathes power up in it), so that R arcs and G41/G42 of a lathe
+    // program without G18 act in the plane the control uses.
+    Plane startup_plane = Plane::xy;
+    // Feed per revolution at program start (Fanuc T series: G99 is the power-on state, F0.2
+    // is 0.2 mm a turn); false: per minute.
+    bool startup_feed_per_rev = false;
     // Blocks a program may execute (loops and repeats count every pass): beyond it the run
     // stops with an error instead of hanging. Subprogram calls nested deeper than
     // `call_depth_limit` (recursion without end) stop it the same way.

@@ -34,6 +34,8 @@ Interp::Interp(const Program& prog, const ToolTable* tools, const ControlProfile
     for (auto& o : g5x_) o.setZero();
     st_.inch = profile.startup_inch;
     st_.diameter = profile.x_diameter;
+    st_.plane = profile.startup_plane;
+    if (profile.startup_feed_per_rev) st_.feed_mode = 950;
     load_parameters(opts.parameters);
 }
 

@@ -45,7 +45,7 @@ Interp::Interp(const Program& prog, const ToolTable* tools, const ControlProfile
     : main_(prog), tools_(tools), profile_(profile), opts_(opts), sink_(sink), diags_(diags) {
     edges_ = opts_.tool_data;
     holders_ = opts_.toolholders;
-    if (profile_.machine == Machine::lathe) st_.plane = Plane::zx;
+    st_.plane = profile_.startup_plane;
 }
 
 void Interp::fail(const std::string& code, const std::string& msg, int column) const {
