@@ -61,3 +61,14 @@ def test_a_pole_in_the_plane_still_runs():
     res = tc.run(tc.Program.parse(text, dialect="heidenhain"))
     np.testing.assert_allclose(res.nominal.center[-1], [10, 5, 10])
     np.testing.assert_allclose(res.nominal.end[-1], [20, 0, 10])
+
+
+def test_the_feed_of_rnd_and_chf_is_for_the_corner_only():
+    # TNC: F in an RND / CHF block is the feed of the rounding or chamfer; the next element
+    # runs at the contour's F100 again.
+    text = ("0 BEGIN PGM A MM\n1 L X+0 Y+0 R0 F100\n2 L X+10\n3 RND R2 F10\n4 L Y+10\n5 CHF 2 F20\n"
+            "6 L X+0\n7 END PGM A MM\n")
+    res = tc.run(tc.Program.parse(text, dialect="heidenhain"))
+    assert list(res.nominal.kind) == [tc.LINE, tc.ARC_CCW, tc.LINE, tc.LINE, tc.LINE]
+    np.testing.assert_array_equal(res.nominal.feed, [100, 10, 100, 20, 100])
+    np.testing.assert_array_equal(res.nominal.line, [3, 4, 5, 6, 7])

@@ -141,6 +141,7 @@ void Interp::put(Motion m) {
                                {at, 0});
         Motion corner = prev;
         corner.line = at;
+        corner.feed = pending_corner_feed_;
         if (round) {
             const auto f = fillet(e1, e2, pending_round_);
             if (!f) throw ProgramError("rounding_too_large", "ROUNDING-OFF RADIUS TOO LARGE", {at, 0});
@@ -379,8 +380,17 @@ void Interp::surface_line(Tokens t) {
     pos_ = pt;
 }
 
-void Interp::rounding(Tokens t) {
+// An F in an RND or CHF block is the feed of the rounding or chamfer only (TNC); the
+// contour goes on at the feed before it.
+void Interp::corner_feed(Tokens t) {
+    const double before = feed_;
     modal_words(t, 1);
+    pending_corner_feed_ = feed_;
+    feed_ = before;
+}
+
+void Interp::rounding(Tokens t) {
+    corner_feed(t);
     const auto r = number(t, "R");
     if (!r || *r <= 0) fail("rounding_radius", "RND needs a radius R > 0", t[0].column);
     if (!pending_) fail("corner_without_element", "RND cannot be the first element of a contour", t[0].column);
@@ -389,7 +399,7 @@ void Interp::rounding(Tokens t) {
 }
 
 void Interp::chamfer(Tokens t) {
-    modal_words(t, 1);
+    corner_feed(t);
     double n = t[0].has_value ? t[0].value : (t.size() > 1 && t[1].key.empty() && t[1].has_value ? t[1].value : 0);
     if (n <= 0) fail("chamfer_length", "CHF needs a length > 0", t[0].column);
     if (!pending_) fail("chamfer_not_permitted", "CHAMFER NOT PERMITTED", t[0].column);

@@ -65,6 +65,7 @@ private:
     void polar_line(Tokens t);
     Vec3 polar_end(Tokens t) const;  // PR/IPR, PA/IPA about the pole, the tool axis from Z words
     void polar_arc(Tokens t);
+    void corner_feed(Tokens t);  // the modal words of RND / CHF, their F for the corner only
     void rounding(Tokens t);
     void chamfer(Tokens t);
     double q_value(int n, int column) const;  // a Q parameter read (refused where it is the control's)
@@ -139,6 +140,7 @@ private:
     std::optional<Motion> pending_;
     double pending_round_ = 0, pending_chamfer_ = 0;  // RND / CHF between pending_ and the next
     int pending_corner_line_ = 0;
+    double pending_corner_feed_ = 0;  // the feed of the rounding or chamfer (its own F, else the contour's)
     int plane_moves_ = 0;  // positioning blocks in the plane (CT needs two)
     bool last_rapid_ = false;  // the last positioning block was FMAX
     struct PendingApproach {
