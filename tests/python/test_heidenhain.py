@@ -363,3 +363,25 @@ def test_q_errors_and_the_block_limit():
     text = "0 BEGIN PGM L MM\n1 LBL 1\n2 FN 9: IF +0 EQU +0 GOTO LBL 1\n3 END PGM L MM\n"
     with pytest.raises(tc.ProgramError, match="block_limit|endless loop"):
         tc.run(tc.Program.parse(text, dialect="heidenhain"), profile=prof)
+
+
+def test_m_functions_of_appr_and_dep_act():
+    # DEP ... M2 ends the program after the departure: the L block after it never runs.
+    text = APPR.format(appr="APPR LT X+20 Y+20 Z-10 LEN15 RR F100", next="L X+35 Y+35").replace(
+        "DEP LT LEN5", "DEP LT LEN5 F200 M2\nL X+0 Y+0 R0 FMAX")
+    res = pgm(text)
+    assert res.path.line.max() == 8  # the DEP block
+    assert res.path.feed[-1] == 200
+    with pytest.raises(tc.Error) as e:  # M91 is refused in APPR as in L
+        pgm(APPR.format(appr="APPR LT X+20 Y+20 Z-10 LEN15 RR F100 M91", next="L X+35 Y+35"))
+    assert (e.value.code, e.value.line) == ("unsupported_m_code", 5)
+
+
+@pytest.mark.parametrize("appr, code", [
+    ("APPR LT X+20 Y+20 Z-10 LEN15 RR", "no_feed"),           # no F up to the approach
+    ("APPR LT X+20 Y+20 Z-10 LEN15 RR FMAX", "unsupported_word"),
+])
+def test_appr_needs_a_feed(appr, code):
+    with pytest.raises(tc.Error) as e:
+        pgm(APPR.format(appr=appr, next="L X+35 Y+35"))
+    assert (e.value.code, e.value.line) == (code, 5)

@@ -23,6 +23,16 @@ ApproachKind kind_of(const std::string& k, bool& polar) {
 }  // namespace
 
 // APPR LT|LN|CT|LCT (and PLT, PLN, PCT, PLCT about the pole) X Y [Z] LEN|CCA R RL|RR [F] [M]
+// The feed and M functions of an APPR or DEP block (FMAX is not read there: the approach and
+// departure run at F).
+void Interp::approach_words(Tokens t) {
+    for (std::size_t i = 2; i < t.size(); ++i) {
+        if (t[i].is("F") && t[i].has_value) feed_ = t[i].value * (prog_.inch ? 2.54 : 1.0);
+        if (t[i].is("FMAX")) fail("unsupported_word", t[0].key + " with FMAX is not supported by toolcomp", t[i].column);
+        if (t[i].is("M") && t[i].has_value) m_function(t, t[i]);
+    }
+}
+
 void Interp::approach(Tokens t) {
     if (t.size() < 2) fail("approach_kind", "APPR needs LT, LN, CT or LCT", t[0].column);
     bool polar = false;
@@ -52,10 +62,8 @@ void Interp::approach(Tokens t) {
         side = side_;
     }
     // Feed, M functions; RL/RR are taken here, not as a start of compensation by modal_words.
-    for (std::size_t i = 2; i < t.size(); ++i)
-        if (t[i].is("F") && t[i].has_value) feed_ = t[i].value * (prog_.inch ? 2.54 : 1.0);
-    if (kind == ApproachKind::LCT && feed_ <= 0)
-        fail("no_feed", "APPR LCT needs a feed: none programmed up to the approach block", t[0].column);
+    approach_words(t);
+    if (feed_ <= 0) fail("no_feed", "APPR needs a feed: none programmed up to the approach block", t[0].column);
     Vec3 pa = end_point(t, 2);
     if (polar) {
         if (!pole_) fail("no_circle_centre", "CIRCLE CENTER UNDEFINED", t[0].column);
@@ -262,8 +270,8 @@ void Interp::departure(Tokens t) {
             if (side != side_) fail("comp_side_change", profile_.radius.messages.side_change, k.column);
         }
     const bool keep = side != 0;  // RL/RR programmed again: compensation stays on
-    for (std::size_t i = 2; i < t.size(); ++i)
-        if (t[i].is("F") && t[i].has_value) feed_ = t[i].value * (prog_.inch ? 2.54 : 1.0);
+    approach_words(t);
+    if (feed_ <= 0) fail("no_feed", "DEP needs a feed: none programmed up to the departure block", t[0].column);
     Departure d;
     d.kind = kind;
     d.pe = plane2(pos_);

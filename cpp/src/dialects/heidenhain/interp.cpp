@@ -83,28 +83,34 @@ void Interp::modal_words(Tokens t, std::size_t from) {
         } else if (k.is("FAUTO")) {
             fail("unsupported_word", "FAUTO is not supported by toolcomp", k.column);
         } else if (k.is("M") && k.has_value) {
-            const int m = int_value_truncated(k.value);
-            switch (m) {
-                case 97: corner_ = static_cast<std::int8_t>(OutsideCorner::intersection); break;
-                case 98: open_corner_ = true; break;
-                case 120: {
-                    const Token* la = find(t, "LA");
-                    lookahead_ = la && la->has_value ? int_value_truncated(la->value) : 0;
-                    if (lookahead_ > 99 || lookahead_ < 0) fail("bad_lookahead", "M120 LA allows 0 to 99 blocks", la->column);
-                    break;
-                }
-                case 107: m107_ = true; break;
-                case 108: m107_ = false; break;
-                case 128: m128_ = true; break;
-                case 129: m128_ = false; break;
-                case 2: case 30: ended_ = true; break;  // end of the program (after this block's move)
-                case 0: case 1: case 3: case 4: case 5: case 6: case 8: case 9: case 13: case 14:
-                case 89: case 90: case 99:
-                    break;  // machine functions without a geometric effect on the path
-                default:
-                    fail("unsupported_m_code", "M" + std::to_string(m) + " is not supported by toolcomp", k.column);
-            }
+            m_function(t, k);
         }
+    }
+}
+
+// An M function of a positioning block (L, C, APPR, DEP, ...): the ones that change the path
+// are taken, the machine functions without a geometric effect pass, the rest are refused.
+void Interp::m_function(Tokens t, const Token& k) {
+    const int m = int_value_truncated(k.value);
+    switch (m) {
+        case 97: corner_ = static_cast<std::int8_t>(OutsideCorner::intersection); break;
+        case 98: open_corner_ = true; break;
+        case 120: {
+            const Token* la = find(t, "LA");
+            lookahead_ = la && la->has_value ? int_value_truncated(la->value) : 0;
+            if (lookahead_ > 99 || lookahead_ < 0) fail("bad_lookahead", "M120 LA allows 0 to 99 blocks", la->column);
+            break;
+        }
+        case 107: m107_ = true; break;
+        case 108: m107_ = false; break;
+        case 128: m128_ = true; break;
+        case 129: m128_ = false; break;
+        case 2: case 30: ended_ = true; break;  // end of the program (after this block's move)
+        case 0: case 1: case 3: case 4: case 5: case 6: case 8: case 9: case 13: case 14:
+        case 89: case 90: case 99:
+            break;  // machine functions without a geometric effect on the path
+        default:
+            fail("unsupported_m_code", "M" + std::to_string(m) + " is not supported by toolcomp", k.column);
     }
 }
 

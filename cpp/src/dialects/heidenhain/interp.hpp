@@ -53,6 +53,8 @@ private:
     std::optional<double> number(Tokens t, std::string_view key) const;
     Vec3 end_point(Tokens t, std::size_t from) const;  // X Y Z with I-prefix increments
     void modal_words(Tokens t, std::size_t from);      // R0/RL/RR, F/FMAX, M functions
+    void m_function(Tokens t, const Token& k);  // an M word of a positioning block
+    void approach_words(Tokens t);              // F and M of an APPR / DEP block
 
     // blocks
     void tool_def(Tokens t);
