@@ -51,3 +51,32 @@ def test_proc_save_restores_the_callers_g_functions_and_frame(tmp_path, attrs, b
     (tmp_path / "SVB.SPF").write_text(f"PROC SVB {attrs}\n{body}\nM17\n")
     p = tc.run(tc.Program.parse("G17 G90 G71\nSVB\nG0 X5\nM30\n", "sinumerik"), search_path=[tmp_path]).path
     assert p.end[-1, 0] == x
+
+
+@pytest.mark.parametrize("block, code, column", [
+    ("G1 X10 R5 F100", "unused_word", 8),                   # an R parameter alone
+    ("G1 X10 P3 F100", "unused_word", 8),                   # passes without a call
+    ("G17 G2 X10 Y0 I5 J0 K3 F100", "14040", 21),           # K is no centre coordinate in G17
+    ("G2 X10 Y0 CR=5 AR=90 F100", "14040", 16),             # the circle defined twice
+    ("CIP X10 Y0 I1=5 J1=5 CR=5 F100", "14040", 22),
+    ("G2 X10 Y0 I5 J0 I1=3 F100", "14040", 17),             # an intermediate point without CIP
+    ("CIP X10 Y0 I1=5 J1=5 K1=5 F100", "unsupported_word", 5),    # a circle in space
+    ("CIP X10 Y0 Z10 I1=5 J1=5 F100", "unsupported_word", 5),
+])
+def test_words_a_circle_would_drop_are_refused(block, code, column):
+    with pytest.raises(tc.Error) as e:
+        tc.run(tc.Program.parse(f"G0 X0 Y0 Z0\n{block}\nM30\n", dialect="sinumerik"))
+    assert (e.value.code, e.value.line, e.value.column) == (code, 2, column)
+
+
+def test_ct_with_a_centre_is_refused():
+    with pytest.raises(tc.Error) as e:
+        tc.run(tc.Program.parse("G0 X0 Y0\nG1 X5 F100\nCT X10 Y5 I3\nM30\n", dialect="sinumerik"))
+    assert (e.value.code, e.value.line) == ("14040", 3)
+
+
+def test_cip_in_the_working_plane_still_runs():
+    # Through (0,0), (5,5), (10,0): the circle about (5,0) of radius 5, clockwise.
+    res = tc.run(tc.Program.parse("G0 X0 Y0 Z0\nCIP X10 Y0 I1=5 J1=5 K1=0 F100\nM30\n", dialect="sinumerik"))
+    np.testing.assert_allclose(res.nominal.center[-1], [5, 0, 0], atol=1e-12)
+    assert res.nominal.kind[-1] == tc.ARC_CW

@@ -126,6 +126,10 @@ void Interp::block(std::span<const Token> t) {
                     b['T'] = Value{true, 0, 0, x.column};
                     continue;
                 }
+                if (l == 'R')  // R5 without "=": a parameter named alone does nothing
+                    fail("unused_word", "R" + std::to_string(int_value(value_of(x))) +
+                                            ": an R parameter alone does nothing (assign with R1=..., read with X=R1)",
+                         x.column);
                 Value& v = b[l];
                 if (v.set) fail("12010", "12010 Address " + k + " programmed too often", x.column);
                 v = Value{true, value_of(x), x.param, x.column};
@@ -150,6 +154,8 @@ void Interp::block(std::span<const Token> t) {
         call_name = k;
         call_column = x.column;
     }
+    if (b.has('P') && call_name.empty())
+        fail("unused_word", "P (the passes of a subprogram call) without a call in the block", b['P'].column);
     const std::size_t moves_before = moves_;
     const bool comp_before = st_.side != 0;
     execute(b, t[0].column);

@@ -372,6 +372,30 @@ void Interp::arc(const BlockData& b, const Vec3& end_prog) {
     Vec2 c;
     const int first = b.has('X') ? b['X'].column : b.has('Y') ? b['Y'].column : b.has('Z') ? b['Z'].column : 0;
     const double tol = 0.01;  // MD21000 CIRCLE_ERROR_CONST
+    // Each circle type reads its own words; a word of another type in the block would be
+    // dropped, so it is refused (the control's 14040 for a circle defined twice).
+    {
+        const Value& k_off = b[kCentre[ax.c]];
+        if (k_off.set)
+            fail("14040", std::string("14040 ") + kCentre[ax.c] + " is no centre coordinate in the working plane (" +
+                              kCentre[ax.a] + ", " + kCentre[ax.b] + ")",
+                 k_off.column);
+        const bool centre = b.has(kCentre[ax.a]) || b.has(kCentre[ax.b]);
+        const Value* extra = nullptr;
+        const char* what = "";
+        if (st_.motion == 5 || st_.motion == 6) {  // CIP, CT: by points and tangent only
+            extra = b.cr.set ? &b.cr : b.ar.set ? &b.ar : centre ? &b[b.has(kCentre[ax.a]) ? kCentre[ax.a] : kCentre[ax.b]] : nullptr;
+            what = st_.motion == 5 ? "CIP" : "CT";
+        } else if (b.cr.set && b.ar.set) {
+            extra = &b.ar;
+            what = "CR=";
+        }
+        if (extra)
+            fail("14040", std::string("14040 ") + what + " and another definition of the circle (CR=, AR=, I, J, K) in one block",
+                 extra->column);
+        if (st_.motion != 5 && (b.i1.set || b.j1.set || b.k1.set))
+            fail("14040", "14040 I1=, J1=, K1= (the intermediate point) belong to CIP", (b.i1.set ? b.i1 : b.j1.set ? b.j1 : b.k1).column);
+    }
     auto centre_words = [&]() -> std::optional<Vec2> {
         const Value& ca = b[kCentre[ax.a]];
         const Value& cb = b[kCentre[ax.b]];
@@ -391,6 +415,10 @@ void Interp::arc(const BlockData& b, const Vec3& end_prog) {
             const bool inc = iv[i]->mod == 2 || (iv[i]->mod == 0 && st_.incremental);
             m3[i] = inc ? s3[i] + x : x;
         }
+        // Three points in space make a circle in space: only one in the working plane is read.
+        if (m3[ax.c] != s3[ax.c] || e3[ax.c] != s3[ax.c])
+            fail("unsupported_word",
+                 "CIP through points off the working plane (a circle in space) is not supported by toolcomp", first);
         const Vec2 m = in_plane(m3, st_.plane);
         const double cr = cross2(m - s, e - s);
         if (std::fabs(cr) < 1e-9 * std::max(1.0, (e - s).squaredNorm()))
