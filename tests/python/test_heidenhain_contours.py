@@ -72,3 +72,13 @@ def test_the_feed_of_rnd_and_chf_is_for_the_corner_only():
     assert list(res.nominal.kind) == [tc.LINE, tc.ARC_CCW, tc.LINE, tc.LINE, tc.LINE]
     np.testing.assert_array_equal(res.nominal.feed, [100, 10, 100, 20, 100])
     np.testing.assert_array_equal(res.nominal.line, [3, 4, 5, 6, 7])
+
+
+def test_r0_in_a_cr_block_under_compensation_is_refused_as_in_c():
+    # The first R of CR is its radius; an R0 after it would end compensation in an arc block,
+    # which C, CP and CT refuse: CR did keep RL on without a word.
+    text = ("0 BEGIN PGM A MM\n1 TOOL DEF 1 L+0 R+2\n2 TOOL CALL 1 Z\n3 L X+0 Y+0 Z-1 R0 F100\n"
+            "4 L X+10 Y+0 RL\n5 CR X+20 Y+10 R+10 DR+ R0\n6 L X+30\n7 END PGM A MM\n")
+    with pytest.raises(tc.ProgramError) as e:
+        tc.run(tc.Program.parse(text, dialect="heidenhain"))
+    assert (e.value.code, e.value.line, e.value.column) == ("comp_exit_arc", 6, 25)

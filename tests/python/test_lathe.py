@@ -159,3 +159,13 @@ def test_a_fanuc_lathe_feeds_per_revolution_at_power_on():
     res = tc.run(tc.Program.parse(text, dialect="fanuc"), profile=profile)
     np.testing.assert_allclose(res.nominal.feed[1:], [100, 80])
     assert not tc.ControlProfile("fanuc").startup_feed_per_rev
+
+
+@pytest.mark.parametrize("code", ["G73", "G74", "G81", "G83", "G84", "G87"])
+def test_mill_cycle_codes_are_not_read_as_mill_cycles_on_a_fanuc_lathe(code):
+    # G74 on a Fanuc lathe is end face peck drilling, G73 pattern repeating, G83-G89 live
+    # tool drilling: run as the mill's cycles they gave another path without a word.
+    text = f"G21 G18 G0 X0 Z10 T0101 S500 M3\n{code} R1\n{code} Z-20 Q5 F0.1\nM30\n"
+    with pytest.raises(tc.Error) as e:
+        tc.run(tc.Program.parse(text, dialect="fanuc"), profile=tc.ControlProfile("fanuc", machine="lathe"))
+    assert (e.value.code, e.value.line) == ("unsupported_g_code", 2)

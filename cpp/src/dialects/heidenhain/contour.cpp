@@ -204,12 +204,20 @@ int arc_direction(std::span<const Token> t) {
 }  // namespace
 
 // Arc blocks may keep RL/RR but not switch compensation on or off.
+// In a CR block the first R is the radius; an R0 after it would end compensation.
 static void check_arc_comp(std::span<const Token> t, int side, const ControlProfile& p, int line) {
+    bool radius_word = t[0].is("CR");
     for (const Token& k : t) {
         if ((k.is("RL") || k.is("RR")) && side == 0)
             throw ProgramError("comp_entry_arc", p.radius.messages.entry_arc, {line, k.column});
-        if (k.is("R") && k.has_value && k.value == 0 && side != 0 && !t[0].is("CR"))
-            throw ProgramError("comp_exit_arc", p.radius.messages.exit_arc, {line, k.column});
+        if (!k.is("R") || !k.has_value) continue;
+        if (radius_word) {
+            radius_word = false;
+            continue;
+        }
+        if (k.value == 0 && side != 0) throw ProgramError("comp_exit_arc", p.radius.messages.exit_arc, {line, k.column});
+        if (t[0].is("CR"))
+            throw ProgramError("bad_word", "Word R given twice in one CR block (R is its radius)", {line, k.column});
     }
 }
 

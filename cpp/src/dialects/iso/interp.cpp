@@ -314,6 +314,19 @@ void Interp::system_a_codes(const BlockWords& bw) const {
         {g_distance, 910, "unknown_g_code", "G91 does not exist in G-code system A (U and W are the incremental words)"},
         {g_nonmodal, 920, "unsupported_g_code", "G92 is the threading cycle in G-code system A: not supported by toolcomp"},
         {g_feed_mode, 940, "unsupported_g_code", "G94 is the facing cycle in G-code system A: not supported by toolcomp"},
+        // The mill's canned cycles mean other cycles on a Fanuc lathe (G73 pattern repeating,
+        // G74 end face peck drilling, G83-G89 face and side drilling with live tools).
+        {g_motion, 730, "unsupported_g_code", "G73 is the pattern repeating cycle on a lathe: not supported by toolcomp"},
+        {g_motion, 740, "unsupported_g_code", "G74 is the end face peck drilling cycle on a lathe: not supported by toolcomp"},
+        {g_motion, 810, "unsupported_g_code", "G81 is a lathe drilling cycle here: not supported by toolcomp"},
+        {g_motion, 820, "unsupported_g_code", "G82 is a lathe drilling cycle here: not supported by toolcomp"},
+        {g_motion, 830, "unsupported_g_code", "G83 is the face drilling cycle on a lathe: not supported by toolcomp"},
+        {g_motion, 840, "unsupported_g_code", "G84 is the face tapping cycle on a lathe: not supported by toolcomp"},
+        {g_motion, 850, "unsupported_g_code", "G85 is the face boring cycle on a lathe: not supported by toolcomp"},
+        {g_motion, 860, "unsupported_g_code", "G86 is a lathe cycle here: not supported by toolcomp"},
+        {g_motion, 870, "unsupported_g_code", "G87 is the side drilling cycle on a lathe: not supported by toolcomp"},
+        {g_motion, 880, "unsupported_g_code", "G88 is the side tapping cycle on a lathe: not supported by toolcomp"},
+        {g_motion, 890, "unsupported_g_code", "G89 is the side boring cycle on a lathe: not supported by toolcomp"},
     };
     for (const Refused& r : kRefused)
         if (bw.g[r.group] == r.code) fail(r.error, r.message, bw.g_column[r.group]);
@@ -324,7 +337,7 @@ bool Interp::execute(const BlockWords& bw) {
     const int g0 = bw.g[g_nonmodal];
     const int motion_code = bw.g[g_motion];
     const bool axes = bw.has_axis();
-    if (profile_.g_code_system_a && bw.modal_codes()) system_a_codes(bw);
+    if (profile_.g_code_system_a && bw.g_groups != 0) system_a_codes(bw);
 
     // Which motion the axis words feed (LinuxCNC's "motion_to_be").
     const bool data_axes = axes_are_data(bw);
