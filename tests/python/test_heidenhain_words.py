@@ -118,3 +118,31 @@ def test_tool_call_without_a_number_keeps_the_tool():
     assert y_along("TOOL CALL Z S2000") == (pytest.approx(1.5), 10)  # RL along +X: y = R + DR
     assert y_along("TOOL CALL Z DR-0.2") == (pytest.approx(1.8), 10)
     assert y_along("TOOL CALL Z DL+1") == (pytest.approx(1.5), 11)
+
+
+HEAD = "0 BEGIN PGM A MM\n1 TOOL DEF 1 L+0 R+5\n2 TOOL CALL 1 Z\n3 L X+40 Y+10 Z+0 R0 F100\n4 CC X+0 Y+0\n"
+
+
+@pytest.mark.parametrize("block, word, column", [
+    ("LP PR5 PA90 X3", "X", 15),               # polar end point: PR, PA (and the tool axis)
+    ("CTP PA90 X5", "X", 12),
+    ("CP PR15 PA0 DR+", "PR", 6),              # CP's radius is the distance from the pole
+    ("CP PA180 Y5 DR+", "Y", 12),
+    ("APPR LT PR5 PA0 X+20 Y+20 LEN15 RR F100", "PR", 11),     # polar words need APPR PLT
+    ("APPR LT X+20 Y+20 Z-10 LEN15 CCA90 RR F100", "CCA", 32),  # LT has no arc
+    ("APPR LT X+20 Y+20 Z-10 LEN15 R5 RR F100", "R", 32),
+    ("APPR CT X+10 Y+20 Z-10 CCA180 R+10 LEN5 RR F100", "LEN", 38),
+    ("TOOL CALL 1 Z S1000 X10", "X", 23),     # the tool axis has no value
+])
+def test_words_a_block_would_drop_are_refused(block, word, column):
+    with pytest.raises(tc.Error) as e:
+        tc.run(tc.Program.parse(HEAD + f"5 {block}\n6 END PGM A MM\n", dialect="heidenhain"))
+    assert (e.value.code, e.value.line, e.value.column) == ("bad_word", 6, column)
+    assert e.value.message.startswith(word + " is not read") or "TOOL CALL" in e.value.message
+
+
+def test_polar_blocks_with_their_own_words_run():
+    # LP PR+5 PA+90 about (0,0): X0 Y5; CP PA180: from there around the pole to X-5 Y0.
+    res = tc.run(tc.Program.parse(HEAD + "5 LP PR+5 PA+90\n6 CP PA180 DR+\n7 END PGM A MM\n", dialect="heidenhain"))
+    np.testing.assert_allclose(res.nominal.end[-2, :2], [0, 5], atol=1e-12)
+    np.testing.assert_allclose(res.nominal.end[-1, :2], [-5, 0], atol=1e-12)

@@ -25,7 +25,19 @@ ApproachKind kind_of(const std::string& k, bool& polar) {
 // APPR LT|LN|CT|LCT (and PLT, PLN, PCT, PLCT about the pole) X Y [Z] LEN|CCA R RL|RR [F] [M]
 // The feed and M functions of an APPR or DEP block (FMAX is not read there: the approach and
 // departure run at F).
-void Interp::approach_words(Tokens t) {
+void Interp::approach_words(Tokens t, ApproachKind kind, bool polar) {
+    // The words of the other kinds and of the other coordinates would be dropped.
+    if (polar)
+        refuse_plane_axes(t, "the polar kind takes its point as PR and PA", 2);
+    else
+        refuse_words(t, {"PR", "IPR", "PA", "IPA"}, "polar coordinates need the polar kind (APPR PLT, ...)", 2);
+    if (kind == ApproachKind::LT || kind == ApproachKind::LN) refuse_words(t, {"CCA"}, "it has no arc", 2);
+    if (kind == ApproachKind::CT || kind == ApproachKind::LCT) refuse_words(t, {"LEN"}, "it approaches on an arc", 2);
+    if (kind == ApproachKind::LCT) refuse_words(t, {"CCA"}, "its arc ends tangent to the contour", 2);
+    if (kind == ApproachKind::LT || kind == ApproachKind::LN)
+        for (std::size_t i = 2; i < t.size(); ++i)
+            if (t[i].is("R") && t[i].has_value && t[i].value != 0)
+                fail("bad_word", "R is not read in " + t[0].key + " " + t[1].key + " blocks: it has no arc", t[i].column);
     for (std::size_t i = 2; i < t.size(); ++i) {
         if (t[i].is("F") && t[i].has_value) feed_ = t[i].value * (prog_.inch ? 2.54 : 1.0);
         if (t[i].is("FMAX")) fail("unsupported_word", t[0].key + " with FMAX is not supported by toolcomp", t[i].column);
@@ -62,7 +74,7 @@ void Interp::approach(Tokens t) {
         side = side_;
     }
     // Feed, M functions; RL/RR are taken here, not as a start of compensation by modal_words.
-    approach_words(t);
+    approach_words(t, kind, polar);
     if (feed_ <= 0) fail("no_feed", "APPR needs a feed: none programmed up to the approach block", t[0].column);
     Vec3 pa = end_point(t, 2);
     if (polar) {
@@ -270,7 +282,7 @@ void Interp::departure(Tokens t) {
             if (side != side_) fail("comp_side_change", profile_.radius.messages.side_change, k.column);
         }
     const bool keep = side != 0;  // RL/RR programmed again: compensation stays on
-    approach_words(t);
+    approach_words(t, kind, polar);
     if (feed_ <= 0) fail("no_feed", "DEP needs a feed: none programmed up to the departure block", t[0].column);
     Departure d;
     d.kind = kind;

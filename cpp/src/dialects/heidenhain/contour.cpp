@@ -285,7 +285,17 @@ void Interp::arc_tangential(Tokens t, bool polar) {
     pos_ = end;
 }
 
+// The plane's axes (X, Y in XY; absolute and incremental) of a block that takes its point
+// in polar coordinates.
+void Interp::refuse_plane_axes(Tokens t, const char* why, std::size_t from) const {
+    static constexpr std::string_view names[3] = {"X", "Y", "Z"};
+    static constexpr std::string_view inc[3] = {"IX", "IY", "IZ"};
+    const auto ax = axes(plane_);
+    refuse_words(t, {names[ax.a], names[ax.b], inc[ax.a], inc[ax.b]}, why, from);
+}
+
 Vec3 Interp::polar_end(Tokens t) const {
+    refuse_plane_axes(t, "its end point in the plane is PR and PA about the pole");
     const Vec2 rel = plane2(pos_) - *pole_;
     double pr = rel.norm(), pa = deg(std::atan2(rel.y(), rel.x()));
     if (auto v = number(t, "PR")) pr = *v;
@@ -312,6 +322,8 @@ void Interp::polar_arc(Tokens t) {
     modal_words(t, 1);
     const int dir = arc_direction(t);
     if (dir == 0) fail("arc_direction_missing", "CP needs DR+ or DR-", t[0].column);
+    refuse_plane_axes(t, "its end point is PA (and the tool axis) about the pole");
+    refuse_words(t, {"PR", "IPR"}, "its radius is the distance from the pole");
     const Vec2 rel = plane2(pos_) - *pole_;
     const double r = rel.norm(), a0 = deg(std::atan2(rel.y(), rel.x()));
     if (r < 1e-9) fail("arc_end_incorrect", "ARC END POS. INCORRECT", t[0].column);

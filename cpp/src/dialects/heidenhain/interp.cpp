@@ -55,6 +55,18 @@ Vec3 Interp::end_point(Tokens t, std::size_t from) const {
     return e;
 }
 
+// Refuses a word of `names` (from token `from` on) that this kind of block would not read:
+// it would be dropped, and the path would not be the one the program asks for.
+void Interp::refuse_words(Tokens t, std::initializer_list<std::string_view> names, const char* why,
+                          std::size_t from) const {
+    for (std::size_t i = from; i < t.size(); ++i)
+        for (std::string_view n : names)
+            if (t[i].key == n)
+                fail("bad_word", std::string(n) + " is not read in " + (t[0].key == "APPR" || t[0].key == "DEP" ? t[0].key + " " + t[1].key : t[0].key) +
+                                     " blocks: " + why,
+                     t[i].column);
+}
+
 // Words that can stand in any positioning block: radius compensation, feed, M functions.
 void Interp::modal_words(Tokens t, std::size_t from) {
     for (std::size_t i = from; i < t.size(); ++i) {
@@ -181,6 +193,9 @@ void Interp::tool_call(Tokens t) {
         const std::string_view k = t[i].key;
         if ((k == "X" || k == "Y" || k == "Z") && !t[i].has_value)
             plane_ = k == "Z" ? Plane::xy : k == "Y" ? Plane::zx : Plane::yz;
+        else if ((k == "X" || k == "Y" || k == "Z") && t[i].has_value)
+            fail("bad_word", "TOOL CALL takes the tool axis without a value (" + std::string(k) + "), not a position",
+                 t[i].column);
         else if (k == "F" && t[i].has_value)
             feed_ = t[i].value * (prog_.inch ? 2.54 : 1.0);
     }

@@ -2,6 +2,8 @@
 // Working data of the Klartext interpreter. Positions in program units (BEGIN PGM MM|INCH),
 // in machine axis order X Y Z; the working plane follows the tool axis of TOOL CALL.
 #include <functional>
+#include <initializer_list>
+#include <string_view>
 #include <map>
 #include <memory>
 #include <optional>
@@ -54,7 +56,10 @@ private:
     Vec3 end_point(Tokens t, std::size_t from) const;  // X Y Z with I-prefix increments
     void modal_words(Tokens t, std::size_t from);      // R0/RL/RR, F/FMAX, M functions
     void m_function(Tokens t, const Token& k);  // an M word of a positioning block
-    void approach_words(Tokens t);              // F and M of an APPR / DEP block
+    void refuse_words(Tokens t, std::initializer_list<std::string_view> names, const char* why,
+                      std::size_t from = 1) const;
+    void refuse_plane_axes(Tokens t, const char* why, std::size_t from = 1) const;
+    void approach_words(Tokens t, ApproachKind kind, bool polar);              // F and M of an APPR / DEP block
 
     // blocks
     void tool_def(Tokens t);
