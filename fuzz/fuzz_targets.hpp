@@ -13,7 +13,7 @@
 #include <string>
 #include <string_view>
 
-#include "toolcomp/compensation/profile.hpp"
+#include "toolcomp/control/profile.hpp"
 #include "toolcomp/dialects/heidenhain/lexer.hpp"
 #include "toolcomp/dialects/iso/lexer.hpp"
 #include "toolcomp/dialects/sinumerik/lexer.hpp"
@@ -199,7 +199,7 @@ inline Outcome pipeline(const std::uint8_t* data, std::size_t size) {
     std::optional<ControlProfile> prof;
     switch (sel % 8) {
         case 1: d = Dialect::fanuc; break;
-        case 2: d = Dialect::fanuc; prof = profile_for(Dialect::fanuc, Machine::lathe); break;
+        case 2: d = Dialect::fanuc; prof = profile_for(Dialect::fanuc, MachineKind::lathe); break;
         case 3: d = Dialect::rockwell; break;
         case 4: d = Dialect::heidenhain; break;
         case 5: prof = profile_for(Dialect::sinumerik); break;

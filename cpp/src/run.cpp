@@ -155,6 +155,7 @@ sinumerik::InterpretOptions sinumerik_options(const RunOptions& o, const Control
     s.progress = o.progress;
     s.progress_every = o.progress_every ? o.progress_every : 1;
     s.search = search_of(o);
+    s.machine = o.machine.get();
     return s;
 }
 }  // namespace
@@ -196,6 +197,19 @@ void run_pipeline(const Program& program, const ToolTable* tools, const RunOptio
     iopts.progress = options.progress;
     iopts.progress_every = options.progress_every ? options.progress_every : 1;
     iopts.search = search_of(options);
+    iopts.machine = options.machine.get();
+    if (options.machine) {
+        if (options.machine->control != program.dialect)
+            throw ProgramError("machine_control", "The machine '" + options.machine->name + "' has a " +
+                                                      std::string(dialect_name(options.machine->control)) +
+                                                      " control; the program is read as " +
+                                                      std::string(dialect_name(program.dialect)));
+        if (options.machine->has_travel_limits() && !is_iso(program.dialect))
+            diagnostics.push_back({"travel_not_checked", Severity::info,
+                                   "The machine's travel limits are not checked for " +
+                                       std::string(dialect_name(program.dialect)) + " programs yet",
+                                   {}});
+    }
     iopts.parameters = options.parameters;
     iopts.next_piece = hooks.next_piece;
     iopts.file_opened = hooks.file_opened;
@@ -204,7 +218,7 @@ void run_pipeline(const Program& program, const ToolTable* tools, const RunOptio
         try {
             if (program.dialect == Dialect::heidenhain)
                 heidenhain::interpret(program, tools, profile, tee, diagnostics, iopts.progress, iopts.progress_every,
-                                      search_of(options), &out.files);
+                                      search_of(options), &out.files, options.machine.get());
             else if (program.dialect == Dialect::sinumerik)
                 sinumerik::interpret(program, tools, profile, sinumerik_options(options, profile), tee, diagnostics,
                                      &out.files);
@@ -250,7 +264,9 @@ Result run_main(const Program& program, const ToolTable* tools, const RunOptions
     // columns are mapped, and pages never written are never memory (release_unused gives
     // back what the last segment's page leaves).
     res.nominal.reserve_granted(std::min(expected, options.max_segments));
-    ControlProfile profile = options.profile ? *options.profile : profile_for(program.dialect);
+    ControlProfile profile = options.profile ? *options.profile
+                             : options.machine ? options.machine->profile
+                                               : profile_for(program.dialect);
     // The compensated path is stored only once it differs from the programmed one
     // (unchanged_path.hpp); its reservation is address space until then.
     UnchangedPath unchanged(res.nominal, res.path, std::min(2 * expected, options.max_segments));
@@ -307,6 +323,7 @@ Result run_file_main(const std::string& path, std::optional<Dialect> dialect, co
 
 Result run(const Program& program, const ToolTable* tools, const RunOptions& options) {
     if (options.profile) check_profile(*options.profile);
+    if (options.machine) check_machine(*options.machine);
     check_search_path(options.search_path);
     return out_of_memory_as_error([&] { return run_main(program, tools, options, {}, program.size()); });
 }
@@ -314,6 +331,7 @@ Result run(const Program& program, const ToolTable* tools, const RunOptions& opt
 Result run_file(const std::string& path, std::optional<Dialect> dialect, const ToolTable* tools,
                 const RunOptions& options, const ReadLimits& limits) {
     if (options.profile) check_profile(*options.profile);
+    if (options.machine) check_machine(*options.machine);
     check_search_path(options.search_path);
     RunOptions o = options;
     o.limits = limits;

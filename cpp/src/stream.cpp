@@ -72,6 +72,7 @@ PathStream::~PathStream() { close(); }
 void PathStream::start() {
     if (options_.chunk == 0) throw ProgramError("bad_chunk", "A stream's chunk must hold at least one segment");
     if (options_.run.profile) check_profile(*options_.run.profile);
+    if (options_.run.machine) check_machine(*options_.run.machine);
     check_search_path(options_.run.search_path);
     options_.run.limits = options_.read;  // the limits of the main file hold for every file it calls
     thread_ = std::thread([this] { produce(); });
@@ -135,7 +136,9 @@ void PathStream::produce() {
     };
     auto pipeline = [&](const Program& p) {
         if (!is_iso(p.dialect)) live.push_back(p.name);  // Heidenhain, Sinumerik: the main file only, until the end
-        const ControlProfile profile = run.profile ? *run.profile : profile_for(p.dialect);
+        const ControlProfile profile = run.profile ? *run.profile
+                                       : run.machine ? run.machine->profile
+                                                     : profile_for(p.dialect);
         run_pipeline(p, tools_ ? &*tools_ : nullptr, run, profile, nominal, chunker, diags, out, hooks);
     };
     try {

@@ -67,4 +67,13 @@ void bind_program(py::module_& m) {
             return "Program(name='" + p.name + "', dialect='" + std::string(dialect_name(p.dialect)) +
                    "', blocks=" + std::to_string(p.size()) + ")";
         });
+    m.def(
+        "dialect_of_file",
+        [](const std::string& path, std::optional<std::string> dialect) {
+            std::optional<Dialect> d;
+            if (dialect) d = dialect_from_name(*dialect);
+            return std::string(dialect_name(dialect_of_file(path, d)));
+        },
+        py::arg("path"), py::arg("dialect") = py::none(),
+        "The dialect a program file is read in: `dialect` if given, else from its suffix (ParseError otherwise).");
 }

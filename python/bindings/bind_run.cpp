@@ -13,12 +13,18 @@
 using namespace toolcomp;
 
 namespace {
+MachineKind machine_kind(const std::string& k) {
+    if (k != "mill" && k != "lathe") throw py::value_error("the kind of machine is 'mill' or 'lathe', not '" + k + "'");
+    return k == "lathe" ? MachineKind::lathe : MachineKind::mill;
+}
+
 // `progress` is held by the caller's frame for the whole run.
 RunOptions run_options(bool strict, bool block_delete, std::optional<ControlProfile> profile, py::object& progress,
                        std::size_t progress_every, std::vector<std::string> search_path,
                        std::map<int, double> parameters, std::size_t max_segments, bool threads,
-                       bool follow_links) {
+                       bool follow_links, const std::optional<Machine>& machine) {
     RunOptions o;
+    if (machine) o.machine = std::make_shared<const Machine>(*machine);
     o.follow_links = follow_links;
     o.max_segments = max_segments;
     o.threads = threads;
@@ -190,9 +196,9 @@ void bind_run(py::module_& m) {
                "LinuxCNC: 1 (-X,+Z), 2 (-X,-Z), 3 (+X,-Z), 4 (+X,+Z), 5 +Z, 6 -X, 7 -Z, 8 +X; 0 and 9 centre")
         .value("fanuc", TipConvention::fanuc,
                "Fanuc/Haas: as linuxcnc with the sign of X flipped (1<->4, 2<->3, 6<->8)");
-    py::enum_<Machine>(m, "Machine", "Machine type of a ControlProfile.")
-        .value("mill", Machine::mill, "milling machine")
-        .value("lathe", Machine::lathe,
+    py::enum_<MachineKind>(m, "MachineKind", "The kind of machine of a ControlProfile: mill or lathe.")
+        .value("mill", MachineKind::mill, "milling machine")
+        .value("lathe", MachineKind::lathe,
                "lathe (in the Fanuc profile: X diameters, incremental U/W, T-word offsets, Fanuc tip numbers)");
 
     py::class_<ControlProfile> profile(
@@ -200,13 +206,16 @@ void bind_run(py::module_& m) {
         "How a particular control behaves, as plain data: the profile of a dialect ('linuxcnc', 'fanuc', ...) "
         "and machine ('mill' or 'lathe'), whose fields may be adjusted and passed as run(..., profile=...).");
     profile
-        .def(py::init([](const std::string& dialect, const std::string& machine) {
-                 if (machine != "mill" && machine != "lathe") throw py::value_error("machine must be 'mill' or 'lathe'");
-                 return profile_for(dialect_from_name(dialect), machine == "lathe" ? Machine::lathe : Machine::mill);
+        .def(py::init([](const std::string& dialect, std::optional<std::string> kind, std::optional<std::string> machine) {
+                 if (kind && machine && *kind != *machine)
+                     throw py::value_error("kind and machine (its former name) name different kinds");
+                 return profile_for(dialect_from_name(dialect), machine_kind(kind ? *kind : machine.value_or("mill")));
              }),
-             py::arg("dialect") = "linuxcnc", py::arg("machine") = "mill")
-        .def_readonly("machine", &ControlProfile::machine,
-                      "Machine: mill or lathe (fixed at construction)")
+             py::arg("dialect") = "linuxcnc", py::arg("kind") = py::none(), py::arg("machine") = py::none(),
+             "The profile of a control ('linuxcnc', 'fanuc', 'sinumerik', 'heidenhain', 'rockwell') on a kind of "
+             "machine ('mill' or 'lathe'; machine= is its former name)")
+        .def_readonly("kind", &ControlProfile::kind, "MachineKind: mill or lathe (fixed at construction)")
+        .def_readonly("machine", &ControlProfile::kind, "the former name of kind")
         .def_readwrite("x_diameter", &ControlProfile::x_diameter,
                        "lathe: X words are diameters")
         .def_readwrite("incremental_uw", &ControlProfile::incremental_uw,
@@ -376,10 +385,11 @@ void bind_run(py::module_& m) {
         [](const Program& program, const ToolTable* tools, bool strict, bool block_delete,
            std::optional<ControlProfile> profile, py::object progress, std::size_t progress_every,
            std::vector<std::string> search_path, std::map<int, double> parameters, std::size_t max_segments,
-           bool threads, bool follow_links, std::uint64_t max_bytes, std::size_t max_line_length) {
+           bool threads, bool follow_links, std::uint64_t max_bytes, std::size_t max_line_length,
+           std::optional<Machine> machine) {
             RunOptions o = run_options(strict, block_delete, std::move(profile), progress, progress_every,
                                        std::move(search_path), std::move(parameters), max_segments, threads,
-                                       follow_links);
+                                       follow_links, machine);
             o.limits = ReadLimits{max_bytes, max_line_length};
             const auto table = snapshot(tools);
             py::gil_scoped_release nogil;
@@ -390,6 +400,7 @@ void bind_run(py::module_& m) {
         py::arg("search_path") = std::vector<std::string>{}, py::arg("parameters") = std::map<int, double>{},
         py::arg("max_segments") = kDefaultMaxSegments, py::arg("threads") = true, py::arg("follow_links") = false,
         py::arg("max_bytes") = kDefaultMaxProgramBytes, py::arg("max_line_length") = kDefaultMaxLineLength,
+        py::arg("machine") = py::none(),
         "Interpret a Program with an optional ToolTable and apply tool compensation; returns a Result. strict=True "
         "raises the first error, strict=False returns the path up to it; block_delete skips '/' blocks; profile "
         "overrides the dialect's ControlProfile; progress(blocks_read) is called every progress_every blocks; "
@@ -405,10 +416,11 @@ void bind_run(py::module_& m) {
         [](const std::string& path, std::optional<std::string> dialect, const ToolTable* tools, bool strict,
            bool block_delete, std::optional<ControlProfile> profile, py::object progress, std::size_t progress_every,
            std::vector<std::string> search_path, std::map<int, double> parameters, std::size_t max_segments,
-           std::uint64_t max_bytes, std::size_t max_line_length, bool threads, bool follow_links) {
+           std::uint64_t max_bytes, std::size_t max_line_length, bool threads, bool follow_links,
+           std::optional<Machine> machine) {
             RunOptions o = run_options(strict, block_delete, std::move(profile), progress, progress_every,
                                        std::move(search_path), std::move(parameters), max_segments, threads,
-                                       follow_links);
+                                       follow_links, machine);
             std::optional<Dialect> d;
             if (dialect) d = dialect_from_name(*dialect);
             const auto table = snapshot(tools);
@@ -418,7 +430,7 @@ void bind_run(py::module_& m) {
         py::arg("path"), py::arg("dialect"), py::arg("tools"), py::arg("strict"), py::arg("block_delete"),
         py::arg("profile"), py::arg("progress"), py::arg("progress_every"), py::arg("search_path"),
         py::arg("parameters"), py::arg("max_segments"), py::arg("max_bytes"), py::arg("max_line_length"),
-        py::arg("threads") = true, py::arg("follow_links") = false,
+        py::arg("threads") = true, py::arg("follow_links") = false, py::arg("machine") = py::none(),
         "run() on a program file, read leniently; a LinuxCNC / Fanuc file without control flow is read and "
         "parsed a piece at a time as it runs (see toolcomp.run).");
 }

@@ -23,5 +23,6 @@ void bind_path(py::module_& m);
 void bind_path_text(py::module_& m);
 void bind_geometry(py::module_& m);
 void bind_run(py::module_& m);
+void bind_machine(py::module_& m);
 void bind_stream(py::module_& m);
 void bind_tools(py::module_& m);

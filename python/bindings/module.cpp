@@ -20,6 +20,7 @@ PYBIND11_MODULE(_core, m) {
     bind_path_text(m);
     bind_geometry(m);
     bind_run(m);
+    bind_machine(m);
     bind_stream(m);
     bind_sinumerik(m);
 }

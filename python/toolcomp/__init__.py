@@ -26,6 +26,8 @@ from ._core import (
     GougeReaction,
     LengthAxes,
     Machine,
+    MachineCode,
+    MachineKind,
     NonPlaneReaction,
     OutsideCorner,
     Path,
@@ -45,7 +47,7 @@ from ._errors import CompensationError, Error, ParseError, ProgramError, ToolTab
 __all__ = [
     "ARC_CCW", "ARC_CW", "LINE", "RAPID",
     "CompensationError", "ControlProfile", "CuttingEdge", "Diagnostic", "EntryStyle", "Error", "ExitStyle",
-    "GougeReaction", "LengthAxes", "Machine", "NonPlaneReaction", "OutsideCorner", "ParseError", "Path", "PathStream",
+    "GougeReaction", "LengthAxes", "Machine", "MachineCode", "MachineKind", "NonPlaneReaction", "OutsideCorner", "ParseError", "Path", "PathStream",
     "Program", "ProgramError", "RadiusRules", "Result", "TipConvention", "Tool", "ToolTable",
     "ToolTableError", "compensate_3d", "iter_run", "params", "run", "run_many", "sinumerik", "__version__",
 ]
@@ -55,7 +57,8 @@ _sys.modules[__name__ + ".sinumerik"] = sinumerik  # type: ignore[assignment]  #
 
 def run(program, tools=None, *, dialect=None, strict=True, block_delete=False, profile=None,
         units="mm", progress=None, progress_every=65536, search_path=(), parameters=None,
-        max_segments=20_000_000, max_bytes=2**31, max_line_length=2**20, threads=True, follow_links=False):
+        max_segments=20_000_000, max_bytes=2**31, max_line_length=2**20, threads=True, follow_links=False,
+        machine=None):
     """Interpret ``program`` and apply tool compensation.
 
     ``program`` is a :class:`Program` or a path to a program file (dialect from the suffix
@@ -63,7 +66,12 @@ def run(program, tools=None, *, dialect=None, strict=True, block_delete=False, p
     (read with ``units``), or None. With ``strict=True`` the first error is raised; with
     ``strict=False`` the path up to the error is returned and the error is in
     ``result.diagnostics``. ``profile`` (a :class:`ControlProfile`) overrides the
-    dialect's control behaviour. ``progress(blocks_read)`` is called every ``progress_every``
+    dialect's control behaviour. ``machine`` is the machine the program runs on: a
+    :class:`Machine`, a preset name (``"haas-mill"``, see ``Machine.presets()``) or the path of
+    a machine file (``.toml``); its control must be the program's dialect, its profile is the
+    run's unless ``profile`` is given, and its builder M codes, work origin, G28/G30 and tool
+    change positions and travel limits act (``"mill"`` / ``"lathe"``: the control's plain
+    profile of that kind). ``progress(blocks_read)`` is called every ``progress_every``
     blocks (blocks executed, loops counted, in Heidenhain programs); an exception it raises
     stops the run. ``search_path`` (a directory or a sequence of directories) is where
     called programs are looked for, in order, and nowhere else: Heidenhain ``CALL PGM name``
@@ -100,6 +108,7 @@ def run(program, tools=None, *, dialect=None, strict=True, block_delete=False, p
     _whole_at_least("max_line_length", max_line_length, 1)
     _whole_at_least("progress_every", progress_every, 1)
     tools, search_path, parameters = _run_inputs(tools, units, search_path, parameters)
+    machine, profile = _machine_inputs(machine, profile, program, dialect)
     if isinstance(program, (str, _os.PathLike)):
         # Read leniently: a syntax error is raised (or reported) when the run reaches its
         # line, as the control does, and never after M2/M30. A LinuxCNC / Fanuc file without
@@ -108,11 +117,12 @@ def run(program, tools=None, *, dialect=None, strict=True, block_delete=False, p
                               profile=profile, progress=progress, progress_every=progress_every,
                               search_path=search_path, parameters=parameters, max_segments=max_segments,
                               max_bytes=max_bytes, max_line_length=max_line_length, threads=threads,
-                              follow_links=follow_links)
+                              follow_links=follow_links, machine=machine)
     return _core.run(program, tools, strict=strict, block_delete=block_delete, profile=profile,
                      progress=progress, progress_every=progress_every, search_path=search_path,
                      parameters=parameters, max_segments=max_segments, threads=threads,
-                     follow_links=follow_links, max_bytes=max_bytes, max_line_length=max_line_length)
+                     follow_links=follow_links, max_bytes=max_bytes, max_line_length=max_line_length,
+                     machine=machine)
 
 
 def _whole_at_least(name, value, least):
@@ -121,6 +131,17 @@ def _whole_at_least(name, value, least):
         raise TypeError(f"{name} must be a whole number, not {value!r}")
     if value < least:
         raise ValueError(f"{name} must be at least {least}, not {value}")
+
+
+def _machine_inputs(machine, profile, program, dialect):
+    """run()'s machine: a Machine (from a preset name or a file), or with the shorthand
+    'mill' / 'lathe' the profile of that kind for the program's control."""
+    if isinstance(machine, str) and machine in ("mill", "lathe"):
+        if profile is None:
+            d = program.dialect if isinstance(program, Program) else _core.dialect_of_file(_os.fspath(program), dialect)
+            profile = ControlProfile(d, kind=machine)
+        return None, profile
+    return _machine.resolve(machine), profile
 
 
 def _run_inputs(tools, units, search_path, parameters):
@@ -146,7 +167,7 @@ def _run_inputs(tools, units, search_path, parameters):
 
 def iter_run(program, tools=None, *, chunk=1_000_000, dialect=None, strict=True, block_delete=False,
              profile=None, units="mm", search_path=(), parameters=None, max_bytes=2**31,
-             max_line_length=2**20, piece_bytes=1 << 20, follow_links=False):
+             max_line_length=2**20, piece_bytes=1 << 20, follow_links=False, machine=None):
     """Run ``program`` like :func:`run` and yield its compensated path in chunks of ``chunk``
     segments (:class:`Path` objects; the last may be shorter). The chunks joined are the
     ``path`` that :func:`run` returns, segment for segment: the compensation look-ahead runs
@@ -170,14 +191,15 @@ def iter_run(program, tools=None, *, chunk=1_000_000, dialect=None, strict=True,
     if piece_bytes > 2**30:
         raise ValueError("piece_bytes must be from 1 to 2**30 (1 GiB)")
     tools, search_path, parameters = _run_inputs(tools, units, search_path, parameters)
+    machine, profile = _machine_inputs(machine, profile, program, dialect)
     if isinstance(program, (str, _os.PathLike)):
         return _core.iter_run_file(_os.fspath(program), dialect, tools, strict=strict, block_delete=block_delete,
                                    profile=profile, search_path=search_path, parameters=parameters, chunk=chunk,
                                    piece_bytes=piece_bytes, max_bytes=max_bytes, max_line_length=max_line_length,
-                                   follow_links=follow_links)
+                                   follow_links=follow_links, machine=machine)
     return _core.iter_run_program(program, tools, strict=strict, block_delete=block_delete, profile=profile,
                                   search_path=search_path, parameters=parameters, chunk=chunk, max_bytes=max_bytes,
-                                  max_line_length=max_line_length, follow_links=follow_links)
+                                  max_line_length=max_line_length, follow_links=follow_links, machine=machine)
 
 
 def _result_plot(self, ax=None, **kwargs):
@@ -215,6 +237,15 @@ ToolTable.to_pandas = _table_to_pandas
 ToolTable.from_pandas = staticmethod(_table_from_pandas)
 ToolTable.diff = _table_diff
 
+
+from . import machine as _machine  # noqa: E402  (machine files; Machine.read & co. below)
+
+Machine.read = staticmethod(_machine.read)
+Machine.parse = staticmethod(_machine.parse)
+Machine.preset = staticmethod(_machine.preset)
+Machine.presets = staticmethod(_machine.presets)
+Machine.write = _machine.write
+Machine.dumps = _machine.dumps
 
 from .batch import run_many  # noqa: E402  (needs run above)
 from . import params  # noqa: E402  (LinuxCNC .var parameter files)

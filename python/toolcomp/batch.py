@@ -38,6 +38,10 @@ def run_many(programs: Iterable[Any], tools: Any = None, *, workers: Optional[in
     programs = list(programs)
     if isinstance(tools, (str, os.PathLike)):
         tools = ToolTable.read(os.fspath(tools), units=kwargs.pop("units", "mm"))
+    if kwargs.get("machine") not in (None, "mill", "lathe"):  # a file or preset read once, not per program
+        from .machine import resolve
+
+        kwargs["machine"] = resolve(kwargs["machine"])
     if workers is None:
         workers = cores()
     if workers < 1:

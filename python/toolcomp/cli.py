@@ -191,7 +191,7 @@ def _progress_bar(program, stream=None):
 
 
 def execute(program_file, tools_file=None, dialect=None, units_table=None, search_path=(),
-            parameters=None, whole_path=True, csv=None) -> Outcome:
+            parameters=None, whole_path=True, csv=None, machine=None) -> Outcome:
     """Read the program and tool table and run it with ``strict=False``; every problem
     becomes a diagnostic record. Raises UsageError for unreadable inputs. ``whole_path=False``
     (the caller needs the records, the summary and at most ``csv``, a CsvWriter): a large
@@ -218,6 +218,14 @@ def execute(program_file, tools_file=None, dialect=None, units_table=None, searc
     run_kwargs = {} if tools is None else {"tools": tools}
     if search_path:
         run_kwargs["search_path"] = list(search_path)
+    if machine is not None:
+        try:
+            run_kwargs["machine"] = machine if machine in ("mill", "lathe") else tc.machine.resolve(machine)
+        except tc.Error as exc:
+            out.records.append(Record.of(exc, machine, "error"))
+            return out
+        except ValueError as exc:
+            raise UsageError(str(exc)) from None
     if parameters is not None:
         try:
             run_kwargs["parameters"] = tc.params.read_var(parameters)
@@ -448,7 +456,7 @@ def cmd_run(args) -> int:
     writer = CsvWriter(args.csv) if args.csv else None
     try:
         out = execute(args.program, args.tools, args.dialect, args.units_table, args.search_path,
-                      args.parameters, whole_path=bool(args.plot), csv=writer)
+                      args.parameters, whole_path=bool(args.plot), csv=writer, machine=args.machine)
         if writer is not None and not out.streamed:
             writer.add(out.result.path if out.result is not None else None)
     except BaseException:
@@ -480,6 +488,7 @@ def cmd_check(args) -> int:
     for p in args.programs:
         _check_readable(p, "program")
     outcomes = [execute(p, args.tools, args.dialect, args.units_table, args.search_path, args.parameters,
+                        machine=args.machine,
                         whole_path=False) for p in args.programs]
     if args.format == "json":
         doc = [{"program": o.program_file, "ok": not o.has_errors,
@@ -493,7 +502,8 @@ def cmd_check(args) -> int:
 
 
 def cmd_export(args) -> int:
-    out = execute(args.program, args.tools, args.dialect, args.units_table, args.search_path, args.parameters)
+    out = execute(args.program, args.tools, args.dialect, args.units_table, args.search_path, args.parameters,
+                  machine=args.machine)
     if out.has_errors or out.result is None:
         # A program the control refuses has no compensated path to export.
         for r in out.records:
@@ -542,6 +552,9 @@ def build_parser() -> argparse.ArgumentParser:
                         help="directory where called programs are looked for (Heidenhain CALL PGM, "
                              "Sinumerik L10 / named subprograms, LinuxCNC o<name> call, Fanuc M98/G65); "
                              "repeatable, searched in order")
+        sp.add_argument("--machine", metavar="NAME|FILE.toml",
+                        help="the machine the program runs on: a preset (haas-mill, haas-lathe, fanuc-lathe, ...) "
+                             "or a machine file; builder M codes, positions and travel limits act")
         sp.add_argument("--parameters", metavar="FILE.var",
                         help="LinuxCNC parameter file: the numbered parameters the program starts from")
 

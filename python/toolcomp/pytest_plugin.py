@@ -6,12 +6,13 @@ Configure the folder in ``pyproject.toml``::
     programs = "nc/"          # folder (relative to the rootdir) whose programs are tests
     tools = "nc/tools.tbl"    # default tool table (optional)
     dialect = "linuxcnc"      # default dialect (optional; otherwise from each suffix)
+    machine = "haas-mill"     # the machine (optional): a preset or a machine file (.toml)
     fail_on_warnings = false
 
 (or the ini options ``toolcomp_programs``, ``toolcomp_tools``, ``toolcomp_dialect``). A
 ``toolcomp.toml`` in a sub-folder overrides ``tools``, ``dialect``, ``machine`` and
 ``fail_on_warnings`` for the programs in it (paths relative to that file), and a program's
-own header line ``(toolcomp: tools=lathe.tbl dialect=fanuc machine=lathe)`` (or with ``;``)
+own header line ``(toolcomp: tools=lathe.tbl dialect=fanuc machine=haas-lathe)`` (or with ``;``)
 overrides both. Each program runs once; it fails with its diagnostics as
 ``file:line:column: severity code message``.
 """
@@ -61,7 +62,9 @@ def _settings(config) -> Optional[dict]:
     if s.get("programs"):
         result = {"programs": (root / s["programs"]).resolve(),
                   "tools": str((root / s["tools"]).resolve()) if s.get("tools") else None,
-                  "dialect": s.get("dialect"), "machine": s.get("machine"),
+                  "dialect": s.get("dialect"),
+                  "machine": str((root / s["machine"]).resolve()) if _is_file_option("machine", s.get("machine", ""))
+                  else s.get("machine"),
                   "fail_on_warnings": bool(s.get("fail_on_warnings", False))}
     config._toolcomp_settings = result
     return result
@@ -79,6 +82,12 @@ def _header(path: pathlib.Path) -> Dict[str, str]:
     return {}
 
 
+def _is_file_option(key, value) -> bool:
+    """A setting that names a file, relative to where it is given: the tool table, and a
+    machine file (a machine may also be a preset name)."""
+    return key == "tools" or (key == "machine" and str(value).endswith(".toml"))
+
+
 def _options(path: pathlib.Path, base: dict) -> dict:
     opts = dict(base)
     folders = []
@@ -92,9 +101,9 @@ def _options(path: pathlib.Path, base: dict) -> dict:
         f = folder / "toolcomp.toml"
         if f.is_file():
             for k, v in _toml(f).items():
-                opts[k] = str((folder / v).resolve()) if k == "tools" else v
+                opts[k] = str((folder / v).resolve()) if _is_file_option(k, v) else v
     for k, v in _header(path).items():
-        opts[k] = str((path.parent / v).resolve()) if k == "tools" else v
+        opts[k] = str((path.parent / v).resolve()) if _is_file_option(k, v) else v
     if isinstance(opts.get("fail_on_warnings"), str):
         opts["fail_on_warnings"] = opts["fail_on_warnings"].lower() in ("1", "true", "yes")
     return opts
@@ -125,11 +134,8 @@ class NCProgramItem(pytest.Item):
 
         path = pathlib.Path(self.path)
         opts = _options(path.resolve(), _settings(self.config))
-        profile = None
         dialect = opts.get("dialect") or SUFFIXES[path.suffix.lower()]
-        if opts.get("machine"):
-            profile = tc.ControlProfile(dialect, machine=opts["machine"])
-        res = tc.run(str(path), tools=opts.get("tools"), dialect=dialect, strict=False, profile=profile)
+        res = tc.run(str(path), tools=opts.get("tools"), dialect=dialect, strict=False, machine=opts.get("machine"))
         bad = [d for d in res.diagnostics
                if d.severity == "error" or (opts.get("fail_on_warnings") and d.severity == "warning")]
         if bad:

@@ -4,7 +4,7 @@
 #include <catch2/catch.hpp>
 #include <vector>
 
-#include "toolcomp/compensation/profile.hpp"
+#include "toolcomp/control/profile.hpp"
 #include "toolcomp/dialects/iso/interpreter.hpp"
 #include "toolcomp/dialects/iso/lexer.hpp"
 #include "toolcomp/tools/tool_table.hpp"

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "pipeline.hpp"
-#include "toolcomp/compensation/profile.hpp"
+#include "toolcomp/control/profile.hpp"
 #include "toolcomp/dialects/iso/interpreter.hpp"
 #include "toolcomp/run.hpp"
 

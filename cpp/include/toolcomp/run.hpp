@@ -3,12 +3,14 @@
 // compensation stages -> Path.
 #include <functional>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
-#include "toolcomp/compensation/profile.hpp"
+#include "toolcomp/control/machine.hpp"
+#include "toolcomp/control/profile.hpp"
 #include "toolcomp/path.hpp"
 #include "toolcomp/program/diagnostic.hpp"
 #include "toolcomp/program/input_limits.hpp"
@@ -44,7 +46,13 @@ inline constexpr std::size_t kDefaultMaxSegments = 20'000'000;
 struct RunOptions {
     bool strict = true;         // raise at the first error; else return the path up to it
     bool block_delete = false;  // skip '/' blocks
-    std::optional<ControlProfile> profile;  // default: profile_for(program.dialect)
+    std::optional<ControlProfile> profile;  // default: the machine's, else profile_for(program.dialect)
+    // The machine the program runs on (control/machine.hpp): its control must be the
+    // program's dialect ("machine_control" otherwise); its profile is the run's unless
+    // `profile` is given; its builder M codes, origins, tool change position and travel
+    // limits act (the origins and limits in the ISO dialects; the other dialects get a
+    // "travel_not_checked" info when the machine has limits).
+    std::shared_ptr<const Machine> machine;
     // Called with the number of blocks read (Heidenhain: executed) so far, every
     // `progress_every` blocks; may throw to stop the run.
     std::function<void(std::size_t)> progress;

@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "toolcomp/compensation/background_watch.hpp"
-#include "toolcomp/compensation/profile.hpp"
+#include "toolcomp/control/profile.hpp"
 #include "toolcomp/geometry/element.hpp"
 #include "toolcomp/motion/motion.hpp"
 #include "toolcomp/program/diagnostic.hpp"

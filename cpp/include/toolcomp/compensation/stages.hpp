@@ -7,7 +7,7 @@
 // the radius stage; 3D compensation along surface normals follows it.
 #include <vector>
 
-#include "toolcomp/compensation/profile.hpp"
+#include "toolcomp/control/profile.hpp"
 #include "toolcomp/compensation/radius.hpp"
 #include "toolcomp/compensation/surface.hpp"
 #include "toolcomp/motion/motion.hpp"

@@ -103,7 +103,12 @@ void Interp::modal_words(Tokens t, std::size_t from) {
 // An M function of a positioning block (L, C, APPR, DEP, ...): the ones that change the path
 // are taken, the machine functions without a geometric effect pass, the rest are refused.
 void Interp::m_function(Tokens t, const Token& k) {
-    const int m = int_value_truncated(k.value);
+    int m = int_value_truncated(k.value);
+    // A builder code of the machine stands for the standard code of its action.
+    if (const MachineCode* code = machine_ ? machine_->m_code(m) : nullptr) {
+        m = standard_m_code(code->action);
+        if (m < 0) return;
+    }
     switch (m) {
         case 97: corner_ = static_cast<std::int8_t>(OutsideCorner::intersection); break;
         case 98: open_corner_ = true; break;
@@ -581,8 +586,9 @@ void Interp::call_program(Tokens t, int depth) {
 void interpret(const Program& program, const ToolTable* tools, const ControlProfile& profile, MotionSink& sink,
                std::vector<Diagnostic>& diagnostics, const std::function<void(std::size_t)>& progress,
                std::size_t progress_every, const SearchPath& search,
-               std::vector<std::string>* files) {
+               std::vector<std::string>* files, const Machine* machine) {
     Interp interp(program, tools, profile, sink, diagnostics, search);
+    interp.set_machine(machine);
     if (progress) interp.on_progress(progress, progress_every);
     run_reporting(interp, files, [](const Interp& i) { return i.files(); });
 }

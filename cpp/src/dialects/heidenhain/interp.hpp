@@ -26,6 +26,7 @@ class Interp {
 public:
     Interp(const Program& prog, const ToolTable* tools, const ControlProfile& profile, MotionSink& sink,
            std::vector<Diagnostic>& diags, SearchPath search = {});
+    void set_machine(const Machine* m) { machine_ = m; }  // builder M codes
     void run();
     const std::vector<std::string>& files() const { return files_.names(); }
     // Called with the number of blocks executed so far, every `every` blocks.
@@ -108,6 +109,7 @@ private:
 
     const Program& prog_;
     const SearchPath search_;  // directories for CALL PGM, and the limits of the files read
+    const Machine* machine_ = nullptr;  // the machine's builder M codes, if any
     std::map<std::string, std::shared_ptr<const Program>> called_;  // parsed called programs, by file
     std::size_t executed_ = 0;  // blocks executed, called programs included (block limit)
     std::size_t moves_ = 0;     // moves put (put(), put_contour_pieces())

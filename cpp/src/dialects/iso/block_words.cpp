@@ -67,11 +67,19 @@ void add_g(BlockWords& bw, const Word& w, Dialect d) {
     bw.g_groups |= std::uint32_t{1} << group;
 }
 
-void add_m(BlockWords& bw, const Word& w, Dialect d) {
+void add_m(BlockWords& bw, const Word& w, Dialect d, const Machine* machine, std::uint32_t& taken) {
     // Whole first, then the sign of the integer it reads as (M-0.00005 is M0 on LinuxCNC).
     if (!whole_word(w.value, d)) fail("non_integer_value", "Non integer value for integer", bw.line, w.column);
     int m = int_value(w.value);
     if (m < 0) fail("negative_m_code", "Negative m code used", bw.line, w.column);
+    if (machine)
+        if (const MachineCode* code = machine->m_code(m)) {
+            for (char c : code->words) taken |= letter_bit(c);
+            if (++bw.m_count > 4) fail("too_many_m_codes", "Too many m codes on line", bw.line, w.column);
+            m = standard_m_code(code->action);
+            if (m < 0) return;  // a builder code without effect on the path
+            --bw.m_count;        // counted again below
+        }
     if (m > 199 && d == Dialect::linuxcnc)
         fail("m_code_out_of_range", "M-code greater than 199: M" + std::to_string(m), bw.line, w.column);
     if (m > 99999) fail("unknown_m_code", "Unknown m code used: M" + std::to_string(m), bw.line, w.column);
@@ -99,16 +107,17 @@ BlockWords collect_words(const Program& prog, const Block& block) {
     return collect_words(prog.words(block), block.line, prog.dialect);
 }
 
-BlockWords collect_words(std::span<const Word> words, int line, Dialect dialect) {
+BlockWords collect_words(std::span<const Word> words, int line, Dialect dialect, const Machine* machine) {
     BlockWords bw;
     bw.line = line;
     bw.g.fill(-1);
     bw.m.fill(-1);
+    std::uint32_t taken = 0;  // letters the machine's builder codes of the block read
     for (const Word& w : words) {
         if (w.letter == 'G') {
             add_g(bw, w, dialect);
         } else if (w.letter == 'M') {
-            add_m(bw, w, dialect);
+            add_m(bw, w, dialect, machine, taken);
         } else {
             if (bw.has(w.letter)) {
                 char lower = ascii_lower(w.letter);
@@ -130,6 +139,7 @@ BlockWords collect_words(std::span<const Word> words, int line, Dialect dialect)
             bw.set(w.letter, w.value, w.column);
         }
     }
+    bw.letters &= ~taken;
     return bw;
 }
 

@@ -6,6 +6,7 @@
 #include <span>
 
 #include "codes.hpp"
+#include "toolcomp/control/machine.hpp"
 #include "toolcomp/program/int_value.hpp"
 #include "toolcomp/program/program.hpp"
 
@@ -64,8 +65,10 @@ struct BlockWords {
 };
 
 BlockWords collect_words(const Program& prog, const Block& block);
-// The same for words whose values are already computed (programs with parameters).
-BlockWords collect_words(std::span<const Word> words, int line, Dialect dialect);
+// The same for words whose values are already computed (programs with parameters). With a
+// machine, its builder M codes are read: one that does nothing for the path leaves the block,
+// the others stand for the standard code of their action (a Haas M88 is M8).
+BlockWords collect_words(std::span<const Word> words, int line, Dialect dialect, const Machine* machine = nullptr);
 
 // Integer words (T, D, H, L, P, Q, M, G x 10) convert through toolcomp::int_value
 // (program/int_value.hpp; G10's P is truncated, LinuxCNC's reading).

@@ -37,6 +37,21 @@ Interp::Interp(const Program& prog, const ToolTable* tools, const ControlProfile
     st_.plane = profile.startup_plane;
     if (profile.startup_feed_per_rev) st_.feed_mode = 950;
     load_parameters(opts.parameters);
+    if (opts.machine) place_machine(*opts.machine, opts.parameters);
+    travel_ = opts.machine && opts.machine->has_travel_limits();
+}
+
+// The machine's work origin (G54) and G28/G30 positions, in machine coordinates, where the
+// parameters (a .var file: the machine's live state) do not give them; the machine stands
+// at its zero.
+void Interp::place_machine(const Machine& m, const ParameterValues& values) {
+    const double u = st_.inch ? kMmPerInch : 1.0;
+    for (int j = 0; j < 3; ++j) {
+        if (!values.count(5221 + j)) g5x_[0][j] = m.work_origin[static_cast<std::size_t>(j)] / u;
+        if (!values.count(5161 + j)) g28_[j] = m.g28[static_cast<std::size_t>(j)] / u;
+        if (!values.count(5181 + j)) g30_[j] = m.g30[static_cast<std::size_t>(j)] / u;
+    }
+    pos_ = from_machine(Vec6::Zero());
 }
 
 // The start values of the numbered parameters (a .var file). LinuxCNC keeps the machine's
@@ -185,7 +200,7 @@ void Interp::run_blocks() {
                 continue;
             }
         }
-        BlockWords bw = collect_words(words, block.line, p.dialect);
+        BlockWords bw = collect_words(words, block.line, p.dialect, opts_.machine);
         if (fanuc && bw.g[g_nonmodal] == 40) fanuc_dwell(bw);
         alarm_text_.clear();
         if (fanuc && block.comment_count) alarm_text_ = p.comments(block)[0].text;
@@ -485,6 +500,7 @@ bool Interp::execute(const BlockWords& bw) {
     // 5-6: tools
     if (bw.has('T')) select_tool(bw);
     if (modal) {
+        if (bw.m[m_tool_change] == 60 && opts_.machine) to_tool_change_position(bw.m_column[m_tool_change]);
         if (bw.m[m_tool_change] >= 0) change_tool(bw, bw.m[m_tool_change]);
         if (int ch = bw.m[m_checks]; ch >= 0) {  // 9/Series M800 / M801
             checks_ = ch == 8010;

@@ -158,6 +158,10 @@ private:
     void set_coord_system(int n);
     void g10(const BlockWords& bw);
     void g92(const BlockWords& bw, int code);
+    // ---- the machine (interp_machine.cpp) -----------------------------------------------
+    void place_machine(const Machine& m, const ParameterValues& values);
+    void to_tool_change_position(int column);  // M6 on a machine with a tool change position
+    void check_travel(const Motion& m);         // the machine's travel limits (travel_limit)
     void home(const BlockWords& bw, int code);  // G28 / G30 and G28.1 / G30.1
     // Sets an offset (or rotation) while the machine stays still: the program coordinates
     // of the current point change instead.
@@ -209,6 +213,8 @@ private:
     int line_ = 0;  // current block's source line
     std::size_t executed_ = 0;  // blocks executed, cycle repeats included (count_block)
     IdleWatch idle_;            // blocks in a row without a move (count_block)
+    bool travel_ = false;              // the machine has travel limits to check
+    std::size_t travel_warnings_ = 0;  // travel_limit warnings reported
     ModalState st_;
     Vec6 pos_ = Vec6::Zero();
     std::array<Vec6, 9> g5x_;

@@ -101,6 +101,7 @@ void Interp::straight(MotionKind kind, const Vec6& end, double feed) {
     Motion m = motion_to(kind, end);
     m.feed = feed;
     comp_moved_ = comp_moved_ || comp_on();
+    if (travel_) check_travel(m);
     ++moves_;
     sink_.push(m);
     pos_ = end;
@@ -228,6 +229,7 @@ void Interp::motion_arc(const BlockWords& bw, int code) {
     m.feed = feed_for(bw, code, length, end[0]);
     inverse_time_rate(m.feed);
     comp_moved_ = comp_moved_ || comp_on();
+    if (travel_) check_travel(m);
     ++moves_;
     sink_.push(m);
     pos_ = end;

@@ -71,7 +71,7 @@ void Interp::select_tool(const BlockWords& bw) {
             if (n != 0 && tools_ && !tools_->find(n))
                 fail("offset_not_found", "Offset " + std::to_string(n) + " not found in the offset table",
                      bw['T'].column);
-        if (radius_.side != 0 && tool != tool_ && profile_.machine != Machine::lathe)
+        if (radius_.side != 0 && tool != tool_ && profile_.kind != MachineKind::lathe)
             fail("comp_tool_change", "Cannot change tools with cutter radius compensation on", bw['T'].column);
         selected_ = tool_ = tool;
         geometry_offset_ = geometry;

@@ -71,6 +71,7 @@ void Interp::block(std::span<const Token> t) {
     }
     c.executable_seen = true;
     BlockData b;
+    std::string taken;  // letters the machine's builder codes of the block read
     bool words = false;
     std::string call_name;
     int call_column = 0;
@@ -112,7 +113,14 @@ void Interp::block(std::span<const Token> t) {
                     const double v = value_of(x);
                     if (v != std::floor(v) || v < 0 || v > 2147483647)
                         fail("unsupported_m_code", "M" + std::to_string(v) + " is not an M function", x.column);
-                    b.m.emplace_back(int_value(v), x.column);
+                    int m = int_value(v);
+                    // A builder code of the machine stands for the standard code of its action.
+                    if (const MachineCode* code = opts_.machine ? opts_.machine->m_code(m) : nullptr) {
+                        taken += code->words;
+                        m = standard_m_code(code->action);
+                        if (m < 0) continue;
+                    }
+                    b.m.emplace_back(m, x.column);
                     continue;
                 }
                 if (l == 'L' && x.text.size() > 1 && x.expr < 0) {  // L10: subprogram call
@@ -154,6 +162,7 @@ void Interp::block(std::span<const Token> t) {
         call_name = k;
         call_column = x.column;
     }
+    for (char c : taken) b[c].set = false;
     if (b.has('P') && call_name.empty())
         fail("unused_word", "P (the passes of a subprogram call) without a call in the block", b['P'].column);
     const std::size_t moves_before = moves_;

@@ -33,7 +33,7 @@ void Interp::select_tool(const BlockData& b) {
         if (!known) fail("17190", "17190 Illegal T number: T" + std::to_string(t) + " is not in the tool data", tv.column);
     }
     selected_ = t;
-    if (profile_.machine == Machine::lathe) change_tool();
+    if (profile_.kind == MachineKind::lathe) change_tool();
 }
 
 void Interp::change_tool() {

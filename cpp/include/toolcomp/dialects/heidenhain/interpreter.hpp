@@ -5,7 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "toolcomp/compensation/profile.hpp"
+#include "toolcomp/control/machine.hpp"
+#include "toolcomp/control/profile.hpp"
 #include "toolcomp/motion/motion.hpp"
 #include "toolcomp/program/diagnostic.hpp"
 #include "toolcomp/program/program.hpp"
@@ -27,6 +28,6 @@ namespace toolcomp::heidenhain {
 void interpret(const Program& program, const ToolTable* tools, const ControlProfile& profile, MotionSink& sink,
                std::vector<Diagnostic>& diagnostics, const std::function<void(std::size_t)>& progress = {},
                std::size_t progress_every = 1 << 16, const SearchPath& search = {},
-               std::vector<std::string>* files = nullptr);
+               std::vector<std::string>* files = nullptr, const Machine* machine = nullptr);
 
 }  // namespace toolcomp::heidenhain

@@ -6,7 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "toolcomp/compensation/profile.hpp"
+#include "toolcomp/control/machine.hpp"
+#include "toolcomp/control/profile.hpp"
 #include "toolcomp/motion/motion.hpp"
 #include "toolcomp/program/diagnostic.hpp"
 #include "toolcomp/program/program.hpp"
@@ -30,7 +31,10 @@ struct InterpretOptions {
     // (LinuxCNC o<name> call: name.ngc; Fanuc M98/G65 P1000: O1000.nc, O1000, 1000.nc), and
     // the limits they are read within (program/search_path.hpp).
     SearchPath search;
-    ParameterValues parameters;  // start values
+    ParameterValues parameters;  // start values (they win over the machine's origins)
+    // The machine the program runs on: its builder M codes, work origin, G28/G30 positions,
+    // tool change position and travel limits (control/machine.hpp); nullptr: none.
+    const Machine* machine = nullptr;
     // A main program read in pieces (streaming): called when the blocks of the piece run out,
     // it returns the next piece, or nullptr at the end of the file. The piece stays valid
     // until the next call. Control structures (O-words, GOTO targets) must lie within a piece.

@@ -12,7 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "toolcomp/compensation/profile.hpp"
+#include "toolcomp/control/machine.hpp"
+#include "toolcomp/control/profile.hpp"
 #include "toolcomp/compensation/toolholder.hpp"
 #include "toolcomp/motion/motion.hpp"
 #include "toolcomp/program/diagnostic.hpp"
@@ -41,6 +42,7 @@ struct InterpretOptions {
     unsigned tool_parameter_def_mask = 0;       // MD20360 (GETTCOR, diameter values)
     std::map<int, Toolholder> toolholders;      // $TC_CARR data known before the program starts
     int max_call_depth = 16;                    // program levels (main program included)
+    const Machine* machine = nullptr;           // builder M codes (control/machine.hpp)
 };
 
 // `files` (optional) receives the main program's name and each subprogram file's, in the

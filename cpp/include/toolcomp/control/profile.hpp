@@ -161,7 +161,7 @@ struct RadiusRules {
     RadiusMessages messages;
 };
 
-enum class Machine { mill = 0, lathe = 1 };
+enum class MachineKind { mill = 0, lathe = 1 };
 
 // The deepest call nesting a profile may allow: each level holds a frame of the interpreter
 // (a few hundred bytes, more with local parameters); 10000 levels are a few MB.
@@ -169,7 +169,7 @@ inline constexpr std::size_t kMaxCallDepthLimit = 10'000;
 
 struct ControlProfile {
     std::string name = "linuxcnc";
-    Machine machine = Machine::mill;
+    MachineKind kind = MachineKind::mill;  // mill or lathe
 
     // ---- interpreter ------------------------------------------------------------------
     bool startup_inch = false;  // G20 active at program start
@@ -264,7 +264,7 @@ struct ControlProfile {
     RadiusRules radius;
 };
 
-ControlProfile profile_for(Dialect d, Machine machine = Machine::mill);
+ControlProfile profile_for(Dialect d, MachineKind kind = MachineKind::mill);
 
 // Throws std::invalid_argument naming the field when a setting cannot describe a control: a
 // tolerance, angle or length that is not a finite number or is negative, DISC outside

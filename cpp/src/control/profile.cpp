@@ -1,4 +1,4 @@
-#include "toolcomp/compensation/profile.hpp"
+#include "toolcomp/control/profile.hpp"
 
 #include <cmath>
 #include <sstream>
@@ -9,11 +9,11 @@
 
 namespace toolcomp {
 
-ControlProfile profile_for(Dialect d, Machine machine) {
+ControlProfile profile_for(Dialect d, MachineKind machine) {
     ControlProfile p;
     p.name = std::string(dialect_name(d));
-    p.machine = machine;
-    if (machine == Machine::lathe) p.startup_plane = Plane::zx;
+    p.kind = machine;
+    if (machine == MachineKind::lathe) p.startup_plane = Plane::zx;
     // Nested subprogram levels: LinuxCNC allows 9 (the 10th call is "Too many subroutine
     // levels"), Fanuc 10 (M98 and G65 together, 0i/30i).
     if (d == Dialect::linuxcnc) p.call_depth_limit = 9;
@@ -50,7 +50,7 @@ ControlProfile profile_for(Dialect d, Machine machine) {
             r.messages.arc_too_small = "PS0038 INTERFERENCE IN CIRCULAR BLOCK";
             r.messages.gouge_feed = r.messages.gouge_traverse = "PS0041 INTERFERENCE IN CRC";
             r.messages.gouge_arc = r.messages.arc_to_line = r.messages.arc_to_arc = "PS0033 NO INTERSECTION AT CRC";
-            if (machine == Machine::lathe) {
+            if (machine == MachineKind::lathe) {
                 // Fanuc T series: diameter X, U/W incremental, T with offset numbers, tip
                 // numbers in Fanuc/Haas numbering, the offset's X and Z both act.
                 p.x_diameter = true;
@@ -88,7 +88,7 @@ ControlProfile profile_for(Dialect d, Machine machine) {
             // corners sharper than 90 degrees, side and radius changes without G40, no arc
             // in the entry or exit block, checks switchable with M800/M801. The texts of the
             // control's messages are not in the manual excerpt: these name the condition.
-            p.machine = Machine::lathe;
+            p.kind = MachineKind::lathe;
             p.startup_plane = Plane::zx;
             p.x_diameter = true;
             p.incremental_uw = true;

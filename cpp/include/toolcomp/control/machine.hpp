@@ -1,0 +1,119 @@
+#pragma once
+// A machine: a control (its ControlProfile) plus what the machine builder configured on top
+// of it. A real shop program carries the machine's boilerplate (chip conveyor, tailstock,
+// doors, air blast, probe arms), machine-coordinate moves and tool change positions; the
+// control runs them because the builder declared them, and a run does the same with a
+// Machine. What no one declared stays an explicit error.
+//
+// Everything here is plain data, read from a TOML machine file by the Python package
+// (toolcomp/machine.py, doc/machines.md) or set in code. Lengths are millimetres, in machine
+// coordinates (the machine's own zero), feeds mm/min.
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <optional>
+#include <string>
+
+#include "toolcomp/control/profile.hpp"
+#include "toolcomp/program/dialect.hpp"
+
+namespace toolcomp {
+
+// What a builder M code does for the path. The control's own codes keep their meaning;
+// a builder code acts like the standard code of its action (coolant_on like M8, ...).
+enum class MCodeAction : std::uint8_t {
+    nothing,        // no effect on the path: conveyors, doors, brakes, tailstock, air, relays
+    coolant_on,     // as M8
+    coolant_off,    // as M9
+    spindle_cw,     // as M3
+    spindle_ccw,    // as M4
+    spindle_stop,   // as M5
+    program_stop,   // as M0
+    optional_stop,  // as M1
+    program_end,    // as M30
+    tool_change,    // as M6
+};
+
+// The standard code an action acts like (8 for coolant_on, ...); -1 for nothing.
+constexpr int standard_m_code(MCodeAction a) {
+    switch (a) {
+        case MCodeAction::coolant_on: return 8;
+        case MCodeAction::coolant_off: return 9;
+        case MCodeAction::spindle_cw: return 3;
+        case MCodeAction::spindle_ccw: return 4;
+        case MCodeAction::spindle_stop: return 5;
+        case MCodeAction::program_stop: return 0;
+        case MCodeAction::optional_stop: return 1;
+        case MCodeAction::program_end: return 30;
+        case MCodeAction::tool_change: return 6;
+        default: return -1;
+    }
+}
+
+struct MachineCode {
+    MCodeAction action = MCodeAction::nothing;
+    std::string name;   // what the builder calls it ("chip conveyor forward"), for messages
+    std::string words;  // the letters it reads in its block ("P": Haas M59 P1133 sets relay 1133),
+                        // taken out of the block: no other word of the block reads them
+};
+
+// A position in machine coordinates; an axis not given is nullopt (it does not move, or
+// keeps the control's default).
+using MachinePoint = std::array<std::optional<double>, 3>;
+
+// Travel of one axis in machine coordinates (mm); infinite bounds: not limited.
+struct AxisTravel {
+    double min = -std::numeric_limits<double>::infinity();
+    double max = std::numeric_limits<double>::infinity();
+    bool limited() const { return min > -std::numeric_limits<double>::infinity() || max < std::numeric_limits<double>::infinity(); }
+};
+
+struct Machine {
+    std::string name;
+    Dialect control = Dialect::linuxcnc;
+    MachineKind kind = MachineKind::mill;
+    ControlProfile profile;  // the control's profile with the machine file's overrides
+
+    // Builder M codes by number. A code the control fixes itself (program stop and end,
+    // subprogram call and return) cannot be declared (check_machine).
+    std::map<int, MachineCode> m_codes;
+
+    // Where program zero (G54, the first work offset) lies in machine coordinates: G53 moves
+    // and the travel limits are measured from it. A LinuxCNC .var file or G10 still set it.
+    std::array<double, 3> work_origin{0, 0, 0};
+    // The G28 and G30 positions in machine coordinates (LinuxCNC #5161-#5163, #5181-#5183).
+    std::array<double, 3> g28{0, 0, 0}, g30{0, 0, 0};
+    // Where a tool change (M6) sends the axes it names, at rapid, before the change (Haas
+    // mill: Z to machine zero); no axis: the tool changes where it stands.
+    MachinePoint tool_change{};
+
+    // Axis travel (X, Y, Z): a move beyond it is "travel_limit" at its block, an error that
+    // stops the run (the control's soft limit) unless travel_limit_warning.
+    std::array<AxisTravel, 3> travel{};
+    bool travel_limit_warning = false;
+
+    // Rapid traverse and the highest feed of each axis (mm/min; 0: not given). Read and
+    // checked, for cycle time.
+    std::array<double, 3> rapid_rate{0, 0, 0}, max_feed{0, 0, 0};
+
+    const MachineCode* m_code(int number) const {
+        auto it = m_codes.find(number);
+        return it == m_codes.end() ? nullptr : &it->second;
+    }
+    bool has_travel_limits() const { return travel[0].limited() || travel[1].limited() || travel[2].limited(); }
+};
+
+// The plain machine of a control: its profile, no builder codes, machine zero at program zero.
+Machine plain_machine(Dialect control, MachineKind kind = MachineKind::mill);
+
+// The M code numbers a control fixes (M0, M1, M2, M30 everywhere; M98, M99 on Fanuc;
+// M17 and M2/M30 on the Sinumerik; ...): a machine cannot declare them.
+bool control_fixes_m_code(Dialect control, int number);
+
+// Throws std::invalid_argument naming the field for a machine that cannot be: a declared code
+// the control fixes, negative or huge code numbers, travel whose min exceeds its max, values
+// that are not finite numbers, negative rates; and check_profile() on its profile.
+void check_machine(const Machine& m);
+
+}  // namespace toolcomp

@@ -1,0 +1,71 @@
+// Machines: a control's profile plus the builder's configuration (control/machine.hpp).
+#include "toolcomp/control/machine.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace toolcomp {
+
+Machine plain_machine(Dialect control, MachineKind kind) {
+    Machine m;
+    m.name = std::string(dialect_name(control)) + (kind == MachineKind::lathe ? "-lathe" : "");
+    m.control = control;
+    m.kind = kind;
+    m.profile = profile_for(control, kind);
+    return m;
+}
+
+bool control_fixes_m_code(Dialect control, int number) {
+    switch (number) {
+        case 0: case 1: case 2: case 30: return true;  // stops and ends, everywhere
+        case 98: case 99: return control == Dialect::fanuc || control == Dialect::rockwell || control == Dialect::linuxcnc;
+        case 17: return control == Dialect::sinumerik;  // end of a subprogram
+        case 60: case 61: case 62: case 63: case 64: case 65: case 66: case 67: case 68:
+        case 70: case 71: case 72: case 73: case 48: case 49: case 50: case 51: case 52: case 53:
+            return control == Dialect::linuxcnc;  // LinuxCNC's own (pallet, tool, I/O, overrides, state)
+        default: return false;
+    }
+}
+
+namespace {
+[[noreturn]] void bad(const std::string& field, const std::string& why) {
+    throw std::invalid_argument("Machine." + field + ": " + why);
+}
+void finite(const std::string& field, double v) {
+    if (!std::isfinite(v)) bad(field, "must be a finite number (got " + std::to_string(v) + ")");
+}
+const char* kAxis[3] = {"x", "y", "z"};
+}  // namespace
+
+void check_machine(const Machine& m) {
+    if (m.profile.kind != m.kind) bad("profile", "is a profile of another kind of machine (mill / lathe)");
+    for (const auto& [number, code] : m.m_codes) {
+        if (number < 0 || number > 99999) bad("m_codes", "M" + std::to_string(number) + " is no M code number (0 to 99999)");
+        if (control_fixes_m_code(m.control, number))
+            bad("m_codes", "M" + std::to_string(number) + " is fixed by the control (" +
+                               std::string(dialect_name(m.control)) + "); a machine cannot declare it");
+        for (char c : code.words)
+            if (c < 'A' || c > 'Z' || c == 'G' || c == 'M' || c == 'N' || c == 'X' || c == 'Y' || c == 'Z')
+                bad("m_codes", "M" + std::to_string(number) + " words: '" + std::string(1, c) +
+                                   "' is not a letter an M code may read (A-Z but G, M, N, X, Y, Z)");
+        if (m.control == Dialect::linuxcnc && number > 199)
+            bad("m_codes", "LinuxCNC reads M codes up to M199 (M" + std::to_string(number) + ")");
+    }
+    for (int i = 0; i < 3; ++i) {
+        const std::string a = kAxis[i];
+        finite("work_origin." + a, m.work_origin[i]);
+        finite("g28." + a, m.g28[i]);
+        finite("g30." + a, m.g30[i]);
+        if (m.tool_change[i]) finite("tool_change." + a, *m.tool_change[i]);
+        const AxisTravel& t = m.travel[i];
+        if (std::isnan(t.min) || std::isnan(t.max)) bad("travel." + a, "bounds must be numbers");
+        if (t.min > t.max) bad("travel." + a, "min " + std::to_string(t.min) + " is above max " + std::to_string(t.max));
+        for (const auto* r : {&m.rapid_rate, &m.max_feed})
+            if (!std::isfinite((*r)[i]) || (*r)[i] < 0)
+                bad(std::string(r == &m.rapid_rate ? "rapid_rate." : "max_feed.") + a, "must be a finite number >= 0");
+    }
+    check_profile(m.profile);
+}
+
+}  // namespace toolcomp

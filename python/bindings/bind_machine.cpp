@@ -1,0 +1,151 @@
+// Machine: a control plus what its builder configured (control/machine.hpp). Reading and
+// writing machine files (TOML) is in the Python package (toolcomp/machine.py).
+#include "bindings.hpp"
+
+#include <cmath>
+
+#include <pybind11/stl.h>
+
+#include "toolcomp/control/machine.hpp"
+
+using namespace toolcomp;
+
+namespace {
+constexpr std::pair<const char*, MCodeAction> kActions[] = {
+    {"nothing", MCodeAction::nothing},           {"coolant_on", MCodeAction::coolant_on},
+    {"coolant_off", MCodeAction::coolant_off},   {"spindle_cw", MCodeAction::spindle_cw},
+    {"spindle_ccw", MCodeAction::spindle_ccw},   {"spindle_stop", MCodeAction::spindle_stop},
+    {"program_stop", MCodeAction::program_stop}, {"optional_stop", MCodeAction::optional_stop},
+    {"program_end", MCodeAction::program_end},   {"tool_change", MCodeAction::tool_change},
+};
+
+MCodeAction action_from(const std::string& s) {
+    for (const auto& [name, a] : kActions)
+        if (s == name) return a;
+    std::string all;
+    for (const auto& [name, a] : kActions) all += std::string(all.empty() ? "" : ", ") + name;
+    throw py::value_error("unknown M code action '" + s + "' (one of " + all + ")");
+}
+const char* action_name(MCodeAction a) {
+    for (const auto& [name, b] : kActions)
+        if (a == b) return name;
+    return "nothing";
+}
+
+using Triple = std::array<double, 3>;
+using OptTriple = std::array<std::optional<double>, 3>;
+
+Triple finite3(const char* field, const Triple& v) {
+    for (double x : v)
+        if (!std::isfinite(x)) throw py::value_error(std::string(field) + " must hold finite numbers");
+    return v;
+}
+}  // namespace
+
+void bind_machine(py::module_& m) {
+    py::class_<MachineCode>(m, "MachineCode", "A builder M code: what it does for the path, and its name.")
+        .def(py::init([](const std::string& action, std::string name, std::string words) {
+                 return MachineCode{action_from(action), std::move(name), std::move(words)};
+             }),
+             py::arg("action"), py::arg("name") = "", py::arg("words") = "")
+        .def_property(
+            "action", [](const MachineCode& c) { return action_name(c.action); },
+            [](MachineCode& c, const std::string& a) { c.action = action_from(a); },
+            "nothing, coolant_on, coolant_off, spindle_cw, spindle_ccw, spindle_stop, program_stop, optional_stop, "
+            "program_end or tool_change")
+        .def_readwrite("name", &MachineCode::name, "what the builder calls it")
+        .def_readwrite("words", &MachineCode::words,
+                       "the letters it reads in its block (\"P\" for Haas M59 P1133), taken out of the block")
+        .def("__eq__", [](const MachineCode& a, const MachineCode& b) {
+            return a.action == b.action && a.name == b.name && a.words == b.words;
+        })
+        .def("__repr__", [](const MachineCode& c) {
+            return "MachineCode('" + std::string(action_name(c.action)) + "', " +
+                   py::repr(py::str(c.name)).cast<std::string>() +
+                   (c.words.empty() ? std::string() : ", words='" + c.words + "'") + ")";
+        });
+
+    py::class_<Machine>(m, "Machine",
+                        "A machine: a control (its ControlProfile) plus what its builder configured: M codes, "
+                        "work origin, G28/G30 and tool change positions, axis travel, rates. Lengths in mm, "
+                        "machine coordinates. Machine.read / Machine.preset / machine.write: see toolcomp.machine.")
+        .def(py::init([](const std::string& control, const std::string& kind, std::optional<std::string> name) {
+                 if (kind != "mill" && kind != "lathe")
+                     throw py::value_error("kind is 'mill' or 'lathe', not '" + kind + "'");
+                 Machine mc = plain_machine(dialect_from_name(control), kind == "lathe" ? MachineKind::lathe : MachineKind::mill);
+                 if (name) mc.name = *name;
+                 return mc;
+             }),
+             py::arg("control") = "linuxcnc", py::arg("kind") = "mill", py::arg("name") = py::none(),
+             "The plain machine of a control: its profile, no builder codes, machine zero at program zero.")
+        .def_readwrite("name", &Machine::name)
+        .def_property_readonly("control", [](const Machine& mc) { return std::string(dialect_name(mc.control)); },
+                               "the control's dialect: 'linuxcnc', 'fanuc', 'sinumerik', 'heidenhain' or 'rockwell'")
+        .def_readonly("kind", &Machine::kind, "MachineKind: mill or lathe")
+        .def_property(
+            "profile", [](const Machine& mc) { return mc.profile; },
+            [](Machine& mc, const ControlProfile& p) {
+                if (p.kind != mc.kind) throw py::value_error("the profile is of another kind of machine");
+                mc.profile = p;
+            },
+            "the ControlProfile runs on this machine use (a copy: set it back after changing fields)")
+        .def_property(
+            "m_codes", [](const Machine& mc) { return mc.m_codes; },
+            [](Machine& mc, const std::map<int, MachineCode>& codes) {
+                for (const auto& [n, c] : codes)
+                    if (control_fixes_m_code(mc.control, n) || n < 0)
+                        throw py::value_error("M" + std::to_string(n) + " cannot be declared: the control fixes it");
+                mc.m_codes = codes;
+            },
+            "builder M codes: {number: MachineCode} (a copy: set it back after changing it)")
+        .def_property(
+            "work_origin", [](const Machine& mc) { return mc.work_origin; },
+            [](Machine& mc, const Triple& v) { mc.work_origin = finite3("work_origin", v); },
+            "where program zero (G54) lies in machine coordinates, (x, y, z) mm")
+        .def_property(
+            "g28", [](const Machine& mc) { return mc.g28; }, [](Machine& mc, const Triple& v) { mc.g28 = finite3("g28", v); },
+            "the G28 position in machine coordinates, (x, y, z) mm")
+        .def_property(
+            "g30", [](const Machine& mc) { return mc.g30; }, [](Machine& mc, const Triple& v) { mc.g30 = finite3("g30", v); },
+            "the G30 position in machine coordinates, (x, y, z) mm")
+        .def_property(
+            "tool_change", [](const Machine& mc) { return mc.tool_change; },
+            [](Machine& mc, const OptTriple& v) {
+                for (const auto& x : v)
+                    if (x && !std::isfinite(*x)) throw py::value_error("tool_change must hold finite numbers or None");
+                mc.tool_change = v;
+            },
+            "where M6 sends each axis first, machine coordinates (x, y, z), None: that axis stays")
+        .def_property(
+            "travel",
+            [](const Machine& mc) {
+                std::array<std::pair<double, double>, 3> t;
+                for (int i = 0; i < 3; ++i) t[i] = {mc.travel[i].min, mc.travel[i].max};
+                return t;
+            },
+            [](Machine& mc, const std::array<std::pair<double, double>, 3>& t) {
+                for (int i = 0; i < 3; ++i) {
+                    if (std::isnan(t[i].first) || std::isnan(t[i].second) || t[i].first > t[i].second)
+                        throw py::value_error("travel: each axis is (min, max) with min <= max");
+                    mc.travel[i] = {t[i].first, t[i].second};
+                }
+            },
+            "axis travel ((xmin, xmax), (ymin, ymax), (zmin, zmax)) in machine coordinates, mm; +-inf: no limit")
+        .def_readwrite("travel_limit_warning", &Machine::travel_limit_warning,
+                       "a move beyond the travel is a warning (True) or an error that stops the run (False)")
+        .def_property(
+            "rapid_rate", [](const Machine& mc) { return mc.rapid_rate; },
+            [](Machine& mc, const Triple& v) { mc.rapid_rate = finite3("rapid_rate", v); },
+            "rapid traverse of each axis, mm/min (0: not given)")
+        .def_property(
+            "max_feed", [](const Machine& mc) { return mc.max_feed; },
+            [](Machine& mc, const Triple& v) { mc.max_feed = finite3("max_feed", v); },
+            "the highest feed of each axis, mm/min (0: not given)")
+        .def("check", [](const Machine& mc) { check_machine(mc); },
+             "raise ValueError naming the field of a value the machine cannot have")
+        .def("__repr__", [](const Machine& mc) {
+            return "Machine(" + py::repr(py::str(mc.name)).cast<std::string>() + ", control='" +
+                   std::string(dialect_name(mc.control)) + "', kind='" +
+                   (mc.kind == MachineKind::lathe ? "lathe" : "mill") + "', m_codes=" + std::to_string(mc.m_codes.size()) + ")";
+        });
+}

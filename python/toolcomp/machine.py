@@ -1,0 +1,392 @@
+"""Machine files: a control plus what its builder configured, as TOML (doc/machines.md).
+
+    m = tc.Machine.read("haas_vf2.toml")      # or tc.Machine.preset("haas-mill")
+    res = tc.run("part.nc", tools=tools, machine=m)
+    m.write("copy.toml")                      # reads back to the same machine
+
+A machine file names the control and the kind of machine, overrides fields of the control's
+:class:`ControlProfile`, declares the builder's M codes, places program zero and the G28 /
+G30 / tool change positions in machine coordinates, and gives the axis travel and rates::
+
+    name = "Haas VF-2"
+    control = "fanuc"            # linuxcnc | fanuc | sinumerik | heidenhain | rockwell
+    kind = "mill"                # mill | lathe
+    units = "mm"                 # of the lengths and rates below: mm | inch
+
+    [profile]                    # ControlProfile fields that differ from the control's
+    call_depth_limit = 10
+
+    [m_codes]                    # number = action, or { action = ..., name = ... }
+    31 = { action = "nothing", name = "chip conveyor forward" }
+    59 = { action = "nothing", name = "set output relay", words = "P" }   # reads P
+    88 = "coolant_on"
+
+    [positions]                  # machine coordinates
+    work_origin = [-400.0, -200.0, -500.0]   # where program zero (G54) is
+    g28 = [0, 0, 0]
+    tool_change = { z = 0 }      # M6 sends Z there first
+
+    [travel]                     # [min, max] of each axis, machine coordinates
+    x = [-762, 0]
+    y = [-406, 0]
+    z = [-508, 0]
+    limit = "error"              # a move beyond: error (stops the run) | warning
+
+    [rates]                      # mm/min (in/min with units = "inch")
+    rapid = [25400, 25400, 25400]
+    max_feed = [16510, 16510, 16510]
+
+Every mistake in a file is a :class:`ParseError` with code ``machine_file`` and the line of
+the key it is about.
+"""
+from __future__ import annotations
+
+import enum
+import math
+import os
+import re
+import sys
+from typing import Any, Dict, List, Optional, Tuple
+
+from . import _core
+from ._errors import ParseError
+
+if sys.version_info >= (3, 11):
+    import tomllib
+else:  # pragma: no cover
+    import tomli as tomllib
+
+__all__ = ["read", "parse", "dumps", "write", "preset", "presets", "resolve"]
+
+_PRESETS = os.path.join(os.path.dirname(__file__), "machines")
+_CONTROLS = ("linuxcnc", "fanuc", "sinumerik", "heidenhain", "rockwell")
+_AXES = ("x", "y", "z")
+_TOP = {"name", "control", "kind", "units", "profile", "m_codes", "positions", "travel", "rates"}
+_MM_PER_INCH = 25.4
+
+
+class _Source:
+    """The file's text, to say on which line a key stands."""
+
+    def __init__(self, text: str, path: Optional[str]):
+        self.lines = text.splitlines()
+        self.path = path
+
+    def line_of(self, section: Optional[str], key: Optional[str] = None) -> int:
+        """The line of `key` in `section` ([section] or section.key), or of the section header."""
+        current = None
+        header_line = 0
+        for n, raw in enumerate(self.lines, 1):
+            line = raw.strip()
+            m = re.match(r"^\[\s*([^\]]+?)\s*\]", line)
+            if m:
+                current = m.group(1).replace('"', "")
+                if current == section:
+                    header_line = n
+                continue
+            if key is None:
+                continue
+            m = re.match(r'^"?([^"=\s]+)"?\s*=', line)
+            if not m:
+                continue
+            name = m.group(1)
+            if section is None and current is None and name == key:
+                return n
+            if current == section and name == key:
+                return n
+            if current is None and name == f"{section}.{key}":
+                return n
+        return header_line
+
+    def error(self, message: str, section: Optional[str] = None, key: Optional[str] = None, line: int = 0):
+        line = line or self.line_of(section, key)
+        where = f"{self.path}: " if self.path else ""
+        return ParseError(where + message, "machine_file", line, 0)
+
+
+def _number(src, section, key, v, what="a number") -> float:
+    if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
+        raise src.error(f"{section + '.' if section else ''}{key} must be {what}, not {v!r}", section, key)
+    return float(v)
+
+
+def _triple(src, section, key, v, scale) -> Tuple[float, float, float]:
+    if not isinstance(v, list) or len(v) != 3:
+        raise src.error(f"{section}.{key} must be [x, y, z], not {v!r}", section, key)
+    return tuple(_number(src, section, key, x, "a list of three numbers") * scale for x in v)
+
+
+# ---- profile fields ----------------------------------------------------------------------
+
+def _fields(obj) -> List[str]:
+    """The settable fields (properties) of a bound object, in name order."""
+    cls = type(obj)
+    return sorted(a for a in dir(cls) if not a.startswith("_") and isinstance(getattr(cls, a), property)
+                  and getattr(cls, a).fset is not None)
+
+
+def _is_record(v) -> bool:
+    """A nested bound object with fields of its own (RadiusRules, its messages)."""
+    return type(v).__module__.startswith("toolcomp") and not isinstance(v, enum.Enum) and bool(_fields(v)) \
+        and not hasattr(type(v), "__members__")
+
+
+def _set_fields(src, target, table: Dict[str, Any], section: str) -> None:
+    for key, value in table.items():
+        if key not in _fields(target):
+            raise src.error(f"{section} has no field '{key}'", section, key)
+        current = getattr(target, key)
+        if _is_record(current):
+            if not isinstance(value, dict):
+                raise src.error(f"{section}.{key} is a table of fields", section, key)
+            _set_fields(src, current, value, f"{section}.{key}")
+            setattr(target, key, current)
+            continue
+        try:
+            if hasattr(type(current), "__members__"):  # a pybind enum: by name
+                members = type(current).__members__
+                if value not in members:
+                    raise ValueError(f"one of {', '.join(members)}")
+                value = members[value]
+            elif isinstance(current, tuple):
+                value = tuple(value)
+            elif isinstance(current, bool) and not isinstance(value, bool):
+                raise ValueError("true or false")
+            setattr(target, key, value)
+        except (ValueError, TypeError) as e:
+            raise src.error(f"{section}.{key} = {value!r} is refused: {e}", section, key) from None
+
+
+def _profile_diff(profile, default) -> Dict[str, Any]:
+    """The fields of `profile` that differ from `default`, as TOML values."""
+    out: Dict[str, Any] = {}
+    for key in _fields(profile):
+        a, b = getattr(profile, key), getattr(default, key)
+        if _is_record(a):
+            sub = _profile_diff(a, b)
+            if sub:
+                out[key] = sub
+        elif a != b:
+            out[key] = a.name if hasattr(type(a), "__members__") else (list(a) if isinstance(a, tuple) else a)
+    return out
+
+
+# ---- reading -------------------------------------------------------------------------------
+
+def parse(text: str, path: Optional[str] = None) -> "_core.Machine":
+    """A Machine from the text of a machine file (`path` names it in messages)."""
+    src = _Source(text, path)
+    try:
+        doc = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as e:
+        m = re.search(r"line (\d+)", str(e))
+        raise src.error(f"not TOML: {e}", line=int(m.group(1)) if m else 0) from None
+    for key in doc:
+        if key not in _TOP:
+            raise src.error(f"unknown key '{key}' (known: {', '.join(sorted(_TOP))})",
+                            line=src.line_of(None, key) or src.line_of(key))
+    control = doc.get("control")
+    if control not in _CONTROLS:
+        raise src.error(f"control must be one of {', '.join(_CONTROLS)}, not {control!r}", None, "control")
+    kind = doc.get("kind", "mill")
+    if kind not in ("mill", "lathe"):
+        raise src.error(f"kind must be 'mill' or 'lathe', not {kind!r}", None, "kind")
+    units = doc.get("units", "mm")
+    if units not in ("mm", "inch"):
+        raise src.error(f"units must be 'mm' or 'inch', not {units!r}", None, "units")
+    scale = _MM_PER_INCH if units == "inch" else 1.0
+    name = doc.get("name", f"{control}-{kind}")
+    if not isinstance(name, str):
+        raise src.error("name must be text", None, "name")
+    m = _core.Machine(control, kind, name)
+
+    profile = m.profile
+    table = doc.get("profile", {})
+    if not isinstance(table, dict):
+        raise src.error("profile must be a table", "profile")
+    _set_fields(src, profile, table, "profile")
+    m.profile = profile
+
+    codes = {}
+    for key, value in doc.get("m_codes", {}).items():
+        number_text = key[1:] if key[:1] in ("M", "m") else key
+        if not number_text.isdigit():
+            raise src.error(f"m_codes: '{key}' is no M code number", "m_codes", key)
+        number = int(number_text)
+        if isinstance(value, str):
+            value = {"action": value}
+        if not isinstance(value, dict) or set(value) - {"action", "name", "words"} or "action" not in value:
+            raise src.error(f"m_codes.{key} must be an action or {{ action = ..., name = ..., words = ... }}",
+                            "m_codes", key)
+        try:
+            codes[number] = _core.MachineCode(value["action"], str(value.get("name", "")),
+                                              str(value.get("words", "")).upper())
+        except ValueError as e:
+            raise src.error(f"m_codes.{key}: {e}", "m_codes", key) from None
+    try:
+        m.m_codes = codes
+    except ValueError as e:
+        bad = re.search(r"M(\d+)", str(e))
+        raise src.error(f"m_codes: {e}", "m_codes", bad.group(1) if bad else None) from None
+
+    positions = doc.get("positions", {})
+    for key, value in positions.items():
+        if key in ("work_origin", "g28", "g30"):
+            setattr(m, key, _triple(src, "positions", key, value, scale))
+        elif key == "tool_change":
+            if not isinstance(value, dict) or set(value) - set(_AXES):
+                raise src.error("positions.tool_change must be { x = .., y = .., z = .. } (any of them)",
+                                "positions", key)
+            m.tool_change = tuple(None if a not in value else _number(src, "positions", key, value[a]) * scale
+                                  for a in _AXES)
+        else:
+            raise src.error(f"positions has no '{key}' (work_origin, g28, g30, tool_change)", "positions", key)
+
+    travel = doc.get("travel", {})
+    limits = [(-math.inf, math.inf)] * 3
+    for key, value in travel.items():
+        if key == "limit":
+            if value not in ("error", "warning"):
+                raise src.error("travel.limit must be 'error' or 'warning'", "travel", key)
+            m.travel_limit_warning = value == "warning"
+        elif key in _AXES:
+            if not isinstance(value, list) or len(value) != 2:
+                raise src.error(f"travel.{key} must be [min, max]", "travel", key)
+            lo, hi = (_number(src, "travel", key, v) * scale for v in value)
+            if lo > hi:
+                raise src.error(f"travel.{key}: min {value[0]} is above max {value[1]}", "travel", key)
+            limits[_AXES.index(key)] = (lo, hi)
+        else:
+            raise src.error(f"travel has no '{key}' (x, y, z, limit)", "travel", key)
+    m.travel = limits
+
+    for key, value in doc.get("rates", {}).items():
+        if key not in ("rapid", "max_feed"):
+            raise src.error(f"rates has no '{key}' (rapid, max_feed)", "rates", key)
+        v = _triple(src, "rates", key, value, scale)
+        if min(v) < 0:
+            raise src.error(f"rates.{key} must not be negative", "rates", key)
+        setattr(m, "rapid_rate" if key == "rapid" else "max_feed", v)
+    try:
+        m.check()
+    except ValueError as e:
+        raise src.error(str(e)) from None
+    return m
+
+
+def read(path) -> "_core.Machine":
+    """A Machine from a machine file (TOML)."""
+    path = os.fspath(path)
+    if os.path.exists(path) and not os.path.isfile(path):
+        raise ParseError(f"Cannot read machine file '{path}': not a regular file", "not_a_regular_file")
+    try:
+        with open(path, encoding="utf-8") as f:
+            text = f.read()
+    except FileNotFoundError:
+        raise ParseError(f"Cannot read machine file '{path}': no such file", "file_not_found") from None
+    except UnicodeDecodeError as e:
+        raise ParseError(f"Cannot read machine file '{path}': not UTF-8 text ({e.reason})", "machine_file") from None
+    return parse(text, path)
+
+
+# ---- writing -------------------------------------------------------------------------------
+
+def _toml_value(v) -> str:
+    if isinstance(v, bool):
+        return "true" if v else "false"
+    if isinstance(v, (int, float)):
+        if isinstance(v, float) and math.isinf(v):
+            return "inf" if v > 0 else "-inf"
+        return repr(v)
+    if isinstance(v, str):
+        return '"' + v.replace("\\", "\\\\").replace('"', '\\"').replace("\n", "\\n") + '"'
+    if isinstance(v, (list, tuple)):
+        return "[" + ", ".join(_toml_value(x) for x in v) + "]"
+    raise TypeError(f"cannot write {v!r} to TOML")
+
+
+def _write_table(lines: List[str], name: str, table: Dict[str, Any]) -> None:
+    plain = {k: v for k, v in table.items() if not isinstance(v, dict)}
+    nested = {k: v for k, v in table.items() if isinstance(v, dict)}
+    if plain or not nested:
+        lines.append(f"\n[{name}]")
+        lines += [f"{k} = {_toml_value(v)}" for k, v in plain.items()]
+    for k, v in nested.items():
+        _write_table(lines, f"{name}.{k}", v)
+
+
+def dumps(m: "_core.Machine") -> str:
+    """The machine as the text of a machine file (mm); parse() of it gives the same machine."""
+    control, kind = m.control, m.kind.name
+    lines = [f"name = {_toml_value(m.name)}", f"control = {_toml_value(control)}", f"kind = {_toml_value(kind)}",
+             'units = "mm"']
+    diff = _profile_diff(m.profile, _core.ControlProfile(control, kind))
+    if diff:
+        _write_table(lines, "profile", diff)
+    if m.m_codes:
+        lines.append("\n[m_codes]")
+        for number, code in sorted(m.m_codes.items()):
+            value = {"action": code.action}
+            if code.name:
+                value["name"] = code.name
+            if code.words:
+                value["words"] = code.words
+            lines.append(f"{number} = {{ " + ", ".join(f"{k} = {_toml_value(v)}" for k, v in value.items()) + " }")
+    lines.append("\n[positions]")
+    lines.append(f"work_origin = {_toml_value(list(m.work_origin))}")
+    lines.append(f"g28 = {_toml_value(list(m.g28))}")
+    lines.append(f"g30 = {_toml_value(list(m.g30))}")
+    given = {a: v for a, v in zip(_AXES, m.tool_change) if v is not None}
+    if given:
+        lines.append("tool_change = { " + ", ".join(f"{a} = {_toml_value(v)}" for a, v in given.items()) + " }")
+    travel = [(a, t) for a, t in zip(_AXES, m.travel) if math.isfinite(t[0]) or math.isfinite(t[1])]
+    if travel or m.travel_limit_warning:
+        lines.append("\n[travel]")
+        lines += [f"{a} = {_toml_value(list(t))}" for a, t in travel]
+        lines.append(f"limit = {_toml_value('warning' if m.travel_limit_warning else 'error')}")
+    if any(m.rapid_rate) or any(m.max_feed):
+        lines.append("\n[rates]")
+        lines.append(f"rapid = {_toml_value(list(m.rapid_rate))}")
+        lines.append(f"max_feed = {_toml_value(list(m.max_feed))}")
+    return "\n".join(lines) + "\n"
+
+
+def write(m: "_core.Machine", path) -> None:
+    """Write the machine file (a temporary file renamed over `path`: never half written)."""
+    path = os.fspath(path)
+    text = dumps(m)
+    tmp = os.path.join(os.path.dirname(os.path.abspath(path)), "." + os.path.basename(path) + ".tmp")
+    with open(tmp, "w", encoding="utf-8") as f:
+        f.write(text)
+        f.flush()
+        os.fsync(f.fileno())
+    os.replace(tmp, path)
+
+
+# ---- presets and what run() takes ----------------------------------------------------------
+
+def presets() -> List[str]:
+    """The names of the built-in machines."""
+    return sorted(n[:-5] for n in os.listdir(_PRESETS) if n.endswith(".toml"))
+
+
+def preset(name: str) -> "_core.Machine":
+    """A built-in machine: 'haas-mill', 'haas-lathe', or a control's plain machine
+    ('linuxcnc', 'fanuc-mill', 'fanuc-lathe', 'sinumerik-mill', 'sinumerik-lathe', 'heidenhain',
+    'rockwell'); see presets()."""
+    if name not in presets():
+        raise ValueError(f"no machine preset '{name}' (presets: {', '.join(presets())})")
+    return read(os.path.join(_PRESETS, name + ".toml"))
+
+
+def resolve(machine) -> Optional["_core.Machine"]:
+    """What run(), iter_run() and run_many() take as machine=: a Machine, a preset name, the
+    path of a machine file (.toml), 'mill' or 'lathe' (the control's plain machine of that
+    kind, the former shorthand), or None."""
+    if machine is None or isinstance(machine, _core.Machine):
+        return machine
+    if isinstance(machine, os.PathLike) or (isinstance(machine, str) and machine.endswith(".toml")):
+        return read(machine)
+    if isinstance(machine, str):
+        return preset(machine)
+    raise TypeError(f"machine must be a Machine, a preset name or a .toml path, not {type(machine).__name__}")
