@@ -10,22 +10,12 @@
 #include "unchanged_path.hpp"
 #include "program/program_source.hpp"
 
+#include "dialects/table.hpp"
 #include "toolcomp/compensation/stages.hpp"
-#include "toolcomp/dialects/heidenhain/interpreter.hpp"
-#include "toolcomp/dialects/heidenhain/lexer.hpp"
-#include "toolcomp/dialects/iso/interpreter.hpp"
-#include "toolcomp/dialects/iso/lexer.hpp"
-#include "toolcomp/dialects/sinumerik/interpreter.hpp"
-#include "toolcomp/dialects/sinumerik/lexer.hpp"
 
 namespace toolcomp {
 
 namespace {
-
-[[noreturn]] void dialect_not_supported(Dialect d) {
-    throw ParseError("dialect_not_supported",
-                     "The " + std::string(dialect_name(d)) + " dialect is not supported by toolcomp yet");
-}
 
 // Whether every number of a move the Paths keep is finite (x * 0 is 0 for a finite x, NaN
 // else; the feed may be NaN, "not known", but not infinite).
@@ -143,30 +133,13 @@ bool name_file(SourcePos& pos, const std::vector<std::string>& files) {
     return true;
 }
 
-SearchPath search_of(const RunOptions& o) { return {o.search_path, o.follow_links, o.limits}; }
-
-sinumerik::InterpretOptions sinumerik_options(const RunOptions& o, const ControlProfile& p) {
-    sinumerik::InterpretOptions s;
-    s.lengths.tool_length_const = p.tool_length_const;
-    s.lengths.tool_length_type = p.tool_length_type;
-    s.lengths.wear_sign_inverted = p.wear_sign < 0;
-    s.tool_parameter_def_mask = p.tool_parameter_def_mask;
-    s.block_delete = o.block_delete;
-    s.progress = o.progress;
-    s.progress_every = o.progress_every ? o.progress_every : 1;
-    s.search = search_of(o);
-    s.machine = o.machine.get();
-    return s;
-}
 }  // namespace
 
 Program parse_program(std::string_view text, Dialect dialect, std::string name, bool strict,
                       std::size_t max_line_length) {
-    check_line_lengths(text, max_line_length, cr_ends_line(dialect));
-    if (dialect == Dialect::heidenhain) return heidenhain::parse(text, std::move(name), strict);
-    if (dialect == Dialect::sinumerik) return sinumerik::parse(text, std::move(name), strict);
-    if (!is_iso(dialect)) dialect_not_supported(dialect);
-    return iso::parse(text, dialect, std::move(name), strict);
+    const DialectRow& row = dialect_row(dialect);
+    check_line_lengths(text, max_line_length, row.cr_ends_line);
+    return row.parse(text, std::move(name), strict);
 }
 
 Program read_program(const std::string& path, std::optional<Dialect> dialect, bool strict, const ReadLimits& limits) {
@@ -192,40 +165,22 @@ void run_pipeline(const Program& program, const ToolTable* tools, const RunOptio
                   std::vector<Diagnostic>& diagnostics, iso::InterpretOutput& out, const PipelineHooks& hooks) {
     CompensationChain chain(profile, compensated, diagnostics, options.threads);
     Tee tee(nominal, chain);
-    iso::InterpretOptions iopts;
-    iopts.block_delete = options.block_delete;
-    iopts.progress = options.progress;
-    iopts.progress_every = options.progress_every ? options.progress_every : 1;
-    iopts.search = search_of(options);
-    iopts.machine = options.machine.get();
+    const DialectRow& row = dialect_row(program.dialect);
     if (options.machine) {
         if (options.machine->control != program.dialect)
             throw ProgramError("machine_control", "The machine '" + options.machine->name + "' has a " +
                                                       std::string(dialect_name(options.machine->control)) +
-                                                      " control; the program is read as " +
-                                                      std::string(dialect_name(program.dialect)));
-        if (options.machine->has_travel_limits() && !is_iso(program.dialect))
+                                                      " control; the program is read as " + std::string(row.name));
+        if (options.machine->has_travel_limits() && !row.checks_travel)
             diagnostics.push_back({"travel_not_checked", Severity::info,
-                                   "The machine's travel limits are not checked for " +
-                                       std::string(dialect_name(program.dialect)) + " programs yet",
+                                   "The machine's travel limits are not checked for " + std::string(row.name) +
+                                       " programs yet",
                                    {}});
     }
-    iopts.parameters = options.parameters;
-    iopts.next_piece = hooks.next_piece;
-    iopts.file_opened = hooks.file_opened;
     out.files.push_back(program.name);
     try {
         try {
-            if (program.dialect == Dialect::heidenhain)
-                heidenhain::interpret(program, tools, profile, tee, diagnostics, iopts.progress, iopts.progress_every,
-                                      search_of(options), &out.files, options.machine.get());
-            else if (program.dialect == Dialect::sinumerik)
-                sinumerik::interpret(program, tools, profile, sinumerik_options(options, profile), tee, diagnostics,
-                                     &out.files);
-            else if (is_iso(program.dialect))
-                iso::interpret(program, tools, profile, iopts, tee, diagnostics, &out);
-            else
-                dialect_not_supported(program.dialect);
+            row.interpret({program, tools, profile, options, tee, diagnostics, out, hooks});
         } catch (const Error& e) {
             if (options.strict) {
                 SourcePos at = e.pos();

@@ -6,6 +6,7 @@
 
 #include <utility>
 
+#include "dialects/table.hpp"
 #include "pipeline.hpp"
 #include "program/program_source.hpp"
 
@@ -135,7 +136,8 @@ void PathStream::produce() {
         return cancelled_;
     };
     auto pipeline = [&](const Program& p) {
-        if (!is_iso(p.dialect)) live.push_back(p.name);  // Heidenhain, Sinumerik: the main file only, until the end
+        // Files read whole: the main file only, until the end (pieces tell each file opened).
+        if (!dialect_row(p.dialect).read_in_pieces) live.push_back(p.name);
         const ControlProfile profile = run.profile ? *run.profile
                                        : run.machine ? run.machine->profile
                                                      : profile_for(p.dialect);

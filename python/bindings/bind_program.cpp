@@ -76,4 +76,20 @@ void bind_program(py::module_& m) {
         },
         py::arg("path"), py::arg("dialect") = py::none(),
         "The dialect a program file is read in: `dialect` if given, else from its suffix (ParseError otherwise).");
+    m.def(
+        "dialect_table",
+        [] {
+            py::list rows;
+            for (const DialectNames& r : dialect_names()) {
+                py::list suffixes;
+                for (std::string_view s : r.suffixes)
+                    if (!s.empty()) suffixes.append(py::str("." + std::string(s)));
+                py::dict d;
+                d["name"] = std::string(r.name);
+                d["suffixes"] = suffixes;
+                rows.append(d);
+            }
+            return rows;
+        },
+        "The dialects toolcomp reads: [{'name': 'linuxcnc', 'suffixes': ['.ngc']}, ...], from the engine's table.");
 }

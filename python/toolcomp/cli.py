@@ -24,9 +24,14 @@ from toolcomp import cli_stream
 
 EXIT_OK, EXIT_ERRORS, EXIT_USAGE, EXIT_ENGINE = 0, 1, 2, 3
 
-DIALECTS = ("linuxcnc", "fanuc", "sinumerik", "heidenhain", "rockwell")
-SUFFIX_DIALECTS = {".ngc": "linuxcnc", ".nc": "fanuc", ".tap": "fanuc",
-                   ".mpf": "sinumerik", ".spf": "sinumerik", ".h": "heidenhain"}
+try:  # the dialects and their suffixes: the engine's table (without the engine, _engine() says so)
+    from toolcomp._core import dialect_table as _dialect_table
+
+    _DIALECT_TABLE = _dialect_table()
+except ImportError:  # pragma: no cover
+    _DIALECT_TABLE = []
+DIALECTS = tuple(row["name"] for row in _DIALECT_TABLE)
+SUFFIX_DIALECTS = {s: row["name"] for row in _DIALECT_TABLE for s in row["suffixes"]}
 ERROR_SEVERITIES = ("error", "fatal")
 INCH = 25.4
 MAX_COUNTED_BYTES = 2**31  # Program.read's default max_bytes

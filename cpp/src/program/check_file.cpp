@@ -2,6 +2,7 @@
 // `check` of programs whose blocks (and Paths) would not fit in memory.
 #include <unistd.h>
 
+#include "../dialects/table.hpp"
 #include "file_pieces.hpp"
 #include "toolcomp/dialects/iso/lexer.hpp"
 #include "toolcomp/program/input_limits.hpp"
@@ -11,7 +12,7 @@ namespace toolcomp {
 
 std::size_t check_program_file(const std::string& path, std::optional<Dialect> dialect, const ReadLimits& limits) {
     const Dialect d = dialect_of_file(path, dialect);
-    if (!is_iso(d)) return read_program(path, d, /*strict=*/true, limits).size();  // read whole by a run too
+    if (!dialect_row(d).read_in_pieces) return read_program(path, d, /*strict=*/true, limits).size();  // read whole by a run too
     ::close(open_program_file(path));  // a missing file, a FIFO or a directory: as read_program says
     FilePieces pieces(path, kPieceBytes, limits.max_line_length, cr_ends_line(d));
     iso::PieceParser parser(d, path, /*strict=*/true, kPieceBytes);

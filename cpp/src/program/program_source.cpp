@@ -4,6 +4,7 @@
 
 #include <utility>
 
+#include "../dialects/table.hpp"
 #include "toolcomp/program/input_limits.hpp"
 
 namespace toolcomp {
@@ -17,7 +18,7 @@ ProgramSource::ProgramSource(const std::string& path, Dialect dialect, const Rea
         throw ParseError("input_too_large", "Cannot read program file '" + path + "': it is " + byte_count_text(size) +
                                                 ", more than the limit of " + byte_count_text(limits.max_bytes) +
                                                 " (max_bytes)");
-    bool whole = !is_iso(dialect);
+    bool whole = !dialect_row(dialect).read_in_pieces;
     if (!whole) {
         pieces_.emplace(path, piece_bytes, limits.max_line_length, cr_ends_line(dialect));
         for (std::string_view t = pieces_->next(); !t.empty() && !whole; t = pieces_->next()) {
