@@ -267,6 +267,31 @@ void bind_run(py::module_& m) {
                        "code alone only sets the mode")
         .def_readwrite("inverse_time_min_rate", &ControlProfile::inverse_time_min_rate,
                        "least feed rate of a G93 move, program units a minute (LinuxCNC 0.1)")
+        .def_readwrite("integer_word_slack", &ControlProfile::integer_word_slack,
+                       "integer words with LinuxCNC's slack (M T H L within 0.0001, D is_near_int, G2/G3 P 0.001, "
+                       "M61 Q and G10 P to the nearest); False: exactly whole, as written")
+        .def_readwrite("linuxcnc_g_numbers", &ControlProfile::linuxcnc_g_numbers,
+                       "G numbers read as LinuxCNC's read_g does; False: to a tenth, exactly")
+        .def_readwrite("last_g_code_wins", &ControlProfile::last_g_code_wins,
+                       "two G codes of one modal group in a block: the last counts (Fanuc); False: refused")
+        .def_readwrite("max_m_code", &ControlProfile::max_m_code, "the highest M code number (LinuxCNC 199)")
+        .def_readwrite("negative_l_refused", &ControlProfile::negative_l_refused,
+                       "a negative L word is refused as it is read (LinuxCNC)")
+        .def_readwrite("dwell_negative_p", &ControlProfile::dwell_negative_p,
+                       "G4: only P-1 is missing, negative P dwells (LinuxCNC); False: a negative P is missing")
+        .def_readwrite("dwell_x_seconds", &ControlProfile::dwell_x_seconds,
+                       "G4 X (U on lathes) is the dwell in seconds, P in milliseconds (Fanuc)")
+        .def_readwrite("fanuc_g10", &ControlProfile::fanuc_g10,
+                       "G10 L2/L20 as Fanuc reads them (L20 and L2 P0 refused, P 1-6, no R, L2 adds in G91); "
+                       "False: LinuxCNC's G10")
+        .def_readwrite("program_end_required", &ControlProfile::program_end_required,
+                       "a program must end with M2/M30 or '%' (LinuxCNC)")
+        .def_readwrite("errors_at_outermost_call", &ControlProfile::errors_at_outermost_call,
+                       "an error in a called subroutine is reported at the line of the outermost call (LinuxCNC)")
+        .def_readwrite("abort_comment", &ControlProfile::abort_comment,
+                       "(ABORT, text) stops the program with the text (LinuxCNC 2.9)")
+        .def_readwrite("call_depth_message", &ControlProfile::call_depth_message,
+                       "the error text for calls nested too deep ('' : toolcomp's own, naming the limit)")
         .def_readwrite("g96_needs_s", &ControlProfile::g96_needs_s,
                        "G96 needs an S word in its block (LinuxCNC); False: the S in force is the surface speed")
         .def_readwrite("last_comment_only", &ControlProfile::last_comment_only,

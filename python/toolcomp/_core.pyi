@@ -253,6 +253,18 @@ class ControlProfile:
     tool_parameter_def_mask: int
     name: str
     startup_inch: bool
+    integer_word_slack: bool
+    linuxcnc_g_numbers: bool
+    last_g_code_wins: bool
+    max_m_code: int
+    negative_l_refused: bool
+    dwell_negative_p: bool
+    dwell_x_seconds: bool
+    fanuc_g10: bool
+    program_end_required: bool
+    errors_at_outermost_call: bool
+    abort_comment: bool
+    call_depth_message: str
     startup_plane: int
     startup_feed_per_rev: bool
     block_limit: int

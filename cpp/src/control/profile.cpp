@@ -23,6 +23,24 @@ ControlProfile profile_for(Dialect d, MachineKind machine) {
     if (d == Dialect::linuxcnc) p.inverse_time_min_rate = 0.1;
     p.g96_needs_s = d == Dialect::linuxcnc;
     if (d == Dialect::fanuc) p.call_depth_limit = 10;
+    if (d == Dialect::linuxcnc) {
+        // LinuxCNC 2.9's readings (rs274ngc: read_integer_value, is_near_int, read_g,
+        // convert_dwell, convert_setup) and its program end and error reporting.
+        p.integer_word_slack = true;
+        p.linuxcnc_g_numbers = true;
+        p.max_m_code = 199;
+        p.negative_l_refused = true;
+        p.dwell_negative_p = true;
+        p.program_end_required = true;
+        p.errors_at_outermost_call = true;
+        p.abort_comment = true;
+        p.call_depth_message = "Too many subroutine levels";
+    }
+    if (d == Dialect::fanuc) {
+        p.last_g_code_wins = true;
+        p.fanuc_g10 = true;
+        p.dwell_x_seconds = true;
+    }
     switch (d) {
         case Dialect::fanuc: {
             // Fanuc "tool length compensation type A": the H value acts on Z; G44 subtracts.

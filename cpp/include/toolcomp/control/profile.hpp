@@ -217,6 +217,46 @@ struct ControlProfile {
     // G96 needs its surface speed in the same block (LinuxCNC: "S word missing with G96");
     // false: the S word in force is the surface speed.
     bool g96_needs_s = false;
+
+    // ---- how words are read (ISO dialects) ---------------------------------------------
+    // Integer words with LinuxCNC's slack (dialects/iso/whole_numbers.hpp): M, T, H, L up to
+    // 0.0001 off an integer, G41/G42 D within 0.0001 (is_near_int), G2/G3 P within 0.001,
+    // M61 Q and G10 P taken to the nearest integer; false: as written, exactly whole.
+    bool integer_word_slack = false;
+    // G numbers read as LinuxCNC reads them (G1.00001 is G1; "Unknown g code used" for the
+    // rest); false: to a tenth, exactly.
+    bool linuxcnc_g_numbers = false;
+    // Two G codes of one modal group in a block: the last counts (Fanuc); false: refused
+    // ("Two g codes used from same modal group"), G80 beside a motion code excepted.
+    bool last_g_code_wins = false;
+    // The highest M code number (LinuxCNC 199: "M-code greater than 199").
+    int max_m_code = 99999;
+    // G4 X (and U on lathes) is the dwell in seconds, P in milliseconds (Fanuc); false: G4 P
+    // in seconds, X and U axis words.
+    bool dwell_x_seconds = false;
+    // A negative L word is refused as it is read ("Negative l word used", LinuxCNC).
+    bool negative_l_refused = false;
+    // G4 P: only -1 counts as missing, any other value is a dwell, negative ones too
+    // (LinuxCNC); false: a negative P is missing.
+    bool dwell_negative_p = false;
+    // G10 L2 / L20 as Fanuc reads them: L20 sets the additional systems G54.1 and L2 P0 the
+    // external offset (both refused: not run by toolcomp), P from 1 to 6, no R; in G91 the
+    // L2 values add to the offset. False: LinuxCNC's G10 (L2 absolute even in G91, P0 the
+    // active system, P up to 9, R the rotation).
+    bool fanuc_g10 = false;
+
+    // ---- how a program runs and ends (ISO dialects) -------------------------------------
+    // A program must end with M2/M30 or '%' (LinuxCNC: "File ended with no percent sign or
+    // program end").
+    bool program_end_required = false;
+    // An error inside called subroutines is reported at the main program's line of the
+    // outermost call (LinuxCNC unwinds the calls before it reports); false: where it is.
+    bool errors_at_outermost_call = false;
+    // (ABORT, text) stops the program with the text (LinuxCNC 2.9).
+    bool abort_comment = false;
+    // The text of the error for calls nested deeper than call_depth_limit ("" : toolcomp's
+    // own, naming the limit; LinuxCNC: "Too many subroutine levels").
+    std::string call_depth_message;
     // Arc tolerances, in program units ([0] for mm programs, [1] for inch programs), as
     // LinuxCNC 2.9 applies them: an arc given by its centre is refused when its start and
     // end radius differ by more than `arc_spiral_hard_factor`·`arc_spiral_abs`, or by more

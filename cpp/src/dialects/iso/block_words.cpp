@@ -36,9 +36,9 @@ int linuxcnc_g_code(const BlockWords& bw, const Word& w) {
     return static_cast<int>(code);
 }
 
-void add_g(BlockWords& bw, const Word& w, Dialect d) {
+void add_g(BlockWords& bw, const Word& w, Dialect d, const ControlProfile& profile) {
     int code = 0;
-    if (d == Dialect::linuxcnc) {
+    if (profile.linuxcnc_g_numbers) {
         code = linuxcnc_g_code(bw, w);
     } else {
         double v10 = w.value * 10;
@@ -54,7 +54,7 @@ void add_g(BlockWords& bw, const Word& w, Dialect d) {
     if (bw.g[group] >= 0) {
         // LinuxCNC lets G80 stand beside another motion code; the other code wins. On Fanuc
         // the last code of a modal group in a block is the one that counts.
-        if (d == Dialect::fanuc && group != g_nonmodal) {
+        if (profile.last_g_code_wins && group != g_nonmodal) {
             // replaced below
         } else if (group == g_motion && (code == 800 || bw.g[group] == 800)) {
             if (code == 800) return;
@@ -67,9 +67,10 @@ void add_g(BlockWords& bw, const Word& w, Dialect d) {
     bw.g_groups |= std::uint32_t{1} << group;
 }
 
-void add_m(BlockWords& bw, const Word& w, Dialect d, const Machine* machine, std::uint32_t& taken) {
+void add_m(BlockWords& bw, const Word& w, Dialect d, const ControlProfile& profile, const Machine* machine,
+           std::uint32_t& taken) {
     // Whole first, then the sign of the integer it reads as (M-0.00005 is M0 on LinuxCNC).
-    if (!whole_word(w.value, d)) fail("non_integer_value", "Non integer value for integer", bw.line, w.column);
+    if (!whole_word(w.value, profile.integer_word_slack)) fail("non_integer_value", "Non integer value for integer", bw.line, w.column);
     int m = int_value(w.value);
     if (m < 0) fail("negative_m_code", "Negative m code used", bw.line, w.column);
     if (machine)
@@ -80,8 +81,9 @@ void add_m(BlockWords& bw, const Word& w, Dialect d, const Machine* machine, std
             if (m < 0) return;  // a builder code without effect on the path
             --bw.m_count;        // counted again below
         }
-    if (m > 199 && d == Dialect::linuxcnc)
-        fail("m_code_out_of_range", "M-code greater than 199: M" + std::to_string(m), bw.line, w.column);
+    if (m > profile.max_m_code && profile.max_m_code < 99999)
+        fail("m_code_out_of_range", "M-code greater than " + std::to_string(profile.max_m_code) + ": M" + std::to_string(m),
+             bw.line, w.column);
     if (m > 99999) fail("unknown_m_code", "Unknown m code used: M" + std::to_string(m), bw.line, w.column);
     int group = m_group(m * 10, d);
     if (group == kUnknown) fail("unknown_m_code", "Unknown m code used: M" + std::to_string(m), bw.line, w.column);
@@ -103,11 +105,9 @@ int BlockWords::axis_column() const {
     return col;
 }
 
-BlockWords collect_words(const Program& prog, const Block& block) {
-    return collect_words(prog.words(block), block.line, prog.dialect);
-}
-
-BlockWords collect_words(std::span<const Word> words, int line, Dialect dialect, const Machine* machine) {
+BlockWords collect_words(std::span<const Word> words, int line, Dialect dialect, const ControlProfile& profile,
+                         const Machine* machine) {
+    const bool slack = profile.integer_word_slack;
     BlockWords bw;
     bw.line = line;
     bw.g.fill(-1);
@@ -115,23 +115,23 @@ BlockWords collect_words(std::span<const Word> words, int line, Dialect dialect,
     std::uint32_t taken = 0;  // letters the machine's builder codes of the block read
     for (const Word& w : words) {
         if (w.letter == 'G') {
-            add_g(bw, w, dialect);
+            add_g(bw, w, dialect, profile);
         } else if (w.letter == 'M') {
-            add_m(bw, w, dialect, machine, taken);
+            add_m(bw, w, dialect, profile, machine, taken);
         } else {
             if (bw.has(w.letter)) {
                 char lower = ascii_lower(w.letter);
                 fail("multiple_words", std::string("Multiple ") + lower + " words on one line", bw.line, w.column);
             }
             if (w.letter == 'T') {
-                if (!whole_word(w.value, dialect))
+                if (!whole_word(w.value, slack))
                     fail("non_integer_value", "Non integer value for integer", bw.line, w.column);
                 if (int_value(w.value) < 0)
                     fail("negative_tool", "Negative tool id (tool not found)", bw.line, w.column);
             }
-            if (w.letter == 'L' && !whole_word(w.value, dialect))
+            if (w.letter == 'L' && !whole_word(w.value, slack))
                 fail("non_integer_value", "Non integer value for integer", bw.line, w.column);
-            if (w.letter == 'L' && int_value(w.value) < 0 && dialect == Dialect::linuxcnc)
+            if (w.letter == 'L' && int_value(w.value) < 0 && profile.negative_l_refused)
                 fail("negative_l_word", "Negative l word used", bw.line, w.column);
             if (w.letter == 'F' && w.value < 0) fail("negative_feed", "Negative f word used", bw.line, w.column);
             if (w.letter == 'S' && w.value < 0)

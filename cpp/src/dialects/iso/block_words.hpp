@@ -64,11 +64,11 @@ struct BlockWords {
     int axis_column() const;
 };
 
-BlockWords collect_words(const Program& prog, const Block& block);
-// The same for words whose values are already computed (programs with parameters). With a
-// machine, its builder M codes are read: one that does nothing for the path leaves the block,
+// The words of a block (their values computed), read by the control's rules (the
+// profile's integer slack, G number reading, M code range). With a machine, its builder M codes are read: one that does nothing for the path leaves the block,
 // the others stand for the standard code of their action (a Haas M88 is M8).
-BlockWords collect_words(std::span<const Word> words, int line, Dialect dialect, const Machine* machine = nullptr);
+BlockWords collect_words(std::span<const Word> words, int line, Dialect dialect, const ControlProfile& profile,
+                         const Machine* machine = nullptr);
 
 // Integer words (T, D, H, L, P, Q, M, G x 10) convert through toolcomp::int_value
 // (program/int_value.hpp; G10's P is truncated, LinuxCNC's reading).

@@ -149,7 +149,7 @@ void Interp::run() {
         // LinuxCNC unwinds the calls before it reports: an error at any depth is reported at
         // the main program's line of the outermost call.
         // (A file that cannot be read or parsed fails at the call itself.)
-        if (prog_.dialect != Dialect::linuxcnc || (frames_.size() < 2 && e.file().empty())) throw;
+        if (!profile_.errors_at_outermost_call || (frames_.size() < 2 && e.file().empty())) throw;
         throw_at(e, SourcePos{frames_.size() >= 2 ? frames_[1].call_line : line_, 0});
     }
 }
@@ -200,8 +200,8 @@ void Interp::run_blocks() {
                 continue;
             }
         }
-        BlockWords bw = collect_words(words, block.line, p.dialect, opts_.machine);
-        if (fanuc && bw.g[g_nonmodal] == 40) fanuc_dwell(bw);
+        BlockWords bw = collect_words(words, block.line, p.dialect, profile_, opts_.machine);
+        if (profile_.dwell_x_seconds && bw.g[g_nonmodal] == 40) fanuc_dwell(bw);
         alarm_text_.clear();
         if (fanuc && block.comment_count) alarm_text_ = p.comments(block)[0].text;
         if (block.statement_count) assignments(block);  // messages show the values after them
@@ -240,7 +240,7 @@ void Interp::run_blocks() {
     file_ = 0;
     const Program& last = *main_.prog;  // the whole program, or its last piece
     if (const auto& e = last.syntax_error) throw ParseError(e->code, e->message, e->pos);
-    if (prog_.dialect == Dialect::linuxcnc) {
+    if (profile_.program_end_required) {
         // LinuxCNC refuses a file that simply stops: it must end with M2/M30 or '%'.
         line_ = last.last_line;
         if (last.percent_open && !last.percent_closed)
@@ -513,7 +513,7 @@ bool Interp::execute(const BlockWords& bw) {
     }
     // 10: dwell
     // LinuxCNC keeps -1 for a missing P and reads any other value, negative ones too.
-    if (g0 == 40 && (!bw.has('P') || (prog_.dialect == Dialect::linuxcnc ? bw['P'].value == -1 : bw['P'].value < 0)))
+    if (g0 == 40 && (!bw.has('P') || (profile_.dwell_negative_p ? bw['P'].value == -1 : bw['P'].value < 0)))
         fail("dwell_missing", "Dwell time missing with g4", bw.g_column[g_nonmodal]);
     if (modal) {
         // 11-12: plane, units (an F in the same block was read in the old units, as LinuxCNC does)

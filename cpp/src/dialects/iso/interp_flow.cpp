@@ -101,8 +101,8 @@ bool Interp::declared_before(const std::string& name) const {
 
 void Interp::push_frame(Frame f) {
     if (frames_.size() > profile_.call_depth_limit)
-        fail("call_depth", prog_.dialect == Dialect::linuxcnc
-                               ? std::string("Too many subroutine levels")
+        fail("call_depth", !profile_.call_depth_message.empty()
+                               ? profile_.call_depth_message
                                : "More than " + std::to_string(profile_.call_depth_limit) +
                                      " nested subprogram calls (ControlProfile.call_depth_limit)");
     frames_.push_back(std::move(f));

@@ -162,7 +162,7 @@ void Interp::motion_arc(const BlockWords& bw, int code) {
     if (bw.has('P')) {
         double pv = bw['P'].value;
         // LinuxCNC refuses a P more than 0.001 from an integer; Fanuc takes it as written.
-        if (std::fabs(std::round(pv) - pv) > (prog_.dialect == Dialect::linuxcnc ? 0.001 : 1e-9))
+        if (std::fabs(std::round(pv) - pv) > (profile_.integer_word_slack ? 0.001 : 1e-9))
             fail("arc_p_not_integer", "P value not an integer with M19 G2 or G3", bw['P'].column);
         if (pv > kMaxArcTurns + 1.5)
             fail("arc_too_many_turns",

@@ -49,7 +49,7 @@ void Interp::g10(const BlockWords& bw) {
     int p = -1;
     if (bw.has('P')) {
         const double pv = bw['P'].value;
-        if (prog_.dialect == Dialect::linuxcnc) {
+        if (profile_.integer_word_slack) {
             const double rounded = std::round(pv);
             if ((pv + 0.0001) - rounded > 0.0002) fail("g10_p_not_integer", "P value not an integer with G10", col);
             p = rounded < 0 || rounded > 9 ? -1 : int_value_truncated(pv + 0.0001);
@@ -58,7 +58,7 @@ void Interp::g10(const BlockWords& bw) {
         }
     }
     if (p < 0 || p > 9) fail("g10_bad_p", "P value out of range (0-9) with " + which, col);
-    if (prog_.dialect == Dialect::fanuc) {
+    if (profile_.fanuc_g10) {
         // Fanuc's G10 L20 sets the additional systems G54.1 P1-P48 and L2 P0 the external
         // offset that shifts every system: neither is LinuxCNC's, neither is run here.
         if (l == 20)
@@ -75,7 +75,7 @@ void Interp::g10(const BlockWords& bw) {
     Vec6 value = g5x_[n - 1];
     double rotation = rotation_[n - 1];
     if (l == 2) {  // the offset itself (LinuxCNC: absolute even in G91; Fanuc adds it in G91)
-        const bool add = st_.incremental && prog_.dialect == Dialect::fanuc;
+        const bool add = st_.incremental && profile_.fanuc_g10;
         for (int i = 0; i < 6; ++i)
             if (bw.has(kAxisLetter[i])) value[i] = (add ? value[i] : 0) + axis_value(bw, i);
         if (bw.has('R')) rotation = bw['R'].value;

@@ -253,7 +253,7 @@ void Interp::message_comment(const Comment& c) {
         info("message", c.text.substr(c.text.find(',', from) + 1), c.column);
     else if (head.rfind("debug,", 0) == 0 || head.rfind("print,", 0) == 0)
         info("message", substitute(c.text.substr(c.text.find(',', from) + 1)), c.column);
-    else if (head.rfind("abort,", 0) == 0 && prog_.dialect == Dialect::linuxcnc)
+    else if (head.rfind("abort,", 0) == 0 && profile_.abort_comment)
         // LinuxCNC 2.9 stops the program with the text, parameters substituted, before the
         // block's motion.
         fail("abort", substitute(c.text.substr(c.text.find(',', from) + 1)), c.column);

@@ -52,7 +52,7 @@ void Interp::radius_comp(const BlockWords& bw, int code) {
         int tool = profile_.modal_offset_numbers ? last_d_ : spindle_tool();
         if (bw.has('D')) {
             double d = bw['D'].value;
-            if (!d_word_whole(d, prog_.dialect))
+            if (!d_word_whole(d, profile_.integer_word_slack))
                 fail("comp_d_not_integer", name + " requires D word to be a whole number", bw['D'].column);
             if (d < -0.5) fail("comp_negative_d", "Negative d word tool radius index used", bw['D'].column);
             tool = int_value(d);

@@ -97,7 +97,7 @@ void Interp::change_tool(const BlockWords& bw, int mcode) {
     // M61 Q: tell the control which tool is in the spindle, without a change.
     // LinuxCNC takes Q to the nearest integer (halves up); Fanuc as written.
     const double q = bw.has('Q') ? bw['Q'].value : -1;
-    const bool lcnc = prog_.dialect == Dialect::linuxcnc;
+    const bool lcnc = profile_.integer_word_slack;
     if (!bw.has('Q') || (lcnc ? std::floor(q + 0.5) < 0 : q < 0 || std::fabs(q - std::round(q)) > 1e-9))
         fail("m61_q", "Need non-negative Q-word to specify tool number with M61", bw.m_column[m_tool_change]);
     int t = lcnc ? int_value_truncated(std::floor(q + 0.5)) : int_value(q);
@@ -112,7 +112,7 @@ void Interp::length_comp(const BlockWords& bw, int code) {
     st_.length_mode = code;
     auto h_tool = [&]() {
         double h = bw['H'].value;
-        if (!whole_word(h, prog_.dialect)) fail("non_integer_value", "Non integer value for integer", bw['H'].column);
+        if (!whole_word(h, profile_.integer_word_slack)) fail("non_integer_value", "Non integer value for integer", bw['H'].column);
         int t = int_value(h);
         if (t < 0) fail("tool_not_found", "Requested tool " + std::to_string(t) + " not found in the tool table", bw['H'].column);
         return t;

@@ -1,0 +1,53 @@
+"""A control's readings are ControlProfile fields, not branches on the dialect: each can be
+set on any profile and acts, and each control's profile says what it reads."""
+import pytest
+
+import toolcomp as tc
+
+
+def _run(text, dialect="linuxcnc", **fields):
+    p = tc.ControlProfile(dialect)
+    for k, v in fields.items():
+        setattr(p, k, v)
+    return tc.run(tc.Program.parse(text, dialect=dialect), profile=p)
+
+
+def test_the_readings_of_each_control():
+    lin, fan, rock = (tc.ControlProfile(d) for d in ("linuxcnc", "fanuc", "rockwell"))
+    assert (lin.integer_word_slack, lin.linuxcnc_g_numbers, lin.max_m_code, lin.program_end_required,
+            lin.errors_at_outermost_call, lin.abort_comment, lin.call_depth_message) == (
+        True, True, 199, True, True, True, "Too many subroutine levels")
+    assert (fan.last_g_code_wins, fan.fanuc_g10, fan.dwell_x_seconds, fan.integer_word_slack) == (True, True, True, False)
+    assert (rock.last_g_code_wins, rock.fanuc_g10, rock.program_end_required) == (False, False, False)
+
+
+def test_program_end_required():
+    with pytest.raises(tc.ProgramError) as e:
+        _run("G0 X1\n")
+    assert e.value.code == "no_program_end"
+    assert _run("G0 X1\n", program_end_required=False).ok
+
+
+def test_last_g_code_wins():
+    with pytest.raises(tc.ProgramError) as e:
+        _run("G21 G0 G1 X1 F100\nM30\n", "rockwell")
+    assert e.value.code == "modal_group_conflict"
+    res = _run("G21 G0 G1 X1 F100\nM30\n", "rockwell", last_g_code_wins=True)
+    assert res.nominal.kind[-1] == tc.LINE
+
+
+def test_integer_word_slack():
+    assert _run("T1.00005 M6\nM2\n").ok  # LinuxCNC: within 0.0001
+    with pytest.raises(tc.ProgramError) as e:
+        _run("T1.00005 M6\nM2\n", integer_word_slack=False)
+    assert e.value.code == "non_integer_value"
+
+
+def test_max_m_code_and_the_call_depth_message():
+    with pytest.raises(tc.ProgramError) as e:
+        _run("M300\nM2\n", max_m_code=299)
+    assert e.value.message == "M-code greater than 299: M300"
+    text = "o<r> sub\no<r> call\no<r> endsub\no<r> call\nM2\n"
+    with pytest.raises(tc.ProgramError) as e:
+        _run(text, call_depth_message="")
+    assert e.value.message.startswith("More than 9 nested subprogram calls")
