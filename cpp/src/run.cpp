@@ -1,4 +1,5 @@
 #include "toolcomp/run.hpp"
+#include "toolcomp/program/codes.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -29,7 +30,7 @@ bool finite_move(const Motion& m) {
 }
 
 [[noreturn]] void refuse_not_finite(const Motion& m) {
-    throw ProgramError("not_finite",
+    throw ProgramError(code::not_finite,
                        "A position, offset or feed rate of this move is not a finite number (an overflow of "
                        "the program's values)",
                        {m.line, 0, {}, m.file});
@@ -39,7 +40,7 @@ bool finite_move(const Motion& m) {
     char radius[64];
     const Vec2 u = in_plane(m.start, m.plane) - in_plane(m.center, m.plane);
     std::snprintf(radius, sizeof radius, "%.6g", std::hypot(u.x(), u.y()) * m.unit);
-    throw ProgramError("arc_radius_too_large",
+    throw ProgramError(code::arc_radius_too_large,
                        std::string("This arc cannot be cut as written (radius ") + radius + " mm): " + why,
                        {m.line, 0, {}, m.file});
 }
@@ -94,7 +95,7 @@ private:
     // Out of line: the message's strings would give every push() their stack frame.
     [[noreturn, gnu::noinline, gnu::cold]] void trip(const Motion& m) {
         tripped_ = true;
-        throw ProgramError("memory_limit", std::string("The ") + what_ + " path would hold more than " +
+        throw ProgramError(code::memory_limit, std::string("The ") + what_ + " path would hold more than " +
                                                std::to_string(limit_) + " segments (max_segments)",
                            {m.line, 0, {}, m.file});
     }
@@ -149,7 +150,7 @@ Program read_program(const std::string& path, std::optional<Dialect> dialect, bo
 }
 
 void throw_out_of_memory() {
-    throw ProgramError("out_of_memory",
+    throw ProgramError(code::out_of_memory,
                        "The run ran out of memory (the machine's memory or the process's limit): see max_segments, "
                        "max_bytes and ControlProfile.call_depth_limit");
 }
@@ -168,11 +169,11 @@ void run_pipeline(const Program& program, const ToolTable* tools, const RunOptio
     const DialectRow& row = dialect_row(program.dialect);
     if (options.machine) {
         if (options.machine->control != program.dialect)
-            throw ProgramError("machine_control", "The machine '" + options.machine->name + "' has a " +
+            throw ProgramError(code::machine_control, "The machine '" + options.machine->name + "' has a " +
                                                       std::string(dialect_name(options.machine->control)) +
                                                       " control; the program is read as " + std::string(row.name));
         if (options.machine->has_travel_limits() && !row.checks_travel)
-            diagnostics.push_back({"travel_not_checked", Severity::info,
+            diagnostics.push_back({code::travel_not_checked, Severity::info,
                                    "The machine's travel limits are not checked for " + std::string(row.name) +
                                        " programs yet",
                                    {}});

@@ -1,4 +1,5 @@
 #include "toolcomp/stream.hpp"
+#include "toolcomp/program/codes.hpp"
 
 #include <algorithm>
 
@@ -71,7 +72,7 @@ PathStream::PathStream(std::shared_ptr<const Program> program, std::optional<Too
 PathStream::~PathStream() { close(); }
 
 void PathStream::start() {
-    if (options_.chunk == 0) throw ProgramError("bad_chunk", "A stream's chunk must hold at least one segment");
+    if (options_.chunk == 0) throw ProgramError(code::bad_chunk, "A stream's chunk must hold at least one segment");
     if (options_.run.profile) check_profile(*options_.run.profile);
     if (options_.run.machine) check_machine(*options_.run.machine);
     check_search_path(options_.run.search_path);

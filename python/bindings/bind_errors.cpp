@@ -1,6 +1,7 @@
 // Diagnostics, and C++ toolcomp::Error translated to the Python classes of toolcomp._errors.
 #include "bindings.hpp"
 
+#include "toolcomp/program/codes.hpp"
 #include "toolcomp/program/diagnostic.hpp"
 
 using namespace toolcomp;
@@ -66,6 +67,23 @@ void bind_errors(py::module_& m) {
             return a.code == b.code && a.severity == b.severity && a.message == b.message &&
                    a.pos.line == b.pos.line && a.pos.column == b.pos.column && a.pos.file == b.pos.file;
         });
+
+    m.def(
+        "diagnostic_codes",
+        [] {
+            py::list rows;
+            for (const CodeInfo& c : code_catalogue()) {
+                py::dict d;
+                d["code"] = c.code;
+                d["kind"] = c.kind == ErrorKind::generic ? "Error" : class_name(c.kind);
+                d["severity"] = severity_name(c.severity);
+                d["alarm"] = c.alarm;
+                d["text"] = c.text;
+                rows.append(d);
+            }
+            return rows;
+        },
+        "The catalogue of diagnostic codes: [{'code', 'kind' (the Error class), 'severity', 'alarm', 'text'}, ...]");
 
     py::register_exception_translator([](std::exception_ptr p) {
         try {

@@ -1,5 +1,6 @@
 // Heidenhain APPR / DEP geometry (spec §2.5.3). See the header for the conventions.
 #include "toolcomp/compensation/approach.hpp"
+#include "toolcomp/program/codes.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -34,29 +35,29 @@ bool finite(const Vec2& v) { return std::isfinite(v.x()) && std::isfinite(v.y())
 // Common validation; returns the normalised tangent.
 Vec2 check_common(const char* fn, ApproachKind kind, const Vec2& t, int side, double r) {
     const std::string what = std::string(fn) + " " + kind_name(kind);
-    if (side != 1 && side != -1) fail("approach_bad_side", what + ": compensation side must be RL or RR");
-    if (!std::isfinite(r) || r < 0) fail("approach_bad_tool_radius", what + ": effective tool radius must be >= 0");
+    if (side != 1 && side != -1) fail(code::approach_bad_side, what + ": compensation side must be RL or RR");
+    if (!std::isfinite(r) || r < 0) fail(code::approach_bad_tool_radius, what + ": effective tool radius must be >= 0");
     const double n = finite(t) ? t.norm() : 0.0;
-    if (!(n > 1e-12)) fail("approach_no_tangent", what + ": the contour element has no direction");
+    if (!(n > 1e-12)) fail(code::approach_no_tangent, what + ": the contour element has no direction");
     return t / n;
 }
 
 void check_len(const char* fn, ApproachKind kind, double len) {
     if (!std::isfinite(len) || len <= 0)
-        fail("approach_len_not_positive", std::string(fn) + " " + kind_name(kind) + ": LEN must be > 0");
+        fail(code::approach_len_not_positive, std::string(fn) + " " + kind_name(kind) + ": LEN must be > 0");
 }
 
 void check_cca(const char* fn, double cca) {
     if (!std::isfinite(cca) || cca <= 0 || cca > 360.0 + 1e-9)
-        fail("approach_cca_out_of_range", std::string(fn) + " CT: CCA must be > 0 and <= 360 degrees");
+        fail(code::approach_cca_out_of_range, std::string(fn) + " CT: CCA must be > 0 and <= 360 degrees");
 }
 
 void check_radius(const char* fn, ApproachKind kind, double radius) {
     if (kind == ApproachKind::LCT) {
         if (!std::isfinite(radius) || radius <= 0)
-            fail("approach_lct_radius_not_positive", std::string(fn) + " LCT: R must be > 0");
+            fail(code::approach_lct_radius_not_positive, std::string(fn) + " LCT: R must be > 0");
     } else if (!std::isfinite(radius) || radius == 0) {
-        fail("approach_radius_zero", std::string(fn) + " CT: R must not be 0");
+        fail(code::approach_radius_zero, std::string(fn) + " CT: R must not be 0");
     }
 }
 
@@ -78,7 +79,7 @@ ToolCircle tool_circle(const Vec2& p, const Vec2& n, int side, double r, double 
         tc.c = p + r * n + radius * n;
         tc.rho = std::fabs(radius);
     }
-    if (!(tc.rho > tol::length)) fail("tool_radius_too_large", "TOOL RADIUS TOO LARGE");
+    if (!(tc.rho > tol::length)) fail(code::tool_radius_too_large, "TOOL RADIUS TOO LARGE");
     return tc;
 }
 
@@ -171,14 +172,14 @@ std::vector<PathPiece> approach_path(const Approach& a, const ApproachOptions& o
         case ApproachKind::LCT: {
             check_radius("APPR", a.kind, a.radius);
             const ToolCircle tc = tool_circle(a.pa, n, a.side, a.r, a.radius, o);
-            const Vec2 ph = lct_point(a.ps, tc, a.r, true, o, "approach_start_inside_circle",
+            const Vec2 ph = lct_point(a.ps, tc, a.r, true, o, code::approach_start_inside_circle,
                                       "APPR LCT: starting point PS lies inside the approach circle (no tangent)");
             const double sweep = sweep_between(ph - tc.c, pa_tool - tc.c, tc.dir, tc.rho);
             const bool smooth = o.lct_tangency_tool_space || a.r == 0;
             return {line(a.ps, ph, false, smooth), arc(ph, pa_tool, tc.c, tc.dir, sweep, smooth, true)};
         }
     }
-    fail("approach_bad_kind", "APPR: unknown approach function");
+    fail(code::approach_bad_kind, "APPR: unknown approach function");
 }
 
 std::vector<PathPiece> departure_path(const Departure& d, const ApproachOptions& o) {
@@ -205,16 +206,16 @@ std::vector<PathPiece> departure_path(const Departure& d, const ApproachOptions&
         }
         case ApproachKind::LCT: {
             check_radius("DEP", d.kind, d.radius);
-            if (!finite(d.pn)) fail("departure_bad_end_point", "DEP LCT: end point PN is undefined");
+            if (!finite(d.pn)) fail(code::departure_bad_end_point, "DEP LCT: end point PN is undefined");
             const ToolCircle tc = tool_circle(d.pe, n, d.side, d.r, d.radius, o);
-            const Vec2 ph = lct_point(d.pn, tc, d.r, false, o, "departure_end_inside_circle",
+            const Vec2 ph = lct_point(d.pn, tc, d.r, false, o, code::departure_end_inside_circle,
                                       "DEP LCT: end point PN lies inside the departure circle (no tangent)");
             const double sweep = sweep_between(pe_tool - tc.c, ph - tc.c, tc.dir, tc.rho);
             const bool smooth = o.lct_tangency_tool_space || d.r == 0;
             return {arc(pe_tool, ph, tc.c, tc.dir, sweep, true, smooth), line(ph, d.pn, smooth, false)};
         }
     }
-    fail("approach_bad_kind", "DEP: unknown departure function");
+    fail(code::approach_bad_kind, "DEP: unknown departure function");
 }
 
 }  // namespace toolcomp

@@ -2,6 +2,7 @@
 // formulas are those of LinuxCNC's interpreter (convert_straight_comp1/2, convert_arc_comp1/2,
 // move_endpoint_and_flush), restated in plane coordinates (a, b) with applicate h.
 #include "toolcomp/compensation/radius.hpp"
+#include "toolcomp/program/codes.hpp"
 
 #include <cmath>
 
@@ -41,7 +42,7 @@ int RadiusCompensation::file_of(int line) const {
 void RadiusCompensation::entry_line(const Motion& m) {
     const Vec2 c = plane2(m.start), p = plane2(m.end);
     if (profile_.radius.entry_length_check && dist(p, c) <= r_)
-        fail("comp_entry_too_short", profile_.radius.messages.entry_too_short, m.line);
+        fail(code::comp_entry_too_short, profile_.radius.messages.entry_too_short, m.line);
     // Perpendicular to the entry move itself, at its programmed end (LinuxCNC's
     // convert_straight_comp1, its arithmetic).
     const double alpha = stored(ang(p - c) + (side_ > 0 ? kHalfPiL : -kHalfPiL));
@@ -61,9 +62,9 @@ void RadiusCompensation::entry_arc(const Motion& m) {
     const Vec2 c = plane2(m.start), p = plane2(m.end), centre = plane2(m.center);
     const int turn = turn_of(m);
     if (profile_.radius.entry_length_check && dist(p, c) <= r_)
-        fail("comp_entry_too_short", profile_.radius.messages.entry_arc_too_short, m.line);
+        fail(code::comp_entry_too_short, profile_.radius.messages.entry_arc_too_short, m.line);
     if (dist(centre, c) <= r_ && tool_inside(side_, turn))
-        fail("comp_arc_too_small", profile_.radius.messages.arc_too_small, m.line);
+        fail(code::comp_arc_too_small, profile_.radius.messages.arc_too_small, m.line);
     const double gamma = tool_inside(side_, turn) ? ang(centre - p) : ang(p - centre);
     const Vec2 e = p + r_ * u(gamma);
     // New centre: on the line from the compensated end to the programmed centre, equally far
@@ -71,7 +72,7 @@ void RadiusCompensation::entry_arc(const Motion& m) {
     const double b_len = dist(c, e) / 2.0;  // LinuxCNC's convert_arc_comp1, its arithmetic
     const double ab = ang(centre - e);
     const double a = ang(c - e) - ab;
-    if (std::fabs(std::cos(a)) < 1e-6) fail("comp_arc_too_small", profile_.radius.messages.arc_too_small, m.line);
+    if (std::fabs(std::cos(a)) < 1e-6) fail(code::comp_arc_too_small, profile_.radius.messages.arc_too_small, m.line);
     const Vec2 cn = e + (b_len / std::cos(a)) * u(ab);
     endpoint_valid_ = false;
     const bool lathe_tool = m.radius.orientation != 0 && m.radius.orientation != 9;
@@ -137,7 +138,7 @@ void RadiusCompensation::push(const Motion& m) {
     disc_ = m.radius.disc >= 0 ? m.radius.disc : rules.disc;
     if (active_ && m.radius.side != 0 && m.radius.radius <= 0) turn_off(m.line, /*cancel=*/false);  // radius 0 (T00)
     if (m.is_arc() && (arc_not_allowed_ || exit_open_))
-        fail("comp_exit_arc", profile_.radius.messages.exit_arc, m.line);
+        fail(code::comp_exit_arc, profile_.radius.messages.exit_arc, m.line);
     if (exit_open_ && exit_when_behind_ && m.radius.side == 0) {
         const Vec2 P = plane2(program_), E = plane2(m.end);
         if ((E - P).dot(plane2(current_) - P) >= 0) {
@@ -145,7 +146,7 @@ void RadiusCompensation::push(const Motion& m) {
             exit_open_ = false;
             turn_off(exit_line_);
         } else if (!profile_.radius.messages.around_end.empty() && (E - P).norm() < r_) {
-            fail("comp_around_end", profile_.radius.messages.around_end, m.line);
+            fail(code::comp_around_end, profile_.radius.messages.around_end, m.line);
         }
     }
     if (exit_open_ && m.radius.side == 0 && (plane2(m.end) - plane2(program_)).norm() > tol::length) {
@@ -176,7 +177,7 @@ void RadiusCompensation::push(const Motion& m) {
         side_ = m.radius.side;
         r_ = m.radius.radius;
         arc_not_allowed_ = false;
-        if (m.is_arc() && !profile_.radius.entry_arc) fail("comp_entry_arc", profile_.radius.messages.entry_arc, m.line);
+        if (m.is_arc() && !profile_.radius.entry_arc) fail(code::comp_entry_arc, profile_.radius.messages.entry_arc, m.line);
         if (m.is_arc())
             entry_arc(m);
         else

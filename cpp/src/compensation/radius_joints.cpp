@@ -2,6 +2,7 @@
 // Tangent, outside and inside corners for lines and arcs (LinuxCNC's decisions and formulas),
 // with the profile's choice of what fills an outside corner and how the entry block ends.
 #include <algorithm>
+#include "toolcomp/program/codes.hpp"
 #include <cmath>
 #include <vector>
 
@@ -137,7 +138,7 @@ bool RadiusCompensation::close_open_entry(const Vec2& mid) {
         const Vec2 S = plane2(program_), A = plane2(queue_.front().m.start);
         if ((A - S).dot(mid - S) < 0) {
             if (!profile_.radius.messages.around_start.empty() && (A - S).norm() < r_)
-                fail("comp_around_start", profile_.radius.messages.around_start, queue_.front().m.line);
+                fail(code::comp_around_start, profile_.radius.messages.around_start, queue_.front().m.line);
             return false;
         }
     }
@@ -174,24 +175,24 @@ void RadiusCompensation::bridge(const Element2& next, int line) {
         }
         if (found) {
             move_end_and_flush(x, line, /*check=*/false);
-            warn("comp_skipped",
+            warn(code::comp_skipped,
                  "Elements of line(s) " + lines + " cannot be reached by the tool and are left out (at line " +
                      std::to_string(line) + ")",
                  line);
             return;
         }
     }
-    if (!skip_unreachable(next, line)) fail("comp_arc_too_small", profile_.radius.messages.arc_too_small, line);
+    if (!skip_unreachable(next, line)) fail(code::comp_arc_too_small, profile_.radius.messages.arc_too_small, line);
 }
 
 void RadiusCompensation::count_non_plane_block(int line) {
     const RadiusRules& rr = profile_.radius;
     if (rr.max_non_plane_moves < 0 || ++non_plane_run_ <= rr.max_non_plane_moves) return;
-    if (rr.non_plane_reaction == NonPlaneReaction::error) fail("comp_non_plane_moves", rr.messages.too_many_non_plane, line);
+    if (rr.non_plane_reaction == NonPlaneReaction::error) fail(code::comp_non_plane_moves, rr.messages.too_many_non_plane, line);
     // The control stops looking ahead: the held move ends perpendicular to its programmed
     // end, which can leave material or cut into an inside corner.
     if (!queue_.empty()) {
-        diags_.push_back({"comp_overcut", Severity::warning,
+        diags_.push_back({code::comp_overcut, Severity::warning,
                           "Too many blocks without plane motion: the previous move ends perpendicular "
                           "to its end point, which may overcut",
                           {line, 0, {}, file_of(line)}});
@@ -253,7 +254,7 @@ void RadiusCompensation::next_line(const Motion& m) {
     } else if (!front_arc) {  // inside corner after a line: pull it back to the intersection
         const double halfcorner = stored((beta + kPiL) / 2.0);
         if (halfcorner == 0.0)
-            fail("comp_zero_corner", "Zero degree inside corner is invalid for cutter compensation", m.line);
+            fail(code::comp_zero_corner, "Zero degree inside corner is invalid for cutter compensation", m.line);
         const double retreat = r_ / std::tan(halfcorner);
         move_end_and_flush(C + retreat * u(theta + gamma), m.line, true, &next);
     } else {  // inside corner after an arc: intersect the compensated circle and the new line
@@ -303,7 +304,7 @@ void RadiusCompensation::next_arc(const Motion& m) {
     if (inside) {
         gamma = ang(centre - p);
         if (rho0 <= r_) {
-            if (gouge_ != GougeReaction::skip) fail("comp_arc_too_small", rules.messages.arc_too_small, m.line);
+            if (gouge_ != GougeReaction::skip) fail(code::comp_arc_too_small, rules.messages.arc_too_small, m.line);
             // The tool does not fit into the arc: leave it out, the next element decides.
             bridge_lines_ += (bridge_lines_.empty() ? "" : ", ") + std::to_string(m.line);
             program_ = m.end;
@@ -356,7 +357,7 @@ void RadiusCompensation::next_arc(const Motion& m) {
         // Concentric arcs, compared exactly as LinuxCNC does (in inch programs its inch
         // arithmetic and toolcomp's millimetres can round differently: message only).
         if (rp == 0 || dcc == 0)
-            fail("comp_same_center", "Arc to arc motion is invalid because the arcs have the same center", m.line);
+            fail(code::comp_same_center, "Arc to arc motion is invalid because the arcs have the same center", m.line);
         const double a = (rp * rp + dcc * dcc - rn * rn) / (2 * rp * dcc);
         if (a > 1 || a < -1) {
             no_intersection(next, m.line, rules.messages.arc_to_arc);

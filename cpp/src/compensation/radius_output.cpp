@@ -1,6 +1,7 @@
 // Held moves, the gouge check when a held move's end is pulled back, the profile's reaction
 // to an unreachable element (error, skip with look-ahead, report), and the output window.
 #include <cmath>
+#include "toolcomp/program/codes.hpp"
 #include <cstdio>
 #include <string>
 
@@ -144,7 +145,7 @@ void RadiusCompensation::move_end_and_flush(const Vec2& x, int line, bool check,
             if (std::fabs(r1 - r2) > 0.01) {
                 char buf[256];
                 std::snprintf(buf, sizeof buf, rules.messages.arc_mismatch.c_str(), r1, r2);
-                fail("comp_invalid_arc", buf, line);
+                fail(code::comp_invalid_arc, buf, line);
             }
             if (check && !gouge && h.sweep != 0 && endpoint_valid_ &&
                 std::fabs(find_turn(endpoint_, c, turn_of(m), x)) >
@@ -158,12 +159,12 @@ void RadiusCompensation::move_end_and_flush(const Vec2& x, int line, bool check,
         const int held_line = queue_.front().m.line;
         switch (reaction()) {
             case GougeReaction::error:
-                fail("comp_gouge", *gouge, line);
+                fail(code::comp_gouge, *gouge, line);
             case GougeReaction::skip:
                 if (next && skip_unreachable(*next, line)) return;
-                fail("comp_gouge", *gouge, line);
+                fail(code::comp_gouge, *gouge, line);
             case GougeReaction::report:
-                warn("comp_gouge",
+                warn(code::comp_gouge,
                      *gouge + " (the move of line " + std::to_string(held_line) + ", at line " + std::to_string(line) +
                          ")",
                      line);
@@ -179,12 +180,12 @@ void RadiusCompensation::move_end_and_flush(const Vec2& x, int line, bool check,
 void RadiusCompensation::no_intersection(const Element2& next, int line, const std::string& msg) {
     switch (reaction()) {
         case GougeReaction::error:
-            fail("comp_gouge", msg, line);
+            fail(code::comp_gouge, msg, line);
         case GougeReaction::skip:
             if (skip_unreachable(next, line)) return;
-            fail("comp_gouge", msg, line);
+            fail(code::comp_gouge, msg, line);
         case GougeReaction::report:
-            warn("comp_gouge", msg + " (at line " + std::to_string(line) + "; the previous move keeps its end)", line);
+            warn(code::comp_gouge, msg + " (at line " + std::to_string(line) + "; the previous move keeps its end)", line);
             move_end_and_flush(plane2(current_), line, false);
             return;
     }
@@ -242,7 +243,7 @@ bool RadiusCompensation::skip_unreachable(const Element2& next, int line) {
             keep.push_back(h);
         }
         queue_ = std::move(keep);
-        warn("comp_skipped",
+        warn(code::comp_skipped,
              "Elements of line(s) " + skipped + " cannot be reached by the tool and are left out (at line " +
                  std::to_string(line) + ")",
              line);

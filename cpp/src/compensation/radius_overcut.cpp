@@ -1,6 +1,7 @@
 // The radius stage's local overcut watch: distances between tool-centre elements and the
 // programmed elements around them (exact for segments and arcs), one warning per element.
 #include <algorithm>
+#include "toolcomp/program/codes.hpp"
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -251,7 +252,7 @@ void OvercutWatch::report(std::vector<Diagnostic>& out, double mm, bool all) {
                           "Overcut: the tool centre comes %.6f mm from the programmed contour of line %d, "
                           "closer than the tool radius %.6f mm (%.6f mm into the part)",
                           c.dist * mm, c.near_line, c.r * mm, (c.r - c.dist) * mm);
-            out.push_back({"comp_overcut", Severity::warning, buf, {c.line, 0, {}, c.file}});
+            out.push_back({code::comp_overcut, Severity::warning, buf, {c.line, 0, {}, c.file}});
         }
     }
     comp_head_ = done;

@@ -1,6 +1,7 @@
 // Toolholder with orientation capability and TRAFO5 equivalence (spec §3.6, §3.7);
 // conventions in toolholder.hpp.
 #include "toolcomp/compensation/toolholder.hpp"
+#include "toolcomp/program/codes.hpp"
 
 #include <cmath>
 #include <Eigen/Geometry>
@@ -13,7 +14,7 @@ namespace toolcomp {
 namespace {
 
 [[noreturn]] void bad_field(int n, const char* why) {
-    throw CompensationError("toolholder_bad_field", "$TC_CARR" + std::to_string(n) + ": " + why);
+    throw CompensationError(code::toolholder_bad_field, "$TC_CARR" + std::to_string(n) + ": " + why);
 }
 
 }  // namespace
@@ -29,7 +30,7 @@ Vec3 rotate_about_axis(const Vec3& v, const Vec3& axis, double angle_deg) {
 
 void check_kinematic_type(char kind) {
     if (kind != 'T' && kind != 'P' && kind != 'M')
-        throw CompensationError("toolholder_bad_kinematic_type",
+        throw CompensationError(code::toolholder_bad_kinematic_type,
                                 std::string("alarm 14153: invalid kinematic type '") + kind +
                                     "' in $TC_CARR23 (expected T, P or M)");
 }
@@ -97,7 +98,7 @@ namespace {
 // direction, two parallel axes, a value that is not a number).
 void check_trafo5(const Trafo5Data& t) {
     auto bad = [](const std::string& what) {
-        throw CompensationError("4342", "4342 Invalid machine data for the 5-axis transformation: " + what);
+        throw CompensationError(code::alarm_4342, "4342 Invalid machine data for the 5-axis transformation: " + what);
     };
     for (const Vec3* v : {&t.base_tool, &t.joint_offset, &t.joint_offset_part, &t.part_offset, &t.axis1, &t.axis2})
         if (!v->allFinite()) bad("a vector is not a number");
@@ -112,7 +113,7 @@ Toolholder to_toolholder(const Trafo5Data& t, double a1_deg, double a2_deg) {
     if (t.type == 24) h.kind = 'T';
     else if (t.type == 56) h.kind = 'M';
     else
-        throw CompensationError("trafo5_bad_type", "TRAFO_TYPE " + std::to_string(t.type) +
+        throw CompensationError(code::trafo5_bad_type, "TRAFO_TYPE " + std::to_string(t.type) +
                                                        " has no toolholder equivalent here (24 or 56)");
     check_trafo5(t);
     h.l1 = t.joint_offset;
@@ -133,7 +134,7 @@ Vec3 trafo5_tool_length(const Trafo5Data& t, double a1_deg, double a2_deg, const
         return t.joint_offset + rotate_about_axis(t.base_tool + inner, t.axis1, a1_deg);
     }
     if (t.type == 56) return t.joint_offset + rotate_about_axis(t.base_tool + tool_length, t.axis1, a1_deg);
-    throw CompensationError("trafo5_bad_type", "TRAFO_TYPE " + std::to_string(t.type) + " is not 24 or 56");
+    throw CompensationError(code::trafo5_bad_type, "TRAFO_TYPE " + std::to_string(t.type) + " is not 24 or 56");
 }
 
 }  // namespace toolcomp

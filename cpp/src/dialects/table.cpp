@@ -1,6 +1,7 @@
 // The table of dialects (table.hpp), and the names and suffixes of program/dialect.hpp read
 // from it.
 #include "table.hpp"
+#include "toolcomp/program/codes.hpp"
 
 #include <algorithm>
 #include <string>
@@ -94,7 +95,7 @@ std::vector<DialectNames> dialect_names() {
 const DialectRow& dialect_row(Dialect d) {
     for (const DialectRow& r : kDialects)
         if (r.dialect == d) return r;
-    throw ParseError("dialect_not_supported", "The dialect is not supported by toolcomp");
+    throw ParseError(code::dialect_not_supported, "The dialect is not supported by toolcomp");
 }
 
 std::string_view dialect_name(Dialect d) {
@@ -112,7 +113,7 @@ Dialect dialect_from_name(std::string_view name) {
         if (r.name == l) return r.dialect;
         all += (all.empty() ? "" : ", ") + std::string(r.name);
     }
-    throw ParseError("unknown_dialect", "Unknown dialect '" + std::string(name) + "' (expected " + all + ")");
+    throw ParseError(code::unknown_dialect, "Unknown dialect '" + std::string(name) + "' (expected " + all + ")");
 }
 
 std::optional<Dialect> dialect_from_suffix(std::string_view path) {
@@ -128,7 +129,7 @@ std::optional<Dialect> dialect_from_suffix(std::string_view path) {
 Dialect dialect_of_file(std::string_view path, std::optional<Dialect> given) {
     if (given) return *given;
     if (auto s = dialect_from_suffix(path)) return *s;
-    throw ParseError("unknown_dialect",
+    throw ParseError(code::unknown_dialect,
                      "Cannot tell the dialect of '" + std::string(path) + "' from its suffix; pass dialect=");
 }
 

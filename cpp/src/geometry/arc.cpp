@@ -1,4 +1,5 @@
 #include "toolcomp/geometry/arc.hpp"
+#include "toolcomp/program/codes.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -74,7 +75,7 @@ int arc_chords(const Arc& a, double tolerance) {
     // (and more than an int counts): refuse it instead (also a NaN count).
     constexpr double kMaxChords = 50'000'000;
     if (!(n <= kMaxChords))
-        throw Error(ErrorKind::generic, "sample_too_fine",
+        throw Error(ErrorKind::generic, code::sample_too_fine,
                     "An arc would need more than 50 million chords at tolerance " + std::to_string(tolerance) +
                         " (sweep " + std::to_string(sweep) + " rad, radius " + std::to_string(r) +
                         "): sample with a coarser tolerance");

@@ -1,4 +1,5 @@
 #include "file_pieces.hpp"
+#include "toolcomp/program/codes.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -25,7 +26,7 @@ FilePieces::~FilePieces() {
 
 void FilePieces::rewind() {
     if (::lseek(fd_, 0, SEEK_SET) < 0)
-        throw ParseError("file_read_error", "Cannot read program file '" + path_ + "': " + std::strerror(errno));
+        throw ParseError(code::file_read_error, "Cannot read program file '" + path_ + "': " + std::strerror(errno));
     buf_.clear();
     carry_ = lines_ = decided_ = 0;
     eof_ = false;
@@ -45,7 +46,7 @@ std::string_view FilePieces::next() {
         buf_.resize(have + static_cast<std::size_t>(std::max<ssize_t>(n, 0)));
         if (n < 0) {
             if (errno == EINTR) continue;
-            throw ParseError("file_read_error", "Cannot read program file '" + path_ + "': " + std::strerror(errno));
+            throw ParseError(code::file_read_error, "Cannot read program file '" + path_ + "': " + std::strerror(errno));
         }
         eof_ = n == 0;
         if (cr_ends_line_)
@@ -56,7 +57,7 @@ std::string_view FilePieces::next() {
         if (buf_.size() - from > max_line_length_ + 2) {
             const std::size_t line =
                 lines_ + 1 + static_cast<std::size_t>(std::count(buf_.begin(), buf_.begin() + from, '\n'));
-            throw ParseError("line_too_long",
+            throw ParseError(code::line_too_long,
                              "Line " + std::to_string(line) + " is longer than the limit of " +
                                  std::to_string(max_line_length_) + " bytes (max_line_length)",
                              {static_cast<int>(std::min<std::size_t>(line, INT32_MAX)), 0});

@@ -1,5 +1,6 @@
 // Reading a file whole within a size limit, and the limit on the length of one line.
 #include "toolcomp/program/input_limits.hpp"
+#include "toolcomp/program/codes.hpp"
 
 #include <cerrno>
 #include <cstdio>
@@ -64,7 +65,7 @@ std::size_t line_ends_before(std::string_view text, std::size_t pos, bool cr_end
 
 [[noreturn]] void too_long(std::size_t line, std::size_t length, std::size_t max) {
     const int l = line > static_cast<std::size_t>(INT32_MAX) ? INT32_MAX : static_cast<int>(line);
-    throw ParseError("line_too_long",
+    throw ParseError(code::line_too_long,
                      "Line " + std::to_string(line) + " is " + std::to_string(length) +
                          " bytes long, more than the limit of " + std::to_string(max) + " bytes (max_line_length)",
                      {l, 0});
@@ -93,7 +94,7 @@ int open_regular(const std::string& path, FileText& r, std::uint64_t& size) {
 [[noreturn]] void throw_read_error(const FileText& f, const std::string& path, std::uint64_t max_bytes,
                                    const std::string& what) {
     const std::string where = what + " '" + path + "'";
-    if (f.status == FileText::cannot_open) throw ParseError("file_not_found", "Cannot open " + where);
+    if (f.status == FileText::cannot_open) throw ParseError(code::file_not_found, "Cannot open " + where);
     throw ParseError(read_error_code(f), "Cannot read " + where + ": " + read_error_text(f, max_bytes));
 }
 }  // namespace
@@ -149,10 +150,10 @@ std::string byte_count_text(std::uint64_t n) {
 const char* read_error_code(const FileText& f) {
     switch (f.status) {
         case FileText::ok: return "";
-        case FileText::cannot_open: return "file_not_found";
-        case FileText::not_regular: return "not_a_regular_file";
-        case FileText::too_large: return "input_too_large";
-        default: return "file_read_error";
+        case FileText::cannot_open: return code::file_not_found;
+        case FileText::not_regular: return code::not_a_regular_file;
+        case FileText::too_large: return code::input_too_large;
+        default: return code::file_read_error;
     }
 }
 

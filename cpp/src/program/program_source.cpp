@@ -1,4 +1,5 @@
 #include "program_source.hpp"
+#include "toolcomp/program/codes.hpp"
 
 #include <unistd.h>
 
@@ -15,7 +16,7 @@ ProgramSource::ProgramSource(const std::string& path, Dialect dialect, const Rea
     std::uint64_t size = 0;
     ::close(open_program_file(path, "program file", &size));
     if (limit_pieces && size > limits.max_bytes)
-        throw ParseError("input_too_large", "Cannot read program file '" + path + "': it is " + byte_count_text(size) +
+        throw ParseError(code::input_too_large, "Cannot read program file '" + path + "': it is " + byte_count_text(size) +
                                                 ", more than the limit of " + byte_count_text(limits.max_bytes) +
                                                 " (max_bytes)");
     bool whole = !dialect_row(dialect).read_in_pieces;

@@ -1,5 +1,6 @@
 // Finding and reading the programs a run calls by name (see search_path.hpp).
 #include "toolcomp/program/search_path.hpp"
+#include "toolcomp/program/codes.hpp"
 
 #include "toolcomp/program/diagnostic.hpp"
 
@@ -8,7 +9,7 @@ namespace toolcomp {
 void check_search_path(const std::vector<std::string>& dirs) {
     for (const std::string& d : dirs)
         if (d.empty())
-            throw Error(ErrorKind::generic, "search_path_empty",
+            throw Error(ErrorKind::generic, code::search_path_empty,
                         "An empty directory name in the search path (it would mean the working directory, which a "
                         "run never searches: name the directory, e.g. '.')");
 }
@@ -36,13 +37,13 @@ CalledEntry look_in(const SearchPath& search, const std::filesystem::path& dir, 
         const fs::path real_dir = ec ? fs::path() : fs::canonical(dir, ec);
         if (ec) {  // a dangling link, or a link loop
             e.kind = CalledEntry::refused;
-            e.code = "file_not_found";
+            e.code = code::file_not_found;
             e.message = "Cannot read " + candidate.string() + ": " + ec.message();
             return e;
         }
         if (!inside(real, real_dir)) {
             e.kind = CalledEntry::refused;
-            e.code = "outside_search_path";
+            e.code = code::outside_search_path;
             e.message = candidate.string() + " is a link to " + real.string() +
                         ", outside its search directory (follow_links=True allows it)";
             return e;
@@ -50,7 +51,7 @@ CalledEntry look_in(const SearchPath& search, const std::filesystem::path& dir, 
     }
     if (const char* kind = file_kind_text(candidate.string())) {
         e.kind = CalledEntry::refused;
-        e.code = "not_a_regular_file";
+        e.code = code::not_a_regular_file;
         e.message = "Cannot read " + candidate.string() + ": it is " + kind + ", not a regular file";
         return e;
     }

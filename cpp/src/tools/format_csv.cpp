@@ -1,5 +1,6 @@
 // CSV tool-table reader and writer.
 #include "toolcomp/tools/format_csv.hpp"
+#include "toolcomp/program/codes.hpp"
 
 #include "fields.hpp"
 #include "number_text.hpp"
@@ -110,7 +111,7 @@ std::vector<Record> split_records(std::string_view text, const Positions& pos) {
                 for (;;) {
                     const std::size_t quote = text.find('"', r);
                     if (quote == std::string_view::npos)
-                        throw ToolTableError("csv_bad_quote", "quoted field is never closed", pos.at(q));
+                        throw ToolTableError(code::csv_bad_quote, "quoted field is never closed", pos.at(q));
                     cell.value.append(text.substr(r, quote - r));
                     if (quote + 1 < n && text[quote + 1] == '"') {
                         cell.value += '"';
@@ -122,7 +123,7 @@ std::vector<Record> split_records(std::string_view text, const Positions& pos) {
                 }
                 while (r < n && is_space(text[r])) ++r;
                 if (r < n && text[r] != ',' && !tables::line_end_length(text, r))
-                    throw ToolTableError("csv_bad_quote", "text after the closing quote of a field", pos.at(r));
+                    throw ToolTableError(code::csv_bad_quote, "text after the closing quote of a field", pos.at(r));
                 after = r;
                 cell.end = r;
             } else {
@@ -133,7 +134,7 @@ std::vector<Record> split_records(std::string_view text, const Positions& pos) {
                 const std::string_view raw = text.substr(p, r - p);
                 const std::size_t quote = raw.find('"');
                 if (quote != std::string_view::npos)
-                    throw ToolTableError("csv_bad_quote", "quote inside an unquoted field", pos.at(p + quote));
+                    throw ToolTableError(code::csv_bad_quote, "quote inside an unquoted field", pos.at(p + quote));
                 cell.value = tables::trim(raw);
             }
             rec.cells.push_back(std::move(cell));
@@ -263,7 +264,7 @@ ToolTable read_csv_table(std::string_view text, LengthUnit units) {
                 const FieldInfo* f = tables::find_field(tables::to_lower(rec.cells[i].value));
                 if (f) {
                     if (!slots.insert(f->slot).second)
-                        throw ToolTableError("csv_duplicate_column",
+                        throw ToolTableError(code::csv_duplicate_column,
                                              "column '" + rec.cells[i].value + "' given twice", pos.at(rec.cells[i].begin));
                     if (f->id == Field::tool) {
                         have_tool = true;
@@ -273,7 +274,7 @@ ToolTable read_csv_table(std::string_view text, LengthUnit units) {
                 src->columns.push_back(f);
             }
             if (!have_tool)
-                throw ToolTableError("csv_missing_tool_column", "the CSV header has no 'tool' column", pos.at(rec.begin));
+                throw ToolTableError(code::csv_missing_tool_column, "the CSV header has no 'tool' column", pos.at(rec.begin));
         } else if (rec.kind == RecordKind::row) {
             Tool row;
             CuttingEdge& e = row.edges.front();
@@ -283,7 +284,7 @@ ToolTable read_csv_table(std::string_view text, LengthUnit units) {
                 const SourcePos at = pos.at(c.begin);
                 if (i >= src->columns.size()) {
                     if (c.value.empty()) continue;
-                    throw ToolTableError("csv_extra_field", "more fields than the header has columns", at);
+                    throw ToolTableError(code::csv_extra_field, "more fields than the header has columns", at);
                 }
                 const FieldInfo* f = src->columns[i];
                 if (!f) continue;
@@ -296,12 +297,12 @@ ToolTable read_csv_table(std::string_view text, LengthUnit units) {
                 if (f->kind == FieldKind::integer) {
                     int v = 0;
                     if (!tables::parse_integer(c.value, v))
-                        throw ToolTableError("csv_bad_number",
+                        throw ToolTableError(code::csv_bad_number,
                                              std::string(f->name) + " needs a whole number, got '" + c.value + "'", at);
                     if (v < 0 && f->id != Field::orientation)
-                        throw ToolTableError("csv_bad_number", "negative " + std::string(f->name) + " '" + c.value + "'", at);
+                        throw ToolTableError(code::csv_bad_number, "negative " + std::string(f->name) + " '" + c.value + "'", at);
                     if (f->id == Field::orientation && (v < 0 || v > 9))
-                        throw ToolTableError("csv_bad_orientation", "orientation must be 0..9, got '" + c.value + "'", at);
+                        throw ToolTableError(code::csv_bad_orientation, "orientation must be 0..9, got '" + c.value + "'", at);
                     if (f->id == Field::tool)
                         row.number = v;
                     else if (f->id == Field::pocket)
@@ -312,16 +313,16 @@ ToolTable read_csv_table(std::string_view text, LengthUnit units) {
                 }
                 double v = 0;
                 if (!tables::parse_decimal(c.value, v))
-                    throw ToolTableError("csv_bad_number", "bad number '" + c.value + "' in column " + std::string(f->name), at);
+                    throw ToolTableError(code::csv_bad_number, "bad number '" + c.value + "' in column " + std::string(f->name), at);
                 tables::set_edge_number(e, f->id, f->kind == FieldKind::length ? v * scale : v);
             }
             const SourcePos tool_at = tool_column < rec.cells.size() ? pos.at(rec.cells[tool_column].begin) : pos.at(rec.begin);
             if (tool_column >= rec.cells.size() || rec.cells[tool_column].value.empty())
-                throw ToolTableError("csv_missing_tool", "row without a tool number", tool_at);
+                throw ToolTableError(code::csv_missing_tool, "row without a tool number", tool_at);
 
             auto [fl, fresh] = first_line.emplace(std::make_pair(row.number, e.number), tool_at.line);
             if (!fresh)
-                throw ToolTableError("csv_duplicate_tool",
+                throw ToolTableError(code::csv_duplicate_tool,
                                      "tool " + std::to_string(row.number) + " edge " + std::to_string(e.number) +
                                          " already defined on line " + std::to_string(fl->second),
                                      tool_at);
@@ -339,7 +340,7 @@ ToolTable read_csv_table(std::string_view text, LengthUnit units) {
                                          (f->id == Field::name && row.name != t.name) ||
                                          (f->id == Field::comment && row.comment != t.comment);
                     if (differs)
-                        throw ToolTableError("csv_inconsistent_tool",
+                        throw ToolTableError(code::csv_inconsistent_tool,
                                              std::string(f->name) + " of tool " + std::to_string(t.number) +
                                                  " differs from its first row",
                                              pos.at(rec.cells[i].begin));

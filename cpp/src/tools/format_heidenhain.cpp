@@ -1,5 +1,6 @@
 // Heidenhain TOOL.T reader and writer (rules in format_heidenhain.hpp).
 #include "toolcomp/tools/format_heidenhain.hpp"
+#include "toolcomp/program/codes.hpp"
 
 #include "number_text.hpp"
 #include "text_lines.hpp"
@@ -149,7 +150,7 @@ void set_model_value(Tool& t, Role r, double v) {
 
 // TNC spelling: a sign always, fixed point, the fewest decimals that read back exactly.
 std::string spell_number(double model, double scale) {
-    if (!std::isfinite(model)) throw ToolTableError("table_bad_value", "a tool value is not a finite number");
+    if (!std::isfinite(model)) throw ToolTableError(code::table_bad_value, "a tool value is not a finite number");
     if (model == 0) return "+0";
     auto fixed = [](double x) {
         char buf[1100];
@@ -212,7 +213,7 @@ std::string field_text(const Tool& t, Role r, double scale) {
 }
 
 [[noreturn]] void refuse(const Tool& t, const std::string& what) {
-    throw ToolTableError("heidenhain_unrepresentable",
+    throw ToolTableError(code::heidenhain_unrepresentable,
                          "tool T" + std::to_string(t.number) + ": a Heidenhain TOOL.T cannot hold " + what +
                              "; use CSV or JSON");
 }
@@ -278,7 +279,7 @@ struct HhSource : detail::TableSource {
 // ---- writing fields -----------------------------------------------------------------------
 
 [[noreturn]] void too_wide(const Tool& t, const std::string& title, const std::string& value, std::size_t limit) {
-    throw ToolTableError("heidenhain_value_too_wide",
+    throw ToolTableError(code::heidenhain_value_too_wide,
                          "tool T" + std::to_string(t.number) + ": " + title + " value '" + value +
                              "' does not fit its column (at most " + std::to_string(limit) + " characters)");
 }
@@ -427,7 +428,7 @@ ToolTable read_heidenhain_table(std::string_view text, LengthUnit units) {
         const bool bom = first.compare(0, 3, "\xEF\xBB\xBF") == 0;
         const auto w = words_of(first, bom ? 1 : 0);
         if (w.empty() || to_upper_ascii(w[0].text) != "BEGIN")
-            error("heidenhain_missing_begin", "a TOOL.T file starts with a line like 'BEGIN TOOL .T MM'", 1,
+            error(code::heidenhain_missing_begin, "a TOOL.T file starts with a line like 'BEGIN TOOL .T MM'", 1,
                   w.empty() ? 1 : w[0].column + 1);
         std::size_t name_end = w.size();
         if (w.size() >= 3) {
@@ -441,7 +442,7 @@ ToolTable read_heidenhain_table(std::string_view text, LengthUnit units) {
         for (std::size_t i = 1; i < name_end; ++i) name += w[i].text;
         const std::string un = to_upper_ascii(name);
         if (un.size() < 2 || un.compare(un.size() - 2, 2, ".T") != 0)
-            error("heidenhain_not_tool_table",
+            error(code::heidenhain_not_tool_table,
                   "'" + first.substr(bom ? 3 : 0) + "' is not the BEGIN line of a tool table (TOOL .T)", 1,
                   w.size() > 1 ? w[1].column + 1 : w[0].column + w[0].text.size() + 1);
     }
@@ -450,7 +451,7 @@ ToolTable read_heidenhain_table(std::string_view text, LengthUnit units) {
 
     // Line 2: the column titles.
     if (lines.size() < 2)
-        error("heidenhain_missing_header", "the BEGIN line must be followed by the line of column titles", 2, 1);
+        error(code::heidenhain_missing_header, "the BEGIN line must be followed by the line of column titles", 2, 1);
     {
         const std::string& h = lines[1].text;
         std::set<std::string> seen;
@@ -460,18 +461,18 @@ ToolTable read_heidenhain_table(std::string_view text, LengthUnit units) {
             if (u == "[END]") break;
             // Column titles start with a letter; a number means line 2 is already a tool row.
             if (ascii_digit(u[0]) || u[0] == '+' || u[0] == '-' || u[0] == '.')
-                error("heidenhain_missing_header",
+                error(code::heidenhain_missing_header,
                       "line 2 must be the column titles of the tool table (T NAME L R ...), not a tool row", 2,
                       w.column + 1);
             if (!seen.insert(u).second)
-                error("heidenhain_duplicate_column", "column '" + w.text + "' appears twice in the header", 2,
+                error(code::heidenhain_duplicate_column, "column '" + w.text + "' appears twice in the header", 2,
                       w.column + 1);
             Column c{w.text, role_of(w.text), src->columns.empty() ? 0 : w.column};
             have_t = have_t || c.role == Role::t;
             src->columns.push_back(std::move(c));
         }
         if (!have_t)
-            error("heidenhain_missing_header",
+            error(code::heidenhain_missing_header,
                   "line 2 must be the column titles of the tool table, with a T column", 2, 1);
         src->header_length = char_count(h);
         src->header_padded = !h.empty() && is_blank(h.back());
@@ -487,7 +488,7 @@ ToolTable read_heidenhain_table(std::string_view text, LengthUnit units) {
         if (blank_only(s)) continue;
         const auto w = words_of(s);
         if (ended)
-            error("heidenhain_text_after_end", "text after the [END] line", line_no, w.front().column + 1);
+            error(code::heidenhain_text_after_end, "text after the [END] line", line_no, w.front().column + 1);
         if (to_upper_ascii(tables::trim(s)) == "[END]") {
             ended = true;
             src->end_line = li;
@@ -526,9 +527,9 @@ ToolTable read_heidenhain_table(std::string_view text, LengthUnit units) {
                         if (dot != std::string::npos && tables::parse_integer(value.substr(0, dot), whole) &&
                             whole >= 0 && tables::parse_integer(value.substr(dot + 1), index) && index >= 0 &&
                             value[dot + 1] != '+' && value[dot + 1] != '-')
-                            error("heidenhain_tool_index_unsupported",
+                            error(code::heidenhain_tool_index_unsupported,
                                   "indexed tool '" + value + "' (T number.index) is not supported", line_no, at);
-                        error("heidenhain_bad_number", "T needs a whole tool number >= 0, got '" + value + "'",
+                        error(code::heidenhain_bad_number, "T needs a whole tool number >= 0, got '" + value + "'",
                               line_no, at);
                     }
                     t.number = num;
@@ -539,16 +540,16 @@ ToolTable read_heidenhain_table(std::string_view text, LengthUnit units) {
                     if (value.empty()) break;
                     double v = 0;
                     if (!tables::parse_decimal(value, v))
-                        error("heidenhain_bad_number", "bad number '" + value + "' in column " + col.title, line_no, at);
+                        error(code::heidenhain_bad_number, "bad number '" + value + "' in column " + col.title, line_no, at);
                     set_model_value(t, col.role, v * scale);
                     break;
                 }
             }
         }
-        if (!have_t) error("heidenhain_missing_tool", "tool table row without a T number", line_no, t_column);
+        if (!have_t) error(code::heidenhain_missing_tool, "tool table row without a T number", line_no, t_column);
         const auto [it, fresh] = first_line.emplace(t.number, line_no);
         if (!fresh)
-            error("heidenhain_duplicate_tool",
+            error(code::heidenhain_duplicate_tool,
                   "tool T" + std::to_string(t.number) + " already defined on line " + std::to_string(it->second),
                   line_no, t_column);
         row.tool = t.number;
@@ -558,7 +559,7 @@ ToolTable read_heidenhain_table(std::string_view text, LengthUnit units) {
         src->rows.push_back(std::move(row));
     }
     if (!ended)
-        error("heidenhain_missing_end", "the tool table does not end with an [END] line (truncated file?)",
+        error(code::heidenhain_missing_end, "the tool table does not end with an [END] line (truncated file?)",
               lines.size() + 1, 1);
     table.set_source(std::move(src));
     return table;

@@ -1,5 +1,6 @@
 // JSON tool-table reader and writer.
 #include "toolcomp/tools/format_json.hpp"
+#include "toolcomp/program/codes.hpp"
 
 #include "fields.hpp"
 #include "json_value.hpp"
@@ -42,19 +43,19 @@ public:
     int integer(const JsonValue& v, std::string_view key) const {
         int n = 0;
         if (v.kind != Kind::number || !tables::parse_integer(v.text, n))
-            fail("json_bad_number", "\"" + std::string(key) + "\" needs a whole number", v.begin);
+            fail(code::json_bad_number, "\"" + std::string(key) + "\" needs a whole number", v.begin);
         return n;
     }
 
     double number(const JsonValue& v, std::string_view key) const {
         double d = 0;
         if (v.kind != Kind::number || !tables::parse_decimal(v.text, d))
-            fail("json_bad_value", "\"" + std::string(key) + "\" needs a number", v.begin);
+            fail(code::json_bad_value, "\"" + std::string(key) + "\" needs a number", v.begin);
         return d;
     }
 
     std::string string(const JsonValue& v, std::string_view key) const {
-        if (v.kind != Kind::string) fail("json_bad_value", "\"" + std::string(key) + "\" needs a string", v.begin);
+        if (v.kind != Kind::string) fail(code::json_bad_value, "\"" + std::string(key) + "\" needs a string", v.begin);
         return v.text;
     }
 
@@ -66,13 +67,13 @@ public:
             const FieldInfo* f = tables::find_field(m.key);
             if (!f || !f->edge_level) continue;
             if (!slots.insert(f->slot).second)
-                fail("json_duplicate_key", "\"" + m.key + "\" gives a value already given", m.key_begin);
+                fail(code::json_duplicate_key, "\"" + m.key + "\" gives a value already given", m.key_begin);
             any = true;
             if (f->kind == FieldKind::integer) {
                 const int n = integer(m.value, m.key);
                 if (f->id == Field::orientation && (n < 0 || n > 9))
-                    fail("json_bad_orientation", "orientation must be 0..9", m.value.begin);
-                if (f->id == Field::edge && n < 0) fail("json_bad_number", "negative edge number", m.value.begin);
+                    fail(code::json_bad_orientation, "orientation must be 0..9", m.value.begin);
+                if (f->id == Field::edge && n < 0) fail(code::json_bad_number, "negative edge number", m.value.begin);
                 tables::set_edge_number(e, f->id, n);
             } else {
                 const double d = number(m.value, m.key);
@@ -83,31 +84,31 @@ public:
     }
 
     Tool tool(const JsonValue& obj) const {
-        if (obj.kind != Kind::object) fail("json_bad_schema", "each entry of \"tools\" must be an object", obj.begin);
+        if (obj.kind != Kind::object) fail(code::json_bad_schema, "each entry of \"tools\" must be an object", obj.begin);
         Tool t;
         const JsonValue* num = obj.get("tool");
-        if (!num) fail("json_missing_tool", "tool entry without \"tool\" number", obj.begin);
+        if (!num) fail(code::json_missing_tool, "tool entry without \"tool\" number", obj.begin);
         t.number = integer(*num, "tool");
-        if (t.number < 0) fail("json_bad_number", "negative tool number", num->begin);
+        if (t.number < 0) fail(code::json_bad_number, "negative tool number", num->begin);
         if (const JsonValue* v = obj.get("pocket")) {
             t.pocket = integer(*v, "pocket");
-            if (t.pocket < 0) fail("json_bad_number", "negative pocket number", v->begin);
+            if (t.pocket < 0) fail(code::json_bad_number, "negative pocket number", v->begin);
         }
         if (const JsonValue* v = obj.get("name")) t.name = string(*v, "name");
         if (const JsonValue* v = obj.get("comment")) t.comment = string(*v, "comment");
 
         const bool flat = edge_fields(obj, t.edges.front());
         if (const JsonValue* edges = obj.get("edges")) {
-            if (flat) fail("json_mixed_edges", "give either \"edges\" or edge values in the tool, not both", edges->begin);
+            if (flat) fail(code::json_mixed_edges, "give either \"edges\" or edge values in the tool, not both", edges->begin);
             if (edges->kind != Kind::array || edges->items.empty())
-                fail("json_bad_schema", "\"edges\" must be a non-empty array of objects", edges->begin);
+                fail(code::json_bad_schema, "\"edges\" must be a non-empty array of objects", edges->begin);
             t.edges.clear();
             for (const JsonValue& eo : edges->items) {
-                if (eo.kind != Kind::object) fail("json_bad_schema", "each edge must be an object", eo.begin);
+                if (eo.kind != Kind::object) fail(code::json_bad_schema, "each edge must be an object", eo.begin);
                 CuttingEdge e;
                 edge_fields(eo, e);
                 if (t.has_edge(e.number))
-                    fail("json_duplicate_edge", "edge " + std::to_string(e.number) + " appears twice", eo.begin);
+                    fail(code::json_duplicate_edge, "edge " + std::to_string(e.number) + " appears twice", eo.begin);
                 t.edges.push_back(e);
             }
         }
@@ -347,18 +348,18 @@ ToolTable read_json_table(std::string_view text, LengthUnit units) {
     }
     Reader probe(text, 1.0);
     if (root.kind != Kind::object)
-        probe.fail("json_bad_schema", "a JSON tool table is an object with a \"tools\" array", root.begin);
+        probe.fail(code::json_bad_schema, "a JSON tool table is an object with a \"tools\" array", root.begin);
     if (const JsonValue* u = root.get("units")) {
-        if (u->kind != Kind::string) probe.fail("json_bad_units", "\"units\" must be \"mm\" or \"inch\"", u->begin);
+        if (u->kind != Kind::string) probe.fail(code::json_bad_units, "\"units\" must be \"mm\" or \"inch\"", u->begin);
         try {
             units = length_unit_from_string(u->text);
         } catch (const ToolTableError&) {
-            probe.fail("json_bad_units", "\"units\" must be \"mm\" or \"inch\", not \"" + u->text + "\"", u->begin);
+            probe.fail(code::json_bad_units, "\"units\" must be \"mm\" or \"inch\", not \"" + u->text + "\"", u->begin);
         }
     }
     const JsonValue* tools = root.get("tools");
     if (!tools || tools->kind != Kind::array)
-        probe.fail("json_bad_schema", "a JSON tool table needs a \"tools\" array", tools ? tools->begin : root.begin);
+        probe.fail(code::json_bad_schema, "a JSON tool table needs a \"tools\" array", tools ? tools->begin : root.begin);
 
     const Reader reader(text, mm_per_unit(units));
     ToolTable table(units);
@@ -367,7 +368,7 @@ ToolTable read_json_table(std::string_view text, LengthUnit units) {
         Tool t = reader.tool(item);
         if (auto it = first.find(t.number); it != first.end()) {
             const auto lc = tables::json_position(text, it->second);
-            reader.fail("json_duplicate_tool",
+            reader.fail(code::json_duplicate_tool,
                         "tool " + std::to_string(t.number) + " already defined on line " + std::to_string(lc.line),
                         item.get("tool")->begin);
         }

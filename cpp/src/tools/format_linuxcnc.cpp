@@ -1,5 +1,6 @@
 // LinuxCNC .tbl reader and writer.
 #include "toolcomp/tools/format_linuxcnc.hpp"
+#include "toolcomp/program/codes.hpp"
 
 #include "number_text.hpp"
 #include "text_lines.hpp"
@@ -69,27 +70,27 @@ bool parse_line(TblLine& tl, int line_no, double scale) {
         const char letter = ascii_upper(word[0]);
         const std::string_view value = word.substr(1);
         if (kWordOrder.find(letter) == std::string_view::npos)
-            error("tbl_bad_word", "unknown word '" + std::string(word) + "' in tool table", line_no, col);
+            error(code::tbl_bad_word, "unknown word '" + std::string(word) + "' in tool table", line_no, col);
         for (const auto& w : tl.words)
             if (w.letter == letter)
-                error("tbl_duplicate_word", std::string("word ") + letter + " appears twice on one line", line_no, col);
+                error(code::tbl_duplicate_word, std::string("word ") + letter + " appears twice on one line", line_no, col);
         tl.words.push_back({letter, col});
 
         if (letter == 'T' || letter == 'P' || letter == 'Q') {
             int n = 0;
             if (!tables::parse_integer(value, n))
-                error("tbl_bad_number", std::string(1, letter) + " word needs a whole number, got '" + std::string(word) + "'",
+                error(code::tbl_bad_number, std::string(1, letter) + " word needs a whole number, got '" + std::string(word) + "'",
                       line_no, col);
             if (letter == 'T') {
-                if (n < 0) error("tbl_bad_number", "negative tool number '" + std::string(word) + "'", line_no, col);
+                if (n < 0) error(code::tbl_bad_number, "negative tool number '" + std::string(word) + "'", line_no, col);
                 t.number = n;
                 have_tool = true;
             } else if (letter == 'P') {
-                if (n < 0) error("tbl_bad_number", "negative pocket number '" + std::string(word) + "'", line_no, col);
+                if (n < 0) error(code::tbl_bad_number, "negative pocket number '" + std::string(word) + "'", line_no, col);
                 t.pocket = n;
             } else {
                 if (n < 0 || n > 9)
-                    error("tbl_bad_orientation", "tool orientation Q must be 0..9, got '" + std::string(word) + "'",
+                    error(code::tbl_bad_orientation, "tool orientation Q must be 0..9, got '" + std::string(word) + "'",
                           line_no, col);
                 e.orientation = n;
             }
@@ -97,7 +98,7 @@ bool parse_line(TblLine& tl, int line_no, double scale) {
         }
         double v = 0;
         if (!tables::parse_decimal(value, v))
-            error("tbl_bad_number", "bad number in word '" + std::string(word) + "'", line_no, col);
+            error(code::tbl_bad_number, "bad number in word '" + std::string(word) + "'", line_no, col);
         switch (letter) {
             case 'X': e.length.x() = v * scale; break;
             case 'Y': e.length.y() = v * scale; break;
@@ -115,7 +116,7 @@ bool parse_line(TblLine& tl, int line_no, double scale) {
         }
     }
     if (tl.words.empty()) return false;  // blank or ';' comment line
-    if (!have_tool) error("tbl_missing_tool", "tool table line without a T word", line_no, tl.words.front().column);
+    if (!have_tool) error(code::tbl_missing_tool, "tool table line without a T word", line_no, tl.words.front().column);
     if (semi != std::string::npos) t.comment = tables::trim(std::string_view(s).substr(semi + 1));
     tl.comment_part = s.substr(last_word_end);
     tl.is_tool = true;
@@ -174,7 +175,7 @@ bool word_is_default(char letter, const Tool& t) {
 void check_representable(const Tool& t) {
     const std::string who = "tool T" + std::to_string(t.number);
     auto refuse = [&](const std::string& what) {
-        throw ToolTableError("tbl_unrepresentable",
+        throw ToolTableError(code::tbl_unrepresentable,
                              who + ": a LinuxCNC tool table cannot hold " + what + "; use CSV or JSON");
     };
     validate_tool(t);
@@ -244,7 +245,7 @@ ToolTable read_linuxcnc_table(std::string_view text, LengthUnit units) {
                 int col = 1;
                 for (const auto& w : tl.words)
                     if (w.letter == 'T') col = w.column;
-                error("tbl_duplicate_tool",
+                error(code::tbl_duplicate_tool,
                       "tool T" + std::to_string(tl.tool) + " already defined on line " + std::to_string(it->second),
                       line_no, col);
             }

@@ -1,4 +1,5 @@
 #include "json_value.hpp"
+#include "toolcomp/program/codes.hpp"
 
 #include "toolcomp/program/diagnostic.hpp"
 
@@ -45,8 +46,8 @@ private:
     std::string_view t_;
     std::size_t p_ = 0;
 
-    [[noreturn]] void fail(const std::string& msg, const char* code = "json_syntax") { fail_at(p_, msg, code); }
-    [[noreturn]] void fail_at(std::size_t at, const std::string& msg, const char* code = "json_syntax") {
+    [[noreturn]] void fail(const std::string& msg, const char* code = code::json_syntax) { fail_at(p_, msg, code); }
+    [[noreturn]] void fail_at(std::size_t at, const std::string& msg, const char* code = code::json_syntax) {
         const auto lc = json_position(t_, at);
         throw ToolTableError(code, msg, SourcePos{lc.line, lc.column});
     }
@@ -82,7 +83,7 @@ private:
                     m.key = string_body();
                     m.key_end = p_;
                     for (const auto& other : v.members)
-                        if (other.key == m.key) fail_at(m.key_begin, "key \"" + m.key + "\" appears twice", "json_duplicate_key");
+                        if (other.key == m.key) fail_at(m.key_begin, "key \"" + m.key + "\" appears twice", code::json_duplicate_key);
                     skip_ws();
                     if (p_ >= t_.size() || t_[p_] != ':') fail("expected ':'");
                     ++p_;

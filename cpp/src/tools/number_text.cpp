@@ -1,4 +1,5 @@
 #include "number_text.hpp"
+#include "toolcomp/program/codes.hpp"
 
 #include "toolcomp/program/diagnostic.hpp"
 #include "toolcomp/program/text.hpp"
@@ -44,7 +45,7 @@ double read_back(const std::string& text, double mm_per_unit) {
 
 void require_finite(double v) {
     if (!std::isfinite(v))
-        throw ToolTableError("table_bad_value", "a tool value is not a finite number");
+        throw ToolTableError(code::table_bad_value, "a tool value is not a finite number");
 }
 
 std::string shortest(double v) {

@@ -1,5 +1,6 @@
 // Sinumerik cutting-edge totals and the L1/L2/L3 -> axis mapping (spec §3.1, §3.2).
 #include "toolcomp/tools/sinumerik_edge.hpp"
+#include "toolcomp/program/codes.hpp"
 
 #include <cmath>
 
@@ -11,11 +12,11 @@ namespace {
 
 void check_n(int n, const char* what) {
     if (n < 1 || n > 25)
-        throw ToolTableError("sinumerik_bad_dp", std::string(what) + " number " + std::to_string(n) +
+        throw ToolTableError(code::sinumerik_bad_dp, std::string(what) + " number " + std::to_string(n) +
                                                      " is outside 1..25");
 }
 
-void bad_setting(const std::string& msg) { throw ToolTableError("sinumerik_bad_setting", msg); }
+void bad_setting(const std::string& msg) { throw ToolTableError(code::sinumerik_bad_setting, msg); }
 
 constexpr int X = 0, Y = 1, Z = 2;
 using Axes = std::array<int, 3>;
@@ -57,7 +58,7 @@ double SinumerikEdge::SCP(int n) const {
 int SinumerikEdge::type() const { return static_cast<int>(std::lround(DP(1))); }
 
 double SinumerikEdge::length(int i, double wear_sign) const {
-    if (i < 1 || i > 3) throw ToolTableError("sinumerik_bad_length", "length index must be 1, 2 or 3");
+    if (i < 1 || i > 3) throw ToolTableError(code::sinumerik_bad_length, "length index must be 1, 2 or 3");
     return DP(2 + i) + wear_sign * (DP(11 + i) + SCP(11 + i) + ECP(11 + i)) + DP(20 + i);
 }
 

@@ -1,5 +1,6 @@
 // Reading and writing "$TC_DPn[t,d]=value" initialisation lines (spec §3.1).
 #include <sstream>
+#include "toolcomp/program/codes.hpp"
 
 #include "number_text.hpp"
 #include "toolcomp/program/diagnostic.hpp"
@@ -28,7 +29,7 @@ struct Cursor {
                              SourcePos{line, static_cast<int>(at) + 1});
     }
     [[noreturn]] void bad(const std::string& expected) const {
-        fail("sinumerik_bad_line", "expected " + expected + " in a $TC_DPn[t,d]=value line", col);
+        fail(code::sinumerik_bad_line, "expected " + expected + " in a $TC_DPn[t,d]=value line", col);
     }
     bool word(std::string_view w) {  // case-insensitive keyword
         blanks();
@@ -111,11 +112,11 @@ SinumerikEdgeMap parse_tc_dp(std::string_view text, int max_t, int max_d) {
             c.col = at_v;
             c.bad("a decimal value after '='");
         }
-        if (n < 1 || n > 25) c.fail("sinumerik_bad_dp", "parameter number " + std::to_string(n) + " is outside 1..25", at_n);
+        if (n < 1 || n > 25) c.fail(code::sinumerik_bad_dp, "parameter number " + std::to_string(n) + " is outside 1..25", at_n);
         if (t < 1 || t > max_t)
-            c.fail("sinumerik_bad_tool", "tool number " + std::to_string(t) + " is outside 1.." + std::to_string(max_t), at_t);
+            c.fail(code::sinumerik_bad_tool, "tool number " + std::to_string(t) + " is outside 1.." + std::to_string(max_t), at_t);
         if (d < 1 || d > max_d)
-            c.fail("sinumerik_bad_edge", "edge number " + std::to_string(d) + " is outside 1.." + std::to_string(max_d), at_d);
+            c.fail(code::sinumerik_bad_edge, "edge number " + std::to_string(d) + " is outside 1.." + std::to_string(max_d), at_d);
         SinumerikEdge& e = out[{t, d}];
         auto& arr = which == 0 ? e.dp : which == 1 ? e.ecp : e.scp;
         arr[static_cast<std::size_t>(n - 1)] = v;

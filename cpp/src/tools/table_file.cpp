@@ -9,6 +9,7 @@
 // mid-save leaves at most a stale lock file and a stale temporary file, both of which the
 // next writer reuses. Reading opens the table read-only and takes no lock.
 #include "toolcomp/program/diagnostic.hpp"
+#include "toolcomp/program/codes.hpp"
 #include "toolcomp/program/input_limits.hpp"
 #include "toolcomp/tools/tool_table.hpp"
 
@@ -30,7 +31,7 @@ namespace toolcomp {
 namespace {
 
 [[noreturn]] void fail(const std::string& what, const std::string& path, int err) {
-    throw ToolTableError("table_file_error", what + " '" + path + "': " + std::strerror(err));
+    throw ToolTableError(code::table_file_error, what + " '" + path + "': " + std::strerror(err));
 }
 
 // The file a path names, links resolved (the path itself when it does not exist yet).
@@ -51,7 +52,7 @@ std::string read_all(const std::string& path, std::uint64_t max_bytes) {
     FileText f = read_file_limited(path, max_bytes);
     if (f.status == FileText::ok) return std::move(f.text);
     const bool io = f.status == FileText::cannot_open || f.status == FileText::cannot_read;
-    throw ToolTableError(io ? "table_file_error" : read_error_code(f),
+    throw ToolTableError(io ? code::table_file_error : read_error_code(f),
                          std::string(f.status == FileText::cannot_open ? "cannot open" : "cannot read") +
                              " tool table '" + path + "': " + read_error_text(f, max_bytes));
 }
@@ -82,7 +83,7 @@ public:
                 const int err = errno;
                 ::close(fd_);
                 if (err == EWOULDBLOCK || err == EINTR)
-                    throw ToolTableError("table_locked", "tool table '" + table_path +
+                    throw ToolTableError(code::table_locked, "tool table '" + table_path +
                                                              "' is being written by another writer (lock file '" +
                                                              path_ + "'); try again when it has finished");
                 fail("cannot lock", path_, err);
@@ -93,7 +94,7 @@ public:
                 return;
             ::close(fd_);  // locked a lock file that its last holder had just removed
         }
-        throw ToolTableError("table_locked", "cannot lock tool table '" + table_path + "' (lock file '" + path_ +
+        throw ToolTableError(code::table_locked, "cannot lock tool table '" + table_path + "' (lock file '" + path_ +
                                                  "' keeps being replaced)");
     }
     ~WriterLock() {
@@ -137,7 +138,7 @@ void write_tool_table_file(const ToolTable& table, const std::string& path, std:
     if (const auto& was = table.file_stamp(); was && was->path == target) {
         const auto now = stamp_of(target);
         if (now && !(*now == *was))
-            throw ToolTableError("table_changed_on_disk",
+            throw ToolTableError(code::table_changed_on_disk,
                                  "'" + path + "' was changed since the table was read from it: read it again "
                                  "(or write to another file)");
     }

@@ -1,4 +1,5 @@
 #include "toolcomp/tools/table_format.hpp"
+#include "toolcomp/program/codes.hpp"
 
 #include "toolcomp/program/diagnostic.hpp"
 #include "toolcomp/program/text.hpp"
@@ -32,7 +33,7 @@ TableFormat table_format_from_string(std::string_view s) {
     if (f == "json") return TableFormat::json;
     if (f == "heidenhain" || f == "t") return TableFormat::heidenhain;
     if (f == "sinumerik" || f == "ini") return TableFormat::sinumerik;
-    throw ToolTableError("table_unknown_format",
+    throw ToolTableError(code::table_unknown_format,
                          "unknown tool table format '" + std::string(s) + "' (use linuxcnc, csv, json, heidenhain or sinumerik)");
 }
 
@@ -47,7 +48,7 @@ TableFormat table_format_from_path(const std::string& path) {
         if (ext == "t") return TableFormat::heidenhain;
         if (ext == "ini") return TableFormat::sinumerik;
     }
-    throw ToolTableError("table_unknown_format",
+    throw ToolTableError(code::table_unknown_format,
                          "cannot tell the tool table format from the name '" + path +
                              "' (suffix .tbl, .csv, .json, .t or .ini, or pass the format)");
 }

@@ -1,4 +1,5 @@
 #include "toolcomp/tools/tool.hpp"
+#include "toolcomp/program/codes.hpp"
 
 #include <cmath>
 
@@ -32,7 +33,7 @@ bool Tool::has_edge(int d) const {
 const CuttingEdge& Tool::edge(int d) const {
     for (const auto& e : edges)
         if (e.number == d) return e;
-    throw ToolTableError("tool_no_such_edge",
+    throw ToolTableError(code::tool_no_such_edge,
                          "tool T" + std::to_string(number) + " has no cutting edge D" + std::to_string(d));
 }
 
@@ -51,13 +52,13 @@ void Tool::set_edge(const CuttingEdge& e) {
 
 void validate_tool(const Tool& t) {
     const std::string who = "tool T" + std::to_string(t.number);
-    if (t.number < 0) throw ToolTableError("tool_bad_number", "negative tool number " + std::to_string(t.number));
-    if (t.pocket < 0) throw ToolTableError("tool_bad_number", who + ": negative pocket number");
-    if (t.edges.empty()) throw ToolTableError("tool_no_edges", who + " has no cutting edge");
+    if (t.number < 0) throw ToolTableError(code::tool_bad_number, "negative tool number " + std::to_string(t.number));
+    if (t.pocket < 0) throw ToolTableError(code::tool_bad_number, who + ": negative pocket number");
+    if (t.edges.empty()) throw ToolTableError(code::tool_no_edges, who + " has no cutting edge");
     for (std::size_t i = 0; i < t.edges.size(); ++i) {
         const auto& e = t.edges[i];
         if (e.orientation < 0 || e.orientation > 9)
-            throw ToolTableError("tool_bad_orientation",
+            throw ToolTableError(code::tool_bad_orientation,
                                  who + ": orientation " + std::to_string(e.orientation) + " is outside 0..9");
         // Every number finite, the sums the runs use too (a NaN radius would compensate nothing
         // without a word).
@@ -69,12 +70,12 @@ void validate_tool(const Tool& t) {
                          e.effective_radius(), e.effective_corner_radius()})
             z += v * 0;
         if (z != 0)
-            throw ToolTableError("tool_bad_value",
+            throw ToolTableError(code::tool_bad_value,
                                  who + " D" + std::to_string(e.number) + ": a value (or its sum with the wear) is not a "
                                                                           "finite number");
         for (std::size_t j = 0; j < i; ++j)
             if (t.edges[j].number == e.number)
-                throw ToolTableError("tool_duplicate_edge",
+                throw ToolTableError(code::tool_duplicate_edge,
                                      who + ": cutting edge D" + std::to_string(e.number) + " appears twice");
     }
 }

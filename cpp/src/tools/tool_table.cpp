@@ -1,4 +1,5 @@
 #include "toolcomp/tools/tool_table.hpp"
+#include "toolcomp/program/codes.hpp"
 
 #include "toolcomp/program/diagnostic.hpp"
 #include "toolcomp/tools/format_csv.hpp"
@@ -22,7 +23,7 @@ Tool* ToolTable::find(int number) {
 
 const Tool& ToolTable::at(int number) const {
     if (const Tool* t = find(number)) return *t;
-    throw ToolTableError("table_no_such_tool", "no tool T" + std::to_string(number) + " in the tool table");
+    throw ToolTableError(code::table_no_such_tool, "no tool T" + std::to_string(number) + " in the tool table");
 }
 
 void ToolTable::set(Tool t) {
@@ -53,7 +54,7 @@ ToolTable read_tool_table(std::string_view text, TableFormat format, LengthUnit 
         case TableFormat::heidenhain: return read_heidenhain_table(text, units);
         case TableFormat::sinumerik: return read_sinumerik_table(text, units);
     }
-    throw ToolTableError("table_unknown_format", "unknown tool table format");
+    throw ToolTableError(code::table_unknown_format, "unknown tool table format");
 }
 
 std::string write_tool_table(const ToolTable& table, TableFormat format) {
@@ -64,7 +65,7 @@ std::string write_tool_table(const ToolTable& table, TableFormat format) {
         case TableFormat::heidenhain: return write_heidenhain_table(table);
         case TableFormat::sinumerik: return write_sinumerik_table(table);
     }
-    throw ToolTableError("table_unknown_format", "unknown tool table format");
+    throw ToolTableError(code::table_unknown_format, "unknown tool table format");
 }
 
 }  // namespace toolcomp

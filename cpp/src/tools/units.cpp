@@ -1,4 +1,5 @@
 #include "toolcomp/tools/units.hpp"
+#include "toolcomp/program/codes.hpp"
 
 #include "toolcomp/program/diagnostic.hpp"
 #include "toolcomp/program/text.hpp"
@@ -15,7 +16,7 @@ LengthUnit length_unit_from_string(std::string_view s) {
     for (char c : s) low += ascii_lower(c);
     if (low == "mm") return LengthUnit::mm;
     if (low == "inch" || low == "in") return LengthUnit::inch;
-    throw ToolTableError("table_bad_units", "unknown length unit '" + std::string(s) + "' (use \"mm\" or \"inch\")");
+    throw ToolTableError(code::table_bad_units, "unknown length unit '" + std::string(s) + "' (use \"mm\" or \"inch\")");
 }
 
 }  // namespace toolcomp

@@ -3,6 +3,7 @@
 // contour element (its tangent at PA decides the path); DEP cancels compensation after the
 // last element ends perpendicular at PE.
 #include <algorithm>
+#include "toolcomp/program/codes.hpp"
 #include <cmath>
 #include <stdexcept>
 
@@ -37,22 +38,22 @@ void Interp::approach_words(Tokens t, ApproachKind kind, bool polar) {
     if (kind == ApproachKind::LT || kind == ApproachKind::LN)
         for (std::size_t i = 2; i < t.size(); ++i)
             if (t[i].is("R") && t[i].has_value && t[i].value != 0)
-                fail("bad_word", "R is not read in " + t[0].key + " " + t[1].key + " blocks: it has no arc", t[i].column);
+                fail(code::bad_word, "R is not read in " + t[0].key + " " + t[1].key + " blocks: it has no arc", t[i].column);
     for (std::size_t i = 2; i < t.size(); ++i) {
         if (t[i].is("F") && t[i].has_value) feed_ = t[i].value * (prog_.inch ? 2.54 : 1.0);
-        if (t[i].is("FMAX")) fail("unsupported_word", t[0].key + " with FMAX is not supported by toolcomp", t[i].column);
+        if (t[i].is("FMAX")) fail(code::unsupported_word, t[0].key + " with FMAX is not supported by toolcomp", t[i].column);
         if (t[i].is("M") && t[i].has_value) m_function(t, t[i]);
     }
 }
 
 void Interp::approach(Tokens t) {
-    if (t.size() < 2) fail("approach_kind", "APPR needs LT, LN, CT or LCT", t[0].column);
+    if (t.size() < 2) fail(code::approach_kind, "APPR needs LT, LN, CT or LCT", t[0].column);
     bool polar = false;
     ApproachKind kind;
     try {
         kind = kind_of(t[1].key, polar);
     } catch (const std::invalid_argument&) {
-        fail("approach_kind", "Unknown APPR function " + t[1].key, t[1].column);
+        fail(code::approach_kind, "Unknown APPR function " + t[1].key, t[1].column);
     }
     const double feed_before = feed_;
     const bool rapid_before = last_rapid_;
@@ -68,17 +69,17 @@ void Interp::approach(Tokens t) {
     const bool connecting = side_ != 0;
     if (connecting) {
         if (r0)
-            fail("appr_cancels_comp",
+            fail(code::appr_cancels_comp,
                  "APPR with R0 while radius compensation is active: cancel it with R0 in an L block first", r0->column);
-        if (side != 0 && side != side_) fail("comp_side_change", profile_.radius.messages.side_change, t[0].column);
+        if (side != 0 && side != side_) fail(code::comp_side_change, profile_.radius.messages.side_change, t[0].column);
         side = side_;
     }
     // Feed, M functions; RL/RR are taken here, not as a start of compensation by modal_words.
     approach_words(t, kind, polar);
-    if (feed_ <= 0) fail("no_feed", "APPR needs a feed: none programmed up to the approach block", t[0].column);
+    if (feed_ <= 0) fail(code::no_feed, "APPR needs a feed: none programmed up to the approach block", t[0].column);
     Vec3 pa = end_point(t, 2);
     if (polar) {
-        if (!pole_) fail("no_circle_centre", "CIRCLE CENTER UNDEFINED", t[0].column);
+        if (!pole_) fail(code::no_circle_centre, "CIRCLE CENTER UNDEFINED", t[0].column);
         const Vec2 rel = plane2(pos_) - *pole_;
         double pr = rel.norm(), ang = std::atan2(rel.y(), rel.x()) * 180 / kPi;
         if (auto v = number(t, "PR")) pr = *v;
@@ -176,7 +177,7 @@ std::vector<PathPiece> pending_path(Approach& a, const Motion& first, Plane plan
                                     const ApproachOptions& o) {
     a.t_a = start_tangent(first, plane);
     if (a.t_a.norm() < 1e-12)
-        throw ProgramError("approach_tangent", "The first contour element after APPR has no direction", {line, 0});
+        throw ProgramError(code::approach_tangent, "The first contour element after APPR has no direction", {line, 0});
     try {
         return approach_path(a, o);
     } catch (const Error& e) {
@@ -265,25 +266,25 @@ void Interp::emit_connecting_approach(const Motion& first) {
 // RL/RR programmed again in the DEP block, compensation stays on (spec §2.5.1): the
 // departure is a connecting element computed on the contour and compensated.
 void Interp::departure(Tokens t) {
-    if (t.size() < 2) fail("departure_kind", "DEP needs LT, LN, CT or LCT", t[0].column);
+    if (t.size() < 2) fail(code::departure_kind, "DEP needs LT, LN, CT or LCT", t[0].column);
     bool polar = false;
     ApproachKind kind;
     try {
         kind = kind_of(t[1].key, polar);
     } catch (const std::invalid_argument&) {
-        fail("departure_kind", "Unknown DEP function " + t[1].key, t[1].column);
+        fail(code::departure_kind, "Unknown DEP function " + t[1].key, t[1].column);
     }
-    if (!pending_) fail("departure_without_contour", "DEP needs a contour element before it", t[0].column);
+    if (!pending_) fail(code::departure_without_contour, "DEP needs a contour element before it", t[0].column);
     int side = 0;
     for (const Token& k : t)
         if (k.is("RL") || k.is("RR")) {
             side = k.is("RL") ? 1 : -1;
-            if (side_ == 0) fail("dep_starts_comp", "DEP cannot switch radius compensation on", k.column);
-            if (side != side_) fail("comp_side_change", profile_.radius.messages.side_change, k.column);
+            if (side_ == 0) fail(code::dep_starts_comp, "DEP cannot switch radius compensation on", k.column);
+            if (side != side_) fail(code::comp_side_change, profile_.radius.messages.side_change, k.column);
         }
     const bool keep = side != 0;  // RL/RR programmed again: compensation stays on
     approach_words(t, kind, polar);
-    if (feed_ <= 0) fail("no_feed", "DEP needs a feed: none programmed up to the departure block", t[0].column);
+    if (feed_ <= 0) fail(code::no_feed, "DEP needs a feed: none programmed up to the departure block", t[0].column);
     Departure d;
     d.kind = kind;
     d.pe = plane2(pos_);
@@ -295,7 +296,7 @@ void Interp::departure(Tokens t) {
     d.radius = number(t, "R").value_or(0);
     Vec3 pn = end_point(t, 2);
     if (polar) {
-        if (!pole_) fail("no_circle_centre", "CIRCLE CENTER UNDEFINED", t[0].column);
+        if (!pole_) fail(code::no_circle_centre, "CIRCLE CENTER UNDEFINED", t[0].column);
         double pr = number(t, "PR").value_or(0), ang = number(t, "PA").value_or(0);
         pn = with_plane(pn, *pole_ + pr * Vec2(std::cos(ang * kPi / 180), std::sin(ang * kPi / 180)));
     }

@@ -1,6 +1,7 @@
 // Klartext block execution: program frame, tools, straight lines, feeds, M functions and
 // radius compensation requests. Arcs, polar moves, RND and CHF are in contour.cpp.
 #include <algorithm>
+#include "toolcomp/program/codes.hpp"
 #include "toolcomp/program/text.hpp"
 #include <cctype>
 #include <cmath>
@@ -36,7 +37,7 @@ const Token* Interp::find(Tokens t, std::string_view key) const {
 std::optional<double> Interp::number(Tokens t, std::string_view key) const {
     const Token* k = find(t, key);
     if (!k) return std::nullopt;
-    if (!k->has_value) fail("missing_value", std::string(key) + " needs a value", k->column);
+    if (!k->has_value) fail(code::missing_value, std::string(key) + " needs a value", k->column);
     return k->value;
 }
 
@@ -62,7 +63,7 @@ void Interp::refuse_words(Tokens t, std::initializer_list<std::string_view> name
     for (std::size_t i = from; i < t.size(); ++i)
         for (std::string_view n : names)
             if (t[i].key == n)
-                fail("bad_word", std::string(n) + " is not read in " + (t[0].key == "APPR" || t[0].key == "DEP" ? t[0].key + " " + t[1].key : t[0].key) +
+                fail(code::bad_word, std::string(n) + " is not read in " + (t[0].key == "APPR" || t[0].key == "DEP" ? t[0].key + " " + t[1].key : t[0].key) +
                                      " blocks: " + why,
                      t[i].column);
 }
@@ -73,7 +74,7 @@ void Interp::modal_words(Tokens t, std::size_t from) {
         const Token& k = t[i];
         if (k.is("RL") || k.is("RR") || (k.is("R") && k.has_value && k.value == 0 && !t[0].is("CR"))) {
             const int side = k.is("RL") ? 1 : k.is("RR") ? -1 : 0;
-            if (side != 0 && side_ != 0 && side != side_) fail("comp_side_change", profile_.radius.messages.side_change, k.column);
+            if (side != 0 && side_ != 0 && side != side_) fail(code::comp_side_change, profile_.radius.messages.side_change, k.column);
             if (side == 0 && side_ != 0) {
                 settle_pending();
                 if (pending_) {
@@ -85,15 +86,15 @@ void Interp::modal_words(Tokens t, std::size_t from) {
             }
             side_ = side;
         } else if (k.is("R") && k.sign_only) {
-            if (!t[0].is("L")) fail("paraxial_not_line", "R+/R- only in L blocks", k.column);
-            if (side_ != 0) fail("paraxial_with_comp", "R+/R- cannot be combined with RL/RR", k.column);
+            if (!t[0].is("L")) fail(code::paraxial_not_line, "R+/R- only in L blocks", k.column);
+            if (side_ != 0) fail(code::paraxial_with_comp, "R+/R- cannot be combined with RL/RR", k.column);
             paraxial_ = static_cast<int>(k.value);  // applied by line()
         } else if (k.is("F") && k.has_value) {
             feed_ = k.value * (prog_.inch ? 2.54 : 1.0);  // mm/min, or 1/10 inch/min in INCH programs
         } else if (k.is("FMAX")) {
             rapid_ = true;
         } else if (k.is("FAUTO")) {
-            fail("unsupported_word", "FAUTO is not supported by toolcomp", k.column);
+            fail(code::unsupported_word, "FAUTO is not supported by toolcomp", k.column);
         } else if (k.is("M") && k.has_value) {
             m_function(t, k);
         }
@@ -115,7 +116,7 @@ void Interp::m_function(Tokens t, const Token& k) {
         case 120: {
             const Token* la = find(t, "LA");
             lookahead_ = la && la->has_value ? int_value_truncated(la->value) : 0;
-            if (lookahead_ > 99 || lookahead_ < 0) fail("bad_lookahead", "M120 LA allows 0 to 99 blocks", la->column);
+            if (lookahead_ > 99 || lookahead_ < 0) fail(code::bad_lookahead, "M120 LA allows 0 to 99 blocks", la->column);
             break;
         }
         case 107: m107_ = true; break;
@@ -127,7 +128,7 @@ void Interp::m_function(Tokens t, const Token& k) {
         case 89: case 90: case 99:
             break;  // machine functions without a geometric effect on the path
         default:
-            fail("unsupported_m_code", "M" + std::to_string(m) + " is not supported by toolcomp", k.column);
+            fail(code::unsupported_m_code, "M" + std::to_string(m) + " is not supported by toolcomp", k.column);
     }
 }
 
@@ -161,15 +162,15 @@ Motion Interp::motion_to(MotionKind kind, const Vec3& end) const {
 }
 
 void Interp::tool_def(Tokens t) {
-    if (t.size() < 3 || !t[2].has_value || !t[2].key.empty()) fail("tool_def", "TOOL DEF needs a tool number");
+    if (t.size() < 3 || !t[2].has_value || !t[2].key.empty()) fail(code::tool_def, "TOOL DEF needs a tool number");
     ToolDef d;
     d.length = number(t, "L").value_or(0);
     d.radius = number(t, "R").value_or(0);
     d.r2 = number(t, "R2").value_or(0);
     if (d.r2 < 0 || (d.radius >= 0 && d.r2 > d.radius))
-        fail("tool_def", "TOOL DEF: R2 must lie between 0 and R (the corner radius of the tool)", t[0].column);
+        fail(code::tool_def, "TOOL DEF: R2 must lie between 0 and R (the corner radius of the tool)", t[0].column);
     if (!(t[2].value >= 0 && t[2].value <= 32767))
-        fail("tool_def", "TOOL DEF: tool number out of range 0..32767", t[2].column);
+        fail(code::tool_def, "TOOL DEF: tool number out of range 0..32767", t[2].column);
     defs_[int_value(t[2].value)] = d;
 }
 
@@ -181,16 +182,16 @@ void Interp::tool_call(Tokens t) {
     const Tool* table_tool = nullptr;
     if (i < t.size() && t[i].key.empty() && t[i].has_value) {
         if (std::fabs(t[i].value - std::round(t[i].value)) > 1e-9)
-            fail("unsupported_tool_index", "Tool indexes (TOOL CALL n.i) are not supported by toolcomp", t[i].column);
+            fail(code::unsupported_tool_index, "Tool indexes (TOOL CALL n.i) are not supported by toolcomp", t[i].column);
         if (!(t[i].value >= 0 && t[i].value <= 32767))
-            fail("tool_call", "TOOL CALL: tool number out of range 0..32767", t[i].column);
+            fail(code::tool_call, "TOOL CALL: tool number out of range 0..32767", t[i].column);
         number_ = int_value(t[i].value);
         ++i;
     } else if (i < t.size() && !t[i].text.empty()) {
         if (tools_)
             for (const Tool& tool : tools_->tools())
                 if (tool.name == t[i].text) table_tool = &tool;
-        if (!table_tool) fail("tool_not_found", "Tool \"" + t[i].text + "\" not found in the tool table", t[i].column);
+        if (!table_tool) fail(code::tool_not_found, "Tool \"" + t[i].text + "\" not found in the tool table", t[i].column);
         number_ = table_tool->number;
         ++i;
     }
@@ -199,7 +200,7 @@ void Interp::tool_call(Tokens t) {
         if ((k == "X" || k == "Y" || k == "Z") && !t[i].has_value)
             plane_ = k == "Z" ? Plane::xy : k == "Y" ? Plane::zx : Plane::yz;
         else if ((k == "X" || k == "Y" || k == "Z") && t[i].has_value)
-            fail("bad_word", "TOOL CALL takes the tool axis without a value (" + std::string(k) + "), not a position",
+            fail(code::bad_word, "TOOL CALL takes the tool axis without a value (" + std::string(k) + "), not a position",
                  t[i].column);
         else if (k == "F" && t[i].has_value)
             feed_ = t[i].value * (prog_.inch ? 2.54 : 1.0);
@@ -221,7 +222,7 @@ void Interp::tool_call(Tokens t) {
             // the locked tool's data.
             if (const auto tl = heidenhain_field(*tools_, number_, "TL"); tl && (*tl == "L" || *tl == "l")) {
                 const auto rt = heidenhain_field(*tools_, number_, "RT");
-                fail("tool_locked",
+                fail(code::tool_locked,
                      "Tool " + std::to_string(number_) + " is locked (TL = L in the tool table)" +
                          (rt && !rt->empty() ? "; its replacement tool " + *rt + " (RT) is not modelled by toolcomp"
                                              : " and has no replacement tool (RT)"),
@@ -236,7 +237,7 @@ void Interp::tool_call(Tokens t) {
             length = d->second.length;
             radius = d->second.radius;
         } else {
-            fail("tool_not_found", "Tool " + std::to_string(number_) + " is neither in the tool table nor defined");
+            fail(code::tool_not_found, "Tool " + std::to_string(number_) + " is neither in the tool table nor defined");
         }
     }
     if (number_ >= 0) tool_ = number_;
@@ -256,7 +257,7 @@ void Interp::line(Tokens t) {
         const Vec3 d = end - pos_;
         int moving = 0;
         for (int i = 0; i < 3; ++i) moving += std::fabs(d[i]) > 0;
-        if (moving != 1) fail("paraxial_not_single_axis", "R+/R- needs a move along a single axis", t[0].column);
+        if (moving != 1) fail(code::paraxial_not_single_axis, "R+/R- needs a move along a single axis", t[0].column);
         end += paraxial_ * radius_ * d.normalized();
     }
     for (std::size_t i = 1; i < t.size(); ++i) {
@@ -265,7 +266,7 @@ void Interp::line(Tokens t) {
         if (t[i].is("C") && t[i].has_value) abc_[2] = t[i].value;
     }
     if (end == pos_) return;
-    if (!rapid_ && feed_ <= 0) fail("no_feed", "No feed rate programmed");
+    if (!rapid_ && feed_ <= 0) fail(code::no_feed, "No feed rate programmed");
     if (plane2(end) != plane2(pos_)) ++plane_moves_;
     last_rapid_ = rapid_;
     put(motion_to(rapid_ ? MotionKind::rapid : MotionKind::line, end));
@@ -305,10 +306,10 @@ bool Interp::execute(Tokens t) {
     } else if (k0 == "LN") {
         surface_line(t);
     } else if (k0 == "CYCL")
-        fail("unsupported_block", std::string(k0) + (k1.empty() ? "" : " " + std::string(k1)) + " is not supported by toolcomp yet",
+        fail(code::unsupported_block, std::string(k0) + (k1.empty() ? "" : " " + std::string(k1)) + " is not supported by toolcomp yet",
              t[0].column);
     else
-        fail("unknown_block", "Unknown block '" + std::string(k0) + "'", t[0].column);
+        fail(code::unknown_block, "Unknown block '" + std::string(k0) + "'", t[0].column);
     return true;
 }
 
@@ -329,14 +330,14 @@ Interp::Tokens Interp::resolve(Tokens t, std::vector<Token>& scratch) const {
 double Interp::q_value(int n, int column) const {
     check_q(n, column);
     if (n >= 100 && n <= 199)
-        fail("q_system", "Q" + std::to_string(n) + " is set by the control (Q100 to Q199): not modelled by toolcomp",
+        fail(code::q_system, "Q" + std::to_string(n) + " is set by the control (Q100 to Q199): not modelled by toolcomp",
              column);
     auto it = q_.find(n);
     return it == q_.end() ? 0.0 : it->second;
 }
 
 void Interp::check_q(int n, int column) const {
-    if (n < 0 || n > 1999) fail("q_out_of_range", "Q" + std::to_string(n) + " does not exist (Q0 to Q1999)", column);
+    if (n < 0 || n > 1999) fail(code::q_out_of_range, "Q" + std::to_string(n) + " does not exist (Q0 to Q1999)", column);
 }
 
 // Runs the blocks with the program's own flow: labels (LBL n), subprogram calls (CALL LBL
@@ -345,7 +346,7 @@ void Interp::check_q(int n, int column) const {
 void Interp::run() {
     run_blocks(prog_, 0);
     settle_pending();
-    if (approach_) throw ProgramError("approach_without_contour", "APPR needs a contour element after it", {approach_->line, 0});
+    if (approach_) throw ProgramError(code::approach_without_contour, "APPR needs a contour element after it", {approach_->line, 0});
     if (pending_) {
         sink_.push(*pending_);
         pending_.reset();
@@ -372,7 +373,7 @@ bool Interp::run_blocks(const Program& prog, int depth) {
     }
     auto label = [&](int n, const Token& at) {
         auto it = labels.find(n);
-        if (it == labels.end()) fail("label_not_found", "LBL " + std::to_string(n) + " not found", at.column);
+        if (it == labels.end()) fail(code::label_not_found, "LBL " + std::to_string(n) + " not found", at.column);
         return it->second;
     };
     int q_column = 0;  // the statement being run
@@ -385,10 +386,10 @@ bool Interp::run_blocks(const Program& prog, int depth) {
         line_ = blocks[pc].line;
         if (progress_ && (executed_ + 1) % progress_every_ == 0) progress_(executed_ + 1);
         if (++executed_ > profile_.block_limit)
-            fail("block_limit", "More than " + std::to_string(profile_.block_limit) +
+            fail(code::block_limit, "More than " + std::to_string(profile_.block_limit) +
                                     " blocks executed: an endless loop? (ControlProfile.block_limit)");
         if (idle_.too_long(moves_, profile_.no_motion_limit)) [[unlikely]]
-            fail("no_progress", no_progress_text(profile_.no_motion_limit));
+            fail(code::no_progress, no_progress_text(profile_.no_motion_limit));
         if (raw.empty()) {
             ++pc;
             continue;
@@ -421,7 +422,7 @@ bool Interp::run_blocks(const Program& prog, int depth) {
                     ++pc;
                 }
             } else {
-                if (returns.size() > 64) fail("call_depth", "Subprogram calls nested too deeply", t[0].column);
+                if (returns.size() > 64) fail(code::call_depth, "Subprogram calls nested too deeply", t[0].column);
                 returns.push_back(pc + 1);
                 pc = target;
             }
@@ -433,11 +434,11 @@ bool Interp::run_blocks(const Program& prog, int depth) {
             try {
                 r = run_statement(t[0].text, q);
             } catch (const std::domain_error& e) {
-                fail("q_math", std::string("Q parameter arithmetic: ") + e.what(), t[0].column);
+                fail(code::q_math, std::string("Q parameter arithmetic: ") + e.what(), t[0].column);
             } catch (const std::invalid_argument& e) {
-                fail("q_syntax", std::string("Q parameter statement: ") + e.what(), t[0].column);
+                fail(code::q_syntax, std::string("Q parameter statement: ") + e.what(), t[0].column);
             }
-            if (r.error) fail("fn14_error", "FN 14: ERROR " + std::to_string(*r.error), t[0].column);
+            if (r.error) fail(code::fn14_error, "FN 14: ERROR " + std::to_string(*r.error), t[0].column);
             if (r.assign) {
                 check_q(*r.assign, t[0].column);
                 q_[*r.assign] = r.value;
@@ -451,11 +452,11 @@ bool Interp::run_blocks(const Program& prog, int depth) {
             ++pc;
             continue;
         }
-        if (k0 == "CALL") fail("unsupported_block", "CALL without LBL or PGM is not supported by toolcomp", t[0].column);
+        if (k0 == "CALL") fail(code::unsupported_block, "CALL without LBL or PGM is not supported by toolcomp", t[0].column);
         if (!execute(t)) return true;  // END PGM
         if (ended_) {
             if (depth > 0)
-                diags_.push_back({"call_pgm_end", Severity::warning,
+                diags_.push_back({code::call_pgm_end, Severity::warning,
                                   "M2/M30 in the called program " + prog.name +
                                       " ends the run (a called program must not contain M2 or M30)",
                                   {line_, 0}});
@@ -512,11 +513,11 @@ std::string Interp::find_program(const std::string& name, int column) const {
         if (j == std::string::npos) j = rel.size();
         const std::string part = rel.substr(i, j - i);
         if (part == "..")
-            fail("call_pgm_bad_name", "CALL PGM " + name + ": '..' is not allowed in a program name", column);
+            fail(code::call_pgm_bad_name, "CALL PGM " + name + ": '..' is not allowed in a program name", column);
         if (!part.empty() && part != ".") parts.push_back(part);
         i = j + 1;
     }
-    if (parts.empty()) fail("call_pgm_bad_name", "CALL PGM needs a program name", column);
+    if (parts.empty()) fail(code::call_pgm_bad_name, "CALL PGM needs a program name", column);
     std::vector<std::string> names{parts.back()};
     if (parts.back().find('.') == std::string::npos) names.push_back(parts.back() + ".h");
     for (const std::string& d : search_.dirs) {
@@ -533,7 +534,7 @@ std::string Interp::find_program(const std::string& name, int column) const {
     }
     std::string where;
     for (const std::string& d : search_.dirs) where += (where.empty() ? "" : ", ") + d;
-    fail("call_pgm_not_found",
+    fail(code::call_pgm_not_found,
          "CALL PGM " + name + ": program not found" +
              (search_.dirs.empty() ? std::string(" (no search path given: RunOptions::search_path, search_path=)")
                                    : " in the search path (" + where + ")"),
@@ -548,14 +549,14 @@ void Interp::call_program(Tokens t, int depth) {
     const Token* name = t.size() > 2 ? &t[2] : nullptr;
     std::string text = name ? (!name->text.empty() ? name->text : name->key) : std::string();
     if (name && text.empty() && name->has_value) text = std::to_string(static_cast<long long>(name->value));
-    if (text.empty()) fail("call_pgm_bad_name", "CALL PGM needs a program name", t[0].column);
+    if (text.empty()) fail(code::call_pgm_bad_name, "CALL PGM needs a program name", t[0].column);
     if (depth + 1 > kMaxProgramCallDepth)
-        fail("call_pgm_depth",
+        fail(code::call_pgm_depth,
              "CALL PGM " + text + ": programs nested more than " + std::to_string(kMaxProgramCallDepth) +
                  " deep (does a program call itself?)",
              t[0].column);
     const std::string file = find_program(text, t[0].column);
-    if (approach_) throw ProgramError("approach_without_contour", "APPR needs a contour element after it", {approach_->line, 0});
+    if (approach_) throw ProgramError(code::approach_without_contour, "APPR needs a contour element after it", {approach_->line, 0});
     if (side_ != 0) {  // PGM CALL cancels radius compensation
         settle_pending();
         if (pending_) {
@@ -573,7 +574,7 @@ void Interp::call_program(Tokens t, int depth) {
         sub = std::make_shared<const Program>(parse(f.text, file, /*strict=*/false));
     }
     if (sub->inch != prog_.inch)
-        fail("call_pgm_units", "CALL PGM " + text + ": the called program is in " + (sub->inch ? "INCH" : "MM") +
+        fail(code::call_pgm_units, "CALL PGM " + text + ": the called program is in " + (sub->inch ? "INCH" : "MM") +
                                    ", the calling program in " + (prog_.inch ? "INCH" : "MM") +
                                    " (not supported by toolcomp)",
              t[0].column);

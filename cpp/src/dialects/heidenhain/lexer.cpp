@@ -1,4 +1,5 @@
 #include "toolcomp/dialects/heidenhain/lexer.hpp"
+#include "toolcomp/program/codes.hpp"
 #include "toolcomp/program/decimal.hpp"
 #include "toolcomp/program/text.hpp"
 #include "words.hpp"
@@ -95,7 +96,7 @@ private:
     void quoted() {
         int column = col();
         std::size_t end = s_.find('"', i_ + 1);
-        if (end == std::string_view::npos) fail("unclosed_name", "Unclosed quotation mark", column);
+        if (end == std::string_view::npos) fail(code::unclosed_name, "Unclosed quotation mark", column);
         Token t;
         t.text = std::string(s_.substr(i_ + 1, end - i_ - 1));
         t.column = column;
@@ -133,12 +134,12 @@ private:
             ++i_;
             std::string digits;
             while (i_ < s_.size() && ascii_digit(s_[i_])) digits.push_back(s_[i_++]);
-            if (digits.size() > 5) fail("bad_word", "Q parameter number Q" + digits + " out of range", col());
+            if (digits.size() > 5) fail(code::bad_word, "Q parameter number Q" + digits + " out of range", col());
             t.param = std::stoi(digits) + 1;  // the Q number + 1: Q0 is a parameter too
             t.value = sign;
             t.has_value = true;
             if (i_ < s_.size() && !blank(s_[i_]) && s_[i_] != ';')
-                fail("bad_word", "Unexpected character '" + std::string(1, s_[i_]) + "'", col());
+                fail(code::bad_word, "Unexpected character '" + std::string(1, s_[i_]) + "'", col());
             return;
         }
         const std::size_t num_begin = i_;
@@ -155,17 +156,17 @@ private:
         if ((t.is("REP") || t.key.empty()) && i_ < s_.size() && s_[i_] == '/')  // REP 2/2: the count of passes left
             while (i_ < s_.size() && !blank(s_[i_])) ++i_;
         if (i_ < s_.size() && !blank(s_[i_]) && s_[i_] != ';')
-            fail("bad_word", "Unexpected character '" + std::string(1, s_[i_]) + "'", col());
+            fail(code::bad_word, "Unexpected character '" + std::string(1, s_[i_]) + "'", col());
         if (!num.empty()) {
             double v = 0;
-            if (!parse_decimal(num, v)) fail("bad_number_format", "Bad number '" + std::string(num) + "'", t.column);
+            if (!parse_decimal(num, v)) fail(code::bad_number_format, "Bad number '" + std::string(num) + "'", t.column);
             t.value = sign * v;
             t.has_value = true;
         } else if (have_sign) {
             t.value = sign;
             t.sign_only = true;
         } else if (t.key.empty()) {
-            fail("bad_word", "Unexpected character", t.column);
+            fail(code::bad_word, "Unexpected character", t.column);
         }
     }
 
@@ -212,14 +213,14 @@ void check_frame(Program& prog, bool ended, bool strict) {
             break;
         }
     if (!first) {
-        e.emplace("begin_pgm_missing", "The program does not start with BEGIN PGM (no blocks)",
+        e.emplace(code::begin_pgm_missing, "The program does not start with BEGIN PGM (no blocks)",
                   SourcePos{prog.size() ? prog.blocks().front().line : 1, 1});
     } else {
         auto t = prog.tokens(*first);
         if (t.size() < 2 || !t[0].is("BEGIN") || !t[1].is("PGM"))
-            e.emplace("begin_pgm_missing", "The program does not start with BEGIN PGM", SourcePos{first->line, t[0].column});
+            e.emplace(code::begin_pgm_missing, "The program does not start with BEGIN PGM", SourcePos{first->line, t[0].column});
         else if (!ended)
-            e.emplace("end_pgm_missing", "END PGM missing: the program ends without END PGM (cut short?)",
+            e.emplace(code::end_pgm_missing, "END PGM missing: the program ends without END PGM (cut short?)",
                       SourcePos{prog.last_line, 1});
     }
     if (!e) return;

@@ -2,6 +2,7 @@
 // does not know (a typo, a word of another function) would otherwise be ignored silently,
 // and of an axis given twice the last value would win.
 #include "words.hpp"
+#include "toolcomp/program/codes.hpp"
 
 #include <array>
 #include <optional>
@@ -112,13 +113,13 @@ void check_path_words(std::span<const Token> t, int line) {
     for (std::size_t i = f->first; i < t.size(); ++i) {
         const Token& k = t[i];
         if (const char* why = unsupported(k.key))
-            throw ParseError("unsupported_word", k.key + ": " + why, {line, k.column});
+            throw ParseError(code::unsupported_word, k.key + ": " + why, {line, k.column});
         const auto kind = kind_of(k);
         if (!kind || !(kind->group & f->groups))
-            throw ParseError("bad_word", "Word " + spelled(k) + " is not allowed in a " + fn() + " block", {line, k.column});
+            throw ParseError(code::bad_word, "Word " + spelled(k) + " is not allowed in a " + fn() + " block", {line, k.column});
         if (kind->slot < 0) continue;
         if (seen[static_cast<std::size_t>(kind->slot)]++)
-            throw ParseError("bad_word", "Word " + spelled(k) + " given twice in one " + fn() + " block (or with its " +
+            throw ParseError(code::bad_word, "Word " + spelled(k) + " given twice in one " + fn() + " block (or with its " +
                                              "absolute / incremental twin)",
                              {line, k.column});
     }

@@ -1,4 +1,5 @@
 #include "block_words.hpp"
+#include "toolcomp/program/codes.hpp"
 
 #include <climits>
 #include <cmath>
@@ -30,9 +31,9 @@ int linuxcnc_g_code(const BlockWords& bw, const Word& w) {
     if (v10 - code > 0.999)
         code = std::ceil(v10);
     else if (v10 - code > 0.001)
-        fail("g_code_out_of_range", "G-code out of range", bw.line, w.column);
-    if (code > 999) fail("g_code_out_of_range", "G-code out of range", bw.line, w.column);
-    if (code < 0) fail("negative_g_code", "Negative g code used", bw.line, w.column);
+        fail(code::g_code_out_of_range, "G-code out of range", bw.line, w.column);
+    if (code > 999) fail(code::g_code_out_of_range, "G-code out of range", bw.line, w.column);
+    if (code < 0) fail(code::negative_g_code, "Negative g code used", bw.line, w.column);
     return static_cast<int>(code);
 }
 
@@ -42,15 +43,15 @@ void add_g(BlockWords& bw, const Word& w, Dialect d, const ControlProfile& profi
         code = linuxcnc_g_code(bw, w);
     } else {
         double v10 = w.value * 10;
-        if (w.value < 0) fail("negative_g_code", "Negative g code used", bw.line, w.column);
+        if (w.value < 0) fail(code::negative_g_code, "Negative g code used", bw.line, w.column);
         code = int_value(v10);
-        if (code > 9999) fail("g_code_out_of_range", "G-code out of range", bw.line, w.column);
-        if (std::fabs(v10 - code) > 1e-6) fail("unknown_g_code", "Unknown g code used", bw.line, w.column);
+        if (code > 9999) fail(code::g_code_out_of_range, "G-code out of range", bw.line, w.column);
+        if (std::fabs(v10 - code) > 1e-6) fail(code::unknown_g_code, "Unknown g code used", bw.line, w.column);
     }
     int group = g_group(code, d);
-    if (group == kUnknown) fail("unknown_g_code", "Unknown g code used", bw.line, w.column);
+    if (group == kUnknown) fail(code::unknown_g_code, "Unknown g code used", bw.line, w.column);
     if (group == kUnsupported)
-        fail("unsupported_g_code", code_text('G', code) + " is not supported by toolcomp", bw.line, w.column);
+        fail(code::unsupported_g_code, code_text('G', code) + " is not supported by toolcomp", bw.line, w.column);
     if (bw.g[group] >= 0) {
         // LinuxCNC lets G80 stand beside another motion code; the other code wins. On Fanuc
         // the last code of a modal group in a block is the one that counts.
@@ -59,7 +60,7 @@ void add_g(BlockWords& bw, const Word& w, Dialect d, const ControlProfile& profi
         } else if (group == g_motion && (code == 800 || bw.g[group] == 800)) {
             if (code == 800) return;
         } else {
-            fail("modal_group_conflict", "Two g codes used from same modal group", bw.line, w.column);
+            fail(code::modal_group_conflict, "Two g codes used from same modal group", bw.line, w.column);
         }
     }
     bw.g[group] = code;
@@ -70,28 +71,28 @@ void add_g(BlockWords& bw, const Word& w, Dialect d, const ControlProfile& profi
 void add_m(BlockWords& bw, const Word& w, Dialect d, const ControlProfile& profile, const Machine* machine,
            std::uint32_t& taken) {
     // Whole first, then the sign of the integer it reads as (M-0.00005 is M0 on LinuxCNC).
-    if (!whole_word(w.value, profile.integer_word_slack)) fail("non_integer_value", "Non integer value for integer", bw.line, w.column);
+    if (!whole_word(w.value, profile.integer_word_slack)) fail(code::non_integer_value, "Non integer value for integer", bw.line, w.column);
     int m = int_value(w.value);
-    if (m < 0) fail("negative_m_code", "Negative m code used", bw.line, w.column);
+    if (m < 0) fail(code::negative_m_code, "Negative m code used", bw.line, w.column);
     if (machine)
         if (const MachineCode* code = machine->m_code(m)) {
             for (char c : code->words) taken |= letter_bit(c);
-            if (++bw.m_count > 4) fail("too_many_m_codes", "Too many m codes on line", bw.line, w.column);
+            if (++bw.m_count > 4) fail(code::too_many_m_codes, "Too many m codes on line", bw.line, w.column);
             m = standard_m_code(code->action);
             if (m < 0) return;  // a builder code without effect on the path
             --bw.m_count;        // counted again below
         }
     if (m > profile.max_m_code && profile.max_m_code < 99999)
-        fail("m_code_out_of_range", "M-code greater than " + std::to_string(profile.max_m_code) + ": M" + std::to_string(m),
+        fail(code::m_code_out_of_range, "M-code greater than " + std::to_string(profile.max_m_code) + ": M" + std::to_string(m),
              bw.line, w.column);
-    if (m > 99999) fail("unknown_m_code", "Unknown m code used: M" + std::to_string(m), bw.line, w.column);
+    if (m > 99999) fail(code::unknown_m_code, "Unknown m code used: M" + std::to_string(m), bw.line, w.column);
     int group = m_group(m * 10, d);
-    if (group == kUnknown) fail("unknown_m_code", "Unknown m code used: M" + std::to_string(m), bw.line, w.column);
+    if (group == kUnknown) fail(code::unknown_m_code, "Unknown m code used: M" + std::to_string(m), bw.line, w.column);
     if (group == kUnsupported)
-        fail("unsupported_m_code", "M" + std::to_string(m) + " is not supported by toolcomp", bw.line, w.column);
-    if (++bw.m_count > 4) fail("too_many_m_codes", "Too many m codes on line", bw.line, w.column);
+        fail(code::unsupported_m_code, "M" + std::to_string(m) + " is not supported by toolcomp", bw.line, w.column);
+    if (++bw.m_count > 4) fail(code::too_many_m_codes, "Too many m codes on line", bw.line, w.column);
     if (bw.m[group] >= 0)
-        fail("modal_group_conflict", "Two m codes used from same modal group", bw.line, w.column);
+        fail(code::modal_group_conflict, "Two m codes used from same modal group", bw.line, w.column);
     bw.m[group] = m * 10;
     bw.m_column[group] = w.column;
 }
@@ -121,21 +122,21 @@ BlockWords collect_words(std::span<const Word> words, int line, Dialect dialect,
         } else {
             if (bw.has(w.letter)) {
                 char lower = ascii_lower(w.letter);
-                fail("multiple_words", std::string("Multiple ") + lower + " words on one line", bw.line, w.column);
+                fail(code::multiple_words, std::string("Multiple ") + lower + " words on one line", bw.line, w.column);
             }
             if (w.letter == 'T') {
                 if (!whole_word(w.value, slack))
-                    fail("non_integer_value", "Non integer value for integer", bw.line, w.column);
+                    fail(code::non_integer_value, "Non integer value for integer", bw.line, w.column);
                 if (int_value(w.value) < 0)
-                    fail("negative_tool", "Negative tool id (tool not found)", bw.line, w.column);
+                    fail(code::negative_tool, "Negative tool id (tool not found)", bw.line, w.column);
             }
             if (w.letter == 'L' && !whole_word(w.value, slack))
-                fail("non_integer_value", "Non integer value for integer", bw.line, w.column);
+                fail(code::non_integer_value, "Non integer value for integer", bw.line, w.column);
             if (w.letter == 'L' && int_value(w.value) < 0 && profile.negative_l_refused)
-                fail("negative_l_word", "Negative l word used", bw.line, w.column);
-            if (w.letter == 'F' && w.value < 0) fail("negative_feed", "Negative f word used", bw.line, w.column);
+                fail(code::negative_l_word, "Negative l word used", bw.line, w.column);
+            if (w.letter == 'F' && w.value < 0) fail(code::negative_feed, "Negative f word used", bw.line, w.column);
             if (w.letter == 'S' && w.value < 0)
-                fail("negative_spindle_speed", "Negative spindle speed used", bw.line, w.column);
+                fail(code::negative_spindle_speed, "Negative spindle speed used", bw.line, w.column);
             bw.set(w.letter, w.value, w.column);
         }
     }

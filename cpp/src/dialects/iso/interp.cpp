@@ -3,6 +3,7 @@
 // diameter mode, radius comp, length comp, coordinate system, path control, distance
 // modes, retract mode, G10/G28/G30/G92, motion, program stop/end.
 #include <cctype>
+#include "toolcomp/program/codes.hpp"
 #include <cmath>
 #include <stdexcept>
 
@@ -128,11 +129,11 @@ void Interp::info(const char* code, const std::string& msg, int column) {
 
 void Interp::count_block(int column) {
     if (++executed_ > profile_.block_limit)
-        fail("block_limit", "More than " + std::to_string(profile_.block_limit) +
+        fail(code::block_limit, "More than " + std::to_string(profile_.block_limit) +
                                 " blocks executed, canned cycle repeats included (ControlProfile.block_limit)",
              column);
     if (idle_.too_long(moves_, profile_.no_motion_limit)) [[unlikely]]
-        fail("no_progress", no_progress_text(profile_.no_motion_limit), column);
+        fail(code::no_progress, no_progress_text(profile_.no_motion_limit), column);
 }
 
 void Interp::run() {
@@ -172,7 +173,7 @@ void Interp::run_blocks() {
             line_ = p.last_line;
             file_ = f.at->file;
             if (const auto& e = p.syntax_error) throw ParseError(e->code, e->message, e->pos);
-            fail("subprogram_end_missing", f.kind == Frame::o_call ? "File ended inside a subroutine (no endsub)"
+            fail(code::subprogram_end_missing, f.kind == Frame::o_call ? "File ended inside a subroutine (no endsub)"
                                                                    : "Subprogram file ended without M99");
         }
         const std::size_t k = f.pc++;
@@ -244,8 +245,8 @@ void Interp::run_blocks() {
         // LinuxCNC refuses a file that simply stops: it must end with M2/M30 or '%'.
         line_ = last.last_line;
         if (last.percent_open && !last.percent_closed)
-            fail("no_program_end", "File ended with no percent sign");
-        if (!last.percent_open) fail("no_program_end", "File ended with no percent sign or program end");
+            fail(code::no_program_end, "File ended with no percent sign");
+        if (!last.percent_open) fail(code::no_program_end, "File ended with no percent sign or program end");
     }
 }
 
@@ -262,24 +263,24 @@ void Interp::check_words(const BlockWords& bw, int motion_to_be) {
     if (bw.has('D')) {
         int rc = bw.g[g_radius_comp];
         if (!(rc == 410 || rc == 411 || rc == 420 || rc == 421 || bw.g[g_spindle_mode] == 960))
-            fail("unused_word", "D word with no G41, G41.1, G42, G42.1, G71, G71.1, G71.2 or G96 to use it", col('D'));
+            fail(code::unused_word, "D word with no G41, G41.1, G42, G42.1, G71, G71.1, G71.2 or G96 to use it", col('D'));
     }
     const bool io = bw.m[m_io] >= 0;  // M62-M68 take P, Q and E
-    if (bw.has('E') && !(io && bw.m[m_io] >= 660)) fail("unused_word", "E word with no G70, G76, M66, M67 or M68 to use it", col('E'));
+    if (bw.has('E') && !(io && bw.m[m_io] >= 660)) fail(code::unused_word, "E word with no G70, G76, M66, M67 or M68 to use it", col('E'));
     if (bw.has('H')) {
         int lc = bw.g[g_length_comp];
-        if (!(lc == 430 || lc == 432 || lc == 440)) fail("unused_word", "H word with no G43 or G76 to use it", col('H'));
+        if (!(lc == 430 || lc == 432 || lc == 440)) fail(code::unused_word, "H word with no G43 or G76 to use it", col('H'));
     }
     const bool exit_dir = bw.g[g_radius_comp] == 400 && profile_.radius.exit_direction_words;
     if (bw.has('I') && !(arc || g87 || exit_dir || g0 == 100))
-        fail("unused_word", "I word with no G2, G3, G5, G5.1, G10, G33.1, G76, or G87 to use it", col('I'));
+        fail(code::unused_word, "I word with no G2, G3, G5, G5.1, G10, G33.1, G76, or G87 to use it", col('I'));
     if (bw.has('J') && !(arc || g87 || exit_dir || g0 == 100))
-        fail("unused_word", "J word with no G2, G3, G5, G5.1, G10, G76 or G87 to use it", col('J'));
-    if (bw.has('K') && !(arc || g87 || exit_dir)) fail("unused_word", "K word with no G2, G3, G33, G33.1, G76, or G87 to use it", col('K'));
+        fail(code::unused_word, "J word with no G2, G3, G5, G5.1, G10, G76 or G87 to use it", col('J'));
+    if (bw.has('K') && !(arc || g87 || exit_dir)) fail(code::unused_word, "K word with no G2, G3, G33, G33.1, G76, or G87 to use it", col('K'));
     if (bw.has('L')) {
         int rc = bw.g[g_radius_comp];
         if (!(g0 == 100 || cycle_block || rc >= 410))  // G41, G41.1, G42, G42.1
-            fail("unused_word",
+            fail(code::unused_word,
                  "L word with no G10, cutter compensation, canned cycle, digital/analog input, M98 or NURBS code",
                  col('L'));
     }
@@ -289,7 +290,7 @@ void Interp::check_words(const BlockWords& bw, int motion_to_be) {
                   motion_to_be == 860 || motion_to_be == 880 || motion_to_be == 890 ||
                   (m >= 500 && m <= 530);
         if (!ok)
-            fail("unused_word",
+            fail(code::unused_word,
                  "P word with no G2 G3 G4 G10 G64 G5 G5.2 G76 G82 G86 G88 G89 or M50 M51 M52 M53 M62 M63 M64 "
                  "M65 M66 M98 or user M code to use it",
                  col('P'));
@@ -298,12 +299,12 @@ void Interp::check_words(const BlockWords& bw, int motion_to_be) {
         bool ok = (io && bw.m[m_io] >= 660) || g0 == 100 || bw.g[g_path_control] == 640 || motion_to_be == 730 || motion_to_be == 830 ||
                   bw.m[m_tool_change] == 610;
         if (!ok)
-            fail("unused_word",
+            fail(code::unused_word,
                  "Q word with no G5, G10, G64, G73, G76, G83, M19, M66, M67, M68 or user M code that uses it",
                  col('Q'));
     }
     if (bw.has('R') && !(arc || cycle_block || g0 == 100))
-        fail("unused_word", "R word with no g code that uses it", col('R'));
+        fail(code::unused_word, "R word with no g code that uses it", col('R'));
 }
 
 // Fanuc G04 X1.5 / U1.5 (lathes): the dwell in seconds, the X or U word not a move. Only one
@@ -312,7 +313,7 @@ void Interp::fanuc_dwell(BlockWords& bw) const {
     for (char c : {'X', 'U'}) {
         if (!bw.has(c) || (c == 'U' && !profile_.incremental_uw)) continue;  // U: lathes only
         if (bw.has('P') || (c == 'U' && bw.has('X')))
-            fail("dwell_twice", "G4 with two dwell times (X, U or P): give it once", bw[c].column);
+            fail(code::dwell_twice, "G4 with two dwell times (X, U or P): give it once", bw[c].column);
         bw.set('P', bw[c].value * 1000, bw[c].column);  // P is in milliseconds
         bw.remove(c);
     }
@@ -325,23 +326,23 @@ void Interp::system_a_codes(const BlockWords& bw) const {
         const char *error, *message;
     };
     static constexpr Refused kRefused[] = {
-        {g_distance, 900, "unsupported_g_code", "G90 is the turning cycle in G-code system A: not supported by toolcomp"},
-        {g_distance, 910, "unknown_g_code", "G91 does not exist in G-code system A (U and W are the incremental words)"},
-        {g_nonmodal, 920, "unsupported_g_code", "G92 is the threading cycle in G-code system A: not supported by toolcomp"},
-        {g_feed_mode, 940, "unsupported_g_code", "G94 is the facing cycle in G-code system A: not supported by toolcomp"},
+        {g_distance, 900, code::unsupported_g_code, "G90 is the turning cycle in G-code system A: not supported by toolcomp"},
+        {g_distance, 910, code::unknown_g_code, "G91 does not exist in G-code system A (U and W are the incremental words)"},
+        {g_nonmodal, 920, code::unsupported_g_code, "G92 is the threading cycle in G-code system A: not supported by toolcomp"},
+        {g_feed_mode, 940, code::unsupported_g_code, "G94 is the facing cycle in G-code system A: not supported by toolcomp"},
         // The mill's canned cycles mean other cycles on a Fanuc lathe (G73 pattern repeating,
         // G74 end face peck drilling, G83-G89 face and side drilling with live tools).
-        {g_motion, 730, "unsupported_g_code", "G73 is the pattern repeating cycle on a lathe: not supported by toolcomp"},
-        {g_motion, 740, "unsupported_g_code", "G74 is the end face peck drilling cycle on a lathe: not supported by toolcomp"},
-        {g_motion, 810, "unsupported_g_code", "G81 is a lathe drilling cycle here: not supported by toolcomp"},
-        {g_motion, 820, "unsupported_g_code", "G82 is a lathe drilling cycle here: not supported by toolcomp"},
-        {g_motion, 830, "unsupported_g_code", "G83 is the face drilling cycle on a lathe: not supported by toolcomp"},
-        {g_motion, 840, "unsupported_g_code", "G84 is the face tapping cycle on a lathe: not supported by toolcomp"},
-        {g_motion, 850, "unsupported_g_code", "G85 is the face boring cycle on a lathe: not supported by toolcomp"},
-        {g_motion, 860, "unsupported_g_code", "G86 is a lathe cycle here: not supported by toolcomp"},
-        {g_motion, 870, "unsupported_g_code", "G87 is the side drilling cycle on a lathe: not supported by toolcomp"},
-        {g_motion, 880, "unsupported_g_code", "G88 is the side tapping cycle on a lathe: not supported by toolcomp"},
-        {g_motion, 890, "unsupported_g_code", "G89 is the side boring cycle on a lathe: not supported by toolcomp"},
+        {g_motion, 730, code::unsupported_g_code, "G73 is the pattern repeating cycle on a lathe: not supported by toolcomp"},
+        {g_motion, 740, code::unsupported_g_code, "G74 is the end face peck drilling cycle on a lathe: not supported by toolcomp"},
+        {g_motion, 810, code::unsupported_g_code, "G81 is a lathe drilling cycle here: not supported by toolcomp"},
+        {g_motion, 820, code::unsupported_g_code, "G82 is a lathe drilling cycle here: not supported by toolcomp"},
+        {g_motion, 830, code::unsupported_g_code, "G83 is the face drilling cycle on a lathe: not supported by toolcomp"},
+        {g_motion, 840, code::unsupported_g_code, "G84 is the face tapping cycle on a lathe: not supported by toolcomp"},
+        {g_motion, 850, code::unsupported_g_code, "G85 is the face boring cycle on a lathe: not supported by toolcomp"},
+        {g_motion, 860, code::unsupported_g_code, "G86 is a lathe cycle here: not supported by toolcomp"},
+        {g_motion, 870, code::unsupported_g_code, "G87 is the side drilling cycle on a lathe: not supported by toolcomp"},
+        {g_motion, 880, code::unsupported_g_code, "G88 is the side tapping cycle on a lathe: not supported by toolcomp"},
+        {g_motion, 890, code::unsupported_g_code, "G89 is the side boring cycle on a lathe: not supported by toolcomp"},
     };
     for (const Refused& r : kRefused)
         if (bw.g[r.group] == r.code) fail(r.error, r.message, bw.g_column[r.group]);
@@ -359,36 +360,36 @@ bool Interp::execute(const BlockWords& bw) {
     const bool bare = profile_.bare_motion_codes;
     if (motion_code >= 0 && motion_code != 800) {
         if (bare ? uses_axes_group0(g0) : data_axes && axes)
-            fail("two_axis_codes", "Cannot use two g codes that both use axis values", bw.g_column[g_nonmodal]);
+            fail(code::two_axis_codes, "Cannot use two g codes that both use axis values", bw.g_column[g_nonmodal]);
         if (bare && !axes && motion_code != 0 && motion_code != 10 && motion_code != 20 && motion_code != 30)
-            fail("axes_missing", "All axes missing with motion code", bw.g_column[g_motion]);
+            fail(code::axes_missing, "All axes missing with motion code", bw.g_column[g_motion]);
     }
-    if (motion_code == 800 && axes) fail("axis_with_g80", "Cannot use axis values with g80", bw.axis_column());
+    if (motion_code == 800 && axes) fail(code::axis_with_g80, "Cannot use axis values with g80", bw.axis_column());
     int motion_to_be = motion_code;
     if (motion_to_be < 0 && axes && !data_axes) motion_to_be = st_.motion;
     if (bare && motion_to_be < 0 && !axes && (st_.motion == 20 || st_.motion == 30) &&
         (bw.has('I') || bw.has('J') || bw.has('K')))
         motion_to_be = st_.motion;  // "I1" alone under G2: an arc
     if (motion_to_be == 800 && axes && !data_axes)
-        fail("axis_without_motion", "Cannot use axis values without a g code that uses them", bw.axis_column());
+        fail(code::axis_without_motion, "Cannot use axis values without a g code that uses them", bw.axis_column());
     if ((motion_code == 20 || motion_code == 30) && g0 == 40)
-        fail("g4_with_arc", "G4 not allowed with G2 or G3 because they both use P", bw.g_column[g_nonmodal]);
+        fail(code::g4_with_arc, "G4 not allowed with G2 or G3 because they both use P", bw.g_column[g_nonmodal]);
     if (g0 == 530) {
         if (!(motion_to_be == 0 || motion_to_be == 10))
-            fail("g53_motion", "Must use g0 or g1 with g53", bw.g_column[g_nonmodal]);
+            fail(code::g53_motion, "Must use g0 or g1 with g53", bw.g_column[g_nonmodal]);
         bool incremental = bw.g[g_distance] >= 0 ? bw.g[g_distance] == 910 : st_.incremental;
-        if (incremental) fail("g53_incremental", "Cannot use g53 incremental", bw.g_column[g_nonmodal]);
+        if (incremental) fail(code::g53_incremental, "Cannot use g53 incremental", bw.g_column[g_nonmodal]);
     }
-    if ((g0 == 920 || g0 == 520) && !axes) fail("g92_no_axes", "All axes missing with g52 or g92", bw.g_column[g_nonmodal]);
+    if ((g0 == 920 || g0 == 520) && !axes) fail(code::g92_no_axes, "All axes missing with g52 or g92", bw.g_column[g_nonmodal]);
     check_words(bw, motion_to_be);
     if (bw.g[g_spindle_mode] == 960 && !bw.has('S') && profile_.g96_needs_s)
-        fail("g96_s_missing", "S word missing with G96", bw.g_column[g_spindle_mode]);
+        fail(code::g96_s_missing, "S word missing with G96", bw.g_column[g_spindle_mode]);
     if (bw.has('U') || bw.has('V') || bw.has('W')) {
         char l = bw.has('U') ? 'U' : bw.has('V') ? 'V' : 'W';
         if (!profile_.incremental_uw || l == 'V')
-            fail("unsupported_axis", std::string(1, l) + " axis words are not supported by toolcomp", bw[l].column);
+            fail(code::unsupported_axis, std::string(1, l) + " axis words are not supported by toolcomp", bw[l].column);
         if ((bw.has('U') && bw.has('X')) || (bw.has('W') && bw.has('Z')))
-            fail("absolute_and_incremental", "X and U (or Z and W) in one block", bw[l].column);
+            fail(code::absolute_and_incremental, "X and U (or Z and W) in one block", bw[l].column);
     }
     // A plain move (no G code but its motion, no M code) has none of the codes checked and set
     // below but the motion group's.
@@ -407,31 +408,31 @@ bool Interp::execute(const BlockWords& bw) {
                              : io == 660 ? "Cannot wait for digital input with cutter radius compensation on"
                              : io == 670 ? "Cannot set motion analog output with cutter radius compensation on"
                                          : "Cannot set auxiliary analog output with cutter radius compensation on";
-            fail("comp_io", what, bw.m_column[m_io]);
+            fail(code::comp_io, what, bw.m_column[m_io]);
         }
         if (bw.m[m_tool_change] == 60)
-            fail("comp_tool_change", "Cannot change tools with cutter radius compensation on", bw.m_column[m_tool_change]);
+            fail(code::comp_tool_change, "Cannot change tools with cutter radius compensation on", bw.m_column[m_tool_change]);
         // LinuxCNC 2.9 takes M61 here and loses the move held for the next corner (its
         // position is read back after a tool change): a wrong path, refused instead.
         if (bw.m[m_tool_change] == 610)
-            fail("comp_m61",
+            fail(code::comp_m61,
                  "Cannot set the tool number (M61) with cutter radius compensation on: LinuxCNC would lose the "
                  "compensated move it holds",
                  bw.m_column[m_tool_change]);
         if (int ov = bw.m[m_override]; ov >= 0) {
             bool enable = ov == 480 || (ov >= 500 && (!bw.has('P') || bw['P'].value != 0));
-            fail("comp_overrides",
+            fail(code::comp_overrides,
                  enable ? "Cannot enable overrides with cutter radius compensation on"
                         : "Cannot disable overrides with cutter radius compensation on",
                  bw.m_column[m_override]);
         }
         if (bw.g[g_plane] >= 0 && bw.g[g_plane] != (st_.plane == Plane::xy ? 170 : st_.plane == Plane::zx ? 180 : 190))
-            fail("comp_plane_change", "Cannot change planes with cutter radius compensation on", bw.g_column[g_plane]);
+            fail(code::comp_plane_change, "Cannot change planes with cutter radius compensation on", bw.g_column[g_plane]);
     }
     if (comp_after) {
         if (modal) {
             if (bw.g[g_length_comp] >= 0)
-                fail("comp_tool_offset", "Cannot change tool offset with cutter radius compensation on",
+                fail(code::comp_tool_offset, "Cannot change tool offset with cutter radius compensation on",
                      bw.g_column[g_length_comp]);
             const bool axis_offsets = g0 == 920 || g0 == 921 || g0 == 922 || g0 == 923 || g0 == 520;
             if ((axis_offsets || bw.g[g_coord_system] >= 0) && profile_.radius.offset_change_reenters) {
@@ -442,41 +443,41 @@ bool Interp::execute(const BlockWords& bw) {
                     comp_moved_ = false;
                 }
             } else if (bw.g[g_coord_system] >= 0) {
-                fail("comp_coord_system", "Cannot change coordinate systems with cutter radius compensation on",
+                fail(code::comp_coord_system, "Cannot change coordinate systems with cutter radius compensation on",
                      bw.g_column[g_coord_system]);
             }
             if (bw.g[g_path_control] >= 0)
-                fail("comp_control_mode", "Cannot change control mode with cutter radius compensation on",
+                fail(code::comp_control_mode, "Cannot change control mode with cutter radius compensation on",
                      bw.g_column[g_path_control]);
             if (bw.g[g_retract] >= 0)
-                fail("comp_retract_mode", "Cannot change retract mode with cutter radius compensation on",
+                fail(code::comp_retract_mode, "Cannot change retract mode with cutter radius compensation on",
                      bw.g_column[g_retract]);
             if (g0 == 100) {
                 if (!profile_.radius.messages.g10.empty())
-                    fail("comp_g10", profile_.radius.messages.g10, bw.g_column[g_nonmodal]);
+                    fail(code::comp_g10, profile_.radius.messages.g10, bw.g_column[g_nonmodal]);
                 // LinuxCNC refuses G10 L2/L20 of the active system (tool table edits pass)
                 const int l = bw.has('L') ? int_value(bw['L'].value) : -1;
                 const int p = bw.has('P') ? int_value_truncated(bw['P'].value) : -1;
                 if ((l == 2 || l == 20) && (p == 0 || p == st_.coord_system))
-                    fail("comp_g10", "Cannot change the active coordinate system with cutter radius compensation on",
+                    fail(code::comp_g10, "Cannot change the active coordinate system with cutter radius compensation on",
                          bw.g_column[g_nonmodal]);
             }
             if (g0 == 280 || g0 == 300)
-                fail("comp_home", "Cannot use g28 or g30 with cutter radius comp", bw.g_column[g_nonmodal]);
+                fail(code::comp_home, "Cannot use g28 or g30 with cutter radius comp", bw.g_column[g_nonmodal]);
             if (axis_offsets && !profile_.radius.offset_change_reenters)
-                fail("comp_axis_offsets", "Cannot change axis offsets with cutter radius comp", bw.g_column[g_nonmodal]);
+                fail(code::comp_axis_offsets, "Cannot change axis offsets with cutter radius comp", bw.g_column[g_nonmodal]);
         }
         if (motion_code >= 382 && motion_code <= 385)
-            fail("comp_probe", "Cannot probe with cutter radius comp on", bw.g_column[g_motion]);
+            fail(code::comp_probe, "Cannot probe with cutter radius comp on", bw.g_column[g_motion]);
     }
 
     // Real codes of the control that toolcomp does not run (after the control's own refusals
     // above, which come first on the control too).
     if (motion_code >= 382 && motion_code <= 385)
-        fail("unsupported_g_code", "G38." + std::to_string(motion_code - 380) + " is not supported by toolcomp",
+        fail(code::unsupported_g_code, "G38." + std::to_string(motion_code - 380) + " is not supported by toolcomp",
              bw.g_column[g_motion]);
     if (int io = bw.m[m_io]; io >= 0)
-        fail("unsupported_m_code", "M" + std::to_string(io / 10) + " is not supported by toolcomp", bw.m_column[m_io]);
+        fail(code::unsupported_m_code, "M" + std::to_string(io / 10) + " is not supported by toolcomp", bw.m_column[m_io]);
 
     // 2-4: feed mode, feed, speed
     if (modal) {
@@ -514,7 +515,7 @@ bool Interp::execute(const BlockWords& bw) {
     // 10: dwell
     // LinuxCNC keeps -1 for a missing P and reads any other value, negative ones too.
     if (g0 == 40 && (!bw.has('P') || (profile_.dwell_negative_p ? bw['P'].value == -1 : bw['P'].value < 0)))
-        fail("dwell_missing", "Dwell time missing with g4", bw.g_column[g_nonmodal]);
+        fail(code::dwell_missing, "Dwell time missing with g4", bw.g_column[g_nonmodal]);
     if (modal) {
         // 11-12: plane, units (an F in the same block was read in the old units, as LinuxCNC does)
         if (bw.g[g_units] >= 0) set_units(bw.g[g_units] == 200);
@@ -533,7 +534,7 @@ bool Interp::execute(const BlockWords& bw) {
         if (bw.g[g_path_control] >= 0) {
             st_.path_control = bw.g[g_path_control];
             if (st_.path_control == 640 && !warned_blending_) {  // once a run
-                info("blending_not_modelled",
+                info(code::blending_not_modelled,
                      "G64 blending is a tolerance of the executed path: toolcomp returns the programmed path",
                      bw.g_column[g_path_control]);
                 warned_blending_ = true;

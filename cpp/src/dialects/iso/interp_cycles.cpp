@@ -3,6 +3,7 @@
 // the XY move at the current level, the plunge to R, the cycle's own moves, the retract to
 // the clearance level (G98: the initial level, G99: R), repeated L times.
 #include <algorithm>
+#include "toolcomp/program/codes.hpp"
 #include <cmath>
 
 #include "interp.hpp"
@@ -19,30 +20,30 @@ void Interp::cycle(const BlockWords& bw, int code) {
 
     for (char c : {'A', 'B', 'C'})
         if (bw.has(c))
-            fail("cycle_rotary", std::string("Cannot put ") + (c == 'A' ? "an " : "a ") +
+            fail(code::cycle_rotary, std::string("Cannot put ") + (c == 'A' ? "an " : "a ") +
                                      static_cast<char>(c - 'A' + 'a') + " in canned cycle", bw[c].column);
     // LinuxCNC's order: the feed, the feed mode, compensation, R, L, the depth, R against the
     // depth (below), then each cycle's own words. P and Q of -1 are LinuxCNC's "no word"
     // (its block keeps -1 for a missing P or Q); other negative values are read as given.
-    if (feed_ <= 0) fail("zero_feed", "Cannot feed with zero feed rate");
-    if (st_.feed_mode == 930) fail("cycle_inverse_time", "Cannot use inverse time feed with canned cycles");
+    if (feed_ <= 0) fail(code::zero_feed, "Cannot feed with zero feed rate");
+    if (st_.feed_mode == 930) fail(code::cycle_inverse_time, "Cannot use inverse time feed with canned cycles");
     if (comp_on())
-        fail("comp_canned_cycle", "Cannot use canned cycles with cutter compensation on",
+        fail(code::comp_canned_cycle, "Cannot use canned cycles with cutter compensation on",
              bw.g[g_motion] >= 0 ? bw.g_column[g_motion] : bw.axis_column());
     if (bw.has('R'))
         cyc_.r = bw['R'].value;
     else if (!continuing)
-        fail("cycle_r_missing", "R clearance plane unspecified in cycle");
+        fail(code::cycle_r_missing, "R clearance plane unspecified in cycle");
     int repeats = 1;
     if (bw.has('L')) {
         repeats = int_value(bw['L'].value);
-        if (repeats < 0) fail("negative_l", "Negative l word used", bw['L'].column);
-        if (repeats == 0) fail("zero_repeats", "Cannot do zero repeats of cycle", bw['L'].column);
+        if (repeats < 0) fail(code::negative_l, "Negative l word used", bw['L'].column);
+        if (repeats == 0) fail(code::zero_repeats, "Cannot do zero repeats of cycle", bw['L'].column);
     }
     if (bw.has(cl))
         cyc_.z = axis_value(bw, ax.c);  // G7 and the G19 depth X: a diameter
     else if (!continuing)
-        fail("cycle_depth_missing", std::string(1, cl) + " value unspecified in " + plane_name + " plane canned cycle");
+        fail(code::cycle_depth_missing, std::string(1, cl) + " value unspecified in " + plane_name + " plane canned cycle");
     const bool q_word = bw.has('Q') && bw['Q'].value != -1;
     const bool p_word = bw.has('P') && bw['P'].value != -1;
     // Levels along the tool axis. The initial level is that of the first block of the cycle.
@@ -65,13 +66,13 @@ void Interp::cycle(const BlockWords& bw, int code) {
         bottom = cyc_.z;
     }
     if (r < bottom)
-        fail("cycle_r_below_depth", std::string("R less than ") + static_cast<char>(cl - 'A' + 'a') +
+        fail(code::cycle_r_below_depth, std::string("R less than ") + static_cast<char>(cl - 'A' + 'a') +
                                         " in cycle in " + plane_name + " plane");
     if (code == 730 || code == 830) {
         if (q_word)
             cyc_.q = bw['Q'].value;
         else if (!continuing)
-            fail("cycle_q_missing", "Q word missing with " + gname, bw.has('Q') ? bw['Q'].column : 0);
+            fail(code::cycle_q_missing, "Q word missing with " + gname, bw.has('Q') ? bw['Q'].column : 0);
     }
     if (code == 740 || code == 840) {
         if (p_word) cyc_.p = bw['P'].value;  // optional dwell at the bottom
@@ -79,14 +80,14 @@ void Interp::cycle(const BlockWords& bw, int code) {
         if (p_word)
             cyc_.p = bw['P'].value;
         else if (!continuing)
-            fail("cycle_p_missing", "Dwell time p word missing with " + gname);
+            fail(code::cycle_p_missing, "Dwell time p word missing with " + gname);
     }
     if (code == 870) {  // back boring: offsets from the hole and the top of the counterbore (see below)
         const char* names = "IJK";
         for (int n = 0; n < 3; ++n) {
             char c = names[n];
             if (!bw.has(c) && !continuing)
-                fail("cycle_g87_word_missing", std::string(1, c) + " word missing with g87");
+                fail(code::cycle_g87_word_missing, std::string(1, c) + " word missing with g87");
         }
         if (bw.has('I')) cyc_.i = bw['I'].value;
         if (bw.has('J')) cyc_.j = bw['J'].value;
@@ -121,12 +122,12 @@ void Interp::cycle(const BlockWords& bw, int code) {
         if (level != r) straight(MotionKind::rapid, at(a, b, r), nan);
         // The control checks the spindle when the cycle itself starts, after the approach.
         if ((code == 860 || code == 870 || code == 880 || code == 740 || code == 840) && spindle_ == 0)
-            fail("spindle_not_turning", "Spindle not turning in " + std::string(code == 740 ? "G74" : code == 840 ? "G84" : gname));
+            fail(code::spindle_not_turning, "Spindle not turning in " + std::string(code == 740 ? "G74" : code == 840 ? "G84" : gname));
         if ((code == 730 || code == 830) && cyc_.q <= 0)
-            fail("cycle_q_zero", "Negative or zero q value used", bw.has('Q') ? bw['Q'].column : 0);
+            fail(code::cycle_q_zero, "Negative or zero q value used", bw.has('Q') ? bw['Q'].column : 0);
         if (code == 840 && spindle_ < 0)
-            fail("spindle_direction", "Spindle turning counterclockwise in G84");
-        if (code == 740 && spindle_ > 0) fail("spindle_direction", "Spindle turning clockwise in G74");
+            fail(code::spindle_direction, "Spindle turning counterclockwise in G84");
+        if (code == 740 && spindle_ > 0) fail(code::spindle_direction, "Spindle turning clockwise in G74");
         switch (code) {
             case 740:
             case 840:  // tapping: feed in, reverse the spindle, feed straight out to clearance
@@ -156,7 +157,7 @@ void Interp::cycle(const BlockWords& bw, int code) {
                 // tool to be at the clearance level; the path has no move for that.
                 fed(at(a, b, bottom));
                 pos_ = at(a, b, clear);
-                info("manual_retract", "G88: the operator retracts the tool by hand; the next move starts at the clearance level");
+                info(code::manual_retract, "G88: the operator retracts the tool by hand; the next move starts at the clearance level");
                 break;
             case 810:
             case 820:

@@ -2,6 +2,7 @@
 // calls and returns, subprogram files on the search path, the computed values of words and
 // the parameter assignments of a block.
 #include <cmath>
+#include "toolcomp/program/codes.hpp"
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -38,7 +39,7 @@ double Interp::eval(std::int32_t e, int column) {
         return expr::evaluate(frames_.back().prog().expression(e), *this, syntax_);
     } catch (const expr::MathError& err) {
         const char* m = math_message(err.fault);
-        fail("math_error", m ? m : err.what(), column);
+        fail(code::math_error, m ? m : err.what(), column);
     }
 }
 
@@ -82,7 +83,7 @@ void Interp::assignments(const Block& b) {
     }
     for (const Set& s : sets) {
         if (s.name && predefined(*s.name))
-            fail("read_only_parameter", "Cannot assign to read-only parameter #<" + *s.name + ">", s.column);
+            fail(code::read_only_parameter, "Cannot assign to read-only parameter #<" + *s.name + ">", s.column);
         if (s.name)
             params_.set_named(*s.name, s.value);
         else
@@ -101,7 +102,7 @@ bool Interp::declared_before(const std::string& name) const {
 
 void Interp::push_frame(Frame f) {
     if (frames_.size() > profile_.call_depth_limit)
-        fail("call_depth", !profile_.call_depth_message.empty()
+        fail(code::call_depth, !profile_.call_depth_message.empty()
                                ? profile_.call_depth_message
                                : "More than " + std::to_string(profile_.call_depth_limit) +
                                      " nested subprogram calls (ControlProfile.call_depth_limit)");
@@ -143,7 +144,7 @@ void Interp::call_sub(const Statement& s) {
     std::string computed;
     if (s.target >= 0) {
         const double v = eval(s.target, s.column);
-        if (!linuxcnc_whole(v)) fail("non_integer_value", "Non integer value for integer", s.column);
+        if (!linuxcnc_whole(v)) fail(code::non_integer_value, "Non integer value for integer", s.column);
         computed = std::to_string(std::lround(v));
     }
     const std::string& label = s.target >= 0 ? computed : s.label;
@@ -152,11 +153,11 @@ void Interp::call_sub(const Statement& s) {
     const std::string name = label.front() == '<' ? label.substr(1, label.size() - 2) : label;
     // A subroutine name names a file in a search directory, never a path out of it.
     if (name.find_first_of("/\\") != std::string::npos || name.find("..") != std::string::npos)
-        fail("bad_o_word", "Subroutine name o<" + name + "> cannot name a file: '/', '\\' and '..' are not allowed",
+        fail(code::bad_o_word, "Subroutine name o<" + name + "> cannot name a file: '/', '\\' and '..' are not allowed",
              s.column);
     const LoadedProgram* where = load(name + ".ngc");
     if (where && !where->flow.subs.count(label))
-        fail("unknown_o_word", "EOF in file:" + where->prog->name + " seeking o-word: o<" + name + "> from line: 0");
+        fail(code::unknown_o_word, "EOF in file:" + where->prog->name + " seeking o-word: o<" + name + "> from line: 0");
     if (!where) where = frames_.back().at;
     auto found = where->flow.subs.find(label);
     if (found == where->flow.subs.end() && where != &main_) {
@@ -164,12 +165,12 @@ void Interp::call_sub(const Statement& s) {
         found = where->flow.subs.find(label);
     }
     if (found == where->flow.subs.end())
-        fail("unknown_o_word", "EOF in file:" + frames_.back().prog().name + " seeking o-word: o<" + name +
+        fail(code::unknown_o_word, "EOF in file:" + frames_.back().prog().name + " seeking o-word: o<" + name +
                                    "> from line: " + std::to_string(line_));
     const std::size_t sub = found->second;
     if (where->flow.at(sub).partner == npos) {
         line_ = where->prog->last_line;
-        fail("o_word_structure", "File ended with no percent sign or program end");
+        fail(code::o_word_structure, "File ended with no percent sign or program end");
     }
     // A definition the flow has not passed yet is recorded now (a forward call): the flow
     // must then never reach it.
@@ -187,7 +188,7 @@ void Interp::call_sub(const Statement& s) {
 
 void Interp::return_from_sub(const Statement& s) {
     if (frames_.size() < 2 || frames_.back().kind != Frame::o_call)
-        fail("return_outside_sub", std::to_string(line_) + ": not in a subroutine definition: '" + s.text + "'");
+        fail(code::return_outside_sub, std::to_string(line_) + ": not in a subroutine definition: '" + s.text + "'");
     const bool has_value = s.value >= 0;
     const double v = has_value ? eval(s.value, s.column) : 0.0;
     frames_.pop_back();
@@ -199,15 +200,15 @@ void Interp::return_from_sub(const Statement& s) {
 void Interp::control(const Statement& s, std::size_t k) {
     Frame& f = frames_.back();
     const FlowInfo& flow = f.at->flow;
-    if (auto e = flow.errors.find(k); e != flow.errors.end()) fail("o_word_structure", e->second, s.column);
+    if (auto e = flow.errors.find(k); e != flow.errors.end()) fail(code::o_word_structure, e->second, s.column);
     const FlowInfo::Links& links = flow.at(k);
     // A structure whose end is missing: the control skips to the end of the file looking for it.
     auto unclosed = [&] {
         line_ = f.prog().last_line;
-        fail("o_word_structure", "File ended with no percent sign or program end");
+        fail(code::o_word_structure, "File ended with no percent sign or program end");
     };
     auto missing = [&](const char* what) {
-        fail("o_word_structure", "o" + s.label + " has no matching " + what, s.column);
+        fail(code::o_word_structure, "o" + s.label + " has no matching " + what, s.column);
     };
     // Jumping over blocks to `to`: LinuxCNC reads the blocks it skips for the end it looks
     // for, so a block of the same label that does not fit there, or a sub defined inside the
@@ -217,7 +218,7 @@ void Interp::control(const Statement& s, std::size_t k) {
             const Statement* c = control_statement(f.prog(), f.prog().blocks()[e->first]);
             if (e->second == kNestedSub ? s.kind == Stmt::o_sub : c && c->label == s.label) {
                 line_ = f.prog().blocks()[e->first].line;
-                fail("o_word_structure", e->second, c ? c->column : 0);
+                fail(code::o_word_structure, e->second, c ? c->column : 0);
             }
         }
         f.pc = to;
@@ -228,7 +229,7 @@ void Interp::control(const Statement& s, std::size_t k) {
         auto [it, fresh] = f.opened.emplace(s.label, k);
         if (fresh || it->second == k) return;
         const std::string first = std::to_string(f.prog().blocks()[it->second].line);
-        fail("o_word_structure",
+        fail(code::o_word_structure,
              s.kind == Stmt::o_if
                  ? std::to_string(line_) + ": duplicate O-word label - already defined in line " + first + ": '" + s.text + "'"
                  : std::to_string(line_) + ": duplicate O-word label: '" + s.text + "' - defined in line " + first);
@@ -236,10 +237,10 @@ void Interp::control(const Statement& s, std::size_t k) {
     switch (s.kind) {
         case Stmt::o_sub: {  // a definition met in the flow: recorded and skipped
             if (!recorded_subs_.insert({f.at, k}).second)
-                fail("o_word_structure", "File:" + f.prog().name + " line:" + std::to_string(line_) + " sub: o|" +
+                fail(code::o_word_structure, "File:" + f.prog().name + " line:" + std::to_string(line_) + " sub: o|" +
                                              s.label + "| found in illegal location");
             if (auto first = flow.subs.find(s.label); first != flow.subs.end() && first->second != k)
-                fail("o_word_structure", "File:" + f.prog().name + " line:" + std::to_string(line_) +
+                fail(code::o_word_structure, "File:" + f.prog().name + " line:" + std::to_string(line_) +
                                              " redefining sub: o|" + s.label + "| already defined in file:" + f.prog().name);
             if (links.partner == npos) unclosed();
             skip_to(links.partner + 1);
@@ -322,7 +323,7 @@ void Interp::control(const Statement& s, std::size_t k) {
             if (l.partner == npos) missing("loop end");
             const Stmt lk = control_statement(f.prog(), f.prog().blocks()[loop])->kind;
             if (lk == Stmt::o_repeat)  // LinuxCNC: break and continue belong to while and do loops only
-                fail("o_word_structure", std::to_string(line_) + ": no matching while/do label: '" + s.text +
+                fail(code::o_word_structure, std::to_string(line_) + ": no matching while/do label: '" + s.text +
                                              "' (found 'repeat' in line " + std::to_string(f.prog().blocks()[loop].line) + ")");
             if (s.kind == Stmt::o_break) {
                 f.pc = l.partner + 1;
@@ -338,7 +339,7 @@ void Interp::control(const Statement& s, std::size_t k) {
             if (condition(s.value, s.column)) goto_sequence(eval(s.target, s.column), s.column);
             break;
         case Stmt::while_do:
-            if (links.partner == npos) fail("macro_loop", "WHILE [...] DO " + std::to_string(s.loop) + " without END " + std::to_string(s.loop), s.column);
+            if (links.partner == npos) fail(code::macro_loop, "WHILE [...] DO " + std::to_string(s.loop) + " without END " + std::to_string(s.loop), s.column);
             if (!condition(s.value, s.column)) f.pc = links.partner + 1;
             break;
         case Stmt::end_loop:
@@ -352,10 +353,10 @@ void Interp::control(const Statement& s, std::size_t k) {
 void Interp::goto_sequence(double n, int column) {
     Frame& f = frames_.back();
     if (std::isnan(n) || n < 0 || n > 99999999 || n != std::floor(n))
-        fail("bad_sequence_number", "GOTO with a sequence number outside 1..99999999", column);
+        fail(code::bad_sequence_number, "GOTO with a sequence number outside 1..99999999", column);
     auto it = f.at->flow.numbers.find(std::lround(n));
     if (it == f.at->flow.numbers.end())
-        fail("sequence_number_not_found", "Sequence number N" + std::to_string(std::lround(n)) + " not found", column);
+        fail(code::sequence_number_not_found, "Sequence number N" + std::to_string(std::lround(n)) + " not found", column);
     f.pc = it->second;
 }
 
@@ -380,7 +381,7 @@ void Interp::subprogram(int mcode, const WordSlot& p_word, const WordSlot& l_wor
             return;
         }
         Frame& f = frames_.back();
-        if (f.kind == Frame::o_call) fail("m99_in_sub", "M99 inside an O-word subroutine", column);
+        if (f.kind == Frame::o_call) fail(code::m99_in_sub, "M99 inside an O-word subroutine", column);
         if (f.repeats_left > 0) {
             --f.repeats_left;
             f.pc = f.entry;
@@ -396,15 +397,15 @@ void Interp::subprogram(int mcode, const WordSlot& p_word, const WordSlot& l_wor
 
 void Interp::call_program(Frame::Kind kind, const WordSlot& p_word, const WordSlot& l_word, int column) {
     const char* what = kind == Frame::g65 ? "G65" : "M98";
-    if (!p_word.set) fail("program_number_missing", std::string(what) + " without P (program number)", column);
+    if (!p_word.set) fail(code::program_number_missing, std::string(what) + " without P (program number)", column);
     const double p = p_word.value;
     if (!(p >= 1 && p <= 99999999 && p == std::floor(p)))
-        fail("bad_program_number", std::string(what) + " P must be a program number 1..99999999", p_word.column);
+        fail(code::bad_program_number, std::string(what) + " P must be a program number 1..99999999", p_word.column);
     long number = std::lround(p), times = 1;
     if (l_word.set) {
         const double l = l_word.value;
         if (!(l >= 1 && l <= 9999 && l == std::floor(l)))
-            fail("bad_repeat_count", "L must be a whole number 1..9999", l_word.column);
+            fail(code::bad_repeat_count, "L must be a whole number 1..9999", l_word.column);
         times = std::lround(l);
     } else if (kind == Frame::m98 && number > 9999) {  // M98 P30001000: 3 passes of O1000
         times = number / 10000;
@@ -412,7 +413,7 @@ void Interp::call_program(Frame::Kind kind, const WordSlot& p_word, const WordSl
     }
     const LoadedProgram* lp = fanuc_program(number);
     if (!lp)
-        fail("program_not_found",
+        fail(code::program_not_found,
              "Program O" + std::to_string(number) + " not found" +
                  (opts_.search.dirs.empty() ? " (no search path given)" : " (not in the file nor on the search path)"),
              p_word.column);
@@ -444,19 +445,19 @@ void Interp::macro_call(std::span<const Word> words, int column) {
     for (const Word& w : words) {
         if (w.letter == 'N') continue;
         if (w.letter == 'G') {
-            if (w.value != 65) fail("g65_other_codes", "G65 must be the only G code of its block", w.column);
+            if (w.value != 65) fail(code::g65_other_codes, "G65 must be the only G code of its block", w.column);
             continue;
         }
         if (w.letter == 'P' || w.letter == 'L') {
             WordSlot& slot = w.letter == 'P' ? p_word : l_word;
-            if (slot.set) fail("multiple_words", std::string("Multiple ") + static_cast<char>(w.letter + 32) + " words on one line", w.column);
+            if (slot.set) fail(code::multiple_words, std::string("Multiple ") + static_cast<char>(w.letter + 32) + " words on one line", w.column);
             slot = {.value = w.value, .column = w.column, .set = true};
             continue;
         }
         if (w.letter == 'I' || w.letter == 'J' || w.letter == 'K') {
             const int k = w.letter - 'I';
             if (ijk_count[k] == 10)
-                fail("bad_macro_argument", std::string("More than ten ") + w.letter + " arguments in one G65 block",
+                fail(code::bad_macro_argument, std::string("More than ten ") + w.letter + " arguments in one G65 block",
                      w.column);
             locals[static_cast<std::size_t>(4 + k + 3 * ijk_count[k]++)] = w.value;
             continue;
@@ -466,13 +467,13 @@ void Interp::macro_call(std::span<const Word> words, int column) {
             if (letter == w.letter) {
                 const std::uint32_t bit = std::uint32_t{1} << (letter - 'A');
                 if (seen & bit)
-                    fail("multiple_words", std::string("Multiple ") + static_cast<char>(w.letter + 32) + " words on one line",
+                    fail(code::multiple_words, std::string("Multiple ") + static_cast<char>(w.letter + 32) + " words on one line",
                          w.column);
                 seen |= bit;
                 locals[static_cast<std::size_t>(n)] = w.value;
                 ok = true;
             }
-        if (!ok) fail("bad_macro_argument", std::string("Address ") + w.letter + " is not a G65 argument", w.column);
+        if (!ok) fail(code::bad_macro_argument, std::string("Address ") + w.letter + " is not a G65 argument", w.column);
     }
     call_program(Frame::g65, p_word, l_word, column);
     params_.enter_fanuc(locals);

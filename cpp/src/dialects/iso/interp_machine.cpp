@@ -1,6 +1,7 @@
 // The machine a program runs on (control/machine.hpp): the tool change position and the
 // travel limits, in machine coordinates. Its origins are placed at start (interp.cpp).
 #include <cmath>
+#include "toolcomp/program/codes.hpp"
 #include <cstdio>
 
 #include "interp.hpp"
@@ -20,7 +21,7 @@ void Interp::to_tool_change_position(int column) {
             any = true;
         }
     if (!any) return;
-    if (comp_on()) fail("comp_tool_change", "Cannot change tools with cutter radius compensation on", column);
+    if (comp_on()) fail(code::comp_tool_change, "Cannot change tools with cutter radius compensation on", column);
     const Vec6 end = from_machine(m);
     if (end != pos_) straight(MotionKind::rapid, end, std::nan(""));
 }
@@ -71,11 +72,11 @@ void Interp::check_travel(const Motion& m) {
             std::snprintf(msg, sizeof msg,
                           "%c %.4f mm (machine coordinates) is beyond the travel of the machine, %c %.4g to %.4g",
                           kName[i], v, kName[i], t.min, t.max);
-            if (!mc.travel_limit_warning) fail("travel_limit", msg);
+            if (!mc.travel_limit_warning) fail(code::travel_limit, msg);
             if (travel_warnings_ < 100)
-                diags_.push_back({"travel_limit", Severity::warning, msg, {line_, 0, file_name()}});
+                diags_.push_back({code::travel_limit, Severity::warning, msg, {line_, 0, file_name()}});
             else if (travel_warnings_ == 100)
-                diags_.push_back({"travel_limit", Severity::info,
+                diags_.push_back({code::travel_limit, Severity::info,
                                   "More moves beyond the travel limits follow; they are not reported one by one",
                                   {line_, 0, file_name()}});
             ++travel_warnings_;

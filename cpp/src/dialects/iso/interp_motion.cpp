@@ -1,5 +1,6 @@
 // Straight moves and arcs (LinuxCNC convert_straight / convert_arc / arc_data_ijk / arc_data_r).
 #include <cmath>
+#include "toolcomp/program/codes.hpp"
 #include <cstdio>
 
 #include "interp.hpp"
@@ -54,7 +55,7 @@ void Interp::inverse_time_rate(double feed) {
 // Feed per revolution needs a spindle speed (S; M5 keeps it).
 void Interp::check_feed_per_rev(int column) const {
     if (st_.feed_mode == 950 && speed_ == 0)
-        fail("zero_spindle_speed", "Cannot feed with zero spindle speed in feed per rev mode", column);
+        fail(code::zero_spindle_speed, "Cannot feed with zero spindle speed in feed per rev mode", column);
 }
 
 double Interp::feed_for(const BlockWords& bw, int code, double length, double x_end) const {
@@ -62,7 +63,7 @@ double Interp::feed_for(const BlockWords& bw, int code, double length, double x_
     switch (st_.feed_mode) {
         case 930:  // inverse time: the move takes 1/F minutes
             if (!bw.has('F'))
-                fail("inverse_time_feed_missing",
+                fail(code::inverse_time_feed_missing,
                      code == 10 ? "F word missing with inverse time g1 move" : "F word missing with inverse time arc move");
             return std::max(profile_.inverse_time_min_rate * scale(), bw['F'].value * length);
         case 950: {  // units per revolution
@@ -118,10 +119,10 @@ void Interp::motion_line(const BlockWords& bw, int code, bool machine_coords) {
         end = from_machine(m);
     }
     if (code == 10 && st_.feed_mode != 930 && feed_ <= 0)
-        fail("zero_feed", "Cannot do g1 with zero feed rate", bw.axis_column());
+        fail(code::zero_feed, "Cannot do g1 with zero feed rate", bw.axis_column());
     if (code == 10) check_feed_per_rev(bw.axis_column());
     if (machine_coords && comp_on() && radius_.radius > 0)
-        fail("comp_g53", "Cannot use g53 with cutter radius comp", bw.g_column[g_nonmodal]);
+        fail(code::comp_g53, "Cannot use g53 with cutter radius comp", bw.g_column[g_nonmodal]);
     // The length an inverse-time feed is worked out from: of X, Y, Z, or, when only rotary
     // axes move, of A, B, C in degrees (LinuxCNC's find_straight_length).
     double length = (end.head<3>() - pos_.head<3>()).norm() * scale();
@@ -138,17 +139,17 @@ void Interp::motion_arc(const BlockWords& bw, int code) {
     const char offset_letter[3] = {'I', 'J', 'K'};  // centre word of each axis
     const char a_l = letters[ax.a], b_l = letters[ax.b];
     const char a_off = offset_letter[ax.a], b_off = offset_letter[ax.b], c_off = offset_letter[ax.c];
-    if (arc_not_allowed_) fail("comp_exit_arc", profile_.radius.messages.exit_arc);
-    if (st_.feed_mode != 930 && feed_ <= 0) fail("zero_feed", "Cannot make arc with zero feed rate");
+    if (arc_not_allowed_) fail(code::comp_exit_arc, profile_.radius.messages.exit_arc);
+    if (st_.feed_mode != 930 && feed_ <= 0) fail(code::zero_feed, "Cannot make arc with zero feed rate");
     check_feed_per_rev(0);
     const bool r_form = bw.has('R');
     if (r_form && (bw.has('I') || bw.has('J') || bw.has('K')))
-        fail("mixed_arc_format", "Mixed radius ijk format for arc", bw['R'].column);
+        fail(code::mixed_arc_format, "Mixed radius ijk format for arc", bw['R'].column);
     if (!r_form && !bw.has(a_off) && !bw.has(b_off)) {
-        if (!bw.has('I') && !bw.has('J') && !bw.has('K')) fail("arc_words_missing", "R i j k words all missing for arc");
+        if (!bw.has('I') && !bw.has('J') && !bw.has('K')) fail(code::arc_words_missing, "R i j k words all missing for arc");
     }
     if (bw.has(c_off))
-        fail("arc_offset_wrong_axis",
+        fail(code::arc_offset_wrong_axis,
              std::string(1, c_off) + " word given for arc in " + plane_name + " plane", bw[c_off].column);
     auto has_axis_word = [&](char l) {
         return bw.has(l) || (l == 'X' && bw.has('U')) || (l == 'Z' && bw.has('W'));
@@ -156,20 +157,20 @@ void Interp::motion_arc(const BlockWords& bw, int code) {
     if (r_form && !has_axis_word(a_l) && !has_axis_word(b_l)) {
         // LinuxCNC names the axes in alphabetical order: "X and z words missing ... xz plane".
         const char* names = st_.plane == Plane::xy ? "X and y" : st_.plane == Plane::zx ? "X and z" : "Y and z";
-        fail("arc_axis_words_missing", std::string(names) + " words missing for arc in " + plane_name + " plane");
+        fail(code::arc_axis_words_missing, std::string(names) + " words missing for arc in " + plane_name + " plane");
     }
     int p = 1;
     if (bw.has('P')) {
         double pv = bw['P'].value;
         // LinuxCNC refuses a P more than 0.001 from an integer; Fanuc takes it as written.
         if (std::fabs(std::round(pv) - pv) > (profile_.integer_word_slack ? 0.001 : 1e-9))
-            fail("arc_p_not_integer", "P value not an integer with M19 G2 or G3", bw['P'].column);
+            fail(code::arc_p_not_integer, "P value not an integer with M19 G2 or G3", bw['P'].column);
         if (pv > kMaxArcTurns + 1.5)
-            fail("arc_too_many_turns",
+            fail(code::arc_too_many_turns,
                  "P value of G2 or G3 is more than " + std::to_string(kMaxArcTurns + 1) + " turns",
                  bw['P'].column);
         p = int_value(pv);
-        if (p < 1) fail("arc_p_not_positive", "P value should be 1 or greater with G2 or G3", bw['P'].column);
+        if (p < 1) fail(code::arc_p_not_positive, "P value should be 1 or greater with G2 or G3", bw['P'].column);
     }
 
     Vec6 end = find_end(bw);
@@ -178,15 +179,15 @@ void Interp::motion_arc(const BlockWords& bw, int code) {
     const double min_r = profile_.arc_min_radius[unit_index()];
     const int dir = code == 30 ? 1 : -1;
     if (r_form) {
-        if (s == e) fail("arc_same_point", "Current point same as end point of arc", bw['R'].column);
+        if (s == e) fail(code::arc_same_point, "Current point same as end point of arc", bw['R'].column);
         const double R = bw['R'].value;
         c = center_from_radius_lcnc(s, e, R, dir);
-        if (std::isnan(c.x())) fail("arc_radius_too_small", "Arc radius too small to reach end point", bw['R'].column);
+        if (std::isnan(c.x())) fail(code::arc_radius_too_small, "Arc radius too small to reach end point", bw['R'].column);
     } else {
         auto centre_word = [&](char off, int axis) -> double {
             if (st_.arc_absolute) {
                 if (!bw.has(off))
-                    fail("arc_center_missing", std::string(1, off) + " word missing in absolute center arc");
+                    fail(code::arc_center_missing, std::string(1, off) + " word missing in absolute center arc");
                 return bw[off].value;
             }
             (void)axis;
@@ -202,14 +203,14 @@ void Interp::motion_arc(const BlockWords& bw, int code) {
                           a_l, s.x(), b_l, s.y(), a_l, c.x(), b_l, c.y(), a_l, e.x(), b_l, e.y(), r1, r2);
             return std::string(buf);
         };
-        if (r1 < min_r || r2 < min_r) fail("arc_zero_radius", describe("Zero-radius arc: "));
+        if (r1 < min_r || r2 < min_r) fail(code::arc_zero_radius, describe("Zero-radius arc: "));
         double abs_err = std::fabs(r1 - r2);  // program units, as the control compares
         double rel_err = abs_err / std::max(r1, r2);
         double tol = profile_.arc_spiral_abs[unit_index()];
         if (abs_err > profile_.arc_spiral_hard_factor * tol || (rel_err > profile_.arc_spiral_rel && abs_err > tol)) {
             char tail[96];
             std::snprintf(tail, sizeof tail, " abs_err=%.4g rel_err=%.4f%%", abs_err, rel_err * 100);
-            fail("arc_end_off_circle", describe("Radius to end of arc differs from radius to start: ") + tail);
+            fail(code::arc_end_off_circle, describe("Radius to end of arc differs from radius to start: ") + tail);
         }
     }
 

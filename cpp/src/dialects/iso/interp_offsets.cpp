@@ -2,6 +2,7 @@
 // convert_axis_offsets, convert_home). The machine never moves when an offset changes: the
 // program coordinates of the current point change instead.
 #include <cmath>
+#include "toolcomp/program/codes.hpp"
 
 #include "interp.hpp"
 
@@ -37,11 +38,11 @@ void Interp::set_coord_system(int n) { change_offset(st_.coord_system, n); }
 
 void Interp::g10(const BlockWords& bw) {
     const int col = bw.g_column[g_nonmodal];
-    if (!bw.has('L')) fail("g10_bad_l", "Line with G10 does not have L0, L1, L10, L11, L2, or L20", col);
+    if (!bw.has('L')) fail(code::g10_bad_l, "Line with G10 does not have L0, L1, L10, L11, L2, or L20", col);
     int l = int_value(bw['L'].value);
     if (l == 0 || l == 1 || l == 10 || l == 11)
-        fail("unsupported_g10", "G10 L" + std::to_string(l) + " (tool table edit) is not supported by toolcomp", col);
-    if (l != 2 && l != 20) fail("g10_bad_l", "Line with G10 does not have L0, L1, L10, L11, L2, or L20", col);
+        fail(code::unsupported_g10, "G10 L" + std::to_string(l) + " (tool table edit) is not supported by toolcomp", col);
+    if (l != 2 && l != 20) fail(code::g10_bad_l, "Line with G10 does not have L0, L1, L10, L11, L2, or L20", col);
     const std::string which = l == 2 ? "G10 L2" : "G10 L20";
     // LinuxCNC refuses a P more than 0.0001 above the integer it rounds to (below is let be)
     // or one that rounds out of 0-9, then takes the system (int)(P + 0.0001): P1.9999 is G55,
@@ -51,26 +52,26 @@ void Interp::g10(const BlockWords& bw) {
         const double pv = bw['P'].value;
         if (profile_.integer_word_slack) {
             const double rounded = std::round(pv);
-            if ((pv + 0.0001) - rounded > 0.0002) fail("g10_p_not_integer", "P value not an integer with G10", col);
+            if ((pv + 0.0001) - rounded > 0.0002) fail(code::g10_p_not_integer, "P value not an integer with G10", col);
             p = rounded < 0 || rounded > 9 ? -1 : int_value_truncated(pv + 0.0001);
         } else {
             p = int_value_truncated(pv);
         }
     }
-    if (p < 0 || p > 9) fail("g10_bad_p", "P value out of range (0-9) with " + which, col);
+    if (p < 0 || p > 9) fail(code::g10_bad_p, "P value out of range (0-9) with " + which, col);
     if (profile_.fanuc_g10) {
         // Fanuc's G10 L20 sets the additional systems G54.1 P1-P48 and L2 P0 the external
         // offset that shifts every system: neither is LinuxCNC's, neither is run here.
         if (l == 20)
-            fail("unsupported_g10", "G10 L20 (the additional work coordinate systems G54.1) is not supported by toolcomp",
+            fail(code::unsupported_g10, "G10 L20 (the additional work coordinate systems G54.1) is not supported by toolcomp",
                  col);
-        if (p == 0) fail("unsupported_g10", "G10 L2 P0 (the external work offset) is not supported by toolcomp", col);
-        if (p > 6) fail("g10_bad_p", "P value out of range (1-6) with G10 L2", col);
-        if (bw.has('R')) fail("unused_word", "R word with no code that uses it (G10 L2 sets no rotation here)",
+        if (p == 0) fail(code::unsupported_g10, "G10 L2 P0 (the external work offset) is not supported by toolcomp", col);
+        if (p > 6) fail(code::g10_bad_p, "P value out of range (1-6) with G10 L2", col);
+        if (bw.has('R')) fail(code::unused_word, "R word with no code that uses it (G10 L2 sets no rotation here)",
                               bw['R'].column);
     }
-    if (l == 2 && (bw.has('I') || bw.has('J'))) fail("g10_ij", "I J words not allowed with G10 L2", col);
-    if (l == 20 && bw.has('R')) fail("g10_l20_r", "R not allowed in G10 L20", bw['R'].column);
+    if (l == 2 && (bw.has('I') || bw.has('J'))) fail(code::g10_ij, "I J words not allowed with G10 L2", col);
+    if (l == 20 && bw.has('R')) fail(code::g10_l20_r, "R not allowed in G10 L20", bw['R'].column);
     int n = p == 0 ? st_.coord_system : p;
     Vec6 value = g5x_[n - 1];
     double rotation = rotation_[n - 1];
@@ -144,7 +145,7 @@ void Interp::home(const BlockWords& bw, int code) {
     Vec6& stored = (code == 280 || code == 281) ? g28_ : g30_;
     if (code == 281 || code == 301) {  // G28.1 / G30.1: remember where the machine is
         if (comp_on())
-            fail("comp_set_home", "Cannot set reference point with cutter compensation in effect",
+            fail(code::comp_set_home, "Cannot set reference point with cutter compensation in effect",
                  bw.g_column[g_nonmodal]);
         stored = to_machine(pos_);
         return;

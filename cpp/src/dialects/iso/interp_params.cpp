@@ -2,6 +2,7 @@
 // parameters computed from the interpreter's state (LinuxCNC 5161-5428, Fanuc #3000 and the
 // position variables), named parameters, and the substitution of values into messages.
 #include <algorithm>
+#include "toolcomp/program/codes.hpp"
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -74,13 +75,13 @@ bool Interp::system_param(int n, double& v) const {
 // A parameter number: LinuxCNC reads it as any integer word (within 0.0001, whole_numbers.hpp),
 // Fanuc as written.
 double Interp::parameter_number(double number, int column) const {
-    if (std::isnan(number)) fail("bad_parameter_number", "Parameter number must be a whole number", column);
+    if (std::isnan(number)) fail(code::bad_parameter_number, "Parameter number must be a whole number", column);
     if (!params_.fanuc()) {
-        if (!linuxcnc_whole(number)) fail("non_integer_value", "Non integer value for integer", column);
+        if (!linuxcnc_whole(number)) fail(code::non_integer_value, "Non integer value for integer", column);
         return std::round(number);
     }
     if (std::fabs(number - std::round(number)) > 1e-9)
-        fail("bad_parameter_number", "Parameter number must be a whole number", column);
+        fail(code::bad_parameter_number, "Parameter number must be a whole number", column);
     return std::round(number);
 }
 
@@ -89,20 +90,20 @@ double Interp::param(double number) {
     const double r = parameter_number(number, 0);
     if (fanuc) {
         if (r == 0) return ParameterStore::kVacant;
-        if (r < 0 || r > 99999) fail("bad_parameter_number", "Variable number #" + number_text(r) + " out of range");
+        if (r < 0 || r > 99999) fail(code::bad_parameter_number, "Variable number #" + number_text(r) + " out of range");
     } else if (r < 1 || r > 5601) {
-        fail("parameter_out_of_range", "Parameter number out of range");
+        fail(code::parameter_out_of_range, "Parameter number out of range");
     }
     const int n = static_cast<int>(r);
     if (!fanuc && n >= 5420 && n <= 5428 && comp_on())
-        fail("comp_position_read", "Cannot read current position with cutter radius compensation on");
+        fail(code::comp_position_read, "Cannot read current position with cutter radius compensation on");
     double v;
     if (system_param(n, v)) return v;
     if (!fanuc && n >= 5061 && n <= 5070)
-        fail("probe_parameter_unset", "Probe result #" + std::to_string(n) + " read, but this run made no probe move");
-    if (!fanuc && n == 5399) fail("unsupported_parameter", "#5399 (M66 input result) is not supported by toolcomp");
+        fail(code::probe_parameter_unset, "Probe result #" + std::to_string(n) + " read, but this run made no probe move");
+    if (!fanuc && n == 5399) fail(code::unsupported_parameter, "#5399 (M66 input result) is not supported by toolcomp");
     if (params_.stored(n)) return params_.get(n);
-    fail("unsupported_parameter", "System variable #" + std::to_string(n) + " is not supported by toolcomp");
+    fail(code::unsupported_parameter, "System variable #" + std::to_string(n) + " is not supported by toolcomp");
 }
 
 void Interp::set_param(double number, double v, int column) {
@@ -111,17 +112,17 @@ void Interp::set_param(double number, double v, int column) {
     if (fanuc && n == 3000) {
         // #3000 = n (MESSAGE): the control stops with macro alarm 3000 + n.
         const double a = std::isnan(v) ? 0 : v;
-        fail("macro_alarm", "Alarm " + std::to_string(3000 + static_cast<long>(a)) +
+        fail(code::macro_alarm, "Alarm " + std::to_string(3000 + static_cast<long>(a)) +
                                 (alarm_text_.empty() ? std::string() : " " + alarm_text_),
              column);
     }
-    if (fanuc && n == 0) fail("vacant_assignment", "#0 is always vacant and cannot be set", column);
-    if (!fanuc && (n < 1 || n > 5601)) fail("parameter_out_of_range", "Parameter number out of range", column);
+    if (fanuc && n == 0) fail(code::vacant_assignment, "#0 is always vacant and cannot be set", column);
+    if (!fanuc && (n < 1 || n > 5601)) fail(code::parameter_out_of_range, "Parameter number out of range", column);
     if (!fanuc && ((n >= 5400 && n <= 5413) || (n >= 5420 && n <= 5428)))
-        fail("read_only_parameter", "Parameter is readonly", column);
+        fail(code::read_only_parameter, "Parameter is readonly", column);
     double dummy;
     if ((!fanuc && n >= 5061) || system_param(n, dummy) || !params_.stored(n))
-        fail("read_only_parameter",
+        fail(code::read_only_parameter,
              "#" + std::to_string(n) + " is a system parameter: toolcomp does not let programs set it" +
                  (fanuc ? "" : " (set offsets with G10, G92, G28.1 / G30.1)"),
              column);
@@ -225,10 +226,10 @@ double Interp::get(const std::string& name, std::span<const double>) {
     }
     if (double v; mode_param(name, v)) return v;
     if (name == "_current_pocket" || name == "_selected_pocket")
-        fail("unsupported_parameter", "#<" + name + "> (tool changer pockets) is not supported by toolcomp");
+        fail(code::unsupported_parameter, "#<" + name + "> (tool changer pockets) is not supported by toolcomp");
     if (const double* v = params_.named(name)) return *v;
     if (declared_before(name)) return 0;
-    fail("named_parameter_undefined", "Named parameter #<" + name + "> not defined");
+    fail(code::named_parameter_undefined, "Named parameter #<" + name + "> not defined");
 }
 
 bool Interp::exists(const std::string& name) {
@@ -250,13 +251,13 @@ void Interp::message_comment(const Comment& c) {
     if (from == std::string::npos) return;
     const std::string head = lower_prefix(c.text.substr(from), 6);
     if (head.rfind("msg,", 0) == 0)
-        info("message", c.text.substr(c.text.find(',', from) + 1), c.column);
+        info(code::message, c.text.substr(c.text.find(',', from) + 1), c.column);
     else if (head.rfind("debug,", 0) == 0 || head.rfind("print,", 0) == 0)
-        info("message", substitute(c.text.substr(c.text.find(',', from) + 1)), c.column);
+        info(code::message, substitute(c.text.substr(c.text.find(',', from) + 1)), c.column);
     else if (head.rfind("abort,", 0) == 0 && profile_.abort_comment)
         // LinuxCNC 2.9 stops the program with the text, parameters substituted, before the
         // block's motion.
-        fail("abort", substitute(c.text.substr(c.text.find(',', from) + 1)), c.column);
+        fail(code::abort, substitute(c.text.substr(c.text.find(',', from) + 1)), c.column);
 }
 
 std::string Interp::substitute(const std::string& text) {

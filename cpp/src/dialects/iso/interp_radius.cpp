@@ -2,6 +2,7 @@
 // LinuxCNC's checks (convert_cutter_compensation_on/off). The offset itself is computed by
 // the radius compensation stage after the Motion stream.
 #include <cmath>
+#include "toolcomp/program/codes.hpp"
 
 #include "interp.hpp"
 #include "whole_numbers.hpp"
@@ -27,21 +28,21 @@ void Interp::radius_comp(const BlockWords& bw, int code) {
     }
     const bool dynamic = code == 411 || code == 421;
     const std::string name = code == 410 ? "G41" : code == 420 ? "G42" : code == 411 ? "G41.1" : "G42.1";
-    if (st_.plane == Plane::yz && !profile_.radius.yz_plane) fail("comp_plane", profile_.radius.messages.plane, col);
-    if (comp_on() && !profile_.radius.side_change) fail("comp_already_on", profile_.radius.messages.already_on, col);
+    if (st_.plane == Plane::yz && !profile_.radius.yz_plane) fail(code::comp_plane, profile_.radius.messages.plane, col);
+    if (comp_on() && !profile_.radius.side_change) fail(code::comp_already_on, profile_.radius.messages.already_on, col);
 
     double radius = 0;
     int orientation = 0;
     if (dynamic) {
-        if (!bw.has('D')) fail("comp_no_d", name + " with no D word", col);
+        if (!bw.has('D')) fail(code::comp_no_d, name + " with no D word", col);
         radius = bw['D'].value / 2;  // program units
         if (bw.has('L')) {
-            if (st_.plane != Plane::zx) fail("comp_l_not_g18", name + " with L word, but plane is not G18", bw['L'].column);
+            if (st_.plane != Plane::zx) fail(code::comp_l_not_g18, name + " with L word, but plane is not G18", bw['L'].column);
             orientation = int_value(bw['L'].value);
         }
     } else if (profile_.t_offsets) {
         if (bw.has('D'))
-            fail("comp_d_on_lathe", "D word is not used here: the T word's offset gives the nose radius", bw['D'].column);
+            fail(code::comp_d_on_lathe, "D word is not used here: the T word's offset gives the nose radius", bw['D'].column);
         radius_.side = static_cast<std::int8_t>(code == 410 ? 1 : -1);
         radius_.checks = checks_;
         set_radius_from_offset();
@@ -53,21 +54,21 @@ void Interp::radius_comp(const BlockWords& bw, int code) {
         if (bw.has('D')) {
             double d = bw['D'].value;
             if (!d_word_whole(d, profile_.integer_word_slack))
-                fail("comp_d_not_integer", name + " requires D word to be a whole number", bw['D'].column);
-            if (d < -0.5) fail("comp_negative_d", "Negative d word tool radius index used", bw['D'].column);
+                fail(code::comp_d_not_integer, name + " requires D word to be a whole number", bw['D'].column);
+            if (d < -0.5) fail(code::comp_negative_d, "Negative d word tool radius index used", bw['D'].column);
             tool = int_value(d);
             if (profile_.modal_offset_numbers) last_d_ = tool;
         }
         if (tool != 0 && tools_) {
             const Tool* t = tools_->find(tool);
             if (!t)
-                fail("tool_not_found", "Requested tool " + std::to_string(tool) + " not found in the tool table",
+                fail(code::tool_not_found, "Requested tool " + std::to_string(tool) + " not found in the tool table",
                      bw.has('D') ? bw['D'].column : col);
             radius = t->edge().effective_radius() / scale();  // the table is in mm
             orientation = t->edge().orientation;
         }
         if (orientation != 0 && orientation != 9 && st_.plane != Plane::zx)
-            fail("comp_lathe_tool_plane", name + " with lathe tool, but plane is not G18", col);
+            fail(code::comp_lathe_tool_plane, name + " with lathe tool, but plane is not G18", col);
     }
     int side = (code == 410 || code == 411) ? 1 : -1;
     if (radius < 0) {  // a negative radius cuts on the other side

@@ -1,6 +1,7 @@
 // Tool selection and change (T, M6, M61) and tool length compensation (G43, G43.1, G43.2,
 // G44, G49), LinuxCNC convert_tool_select / convert_tool_change / convert_tool_length_offset.
 #include <cmath>
+#include "toolcomp/program/codes.hpp"
 
 #include "interp.hpp"
 #include "whole_numbers.hpp"
@@ -18,7 +19,7 @@ Vec6 Interp::tool_offset_of(int tool, int column) const {
     const Tool* t = tools_ ? tools_->find(tool) : nullptr;
     if (!t) {
         if (!tools_) return v;  // no table at all: reported once by select_tool/length_comp
-        fail("tool_not_found", "Requested tool " + std::to_string(tool) + " not found in the tool table", column);
+        fail(code::tool_not_found, "Requested tool " + std::to_string(tool) + " not found in the tool table", column);
     }
     const CuttingEdge& e = t->edge();
     Eigen::Vector3d len = e.effective_length() / scale();  // the table is in mm
@@ -69,10 +70,10 @@ void Interp::select_tool(const BlockWords& bw) {
         const int tool = t / div, wear = t % div, geometry = (f >= 4) ? tool : wear;
         for (int n : {geometry, wear})
             if (n != 0 && tools_ && !tools_->find(n))
-                fail("offset_not_found", "Offset " + std::to_string(n) + " not found in the offset table",
+                fail(code::offset_not_found, "Offset " + std::to_string(n) + " not found in the offset table",
                      bw['T'].column);
         if (radius_.side != 0 && tool != tool_ && profile_.kind != MachineKind::lathe)
-            fail("comp_tool_change", "Cannot change tools with cutter radius compensation on", bw['T'].column);
+            fail(code::comp_tool_change, "Cannot change tools with cutter radius compensation on", bw['T'].column);
         selected_ = tool_ = tool;
         geometry_offset_ = geometry;
         wear_offset_ = wear;
@@ -81,9 +82,9 @@ void Interp::select_tool(const BlockWords& bw) {
         return;
     }
     if (t != 0 && tools_ && !tools_->find(t))
-        fail("tool_not_found", "Requested tool " + std::to_string(t) + " not found in the tool table", bw['T'].column);
+        fail(code::tool_not_found, "Requested tool " + std::to_string(t) + " not found in the tool table", bw['T'].column);
     if (t != 0 && !tools_)
-        diags_.push_back({"no_tool_table", Severity::warning,
+        diags_.push_back({code::no_tool_table, Severity::warning,
                           "No tool table given: tool " + std::to_string(t) + " has no offsets and no radius",
                           {line_, bw['T'].column}});
     selected_ = t;
@@ -99,10 +100,10 @@ void Interp::change_tool(const BlockWords& bw, int mcode) {
     const double q = bw.has('Q') ? bw['Q'].value : -1;
     const bool lcnc = profile_.integer_word_slack;
     if (!bw.has('Q') || (lcnc ? std::floor(q + 0.5) < 0 : q < 0 || std::fabs(q - std::round(q)) > 1e-9))
-        fail("m61_q", "Need non-negative Q-word to specify tool number with M61", bw.m_column[m_tool_change]);
+        fail(code::m61_q, "Need non-negative Q-word to specify tool number with M61", bw.m_column[m_tool_change]);
     int t = lcnc ? int_value_truncated(std::floor(q + 0.5)) : int_value(q);
     if (t != 0 && tools_ && !tools_->find(t))
-        fail("tool_not_found", "Requested tool " + std::to_string(t) + " not found in the tool table",
+        fail(code::tool_not_found, "Requested tool " + std::to_string(t) + " not found in the tool table",
              bw['Q'].column);
     tool_ = t;
 }
@@ -112,9 +113,9 @@ void Interp::length_comp(const BlockWords& bw, int code) {
     st_.length_mode = code;
     auto h_tool = [&]() {
         double h = bw['H'].value;
-        if (!whole_word(h, profile_.integer_word_slack)) fail("non_integer_value", "Non integer value for integer", bw['H'].column);
+        if (!whole_word(h, profile_.integer_word_slack)) fail(code::non_integer_value, "Non integer value for integer", bw['H'].column);
         int t = int_value(h);
-        if (t < 0) fail("tool_not_found", "Requested tool " + std::to_string(t) + " not found in the tool table", bw['H'].column);
+        if (t < 0) fail(code::tool_not_found, "Requested tool " + std::to_string(t) + " not found in the tool table", bw['H'].column);
         return t;
     };
     switch (code) {
@@ -144,8 +145,8 @@ void Interp::length_comp(const BlockWords& bw, int code) {
         }
         case 432: {  // additive
             bool axes = bw.has_axis();
-            if (bw.has('H') && axes) fail("g43_2_both", "G43.2: Can not have both H and axis words", col);
-            if (!bw.has('H') && !axes) fail("g43_2_none", "G43.2: No axes specified and H word missing", col);
+            if (bw.has('H') && axes) fail(code::g43_2_both, "G43.2: Can not have both H and axis words", col);
+            if (!bw.has('H') && !axes) fail(code::g43_2_none, "G43.2: No axes specified and H word missing", col);
             Vec6 add = Vec6::Zero();
             if (bw.has('H')) {
                 add = tool_offset_of(h_tool(), bw['H'].column);

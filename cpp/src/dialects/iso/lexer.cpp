@@ -1,4 +1,5 @@
 #include "toolcomp/dialects/iso/lexer.hpp"
+#include "toolcomp/program/codes.hpp"
 #include "toolcomp/program/decimal.hpp"
 #include "toolcomp/program/text.hpp"
 
@@ -121,24 +122,24 @@ void LineLexer::run() {
             }
             if (first_word_ && prog_.dialect == Dialect::fanuc && fanuc_statement()) continue;
         } else if (u == '#' || u == '[') {
-            fail("parameters_not_supported", "Parameters and expressions ('#', '[') are not supported in this dialect");
+            fail(code::parameters_not_supported, "Parameters and expressions ('#', '[') are not supported in this dialect");
         } else if (u == 'O' && first_word_) {
-            fail("o_word_not_supported", "O-word subprograms and control flow are not supported in this dialect");
+            fail(code::o_word_not_supported, "O-word subprograms and control flow are not supported in this dialect");
         }
-        if (u == '$') fail("bad_character", "Unknown word where unary operation could be");
+        if (u == '$') fail(code::bad_character, "Unknown word where unary operation could be");
         if (!is_word_letter(u, prog_.dialect) || (u == 'N' && (!first_word_ || prog_.blocks().back().word_count > 0))) {
             // LinuxCNC writes a byte beyond ASCII as an octal escape ('\303')
             const auto byte = static_cast<unsigned char>(c);
             std::string shown(1, ascii_lower(c));
             if (byte >= 0x80) shown = {'\\', static_cast<char>('0' + (byte >> 6)), static_cast<char>('0' + ((byte >> 3) & 7)),
                                        static_cast<char>('0' + (byte & 7))};
-            fail("bad_character", "Bad character '" + shown + "' used");
+            fail(code::bad_character, "Bad character '" + shown + "' used");
         }
         Word w{u, 0, col()};
         ++i_;
         // LinuxCNC reads a line number as unsigned digits
         if (u == 'N' && prog_.dialect == Dialect::linuxcnc && i_ < s_.size() && (s_[i_] == '+' || s_[i_] == '-'))
-            fail("bad_line_number", "Bad format unsigned integer");
+            fail(code::bad_line_number, "Bad format unsigned integer");
         word_value(w);
         prog_.add_word(w);
         if (u != 'N') first_word_ = false;
@@ -149,10 +150,10 @@ void LineLexer::comment_paren() {
     const std::size_t open = i_;
     std::size_t start = ++i_;
     while (i_ < s_.size() && s_[i_] != ')') {
-        if (s_[i_] == '(') fail("nested_comment", "Nested comment found");
+        if (s_[i_] == '(') fail(code::nested_comment, "Nested comment found");
         ++i_;
     }
-    if (i_ >= s_.size()) fail_at("unclosed_comment", "Unclosed comment found", open);
+    if (i_ >= s_.size()) fail_at(code::unclosed_comment, "Unclosed comment found", open);
     prog_.add_comment({s_.substr(start, i_ - start), col_at(open)});
     ++i_;
 }
@@ -187,7 +188,7 @@ double LineLexer::number() {
     std::size_t i = i_;
     bool negative = false;
     const std::size_t start = i;  // errors point at the number's first character
-    if (i >= n) fail_at("bad_number_format", "No characters found in reading real value", start);
+    if (i >= n) fail_at(code::bad_number_format, "No characters found in reading real value", start);
     const auto sign = [&](std::size_t k) { return k < n && (s[k] == '+' || s[k] == '-'); };
     while (sign(i) && i + 1 < n && !ascii_digit(s[i + 1]) && s[i + 1] != '.') {
         if (s[i] == '-') negative = !negative;
@@ -203,14 +204,14 @@ double LineLexer::number() {
     i_ = run.end;
     const std::string_view text(s + first, run.end - first), quoted(s + own, run.end - own);
     if (run.points > 1)
-        fail_at("bad_number_format", "bad number format (trailing characters) parsing '" + std::string(quoted) + "'", start);
+        fail_at(code::bad_number_format, "bad number format (trailing characters) parsing '" + std::string(quoted) + "'", start);
     if (!run.digits)
-        fail_at("bad_number_format", "bad number format (conversion failed) parsing '" + std::string(quoted) + "'", start);
+        fail_at(code::bad_number_format, "bad number format (conversion failed) parsing '" + std::string(quoted) + "'", start);
     double v = 0;
     if (run.plain())
         v = decimal_value(run.m, run.frac);
     else if (!parse_decimal(text, v) || !std::isfinite(v))
-        fail_at("bad_number_format", "bad number format (conversion failed) parsing '" + std::string(quoted) + "'", start);
+        fail_at(code::bad_number_format, "bad number format (conversion failed) parsing '" + std::string(quoted) + "'", start);
     return negative ? -v : v;
 }
 
@@ -256,7 +257,7 @@ Program PieceParser::parse(std::string_view text, Program prog) {
                 // before it (M2 / M30 ... %, a common ending) never does. So the program stops
                 // here, with the error kept for a run that reaches it, even when reading strictly.
                 const int at = static_cast<int>(line.find('%')) + 1;
-                prog.syntax_error = ParseError("bad_character", "Bad character '%' used", {line_no_, at}).diagnostic();
+                prog.syntax_error = ParseError(code::bad_character, "Bad character '%' used", {line_no_, at}).diagnostic();
                 done_ = true;
                 break;
             }
@@ -275,7 +276,7 @@ Program PieceParser::parse(std::string_view text, Program prog) {
         try {
             // LinuxCNC reads at most 252 characters a line (a CR of a CRLF end counts).
             if (dialect_ == Dialect::linuxcnc && line.size() > 252)
-                throw ParseError("line_too_long", "Command too long", {line_no_, 253});
+                throw ParseError(code::line_too_long, "Command too long", {line_no_, 253});
             if (!lex_plain_line(line, line_no_, prog)) LineLexer(line, line_no_, prog, buffers).run();
         } catch (const ParseError& e) {
             if (strict_) throw;

@@ -3,6 +3,7 @@
 // (O1000 program numbers, IF [..] GOTO n, IF [..] THEN, WHILE [..] DO m, END m, GOTO n).
 // Their meaning is the interpreter's (flow.cpp); here they are only read.
 #include <string>
+#include "toolcomp/program/codes.hpp"
 
 #include "toolcomp/program/text.hpp"
 
@@ -19,14 +20,14 @@ const expr::Syntax& LineLexer::syntax() const {
 }
 
 std::int32_t LineLexer::expression(bool value_only) {
-    if (at_end() || s_[i_] == '(' || s_[i_] == ';') fail("bad_expression", "Expression expected");
+    if (at_end() || s_[i_] == '(' || s_[i_] == ';') fail(code::bad_expression, "Expression expected");
     std::size_t pos = i_;
     try {
         expr::Expr e = value_only ? expr::parse_value(s_, pos, syntax()) : expr::parse(s_, pos, syntax());
         i_ = pos;
         return prog_.add_expression(std::move(e));
     } catch (const expr::SyntaxError& e) {
-        fail_at("bad_expression", e.what(), e.offset);
+        fail_at(code::bad_expression, e.what(), e.offset);
     }
 }
 
@@ -46,7 +47,7 @@ void LineLexer::rest_is_comments() {
             prog_.add_comment({s_.substr(i_ + 1), col(), true});
             return;
         } else {
-            fail("o_word_extra_words", prog_.dialect == Dialect::linuxcnc ? "Unexpected character after O-word"
+            fail(code::o_word_extra_words, prog_.dialect == Dialect::linuxcnc ? "Unexpected character after O-word"
                                                                            : "Unexpected text after the macro statement");
         }
     }
@@ -60,15 +61,15 @@ void LineLexer::assignment() {
     if (!at_end() && s_[i_] == '<' && prog_.dialect == Dialect::linuxcnc) {
         const std::size_t open = i_;
         while (i_ < s_.size() && s_[i_] != '>') ++i_;
-        if (at_end()) fail_at("bad_parameter", "Named parameter not terminated", open);
+        if (at_end()) fail_at(code::bad_parameter, "Named parameter not terminated", open);
         for (std::size_t k = open + 1; k < i_; ++k)
             st.label.push_back(ascii_lower(s_[k]));
         ++i_;
-        if (st.label.empty()) fail_at("bad_parameter", "Named parameter with no name", open);
+        if (st.label.empty()) fail_at(code::bad_parameter, "Named parameter with no name", open);
     } else {
         st.target = expression(true);  // the number: 5, #2, [#1+1]
     }
-    if (at_end() || s_[i_] != '=') fail("equal_sign_missing", "Equal sign missing in parameter setting");
+    if (at_end() || s_[i_] != '=') fail(code::equal_sign_missing, "Equal sign missing in parameter setting");
     ++i_;
     st.value = expression(prog_.dialect == Dialect::linuxcnc);
     prog_.add_statement(std::move(st));
@@ -82,7 +83,7 @@ void LineLexer::o_word() {
         // A Fanuc program number: O and up to 4 (8 on later controls) digits.
         std::string n;
         while (!at_end() && digit(s_[i_])) n.push_back(s_[i_++]);
-        if (n.empty() || n.size() > 8) fail_at("bad_program_number", "Program number expected after O", i_ - 1);
+        if (n.empty() || n.size() > 8) fail_at(code::bad_program_number, "Program number expected after O", i_ - 1);
         st.kind = Stmt::program_number;
         st.label = std::to_string(std::stol(n));
         prog_.add_statement(std::move(st));
@@ -92,19 +93,19 @@ void LineLexer::o_word() {
     if (!at_end() && s_[i_] == '<') {
         const std::size_t open = i_;
         while (i_ < s_.size() && s_[i_] != '>') ++i_;
-        if (at_end()) fail_at("bad_o_word", "O-word name not terminated", open);
+        if (at_end()) fail_at(code::bad_o_word, "O-word name not terminated", open);
         st.label = "<";
         for (std::size_t k = open + 1; k < i_; ++k)
             st.label.push_back(ascii_lower(s_[k]));
         st.label += ">";
         ++i_;
-        if (st.label.size() == 2) fail_at("bad_o_word", "O-word name is empty", open);
+        if (st.label.size() == 2) fail_at(code::bad_o_word, "O-word name is empty", open);
     } else if (!at_end() && (s_[i_] == '#' || s_[i_] == '[') && prog_.dialect == Dialect::linuxcnc) {
         st.target = expression(true);  // a computed number ("o#1 call"): worked out when the block runs
     } else {
         std::string n;
         while (!at_end() && digit(s_[i_])) n.push_back(s_[i_++]);
-        if (n.empty()) fail("bad_o_word", "O-word number or <name> expected");
+        if (n.empty()) fail(code::bad_o_word, "O-word number or <name> expected");
         std::size_t z = n.find_first_not_of('0');
         st.label = z == std::string::npos ? "0" : n.substr(z);
     }
@@ -126,19 +127,19 @@ void LineLexer::o_word() {
             found = &k;
             break;
         }
-    if (!found) fail("unknown_control_command", "Unknown control command in o word");
+    if (!found) fail(code::unknown_control_command, "Unknown control command in o word");
     st.kind = found->kind;
     // Structures are matched by their labels before the program runs: a computed number only
     // names the subroutine a call runs.
     if (st.target >= 0 && st.kind != Stmt::o_call)
-        fail("unsupported_o_word", "A computed O-word number is supported by toolcomp with call only");
+        fail(code::unsupported_o_word, "A computed O-word number is supported by toolcomp with call only");
     st.text = std::string(raw_.substr(0, raw_.find_last_not_of("\r") + 1));
     auto bracket = [&](bool required) {
         if (!at_end() && s_[i_] == '[') return expression(true);
         if (required) {
             std::string k(found->text);
             for (char& c : k) c = ascii_lower(c);
-            fail("o_word_missing_expression", "Left bracket missing after '" + k + "'");
+            fail(code::o_word_missing_expression, "Left bracket missing after '" + k + "'");
         }
         return -1;
     };
@@ -151,7 +152,7 @@ void LineLexer::o_word() {
             break;
         case Stmt::o_call:
             while (!at_end() && s_[i_] == '[') {
-                if (st.args.size() == 30) fail("too_many_arguments", "Too many subroutine parameters");
+                if (st.args.size() == 30) fail(code::too_many_arguments, "Too many subroutine parameters");
                 st.args.push_back(expression(true));
             }
             break;
@@ -167,13 +168,13 @@ bool LineLexer::fanuc_statement() {
     st.column = col();
     const std::size_t start = i_;
     auto condition = [&] {
-        if (at_end() || s_[i_] != '[') fail("bad_macro_statement", "'[' expected before the condition");
+        if (at_end() || s_[i_] != '[') fail(code::bad_macro_statement, "'[' expected before the condition");
         return expression(true);
     };
     auto loop_number = [&] {
         std::string n;
         while (!at_end() && digit(s_[i_])) n.push_back(s_[i_++]);
-        if (n.empty() || n.size() > 3) fail("bad_macro_statement", "Loop identification number expected");
+        if (n.empty() || n.size() > 3) fail(code::bad_macro_statement, "Loop identification number expected");
         return static_cast<std::int32_t>(std::stol(n));
     };
     if (keyword("IF") && !at_end() && s_[i_] == '[') {
@@ -191,12 +192,12 @@ bool LineLexer::fanuc_statement() {
             first_word_ = false;
             return true;
         }
-        fail("bad_macro_statement", "GOTO or THEN expected after the IF condition");
+        fail(code::bad_macro_statement, "GOTO or THEN expected after the IF condition");
     }
     i_ = start;
     if (keyword("WHILE") && !at_end() && s_[i_] == '[') {
         st.value = condition();
-        if (!keyword("DO")) fail("bad_macro_statement", "DO expected after the WHILE condition");
+        if (!keyword("DO")) fail(code::bad_macro_statement, "DO expected after the WHILE condition");
         st.kind = Stmt::while_do;
         st.loop = loop_number();
         prog_.add_statement(std::move(st));

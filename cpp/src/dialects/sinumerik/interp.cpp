@@ -3,6 +3,7 @@
 // numbers), subprogram calls (L<n>, by name, with P passes) and returns (M17, RET, M2/M30
 // in a subprogram), and the block limit.
 #include <cmath>
+#include "toolcomp/program/codes.hpp"
 #include <filesystem>
 #include <fstream>
 #include <optional>
@@ -83,11 +84,11 @@ const ProgramInfo& Interp::info_of(const Program& p) {
         }
         if (k != ctl_none && (t[0].has_value || ((k == ctl_if || k == ctl_while || k == ctl_until || k == ctl_for) &&
                                                  t[0].expr < 0)))
-            throw ProgramError("syntax_error", "12080 Syntax error: " + (t[0].text.empty() ? t[0].key : t[0].text),
+            throw ProgramError(code::syntax_error, "12080 Syntax error: " + (t[0].text.empty() ? t[0].key : t[0].text),
                                {blocks[i].line, t[0].column});
         info->kind[i] = k;
         auto mismatch = [&](const char* what) {
-            throw ProgramError("14060", std::string("14060 ") + what + " without its opening statement",
+            throw ProgramError(code::alarm_14060, std::string("14060 ") + what + " without its opening statement",
                                {blocks[i].line, t[0].column});
         };
         auto close = [&](Ctl opener, const char* what) {
@@ -121,7 +122,7 @@ const ProgramInfo& Interp::info_of(const Program& p) {
     }
     if (!open.empty()) {
         const Block& b = blocks[open.back()];
-        throw ProgramError("14060", "14060 Control structure not closed (" + statements(p.tokens(b))[0].key + " without its end)",
+        throw ProgramError(code::alarm_14060, "14060 Control structure not closed (" + statements(p.tokens(b))[0].key + " without its end)",
                            {b.line, statements(p.tokens(b))[0].column});
     }
     slot = std::move(info);
@@ -132,7 +133,7 @@ double Interp::eval(std::int32_t e, int column) {
     try {
         return expr::evaluate(stack_.back().prog->expression(e), *this);
     } catch (const expr::MathError& err) {
-        fail("math_error", std::string("14051 Arithmetic error in part program: ") + err.what(), column);
+        fail(code::math_error, std::string("14051 Arithmetic error in part program: ") + err.what(), column);
     }
 }
 
@@ -140,9 +141,9 @@ double Interp::eval_text(const std::string& text, int column) {
     try {
         return expr::evaluate(expr::parse_all(text, expr::sinumerik_syntax()), *this);
     } catch (const expr::SyntaxError& err) {
-        fail("syntax_error", std::string("12080 Syntax error: ") + err.what(), column);
+        fail(code::syntax_error, std::string("12080 Syntax error: ") + err.what(), column);
     } catch (const expr::MathError& err) {
-        fail("math_error", std::string("14051 Arithmetic error in part program: ") + err.what(), column);
+        fail(code::math_error, std::string("14051 Arithmetic error in part program: ") + err.what(), column);
     }
 }
 
@@ -176,10 +177,10 @@ bool Interp::step() {
     if (b.block_delete && opts_.block_delete) return true;
     line_ = b.line;
     if (++executed_ > profile_.block_limit)
-        fail("block_limit", "Block limit of " + std::to_string(profile_.block_limit) +
+        fail(code::block_limit, "Block limit of " + std::to_string(profile_.block_limit) +
                                 " executed blocks exceeded (endless loop?)");
     if (idle_.too_long(moves_, profile_.no_motion_limit)) [[unlikely]]
-        fail("no_progress", no_progress_text(profile_.no_motion_limit));
+        fail(code::no_progress, no_progress_text(profile_.no_motion_limit));
     if (opts_.progress && executed_ % opts_.progress_every == 0) opts_.progress(executed_);
     auto t = statements(c.prog->tokens(b));
     if (t.empty()) return true;
@@ -205,7 +206,7 @@ bool Interp::control(std::span<const Token> t, std::uint8_t kind) {
                 if (!truth(t[0])) return true;
                 i = 1;
             }
-            if (i >= t.size() || t[i].key.rfind("GOTO", 0) != 0) fail("syntax_error", "GOTOF, GOTOB or GOTO expected", t[0].column);
+            if (i >= t.size() || t[i].key.rfind("GOTO", 0) != 0) fail(code::syntax_error, "GOTOF, GOTOB or GOTO expected", t[0].column);
             jump(t[i]);
             return true;
         }
@@ -223,7 +224,7 @@ bool Interp::control(std::span<const Token> t, std::uint8_t kind) {
             if (!truth(t[0])) c.pc = partner + 1;
             return true;
         case ctl_for: {
-            if (t.size() < 2 || t[1].key != "TO") fail("syntax_error", "FOR without TO", t[0].column);
+            if (t.size() < 2 || t[1].key != "TO") fail(code::syntax_error, "FOR without TO", t[0].column);
             double start = eval(t[0].expr, t[0].column);
             set_variable(t[0].text, {}, start, t[0].column);
             if (get(t[0].text, {}) > eval(t[1].expr, t[1].column)) c.pc = partner + 1;
@@ -268,14 +269,14 @@ void Interp::jump(const Token& t) {
     }
     if (!target) {
         if (t.key == "GOTOC") return;
-        fail("14080", "14080 Jump destination " + label + " not found", t.column);
+        fail(code::alarm_14080, "14080 Jump destination " + label + " not found", t.column);
     }
     c.pc = *target;
 }
 
 void Interp::call(const std::string& name, int passes, int column) {
     if (static_cast<int>(stack_.size()) >= opts_.max_call_depth)
-        fail("call_depth", "Subprogram nesting deeper than " + std::to_string(opts_.max_call_depth) + " program levels",
+        fail(code::call_depth, "Subprogram nesting deeper than " + std::to_string(opts_.max_call_depth) + " program levels",
              column);
     const Program* p = nullptr;
     if (auto it = loaded_by_name_.find(name); it != loaded_by_name_.end()) p = it->second;
@@ -302,7 +303,7 @@ void Interp::call(const std::string& name, int passes, int column) {
             break;
         }
         if (found.empty())
-            fail("14011", "14011 Program " + name + " not existing or will be edited" +
+            fail(code::alarm_14011, "14011 Program " + name + " not existing or will be edited" +
                               (opts_.search.dirs.empty() ? " (no search path given)" : " (not on the search path)"),
                  column);
         CalledText f = read_called(opts_.search, found, true);

@@ -3,6 +3,7 @@
 // control's order: feed, speed, tool selection and change, edge, plane, units, dimensions,
 // compensation modes, frames, motion, program stop and end, subprogram call.
 #include <algorithm>
+#include "toolcomp/program/codes.hpp"
 #include <cmath>
 
 #include "interp.hpp"
@@ -58,14 +59,14 @@ void Interp::block(std::span<const Token> t) {
     Context& c = stack_.back();
     if (t[0].is("DEF")) {
         if (c.executable_seen)
-            fail("14500", "14500 Illegal DEF or PROC instruction in the program (DEF after the first executable block)",
+            fail(code::alarm_14500, "14500 Illegal DEF or PROC instruction in the program (DEF after the first executable block)",
                  t[0].column);
         define(t);
         return;
     }
     if (t[0].is("PROC")) {
         if (c.pc != 1 && c.executable_seen)
-            fail("14500", "14500 Illegal DEF or PROC instruction in the program", t[0].column);
+            fail(code::alarm_14500, "14500 Illegal DEF or PROC instruction in the program", t[0].column);
         if (t[0].param == 1 && stack_.size() > 1) c.saved.emplace(st_, frame_);  // PROC ... SAVE
         return;
     }
@@ -88,16 +89,16 @@ void Interp::block(std::span<const Token> t) {
         if (x.is("MSG")) {
             std::string m = x.text;
             if (m.size() >= 2 && m.front() == '"' && m.back() == '"') m = m.substr(1, m.size() - 2);
-            info("message", m, x.column);
+            info(code::message, m, x.column);
             continue;
         }
         if (x.is("SETAL")) {
             const long n = std::lround(eval_text(x.text, x.column));
-            fail("setal", "Alarm " + std::to_string(n) + " set by the program (SETAL)", x.column);
+            fail(code::setal, "Alarm " + std::to_string(n) + " set by the program (SETAL)", x.column);
         }
         words = true;  // an address, G/M function, keyword or call: more than a computation
         if (is_unsupported(k) || (x.is("G") && (x.value == 110 || x.value == 111 || x.value == 112)))
-            fail("unsupported_word", (x.is("G") ? "G" + std::to_string(int_value(x.value)) : k) +
+            fail(code::unsupported_word, (x.is("G") ? "G" + std::to_string(int_value(x.value)) : k) +
                                          " is not supported by toolcomp", x.column);
         if (x.has_value || x.expr >= 0 || (!x.text.empty() && x.text.front() == '"')) {
             if (k.size() == 1 && k[0] >= 'A' && k[0] <= 'Z') {
@@ -105,14 +106,14 @@ void Interp::block(std::span<const Token> t) {
                 if (l == 'G') {
                     double v = value_of(x);
                     if (v != std::floor(v) || v < 0 || v > 9999)
-                        fail("12470", "12470 G function G" + std::to_string(v) + " is unknown", x.column);
+                        fail(code::alarm_12470, "12470 G function G" + std::to_string(v) + " is unknown", x.column);
                     b.g.emplace_back(int_value(v), x.column);
                     continue;
                 }
                 if (l == 'M') {
                     const double v = value_of(x);
                     if (v != std::floor(v) || v < 0 || v > 2147483647)
-                        fail("unsupported_m_code", "M" + std::to_string(v) + " is not an M function", x.column);
+                        fail(code::unsupported_m_code, "M" + std::to_string(v) + " is not an M function", x.column);
                     int m = int_value(v);
                     // A builder code of the machine stands for the standard code of its action.
                     if (const MachineCode* code = opts_.machine ? opts_.machine->m_code(m) : nullptr) {
@@ -135,19 +136,19 @@ void Interp::block(std::span<const Token> t) {
                     continue;
                 }
                 if (l == 'R')  // R5 without "=": a parameter named alone does nothing
-                    fail("unused_word", "R" + std::to_string(int_value(value_of(x))) +
+                    fail(code::unused_word, "R" + std::to_string(int_value(value_of(x))) +
                                             ": an R parameter alone does nothing (assign with R1=..., read with X=R1)",
                          x.column);
                 Value& v = b[l];
-                if (v.set) fail("12010", "12010 Address " + k + " programmed too often", x.column);
+                if (v.set) fail(code::alarm_12010, "12010 Address " + k + " programmed too often", x.column);
                 v = Value{true, value_of(x), x.param, x.column};
                 continue;
             }
             Value* v = x.is("CR") ? &b.cr : x.is("AR") ? &b.ar : x.is("TURN") ? &b.turn : x.is("DISC") ? &b.disc
                      : x.is("OFFN") ? &b.offn : x.is("RPL") ? &b.rpl : x.is("I1") ? &b.i1 : x.is("J1") ? &b.j1
                      : x.is("K1") ? &b.k1 : x.is("TCARR") ? &b.tcarr : nullptr;
-            if (!v) fail("unsupported_word", (x.text.empty() || x.text[0] == '"' ? k + "=" : x.text) + " is not supported by toolcomp", x.column);
-            if (v->set) fail("12010", "12010 Address " + k + " programmed too often", x.column);
+            if (!v) fail(code::unsupported_word, (x.text.empty() || x.text[0] == '"' ? k + "=" : x.text) + " is not supported by toolcomp", x.column);
+            if (v->set) fail(code::alarm_12010, "12010 Address " + k + " programmed too often", x.column);
             *v = Value{true, value_of(x), x.param, x.column};
             continue;
         }
@@ -156,15 +157,15 @@ void Interp::block(std::span<const Token> t) {
             continue;
         }
         if (k.rfind("GOTO", 0) == 0 || x.is("IF") || x.is("FOR") || x.is("WHILE"))
-            fail("syntax_error", k + " must begin its block", x.column);
+            fail(code::syntax_error, k + " must begin its block", x.column);
         // Anything else names a subprogram (found on the search path, or an error there).
-        if (!call_name.empty()) fail("12010", "12010 Two subprogram calls in one block", x.column);
+        if (!call_name.empty()) fail(code::alarm_12010, "12010 Two subprogram calls in one block", x.column);
         call_name = k;
         call_column = x.column;
     }
     for (char c : taken) b[c].set = false;
     if (b.has('P') && call_name.empty())
-        fail("unused_word", "P (the passes of a subprogram call) without a call in the block", b['P'].column);
+        fail(code::unused_word, "P (the passes of a subprogram call) without a call in the block", b['P'].column);
     const std::size_t moves_before = moves_;
     const bool comp_before = st_.side != 0;
     execute(b, t[0].column);
@@ -179,7 +180,7 @@ void Interp::block(std::span<const Token> t) {
         int passes = 1;
         if (b.has('P')) {
             passes = int_value(b['P'].v);
-            if (passes < 1 || passes > 9999) fail("14770", "14770 Number of passes P out of range 1..9999", b['P'].column);
+            if (passes < 1 || passes > 9999) fail(code::alarm_14770, "14770 Number of passes P out of range 1..9999", b['P'].column);
         }
         call(call_name, passes, call_column);
     }

@@ -4,6 +4,7 @@
 // helices) and the cutter radius request (G40/G41/G42, NORM/KONT, G450/G451, DISC, CDON/CDOF,
 // OFFN).
 #include <cmath>
+#include "toolcomp/program/codes.hpp"
 
 #include "interp.hpp"
 #include "toolcomp/motion/spindle.hpp"
@@ -45,7 +46,7 @@ Vec3 Interp::end_point(const BlockData& b, bool machine) const {
         double x = v.v * unit();
         const bool incremental = v.mod == 2 || (v.mod == 0 && st_.incremental);
         if (i == 0 && (st_.diameter || (diam90_ && !incremental))) x /= 2;
-        if (machine && incremental) fail("g53_incremental", "G53/G153/SUPA with incremental dimensions", v.column);
+        if (machine && incremental) fail(code::g53_incremental, "G53/G153/SUPA with incremental dimensions", v.column);
         p[i] = incremental ? p[i] + x : x;
     }
     return p;
@@ -111,7 +112,7 @@ void Interp::frame_statement(const BlockData& b, const std::string& which, int c
     // A10, SCALE B2, ROT takes none) would be left out without a word: refused.
     for (const char a : {'A', 'B', 'C'})
         if (b.has(a))
-            fail("unsupported_word", which + " on the rotary axis " + std::string(1, a) + " is not supported by toolcomp",
+            fail(code::unsupported_word, which + " on the rotary axis " + std::string(1, a) + " is not supported by toolcomp",
                  b[a].column);
     Frame f = additive ? frame_ : Frame{};
     if (base == "TRANS") {
@@ -122,7 +123,7 @@ void Interp::frame_statement(const BlockData& b, const std::string& which, int c
     } else if (base == "ROT") {
         Mat3 r = Mat3::Identity();
         if (b.rpl.set) {
-            if (b.has('X') || b.has('Y') || b.has('Z')) fail("syntax_error", "ROT with RPL= and axis angles", column);
+            if (b.has('X') || b.has('Y') || b.has('Z')) fail(code::syntax_error, "ROT with RPL= and axis angles", column);
             r = rotation(plane_normal_axis(st_.plane), b.rpl.v);
         } else {
             for (int i : {2, 1, 0})  // Z, then Y, then X (RPY angles, MD10600 = 1)
@@ -133,7 +134,7 @@ void Interp::frame_statement(const BlockData& b, const std::string& which, int c
         Mat3 s = Mat3::Identity();
         for (int i = 0; i < 3; ++i)
             if (b[kAxes[i]].set) {
-                if (b[kAxes[i]].v == 0) fail("scale_zero", "SCALE with a factor of zero", b[kAxes[i]].column);
+                if (b[kAxes[i]].v == 0) fail(code::scale_zero, "SCALE with a factor of zero", b[kAxes[i]].column);
                 s(i, i) = b[kAxes[i]].v;
             }
         f.then(s);
@@ -152,7 +153,7 @@ void Interp::execute(BlockData& b, int first_column) {
         feedmode = -1;
     auto setg = [&](int& slot, int code, int column) {
         if (slot >= 0 && slot != code)
-            fail("12190", "12190 G functions G" + std::to_string(slot) + " and G" + std::to_string(code) +
+            fail(code::alarm_12190, "12190 G functions G" + std::to_string(slot) + " and G" + std::to_string(code) +
                               " of the same group in one block", column);
         slot = code;
     };
@@ -170,7 +171,7 @@ void Interp::execute(BlockData& b, int first_column) {
             case 60: case 64: case 601: case 602: case 603: break;
             case 641: case 642: case 643: case 644: case 645:
                 if (!warned_blending_) {
-                    info("blending_not_modelled", "G" + std::to_string(g) +
+                    info(code::blending_not_modelled, "G" + std::to_string(g) +
                          " corner rounding is a tolerance of the executed path; toolcomp returns the programmed path", column);
                     warned_blending_ = true;
                 }
@@ -180,7 +181,7 @@ void Interp::execute(BlockData& b, int first_column) {
                     setg(workoffset, g, column);
                     break;
                 }
-                fail("unsupported_g_code", "G" + std::to_string(g) + " is not supported by toolcomp", column);
+                fail(code::unsupported_g_code, "G" + std::to_string(g) + " is not supported by toolcomp", column);
         }
     }
     bool cip = false, ct = false, machine = nonmodal == 53 || nonmodal == 153;
@@ -192,13 +193,13 @@ void Interp::execute(BlockData& b, int first_column) {
         else if (k == "SUPA") machine = true;
         else if (k == "TRANS" || k == "ATRANS" || k == "ROT" || k == "AROT" || k == "SCALE" || k == "ASCALE" ||
                  k == "MIRROR" || k == "AMIRROR") {
-            if (!frame_word.empty()) fail("12190", "12190 Two frame instructions in one block", column);
+            if (!frame_word.empty()) fail(code::alarm_12190, "12190 Two frame instructions in one block", column);
             frame_word = k;
             frame_column = column;
         }
     }
-    if ((cip || ct) && motion >= 0) fail("12190", "12190 CIP/CT and G" + std::to_string(motion) + " in one block", first_column);
-    if (cip && ct) fail("12190", "12190 CIP and CT in one block", first_column);
+    if ((cip || ct) && motion >= 0) fail(code::alarm_12190, "12190 CIP/CT and G" + std::to_string(motion) + " in one block", first_column);
+    if (cip && ct) fail(code::alarm_12190, "12190 CIP and CT in one block", first_column);
 
     // ---- units first: the block's own values follow them ------------------------------------
     if (units >= 0) {
@@ -219,7 +220,7 @@ void Interp::execute(BlockData& b, int first_column) {
         st_.feed_mode = feedmode;
     }
     if (b.has('S') && nonmodal != 4) {
-        if (b['S'].v < 0) fail("negative_spindle_speed", "Negative spindle speed S", b['S'].column);
+        if (b['S'].v < 0) fail(code::negative_spindle_speed, "Negative spindle speed S", b['S'].column);
         (st_.feed_mode == 96 ? cutting_speed_ : speed_) = b['S'].v;
     }
     if (b.has('T')) select_tool(b);
@@ -229,22 +230,22 @@ void Interp::execute(BlockData& b, int first_column) {
         else if (m == 0 || m == 1) stop = true;
         else if (m == 2 || m == 30) end = true;
         else if (m == 17) sub_end = true;
-        else if (m < 0) fail("unsupported_m_code", "M" + std::to_string(m) + " is not an M function", column);
+        else if (m < 0) fail(code::unsupported_m_code, "M" + std::to_string(m) + " is not an M function", column);
     }
     if (m6) {
-        if (st_.side != 0) fail("10750", "10750 Tool change with active TRC", first_column);
+        if (st_.side != 0) fail(code::alarm_10750, "10750 Tool change with active TRC", first_column);
         change_tool();
     }
     if (b.has('D')) {
         const Value& d = b['D'];
-        if (d.v != std::floor(d.v) || d.v < 0) fail("17180", "17180 Illegal D number", d.column);
-        if (d.v > 32000) fail("17180", "17180 Illegal D number", d.column);
+        if (d.v != std::floor(d.v) || d.v < 0) fail(code::alarm_17180, "17180 Illegal D number", d.column);
+        if (d.v > 32000) fail(code::alarm_17180, "17180 Illegal D number", d.column);
         select_edge(int_value(d.v), d.column);
     }
     // ---- plane, dimensions ---------------------------------------------------------------------
     if (plane >= 0) {
         Plane p = plane == 17 ? Plane::xy : plane == 18 ? Plane::zx : Plane::yz;
-        if (p != st_.plane && st_.side != 0) fail("10757", "10757 Change of the compensation plane with active TRC", first_column);
+        if (p != st_.plane && st_.side != 0) fail(code::alarm_10757, "10757 Change of the compensation plane with active TRC", first_column);
         st_.plane = p;
         update_tool_offset();
     }
@@ -261,12 +262,12 @@ void Interp::execute(BlockData& b, int first_column) {
     }
     if (corner >= 0) st_.outside = static_cast<int>(corner == 450 ? OutsideCorner::arc : OutsideCorner::intersection);
     if (b.disc.set) {
-        if (b.disc.v < 0 || b.disc.v > 100) fail("14800", "14800 DISC value outside 0..100", b.disc.column);
+        if (b.disc.v < 0 || b.disc.v > 100) fail(code::alarm_14800, "14800 DISC value outside 0..100", b.disc.column);
         st_.disc = b.disc.v;
     }
     if (b.offn.set) st_.offn = b.offn.v * unit();
     if (b.tcarr.set) {
-        if (!(b.tcarr.v >= 0 && b.tcarr.v <= 99999)) fail("14153", "14153 TCARR= toolholder number out of range", b.tcarr.column);
+        if (!(b.tcarr.v >= 0 && b.tcarr.v <= 99999)) fail(code::alarm_14153, "14153 TCARR= toolholder number out of range", b.tcarr.column);
         tcarr_ = int_value(b.tcarr.v);
         update_tool_offset();
     }
@@ -274,14 +275,14 @@ void Interp::execute(BlockData& b, int first_column) {
     if (comp >= 0) {
         const int side = comp == 41 ? 1 : comp == 42 ? -1 : 0;
         if (side != 0 && tool_ == 0)
-            fail("10750", "10750 Tool radius compensation activated without a tool number", first_column);
+            fail(code::alarm_10750, "10750 Tool radius compensation activated without a tool number", first_column);
         if (side != 0 && d_ == 0)
-            diags_.push_back({"comp_d0", Severity::warning,
+            diags_.push_back({code::comp_d0, Severity::warning,
                               "G" + std::to_string(comp) + " with D0: no tool radius compensation", {line_, first_column}});
         if (side != 0 && (motion == 2 || motion == 3 || cip || ct || (motion < 0 && st_.motion >= 2)) && st_.side == 0)
-            fail("10753", "10753 TRC selection only possible in a linear block", first_column);
+            fail(code::alarm_10753, "10753 TRC selection only possible in a linear block", first_column);
         if (side == 0 && st_.side != 0 && (motion == 2 || motion == 3 || cip || ct || (motion < 0 && st_.motion >= 2)))
-            fail("10754", "10754 TRC deselection only possible in a linear block", first_column);
+            fail(code::alarm_10754, "10754 TRC deselection only possible in a linear block", first_column);
         if (side == 0 && st_.side != 0) sink_.control({ControlKind::radius_off, line_, Vec3::Zero(), file()});
         st_.side = side;
     }
@@ -289,10 +290,10 @@ void Interp::execute(BlockData& b, int first_column) {
     // G54..G57, G505..G599, G500: the settable frames carry no values here (see interpreter.hpp).
     const bool axes = b.has('X') || b.has('Y') || b.has('Z');
     if (!frame_word.empty()) {
-        if (motion >= 0) fail("12190", "12190 " + frame_word + " must be programmed in a block of its own", frame_column);
+        if (motion >= 0) fail(code::alarm_12190, "12190 " + frame_word + " must be programmed in a block of its own", frame_column);
         frame_statement(b, frame_word, frame_column);
     } else if (b.rpl.set) {
-        fail("syntax_error", "RPL= without ROT or AROT", b.rpl.column);
+        fail(code::syntax_error, "RPL= without ROT or AROT", b.rpl.column);
     }
     // ---- motion --------------------------------------------------------------------------------
     if (motion >= 0) st_.motion = motion;
@@ -303,14 +304,14 @@ void Interp::execute(BlockData& b, int first_column) {
     const bool arc_words = b.has('I') || b.has('J') || b.has('K') || b.cr.set || b.ar.set || b.i1.set || b.j1.set ||
                            b.k1.set || b.turn.set;
     if (arc_words && st_.motion < 2)
-        fail("unused_word", "I, J, K, CR=, AR=, I1=, TURN= need G2, G3, CIP or CT", first_column);
+        fail(code::unused_word, "I, J, K, CR=, AR=, I1=, TURN= need G2, G3, CIP or CT", first_column);
     if (nonmodal == 4) {
-        if (!b.has('F') && !b.has('S')) fail("dwell_missing", "G4 needs the dwell time F (seconds) or S (revolutions)", first_column);
+        if (!b.has('F') && !b.has('S')) fail(code::dwell_missing, "G4 needs the dwell time F (seconds) or S (revolutions)", first_column);
         // G4 stands in a block of its own: axis words beside it would be a move the control
         // does not make.
         for (const char a : {'X', 'Y', 'Z', 'A', 'B', 'C'})
-            if (b.has(a)) fail("12190", "12190 G4 must be programmed in a block of its own", b[a].column);
-        if (motion >= 0) fail("12190", "12190 G4 must be programmed in a block of its own", first_column);
+            if (b.has(a)) fail(code::alarm_12190, "12190 G4 must be programmed in a block of its own", b[a].column);
+        if (motion >= 0) fail(code::alarm_12190, "12190 G4 must be programmed in a block of its own", first_column);
     } else if (!data_axes && (axes || rotary || (st_.motion >= 2 && arc_words))) {
         std::array<double, 3> abc = abc_;
         for (int i = 0; i < 3; ++i) {
@@ -318,7 +319,7 @@ void Interp::execute(BlockData& b, int first_column) {
             if (v.set) abc[static_cast<std::size_t>(i)] = (v.mod == 2 || (v.mod == 0 && st_.incremental)) ? abc[static_cast<std::size_t>(i)] + v.v : v.v;
         }
         if (st_.motion >= 2) {
-            if (machine) fail("g53_motion", "G53/G153/SUPA only with G0 or G1", first_column);
+            if (machine) fail(code::g53_motion, "G53/G153/SUPA only with G0 or G1", first_column);
             Vec3 e = end_point(b, false);
             abc_ = abc;
             arc(b, e);
@@ -326,7 +327,7 @@ void Interp::execute(BlockData& b, int first_column) {
             Vec3 e = end_point(b, machine);
             Vec3 out = machine ? e : frame_.apply(e) + zero_shift_;
             abc_ = abc;
-            if (st_.motion == 1 && !(feed_ > 0)) fail("10860", "10860 No feedrate programmed", first_column);
+            if (st_.motion == 1 && !(feed_ > 0)) fail(code::alarm_10860, "10860 No feedrate programmed", first_column);
             Motion m = motion_(st_.motion == 0 ? MotionKind::rapid : MotionKind::line, out);
             if (machine) m.radius = RadiusRequest{};
             const Vec2 d = in_plane(e - program_pos(), st_.plane);
@@ -337,8 +338,8 @@ void Interp::execute(BlockData& b, int first_column) {
         }
     }
     for (const char l : {'U', 'V', 'W', 'O', 'Q', 'E'})
-        if (b.has(l)) fail("unsupported_word", std::string(1, l) + " words are not supported by toolcomp", b[l].column);
-    if (b.has('N')) fail("syntax_error", "12080 Syntax error: a block number N must begin the block", b['N'].column);
+        if (b.has(l)) fail(code::unsupported_word, std::string(1, l) + " words are not supported by toolcomp", b[l].column);
+    if (b.has('N')) fail(code::syntax_error, "12080 Syntax error: a block number N must begin the block", b['N'].column);
     // ---- stop, end -----------------------------------------------------------------------------
     if (stop) sink_.control({ControlKind::stop, line_, Vec3::Zero(), file()});
     bool ret_word = b.keyword("RET");
@@ -377,7 +378,7 @@ void Interp::arc(const BlockData& b, const Vec3& end_prog) {
     {
         const Value& k_off = b[kCentre[ax.c]];
         if (k_off.set)
-            fail("14040", std::string("14040 ") + kCentre[ax.c] + " is no centre coordinate in the working plane (" +
+            fail(code::alarm_14040, std::string("14040 ") + kCentre[ax.c] + " is no centre coordinate in the working plane (" +
                               kCentre[ax.a] + ", " + kCentre[ax.b] + ")",
                  k_off.column);
         const bool centre = b.has(kCentre[ax.a]) || b.has(kCentre[ax.b]);
@@ -391,10 +392,10 @@ void Interp::arc(const BlockData& b, const Vec3& end_prog) {
             what = "CR=";
         }
         if (extra)
-            fail("14040", std::string("14040 ") + what + " and another definition of the circle (CR=, AR=, I, J, K) in one block",
+            fail(code::alarm_14040, std::string("14040 ") + what + " and another definition of the circle (CR=, AR=, I, J, K) in one block",
                  extra->column);
         if (st_.motion != 5 && (b.i1.set || b.j1.set || b.k1.set))
-            fail("14040", "14040 I1=, J1=, K1= (the intermediate point) belong to CIP", (b.i1.set ? b.i1 : b.j1.set ? b.j1 : b.k1).column);
+            fail(code::alarm_14040, "14040 I1=, J1=, K1= (the intermediate point) belong to CIP", (b.i1.set ? b.i1 : b.j1.set ? b.j1 : b.k1).column);
     }
     auto centre_words = [&]() -> std::optional<Vec2> {
         const Value& ca = b[kCentre[ax.a]];
@@ -417,43 +418,43 @@ void Interp::arc(const BlockData& b, const Vec3& end_prog) {
         }
         // Three points in space make a circle in space: only one in the working plane is read.
         if (m3[ax.c] != s3[ax.c] || e3[ax.c] != s3[ax.c])
-            fail("unsupported_word",
+            fail(code::unsupported_word,
                  "CIP through points off the working plane (a circle in space) is not supported by toolcomp", first);
         const Vec2 m = in_plane(m3, st_.plane);
         const double cr = cross2(m - s, e - s);
         if (std::fabs(cr) < 1e-9 * std::max(1.0, (e - s).squaredNorm()))
-            fail("14040", "14040 Error in end point of circle: CIP points on one line", first);
+            fail(code::alarm_14040, "14040 Error in end point of circle: CIP points on one line", first);
         // Circumcentre of s, m, e.
         const Vec2 a = m - s, bb = e - s;
         const double d = 2 * cross2(a, bb);
         c = s + Vec2(bb.y() * a.squaredNorm() - a.y() * bb.squaredNorm(), a.x() * bb.squaredNorm() - bb.x() * a.squaredNorm()) / d;
         dir = cr > 0 ? 1 : -1;
     } else if (st_.motion == 6) {  // CT
-        if (!last_tangent_) fail("14040", "14040 CT needs a preceding move to be tangent to", first);
+        if (!last_tangent_) fail(code::alarm_14040, "14040 CT needs a preceding move to be tangent to", first);
         const Vec2 n = left_normal(*last_tangent_);
         const Vec2 d = e - s;
         const double dn = d.dot(n);
-        if (std::fabs(dn) < 1e-9) fail("14040", "14040 Error in end point of circle: CT end point on the tangent", first);
+        if (std::fabs(dn) < 1e-9) fail(code::alarm_14040, "14040 Error in end point of circle: CT end point on the tangent", first);
         const double rho = d.squaredNorm() / (2 * dn);
         c = s + n * rho;
         dir = rho > 0 ? 1 : -1;
     } else if (b.cr.set) {
         if (b.has(kCentre[ax.a]) || b.has(kCentre[ax.b]))
-            fail("14040", "14040 CR= and the centre I, J, K in one block", b.cr.column);
+            fail(code::alarm_14040, "14040 CR= and the centre I, J, K in one block", b.cr.column);
         const double R = b.cr.v * unit();
         auto cc = center_from_radius(s, e, R, dir);
         if (!cc) {
             if ((e - s).norm() > 2 * std::fabs(R) + tol || (e - s).norm() < 1e-12)
-                fail("14040", "14040 Error in end point of circle: CR= too small for the chord", b.cr.column);
+                fail(code::alarm_14040, "14040 Error in end point of circle: CR= too small for the chord", b.cr.column);
             cc = (s + e) / 2;
         }
         c = *cc;
     } else if (b.ar.set) {
         const double A = b.ar.v;
-        if (!(A > 0 && A < 360)) fail("14040", "14040 AR= must lie between 0 and 360 degrees", b.ar.column);
+        if (!(A > 0 && A < 360)) fail(code::alarm_14040, "14040 AR= must lie between 0 and 360 degrees", b.ar.column);
         const double ang = A * kPi / 180;
         if (auto cw = centre_words()) {
-            if (end_given) fail("14040", "14040 AR= with both centre and end point", b.ar.column);
+            if (end_given) fail(code::alarm_14040, "14040 AR= with both centre and end point", b.ar.column);
             c = *cw;
             const Vec2 r = s - c;
             const double t = dir * ang;
@@ -462,7 +463,7 @@ void Interp::arc(const BlockData& b, const Vec3& end_prog) {
             e3[ax.b] = e.y();
         } else {
             const double chord = (e - s).norm();
-            if (chord < 1e-12) fail("14040", "14040 AR= with the end point at the start", b.ar.column);
+            if (chord < 1e-12) fail(code::alarm_14040, "14040 AR= with the end point at the start", b.ar.column);
             const Vec2 u = (e - s) / chord;
             const double dist = (chord / 2) / std::tan(ang / 2);
             c = (s + e) / 2 + left_normal(u) * (dir * dist);
@@ -470,13 +471,13 @@ void Interp::arc(const BlockData& b, const Vec3& end_prog) {
     } else if (auto cw = centre_words()) {
         c = *cw;
     } else {
-        fail("14040", "14040 Circle without centre, radius, opening angle or intermediate point", first);
+        fail(code::alarm_14040, "14040 Circle without centre, radius, opening angle or intermediate point", first);
     }
-    if (!c.allFinite()) fail("14040", "14040 Error in end point of circle: the centre cannot be computed", first);
+    if (!c.allFinite()) fail(code::alarm_14040, "14040 Error in end point of circle: the centre cannot be computed", first);
     const double rs = (s - c).norm(), re = (e - c).norm();
-    if (rs < 1e-9) fail("14040", "14040 Error in end point of circle: radius zero", first);
+    if (rs < 1e-9) fail(code::alarm_14040, "14040 Error in end point of circle: radius zero", first);
     if (std::fabs(re - rs) > std::max(tol, 0.001 * rs))
-        fail("14040", "14040 Error in end point of circle (start radius " + std::to_string(rs) + ", end radius " +
+        fail(code::alarm_14040, "14040 Error in end point of circle (start radius " + std::to_string(rs) + ", end radius " +
                           std::to_string(re) + ")", first);
     // The centre in 3D at the start's applicate; the frame must keep the working plane.
     Vec3 c3 = s3;
@@ -487,22 +488,22 @@ void Interp::arc(const BlockData& b, const Vec3& end_prog) {
     const double sa = std::hypot(A(ax.a, ax.a), A(ax.b, ax.a)), sb = std::hypot(A(ax.a, ax.b), A(ax.b, ax.b));
     if (std::fabs(A(n, ax.a)) > 1e-12 || std::fabs(A(n, ax.b)) > 1e-12 || std::fabs(A(ax.a, n)) > 1e-12 ||
         std::fabs(A(ax.b, n)) > 1e-12)
-        fail("unsupported_word", "Circles in a frame rotated out of the working plane are not supported by toolcomp", first);
+        fail(code::unsupported_word, "Circles in a frame rotated out of the working plane are not supported by toolcomp", first);
     if (std::fabs(sa - sb) > 1e-9 * std::max(sa, sb)) {
-        if (st_.side != 0) fail("10761", "10761 Tool radius compensation for an ellipse (circle in a non-uniform SCALE)", first);
-        fail("unsupported_word", "Ellipses (circles in a non-uniform SCALE) are not supported by toolcomp", first);
+        if (st_.side != 0) fail(code::alarm_10761, "10761 Tool radius compensation for an ellipse (circle in a non-uniform SCALE)", first);
+        fail(code::unsupported_word, "Ellipses (circles in a non-uniform SCALE) are not supported by toolcomp", first);
     }
-    if (!(feed_ > 0)) fail("10860", "10860 No feedrate programmed", first);
+    if (!(feed_ > 0)) fail(code::alarm_10860, "10860 No feedrate programmed", first);
     if (st_.side != 0 && std::fabs(e3[n] - s3[n]) > 1e-9) {
         Vec3 normal = Vec3::Zero();
         normal[n] = 1;
         if (tool_axis_.cross(frame_.a * normal).norm() > 1e-9)
-            fail("10760", "10760 Helical axis is not parallel to the tool orientation", first);
+            fail(code::alarm_10760, "10760 Helical axis is not parallel to the tool orientation", first);
     }
     int turns = 0;
     if (b.turn.set) {
         if (!(b.turn.v >= 0 && b.turn.v <= kMaxArcTurns) || b.turn.v != std::floor(b.turn.v))
-            fail("14040", "14040 TURN= must be a whole number of turns (0..999999)", b.turn.column);
+            fail(code::alarm_14040, "14040 TURN= must be a whole number of turns (0..999999)", b.turn.column);
         turns = int_value(b.turn.v);
     }
     const Vec3 out_end = frame_.apply(e3) + zero_shift_;

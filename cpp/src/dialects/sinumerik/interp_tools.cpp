@@ -5,6 +5,7 @@
 // edge_from_common). The length vector follows the plane (spec §3.2) and, with a toolholder
 // (TCARR=m), its kinematics (spec §3.6).
 #include <cctype>
+#include "toolcomp/program/codes.hpp"
 
 #include "interp.hpp"
 #include "toolcomp/program/int_value.hpp"
@@ -22,15 +23,15 @@ void Interp::select_tool(const BlockData& b) {
         if (tools_)
             for (const Tool& x : tools_->tools())
                 if (to_upper_ascii(x.name) == to_upper_ascii(b.tool_name)) found = &x;
-        if (!found) fail("17190", "17190 Illegal T number: no tool named \"" + b.tool_name + "\"", b.tool_name_column);
+        if (!found) fail(code::alarm_17190, "17190 Illegal T number: no tool named \"" + b.tool_name + "\"", b.tool_name_column);
         t = found->number;
     } else {
-        if (tv.v != std::floor(tv.v) || !(tv.v >= 0 && tv.v <= 32000)) fail("17190", "17190 Illegal T number", tv.column);
+        if (tv.v != std::floor(tv.v) || !(tv.v >= 0 && tv.v <= 32000)) fail(code::alarm_17190, "17190 Illegal T number", tv.column);
         t = int_value(tv.v);
         bool known = t == 0 || (tools_ && tools_->contains(t));
         auto it = edges_.lower_bound({t, 0});
         known |= it != edges_.end() && it->first.first == t;
-        if (!known) fail("17190", "17190 Illegal T number: T" + std::to_string(t) + " is not in the tool data", tv.column);
+        if (!known) fail(code::alarm_17190, "17190 Illegal T number: T" + std::to_string(t) + " is not in the tool data", tv.column);
     }
     selected_ = t;
     if (profile_.kind == MachineKind::lathe) change_tool();
@@ -55,13 +56,13 @@ void Interp::select_edge(int d, int column) {
         update_tool_offset();
         return;
     }
-    if (tool_ == 0) fail("17180", "17180 Illegal D number: D" + std::to_string(d) + " without an active tool", column);
+    if (tool_ == 0) fail(code::alarm_17180, "17180 Illegal D number: D" + std::to_string(d) + " without an active tool", column);
     if (auto it = edges_.find({tool_, d}); it != edges_.end()) {
         active_ = it->second;
     } else if (auto e = table_edge(tool_, d)) {
         active_ = *e;
     } else {
-        fail("17180", "17180 Illegal D number: T" + std::to_string(tool_) + " has no cutting edge D" + std::to_string(d), column);
+        fail(code::alarm_17180, "17180 Illegal D number: T" + std::to_string(tool_) + " has no cutting edge D" + std::to_string(d), column);
     }
     d_ = d;
     update_tool_offset();
@@ -85,7 +86,7 @@ void Interp::update_tool_offset() {
     tool_axis_ = Vec3(0, 0, 1);
     if (tcarr_ != 0) {
         auto it = holders_.find(tcarr_);
-        if (it == holders_.end()) fail("14153", "14153 Toolholder " + std::to_string(tcarr_) + " has no data ($TC_CARR)");
+        if (it == holders_.end()) fail(code::alarm_14153, "14153 Toolholder " + std::to_string(tcarr_) + " has no data ($TC_CARR)");
         try {
             check_kinematic_type(it->second.kind);
         } catch (const Error& e) {

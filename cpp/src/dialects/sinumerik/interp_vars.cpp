@@ -2,6 +2,7 @@
 // INT/BOOL, arrays of one or two dimensions), the tool system variables $TC_DPn[t,d] and
 // $TC_CARRn[m], $P_TOOLNO / $P_TOOL, and the value-returning calls GETTCOR and LENTOAX.
 #include <cmath>
+#include "toolcomp/program/codes.hpp"
 
 #include "interp.hpp"
 #include "toolcomp/program/int_value.hpp"
@@ -53,31 +54,31 @@ Variable* Interp::find_variable(const std::string& name) {
 double Interp::get(const std::string& name, std::span<const double> idx) {
     if (name == "R" && idx.size() == 1) {
         int i = as_index(idx[0]);
-        if (i < 0 || i >= static_cast<int>(r_.size())) fail("17020", "17020 Illegal array index: R[" + std::to_string(i) + "]");
+        if (i < 0 || i >= static_cast<int>(r_.size())) fail(code::alarm_17020, "17020 Illegal array index: R[" + std::to_string(i) + "]");
         return r_[static_cast<std::size_t>(i)];
     }
     if (int n = numbered(name, "R"); (n > 0 || name == "R0") && idx.empty()) {
-        if (n >= static_cast<int>(r_.size())) fail("12550", "12550 Name " + name + " not defined");
+        if (n >= static_cast<int>(r_.size())) fail(code::alarm_12550, "12550 Name " + name + " not defined");
         return r_[static_cast<std::size_t>(n)];
     }
     if (Variable* v = find_variable(name)) {
         const auto flat = v->at(idx);
-        if (!flat) fail("17020", "17020 Illegal array index of " + name);
+        if (!flat) fail(code::alarm_17020, "17020 Illegal array index of " + name);
         return v->v[*flat];
     }
     if (int n = numbered(name, "$TC_DP")) {
-        if (idx.size() != 2) fail("17020", "17020 " + name + " needs the indices [t, d]");
+        if (idx.size() != 2) fail(code::alarm_17020, "17020 " + name + " needs the indices [t, d]");
         auto it = edges_.find({as_index(idx[0]), as_index(idx[1])});
-        if (it == edges_.end()) fail("17180", "17180 Illegal D number: no cutting edge D" + std::to_string(as_index(idx[1])) +
+        if (it == edges_.end()) fail(code::alarm_17180, "17180 Illegal D number: no cutting edge D" + std::to_string(as_index(idx[1])) +
                                                   " of T" + std::to_string(as_index(idx[0])));
         try {
             return it->second.DP(n);
         } catch (const Error& e) {
-            fail("12550", "12550 Name " + name + " not defined");
+            fail(code::alarm_12550, "12550 Name " + name + " not defined");
         }
     }
     if (int n = numbered(name, "$TC_CARR")) {
-        if (idx.size() != 1) fail("17020", "17020 " + name + " needs the index [m]");
+        if (idx.size() != 1) fail(code::alarm_17020, "17020 " + name + " needs the index [m]");
         auto it = holders_.find(as_index(idx[0]));
         if (it == holders_.end()) return 0;
         const Toolholder& h = it->second;
@@ -89,45 +90,45 @@ double Interp::get(const std::string& name, std::span<const double> idx) {
         if (n >= 18 && n <= 20) return h.l4[n - 18];
         if (n == 24) return h.offset1;
         if (n == 25) return h.offset2;
-        fail("12550", "12550 " + name + " cannot be read as a number");
+        fail(code::alarm_12550, "12550 " + name + " cannot be read as a number");
     }
     if (name == "$P_TOOLNO" && idx.empty()) return tool_;
     if (name == "$P_TOOL" && idx.empty()) return d_;
-    fail("12550", "12550 Name " + name + " not defined");
+    fail(code::alarm_12550, "12550 Name " + name + " not defined");
 }
 
 void Interp::set_variable(const std::string& name, std::span<const double> idx, double v, int column) {
     if (name == "R" && idx.size() == 1) {
         int i = as_index(idx[0]);
-        if (i < 0 || i >= static_cast<int>(r_.size())) fail("17020", "17020 Illegal array index: R[" + std::to_string(i) + "]", column);
+        if (i < 0 || i >= static_cast<int>(r_.size())) fail(code::alarm_17020, "17020 Illegal array index: R[" + std::to_string(i) + "]", column);
         r_[static_cast<std::size_t>(i)] = v;
         return;
     }
     if (int n = numbered(name, "R"); (n > 0 || name == "R0") && idx.empty()) {
-        if (n >= static_cast<int>(r_.size())) fail("12550", "12550 Name " + name + " not defined", column);
+        if (n >= static_cast<int>(r_.size())) fail(code::alarm_12550, "12550 Name " + name + " not defined", column);
         r_[static_cast<std::size_t>(n)] = v;
         return;
     }
     if (Variable* var = find_variable(name)) {
         const auto flat = var->at(idx);
-        if (!flat) fail("17020", "17020 Illegal array index of " + name, column);
+        if (!flat) fail(code::alarm_17020, "17020 Illegal array index of " + name, column);
         var->v[*flat] = var->integer ? std::round(v) : v;
         return;
     }
     if (int n = numbered(name, "$TC_DP")) {
-        if (idx.size() != 2) fail("17020", "17020 " + name + " needs the indices [t, d]", column);
+        if (idx.size() != 2) fail(code::alarm_17020, "17020 " + name + " needs the indices [t, d]", column);
         int t = as_index(idx[0]), d = as_index(idx[1]);
         if (t < 1 || t > 32000 || d < 1 || d > 32000)
-            fail("17180", "17180 Illegal T or D number in " + name + "[" + std::to_string(t) + "," + std::to_string(d) + "]", column);
+            fail(code::alarm_17180, "17180 Illegal T or D number in " + name + "[" + std::to_string(t) + "," + std::to_string(d) + "]", column);
         try {
             edges_[{t, d}].DP(n) = v;
         } catch (const Error&) {
-            fail("12550", "12550 Name " + name + " not defined", column);
+            fail(code::alarm_12550, "12550 Name " + name + " not defined", column);
         }
         return;
     }
     if (int n = numbered(name, "$TC_CARR")) {
-        if (idx.size() != 1) fail("17020", "17020 " + name + " needs the index [m]", column);
+        if (idx.size() != 1) fail(code::alarm_17020, "17020 " + name + " needs the index [m]", column);
         try {
             holders_[as_index(idx[0])].set(n, v);
         } catch (const Error& e) {
@@ -135,21 +136,21 @@ void Interp::set_variable(const std::string& name, std::span<const double> idx, 
         }
         return;
     }
-    fail("12550", "12550 Name " + name + " not defined", column);
+    fail(code::alarm_12550, "12550 Name " + name + " not defined", column);
 }
 
 void Interp::define(std::span<const Token> t) {
     const std::string& type = t[0].text;
     if (type != "REAL" && type != "INT" && type != "BOOL")
-        fail("unsupported_word", "DEF " + type + " variables are not supported by toolcomp (REAL, INT, BOOL are)", t[0].column);
+        fail(code::unsupported_word, "DEF " + type + " variables are not supported by toolcomp (REAL, INT, BOOL are)", t[0].column);
     auto& locals = stack_.back().locals;
     for (std::size_t i = 1; i < t.size(); ++i) {
         const Token& v = t[i];
         if (v.key != "DEFVAR") continue;
-        if (locals.count(v.text)) fail("12170", "12170 Name " + v.text + " defined several times", v.column);
+        if (locals.count(v.text)) fail(code::alarm_12170, "12170 Name " + v.text + " defined several times", v.column);
         if (v.text == "R" || (v.text[0] == 'R' && v.text.find_first_not_of("0123456789", 1) == std::string::npos) ||
             v.text[0] == '$')
-            fail("12170", "12170 Name " + v.text + " is reserved", v.column);
+            fail(code::alarm_12170, "12170 Name " + v.text + " is reserved", v.column);
         Variable var;
         var.integer = type != "REAL";
         std::size_t n = v.has_value ? static_cast<std::size_t>(v.value) : 1;
@@ -157,7 +158,7 @@ void Interp::define(std::span<const Token> t) {
             var.cols = static_cast<std::size_t>(v.param);
             n *= var.cols;
         }
-        if (n > 100000) fail("12170", "12170 Array " + v.text + " too large", v.column);
+        if (n > 100000) fail(code::alarm_12170, "12170 Array " + v.text + " too large", v.column);
         var.v.assign(n, 0.0);
         if (v.expr >= 0) {
             double x = eval(v.expr, v.column);
@@ -177,12 +178,12 @@ void Interp::assign(const Token& t) {
     try {
         expr::evaluate_all(idx_code, *this, idx);
     } catch (const expr::MathError& err) {
-        fail("math_error", std::string("14051 Arithmetic error in part program: ") + err.what(), t.column);
+        fail(code::math_error, std::string("14051 Arithmetic error in part program: ") + err.what(), t.column);
     }
     const std::string& name = target.names[var.name];
     if (!t.text.empty() && t.text.front() == '"') {
         int n = numbered(name, "$TC_CARR");
-        if (!n || idx.size() != 1) fail("unsupported_word", "String values are only supported for $TC_CARR21/22/23/34", t.column);
+        if (!n || idx.size() != 1) fail(code::unsupported_word, "String values are only supported for $TC_CARR21/22/23/34", t.column);
         try {
             holders_[as_index(idx[0])].set_text(n, t.text.substr(1, t.text.size() - 2));
         } catch (const Error& e) {
@@ -220,17 +221,17 @@ void Interp::value_call(const Token& t) {
         if (i >= args.size() || args[i].empty()) return "";
         const std::string& a = args[i];
         if (a.size() < 2 || a.front() != '"' || a.back() != '"')
-            fail("unsupported_word", t.key + ": argument " + std::to_string(i + 1) + " must be a string in quotes", t.column);
+            fail(code::unsupported_word, t.key + ": argument " + std::to_string(i + 1) + " must be a string in quotes", t.column);
         return a.substr(1, a.size() - 2);
     };
     auto array_arg = [&](std::size_t i, std::size_t size) -> Variable& {
         std::string n = i < args.size() ? args[i] : "";
         for (char& c : n) c = ascii_upper(c);
         Variable* v = n.empty() ? nullptr : find_variable(n);
-        if (!v) fail("12550", "12550 Name " + (n.empty() ? std::string("(missing)") : n) + " not defined: " + t.key +
+        if (!v) fail(code::alarm_12550, "12550 Name " + (n.empty() ? std::string("(missing)") : n) + " not defined: " + t.key +
                                   " needs a REAL array of " + std::to_string(size) + " elements", t.column);
         if (v->v.size() < size)
-            fail("17020", "17020 " + t.key + ": array " + n + " has fewer than " + std::to_string(size) + " elements", t.column);
+            fail(code::alarm_17020, "17020 " + t.key + ": array " + n + " has fewer than " + std::to_string(size) + " elements", t.column);
         return *v;
     };
     int status = 0;
@@ -288,7 +289,7 @@ void Interp::value_call(const Token& t) {
                              st_.plane, opts_.lengths);
         }
     } else {
-        fail("unsupported_word", t.key + " is not supported by toolcomp yet", t.column);
+        fail(code::unsupported_word, t.key + " is not supported by toolcomp yet", t.column);
     }
     if (t.param > 0) {
         Token target;
@@ -297,7 +298,7 @@ void Interp::value_call(const Token& t) {
         if (te.code.size() == 1) {
             set_variable(te.names[te.code[0].name], {}, status, t.column);
         } else {
-            fail("unsupported_word", "The status of " + t.key + " must go to a plain variable", t.column);
+            fail(code::unsupported_word, "The status of " + t.key + " must go to a plain variable", t.column);
         }
     }
 }

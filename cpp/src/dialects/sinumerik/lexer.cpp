@@ -1,4 +1,5 @@
 #include "toolcomp/dialects/sinumerik/lexer.hpp"
+#include "toolcomp/program/codes.hpp"
 #include "toolcomp/program/text.hpp"
 
 #include <array>
@@ -78,7 +79,7 @@ public:
     }
 
 private:
-    [[noreturn]] void error(const std::string& msg) const { throw ParseError("syntax_error", msg, {line_, col()}); }
+    [[noreturn]] void error(const std::string& msg) const { throw ParseError(code::syntax_error, msg, {line_, col()}); }
     int col() const { return static_cast<int>(i_) + 1; }
     void skip() {
         while (i_ < s_.size() && (s_[i_] == ' ' || s_[i_] == '\t')) ++i_;
@@ -256,7 +257,7 @@ private:
                 std::string args = parenthesised();
                 if (args.find_first_not_of(" \t") != std::string::npos) {
                     i_ = start;
-                    throw ParseError("unsupported_word", "Subprograms with parameters (PROC name(...)) are not supported by toolcomp",
+                    throw ParseError(code::unsupported_word, "Subprograms with parameters (PROC name(...)) are not supported by toolcomp",
                                      {line_, column});
                 }
             }
@@ -386,7 +387,7 @@ private:
             if (i_ < s_.size() && s_[i_] == '(' && (mod == "DC" || mod == "ACP" || mod == "ACN" || mod == "CAC" || mod == "CIC" ||
                                                     mod == "CACP" || mod == "CACN" || mod == "CDC")) {
                 i_ = save;
-                throw ParseError("unsupported_word", mod + "() positioning of rotary axes is not supported by toolcomp",
+                throw ParseError(code::unsupported_word, mod + "() positioning of rotary axes is not supported by toolcomp",
                                  {line_, col()});
             }
             i_ = save;
@@ -457,7 +458,7 @@ Program parse(std::string_view text, std::string name, bool strict) {
         ++line;
         std::string_view l = text.substr(pos, end - pos);
         if (l.find('\0') != std::string_view::npos) {
-            ParseError e("syntax_error", "NUL character in the program text", {line, static_cast<int>(l.find('\0')) + 1});
+            ParseError e(code::syntax_error, "NUL character in the program text", {line, static_cast<int>(l.find('\0')) + 1});
             if (strict) throw e;
             prog.syntax_error = e.diagnostic();
             break;
