@@ -17,6 +17,7 @@ constexpr std::pair<const char*, MCodeAction> kActions[] = {
     {"spindle_ccw", MCodeAction::spindle_ccw},   {"spindle_stop", MCodeAction::spindle_stop},
     {"program_stop", MCodeAction::program_stop}, {"optional_stop", MCodeAction::optional_stop},
     {"program_end", MCodeAction::program_end},   {"tool_change", MCodeAction::tool_change},
+    {"subprogram", MCodeAction::subprogram},
 };
 
 MCodeAction action_from(const std::string& s) {
@@ -44,25 +45,28 @@ Triple finite3(const char* field, const Triple& v) {
 
 void bind_machine(py::module_& m) {
     py::class_<MachineCode>(m, "MachineCode", "A builder M code: what it does for the path, and its name.")
-        .def(py::init([](const std::string& action, std::string name, std::string words) {
-                 return MachineCode{action_from(action), std::move(name), std::move(words)};
+        .def(py::init([](const std::string& action, std::string name, std::string words, std::string program) {
+                 return MachineCode{action_from(action), std::move(name), std::move(words), std::move(program)};
              }),
-             py::arg("action"), py::arg("name") = "", py::arg("words") = "")
+             py::arg("action"), py::arg("name") = "", py::arg("words") = "", py::arg("program") = "")
         .def_property(
             "action", [](const MachineCode& c) { return action_name(c.action); },
             [](MachineCode& c, const std::string& a) { c.action = action_from(a); },
             "nothing, coolant_on, coolant_off, spindle_cw, spindle_ccw, spindle_stop, program_stop, optional_stop, "
-            "program_end or tool_change")
+            "program_end, tool_change or subprogram")
         .def_readwrite("name", &MachineCode::name, "what the builder calls it")
         .def_readwrite("words", &MachineCode::words,
                        "the letters it reads in its block (\"P\" for Haas M59 P1133), taken out of the block")
+        .def_readwrite("program", &MachineCode::program,
+                       "subprogram: the program it runs (LinuxCNC a sub's name, Fanuc an O number)")
         .def("__eq__", [](const MachineCode& a, const MachineCode& b) {
-            return a.action == b.action && a.name == b.name && a.words == b.words;
+            return a.action == b.action && a.name == b.name && a.words == b.words && a.program == b.program;
         })
         .def("__repr__", [](const MachineCode& c) {
             return "MachineCode('" + std::string(action_name(c.action)) + "', " +
                    py::repr(py::str(c.name)).cast<std::string>() +
-                   (c.words.empty() ? std::string() : ", words='" + c.words + "'") + ")";
+                   (c.words.empty() ? std::string() : ", words='" + c.words + "'") +
+                   (c.program.empty() ? std::string() : ", program='" + c.program + "'") + ")";
         });
 
     py::class_<Machine>(m, "Machine",

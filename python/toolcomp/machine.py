@@ -215,12 +215,12 @@ def parse(text: str, path: Optional[str] = None) -> "_core.Machine":
         number = int(number_text)
         if isinstance(value, str):
             value = {"action": value}
-        if not isinstance(value, dict) or set(value) - {"action", "name", "words"} or "action" not in value:
-            raise src.error(f"m_codes.{key} must be an action or {{ action = ..., name = ..., words = ... }}",
-                            "m_codes", key)
+        if not isinstance(value, dict) or set(value) - {"action", "name", "words", "program"} or "action" not in value:
+            raise src.error(f"m_codes.{key} must be an action or {{ action = ..., name = ..., words = ..., "
+                            "program = ... }}", "m_codes", key)
         try:
             codes[number] = _core.MachineCode(value["action"], str(value.get("name", "")),
-                                              str(value.get("words", "")).upper())
+                                              str(value.get("words", "")).upper(), str(value.get("program", "")))
         except ValueError as e:
             raise src.error(f"m_codes.{key}: {e}", "m_codes", key) from None
     try:
@@ -270,7 +270,8 @@ def parse(text: str, path: Optional[str] = None) -> "_core.Machine":
     try:
         m.check()
     except ValueError as e:
-        raise src.error(str(e)) from None
+        bad = re.search(r"M(\d+) ", str(e))
+        raise src.error(str(e), "m_codes" if bad else None, bad.group(1) if bad else None) from None
     return m
 
 
@@ -331,6 +332,8 @@ def dumps(m: "_core.Machine") -> str:
                 value["name"] = code.name
             if code.words:
                 value["words"] = code.words
+            if code.program:
+                value["program"] = code.program
             lines.append(f"{number} = {{ " + ", ".join(f"{k} = {_toml_value(v)}" for k, v in value.items()) + " }")
     lines.append("\n[positions]")
     lines.append(f"work_origin = {_toml_value(list(m.work_origin))}")

@@ -339,3 +339,30 @@ def test_the_mill_lathe_shorthand_still_works():
     assert res.nominal.end[-1, 0] == 20  # X diameter on the lathe
     assert tc.ControlProfile("fanuc", machine="lathe").kind == tc.MachineKind.lathe
     assert tc.ControlProfile("fanuc", kind="lathe").machine == tc.MachineKind.lathe
+
+
+def test_a_builder_code_that_runs_a_subprogram(tmp_path):
+    # LinuxCNC: a remap of M150 to the O-word sub probe_tip (probe_tip.ngc on the search path);
+    # Fanuc: a macro M code running O9020. Both lift Z by 5 (G91) after their block.
+    (tmp_path / "probe_tip.ngc").write_text("o<probe_tip> sub\nG91 G0 Z5\nG90\no<probe_tip> endsub\nM2\n")
+    (tmp_path / "O9020.nc").write_text("O9020\nG91 G0 Z5\nG90\nM99\n")
+    lin = tc.Machine.parse('control = "linuxcnc"\n[m_codes]\n150 = { action = "subprogram", program = "probe_tip" }\n')
+    fan = tc.Machine.parse('control = "fanuc"\n[m_codes]\nM80 = { action = "subprogram", program = "O9020" }\n')
+    for machine, dialect, text in ((lin, "linuxcnc", "G21 G0 X1 Z0\nM150\nG0 X2\nM2\n"),
+                                   (fan, "fanuc", "G21 G0 X1 Z0\nM80\nG0 X2\nM30\n")):
+        res = tc.run(tc.Program.parse(text, dialect=dialect), machine=machine, search_path=[tmp_path])
+        np.testing.assert_array_equal(res.nominal.end, [[1, 0, 0], [1, 0, 5], [2, 0, 5]])
+        assert list(res.nominal.file) == [0, 1, 0]
+        assert tc.Machine.parse(machine.dumps()).m_codes == machine.m_codes
+
+
+@pytest.mark.parametrize("text, what", [
+    ('control = "sinumerik"\n[m_codes]\n150 = { action = "subprogram", program = "PROBE" }\n', "LinuxCNC and Fanuc"),
+    ('control = "fanuc"\n[m_codes]\n150 = { action = "subprogram", program = "probe" }\n', "O number"),
+    ('control = "linuxcnc"\n[m_codes]\n150 = { action = "subprogram" }\n', "program is missing"),
+    ('control = "linuxcnc"\n[m_codes]\n150 = { action = "subprogram", program = "../x" }\n', "no subroutine name"),
+])
+def test_subprogram_codes_that_cannot_run_are_refused_at_their_line(text, what):
+    with pytest.raises(tc.ParseError) as e:
+        tc.Machine.parse(text)
+    assert what in e.value.message and e.value.line == 3

@@ -49,6 +49,19 @@ void check_machine(const Machine& m) {
             if (c < 'A' || c > 'Z' || c == 'G' || c == 'M' || c == 'N' || c == 'X' || c == 'Y' || c == 'Z')
                 bad("m_codes", "M" + std::to_string(number) + " words: '" + std::string(1, c) +
                                    "' is not a letter an M code may read (A-Z but G, M, N, X, Y, Z)");
+        if (code.action == MCodeAction::subprogram) {
+            const std::string where = "M" + std::to_string(number) + " runs a subprogram: ";
+            if (m.control != Dialect::linuxcnc && m.control != Dialect::fanuc)
+                bad("m_codes", where + "toolcomp runs them on LinuxCNC and Fanuc machines");
+            if (code.program.empty()) bad("m_codes", where + "its program is missing");
+            if (m.control == Dialect::fanuc) {
+                const std::string n = code.program[0] == 'O' || code.program[0] == 'o' ? code.program.substr(1) : code.program;
+                if (n.empty() || n.size() > 8 || n.find_first_not_of("0123456789") != std::string::npos)
+                    bad("m_codes", where + "a Fanuc program is an O number (O9020), not '" + code.program + "'");
+            } else if (code.program.find_first_of("/\\<> ") != std::string::npos || code.program.find("..") != std::string::npos) {
+                bad("m_codes", where + "'" + code.program + "' is no subroutine name");
+            }
+        }
         if (m.control == Dialect::linuxcnc && number > 199)
             bad("m_codes", "LinuxCNC reads M codes up to M199 (M" + std::to_string(number) + ")");
     }

@@ -33,6 +33,8 @@ enum class MCodeAction : std::uint8_t {
     optional_stop,  // as M1
     program_end,    // as M30
     tool_change,    // as M6
+    subprogram,     // runs `program` after its block: LinuxCNC o<program> call (a remap to an O-word
+                    // sub, name.ngc on the search path), Fanuc M98 P<number> (a macro M code)
 };
 
 // The standard code an action acts like (8 for coolant_on, ...); -1 for nothing.
@@ -56,6 +58,7 @@ struct MachineCode {
     std::string name;   // what the builder calls it ("chip conveyor forward"), for messages
     std::string words;  // the letters it reads in its block ("P": Haas M59 P1133 sets relay 1133),
                         // taken out of the block: no other word of the block reads them
+    std::string program;  // subprogram: the program it runs (LinuxCNC a sub's name, Fanuc O number)
 };
 
 // A position in machine coordinates; an axis not given is nullopt (it does not move, or

@@ -79,7 +79,12 @@ void add_m(BlockWords& bw, const Word& w, Dialect d, const ControlProfile& profi
             for (char c : code->words) taken |= letter_bit(c);
             if (++bw.m_count > 4) fail(code::too_many_m_codes, "Too many m codes on line", bw.line, w.column);
             m = standard_m_code(code->action);
-            if (m < 0) return;  // a builder code without effect on the path
+            if (code->action == MCodeAction::subprogram) {
+                if (bw.machine_call) fail(code::too_many_m_codes, "Two M codes that run subprograms in one block", bw.line, w.column);
+                bw.machine_call = code;
+                bw.machine_call_column = w.column;
+            }
+            if (m < 0) return;  // a builder code without effect on the path, or a subprogram call
             --bw.m_count;        // counted again below
         }
     if (m > profile.max_m_code && profile.max_m_code < 99999)

@@ -37,6 +37,8 @@ struct BlockWords {
     std::array<int, m_group_count> m;
     std::array<int, m_group_count> m_column{};
     int m_count = 0;
+    const MachineCode* machine_call = nullptr;  // a builder M code that runs a subprogram
+    int machine_call_column = 0;
 
     static constexpr std::uint32_t kAxes = letter_bit('X') | letter_bit('Y') | letter_bit('Z') | letter_bit('A') |
                                            letter_bit('B') | letter_bit('C') | letter_bit('U') | letter_bit('V') |

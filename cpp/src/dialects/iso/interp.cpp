@@ -235,6 +235,7 @@ void Interp::run_blocks() {
             bw.g[g_radius_comp] < 0 && bw.m[m_stop] < 0 && sub_m < 0)
             sink_.control({ControlKind::no_motion, line_, Vec3::Zero(), file_});
         if (sub_m >= 0) subprogram(sub_m, p_word, l_word, bw.m_column[m_subprogram]);
+        if (bw.machine_call) machine_subprogram(*bw.machine_call, bw.machine_call_column);
     }
     sink_.finish();
     line_ = 0;

@@ -160,6 +160,7 @@ private:
     void g92(const BlockWords& bw, int code);
     // ---- the machine (interp_machine.cpp) -----------------------------------------------
     void place_machine(const Machine& m, const ParameterValues& values);
+    void machine_subprogram(const MachineCode& c, int column);  // a builder M code that runs a program
     void to_tool_change_position(int column);  // M6 on a machine with a tool change position
     void check_travel(const Motion& m);         // the machine's travel limits (travel_limit)
     void home(const BlockWords& bw, int code);  // G28 / G30 and G28.1 / G30.1

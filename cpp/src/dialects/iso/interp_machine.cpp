@@ -26,6 +26,25 @@ void Interp::to_tool_change_position(int column) {
     if (end != pos_) straight(MotionKind::rapid, end, std::nan(""));
 }
 
+// A builder M code that runs a subprogram, after the rest of its block: LinuxCNC as
+// o<program> call (a remap to an O-word sub), Fanuc as M98 P<number>.
+void Interp::machine_subprogram(const MachineCode& c, int column) {
+    if (prog_.dialect == Dialect::linuxcnc) {
+        Statement s;
+        s.kind = Stmt::o_call;
+        s.column = column;
+        s.label = "<" + c.program + ">";
+        call_sub(s);
+        return;
+    }
+    const std::string n = c.program[0] == 'O' || c.program[0] == 'o' ? c.program.substr(1) : c.program;
+    WordSlot p;
+    p.value = std::stod(n);
+    p.column = column;
+    p.set = true;
+    call_program(Frame::m98, p, WordSlot{}, column);
+}
+
 namespace {
 // The points of a move whose machine coordinates bound it: its end, and for an arc the
 // points of its circle at 0, 90, 180 and 270 degrees that it passes (the extremes of each
