@@ -3,7 +3,7 @@ from __future__ import annotations
 
 import enum
 import os
-from typing import Any, Callable, Iterator, List, Mapping, Optional, Sequence, Tuple, Union, overload
+from typing import Any, Callable, Dict, Iterator, List, Mapping, Optional, Sequence, Tuple, Union, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -205,8 +205,8 @@ class TipConvention(enum.Enum):
     linuxcnc = 0
     fanuc = 1
 
-class Machine(enum.Enum):
-    """Machine type of a ControlProfile."""
+class MachineKind(enum.Enum):
+    """The kind of machine of a ControlProfile: mill or lathe."""
     mill = 0
     lathe = 1
 
@@ -238,9 +238,11 @@ class RadiusRules:
 
 class ControlProfile:
     """How a particular control behaves, as plain data; adjust fields and pass as run(..., profile=...)."""
-    def __init__(self, dialect: str = "linuxcnc", machine: str = "mill") -> None: ...
+    def __init__(self, dialect: str = "linuxcnc", kind: Optional[str] = None, machine: Optional[str] = None) -> None: ...
     @property
-    def machine(self) -> Machine: ...
+    def kind(self) -> MachineKind: ...
+    @property
+    def machine(self) -> MachineKind: ...
     x_diameter: bool
     incremental_uw: bool
     t_offsets: bool
@@ -311,7 +313,8 @@ def run(program: Program, tools: Optional[ToolTable] = None, strict: bool = True
         progress: Optional[Callable[[int], None]] = None, progress_every: int = 65536,
         search_path: Sequence[str] = (), parameters: Mapping[int, float] = ...,
         max_segments: int = 20000000, threads: bool = True, follow_links: bool = False,
-        max_bytes: int = 2147483648, max_line_length: int = 1048576) -> Result: ...
+        max_bytes: int = 2147483648, max_line_length: int = 1048576,
+        machine: Optional[Machine] = None) -> Result: ...
 
 class PathStream:
     """Iterator over a run's compensated path in chunks; see toolcomp.iter_run."""
@@ -490,3 +493,46 @@ class sinumerik:
     SETTCOR_NO_RADIUS: int
     @staticmethod
     def rotate_about_axis(v: _Vec3, axis: _Vec3, angle_deg: float) -> npt.NDArray[np.float64]: ...
+
+class MachineCode:
+    """A builder M code: what it does for the path, its name, the words it reads, the program it runs."""
+    def __init__(self, action: str, name: str = "", words: str = "", program: str = "") -> None: ...
+    action: str
+    name: str
+    words: str
+    program: str
+
+class Machine:
+    """A machine: a control (its ControlProfile) plus what its builder configured."""
+    def __init__(self, control: str = "linuxcnc", kind: str = "mill", name: Optional[str] = None) -> None: ...
+    name: str
+    @property
+    def control(self) -> str: ...
+    @property
+    def kind(self) -> MachineKind: ...
+    profile: ControlProfile
+    m_codes: Dict[int, MachineCode]
+    work_origin: Tuple[float, float, float]
+    g28: Tuple[float, float, float]
+    g30: Tuple[float, float, float]
+    tool_change: Sequence[Optional[float]]
+    travel: Sequence[Tuple[float, float]]
+    travel_limit_warning: bool
+    rapid_rate: Tuple[float, float, float]
+    max_feed: Tuple[float, float, float]
+    def check(self) -> None: ...
+    # from toolcomp.machine
+    @staticmethod
+    def read(path: Any) -> "Machine": ...
+    @staticmethod
+    def parse(text: str, path: Optional[str] = None) -> "Machine": ...
+    @staticmethod
+    def preset(name: str) -> "Machine": ...
+    @staticmethod
+    def presets() -> List[str]: ...
+    def write(self, path: Any) -> None: ...
+    def dumps(self) -> str: ...
+
+def dialect_table() -> List[Dict[str, Any]]: ...
+def dialect_of_file(path: str, dialect: Optional[str] = None) -> str: ...
+def diagnostic_codes() -> List[Dict[str, str]]: ...
