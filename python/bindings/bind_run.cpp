@@ -279,6 +279,10 @@ void bind_run(py::module_& m) {
                        "a negative L word is refused as it is read (LinuxCNC)")
         .def_readwrite("dwell_negative_p", &ControlProfile::dwell_negative_p,
                        "G4: only P-1 is missing, negative P dwells (LinuxCNC); False: a negative P is missing")
+        .def_readwrite("arc_turns_word", &ControlProfile::arc_turns_word,
+                       "G2/G3 P is the number of turns (LinuxCNC); False: a P on an arc is refused")
+        .def_readwrite("c_word_is_chamfer", &ControlProfile::c_word_is_chamfer,
+                       "C beside X/Z in a lathe's G1 is the Fanuc T chamfer (refused), not a C axis move")
         .def_readwrite("dwell_x_seconds", &ControlProfile::dwell_x_seconds,
                        "G4 X (U on lathes) is the dwell in seconds, P in milliseconds (Fanuc)")
         .def_readwrite("fanuc_g10", &ControlProfile::fanuc_g10,

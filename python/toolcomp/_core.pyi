@@ -262,6 +262,8 @@ class ControlProfile:
     negative_l_refused: bool
     dwell_negative_p: bool
     dwell_x_seconds: bool
+    arc_turns_word: bool
+    c_word_is_chamfer: bool
     fanuc_g10: bool
     program_end_required: bool
     errors_at_outermost_call: bool

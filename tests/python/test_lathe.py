@@ -169,3 +169,14 @@ def test_mill_cycle_codes_are_not_read_as_mill_cycles_on_a_fanuc_lathe(code):
     with pytest.raises(tc.Error) as e:
         tc.run(tc.Program.parse(text, dialect="fanuc"), profile=tc.ControlProfile("fanuc", machine="lathe"))
     assert (e.value.code, e.value.line) == ("unsupported_g_code", 2)
+
+
+def test_a_fanuc_lathe_chamfer_c_is_refused_not_read_as_a_c_axis():
+    text = "G21 G18 G98 G0 X40 Z2 T0101\nG1 Z0 F100\nG1 X50 Z-20 C2\nM30\n"
+    with pytest.raises(tc.Error) as e:
+        tc.run(tc.Program.parse(text, dialect="fanuc"), profile=tc.ControlProfile("fanuc", kind="lathe"))
+    assert (e.value.code, e.value.line, e.value.column) == ("unsupported_word", 3, 13)
+    # A C axis move on its own (live tooling) stays a C move.
+    res = tc.run(tc.Program.parse("G21 G18 G98 G0 X40 Z2\nG0 C90\nM30\n", dialect="fanuc"),
+                 profile=tc.ControlProfile("fanuc", kind="lathe"))
+    assert res.nominal.abc[-1, 2] == 90

@@ -40,6 +40,7 @@ ControlProfile profile_for(Dialect d, MachineKind machine) {
         p.last_g_code_wins = true;
         p.fanuc_g10 = true;
         p.dwell_x_seconds = true;
+        p.arc_turns_word = false;
     }
     switch (d) {
         case Dialect::fanuc: {
@@ -75,6 +76,7 @@ ControlProfile profile_for(Dialect d, MachineKind machine) {
                 p.incremental_uw = true;
                 p.t_offsets = true;
                 p.startup_feed_per_rev = true;  // G99 at power on (parameter FPM of the T series)
+                p.c_word_is_chamfer = true;
                 p.length_axes = LengthAxes::all;
                 r.tip_convention = TipConvention::fanuc;
                 p.g_code_system_a = true;
@@ -108,6 +110,7 @@ ControlProfile profile_for(Dialect d, MachineKind machine) {
             // control's messages are not in the manual excerpt: these name the condition.
             p.kind = MachineKind::lathe;
             p.startup_plane = Plane::zx;
+            p.arc_turns_word = false;
             p.x_diameter = true;
             p.incremental_uw = true;
             p.t_offsets = true;

@@ -234,6 +234,12 @@ struct ControlProfile {
     // G4 X (and U on lathes) is the dwell in seconds, P in milliseconds (Fanuc); false: G4 P
     // in seconds, X and U axis words.
     bool dwell_x_seconds = false;
+    // G2/G3 P is the number of turns (LinuxCNC); false: the control's arcs take no P (Fanuc,
+    // 9/Series), and a P there is refused rather than read as turns.
+    bool arc_turns_word = true;
+    // A C beside X/Z (U/W) in a lathe's G1 is the chamfer of the Fanuc T series (refused: not
+    // run by toolcomp), not a C axis move.
+    bool c_word_is_chamfer = false;
     // A negative L word is refused as it is read ("Negative l word used", LinuxCNC).
     bool negative_l_refused = false;
     // G4 P: only -1 counts as missing, any other value is a dwell, negative ones too

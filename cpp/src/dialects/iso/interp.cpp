@@ -255,6 +255,12 @@ void Interp::check_words(const BlockWords& bw, int motion_to_be) {
     constexpr std::uint32_t kChecked = letter_bit('D') | letter_bit('E') | letter_bit('H') | letter_bit('I') |
                                        letter_bit('J') | letter_bit('K') | letter_bit('L') | letter_bit('P') |
                                        letter_bit('Q') | letter_bit('R');
+    if (profile_.c_word_is_chamfer && bw.has('C') && motion_to_be == 10 &&
+        (bw.has('X') || bw.has('Z') || bw.has('U') || bw.has('W')))
+        fail(code::unsupported_word,
+             "C beside X or Z in G1 is the chamfer of a Fanuc lathe: not supported by toolcomp (a C axis move "
+             "stands in a block of its own)",
+             bw['C'].column);
     if ((bw.letters & kChecked) == 0) return;  // none of the words that need a code to use them
     const int g0 = bw.g[g_nonmodal];
     const bool arc = motion_to_be == 20 || motion_to_be == 30;

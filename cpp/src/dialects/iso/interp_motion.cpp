@@ -160,6 +160,9 @@ void Interp::motion_arc(const BlockWords& bw, int code) {
         fail(code::arc_axis_words_missing, std::string(names) + " words missing for arc in " + plane_name + " plane");
     }
     int p = 1;
+    if (bw.has('P') && !profile_.arc_turns_word)
+        fail(code::unused_word, "P in G2/G3 is LinuxCNC's number of turns; this control's arcs take no P",
+             bw['P'].column);
     if (bw.has('P')) {
         double pv = bw['P'].value;
         // LinuxCNC refuses a P more than 0.001 from an integer; Fanuc takes it as written.
