@@ -59,7 +59,7 @@ else:  # pragma: no cover
 __all__ = ["read", "parse", "dumps", "write", "preset", "presets", "resolve"]
 
 _PRESETS = os.path.join(os.path.dirname(__file__), "machines")
-_CONTROLS = ("linuxcnc", "fanuc", "sinumerik", "heidenhain", "rockwell")
+_CONTROLS = tuple(row["name"] for row in _core.dialect_table())
 _AXES = ("x", "y", "z")
 _TOP = {"name", "control", "kind", "units", "profile", "m_codes", "positions", "travel", "rates"}
 _MM_PER_INCH = 25.4
