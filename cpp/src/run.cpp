@@ -177,6 +177,15 @@ void run_pipeline(const Program& program, const ToolTable* tools, const RunOptio
                                    "The machine's travel limits are not checked for " + std::string(row.name) +
                                        " programs yet",
                                    {}});
+        const Machine& mc = *options.machine;
+        const bool positions = mc.work_origin != std::array<double, 3>{0, 0, 0} ||
+                               mc.g28 != std::array<double, 3>{0, 0, 0} || mc.g30 != std::array<double, 3>{0, 0, 0} ||
+                               mc.tool_change[0] || mc.tool_change[1] || mc.tool_change[2];
+        if (positions && !row.checks_travel)
+            diagnostics.push_back({code::machine_positions_not_applied, Severity::info,
+                                   "The machine's work origin, G28/G30 and tool change positions are not applied to " +
+                                       std::string(row.name) + " programs yet",
+                                   {}});
     }
     out.files.push_back(program.name);
     try {

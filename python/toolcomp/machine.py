@@ -72,8 +72,9 @@ class _Source:
         self.lines = text.splitlines()
         self.path = path
 
-    def line_of(self, section: Optional[str], key: Optional[str] = None) -> int:
-        """The line of `key` in `section` ([section] or section.key), or of the section header."""
+    def line_of(self, section: Optional[str], key: Optional[str] = None, exact: bool = False) -> int:
+        """The line of `key` in `section` ([section] or section.key), or of the section header
+        (0 with `exact`)."""
         current = None
         header_line = 0
         for n, raw in enumerate(self.lines, 1):
@@ -96,7 +97,7 @@ class _Source:
                 return n
             if current is None and name == f"{section}.{key}":
                 return n
-        return header_line
+        return 0 if exact else header_line
 
     def error(self, message: str, section: Optional[str] = None, key: Optional[str] = None, line: int = 0):
         line = line or self.line_of(section, key)
@@ -104,16 +105,35 @@ class _Source:
         return ParseError(where + message, "machine_file", line, 0)
 
 
-def _number(src, section, key, v, what="a number") -> float:
-    if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v):
+def _number(src, section, key, v, what="a number", infinite=False) -> float:
+    """A finite number (or with `infinite`, also inf / -inf: a travel without that bound)."""
+    ok = not isinstance(v, bool) and isinstance(v, (int, float))
+    try:
+        f = float(v) if ok else math.nan
+    except OverflowError:
+        f = math.nan
+    if not (math.isfinite(f) or (infinite and math.isinf(f))):
         raise src.error(f"{section + '.' if section else ''}{key} must be {what}, not {v!r}", section, key)
-    return float(v)
+    return f
+
+
+def _table(src, doc, name) -> Dict[str, Any]:
+    value = doc.get(name, {})
+    if not isinstance(value, dict):
+        raise src.error(f"{name} must be a table ([{name}])", None, name)
+    return value
 
 
 def _triple(src, section, key, v, scale) -> Tuple[float, float, float]:
     if not isinstance(v, list) or len(v) != 3:
         raise src.error(f"{section}.{key} must be [x, y, z], not {v!r}", section, key)
     return tuple(_number(src, section, key, x, "a list of three numbers") * scale for x in v)
+
+
+def _m_code_line(src, number: str) -> int:
+    """The line of an M code's key, written 30 or M30."""
+    return (src.line_of("m_codes", number, exact=True) or src.line_of("m_codes", "M" + number, exact=True)
+            or src.line_of("m_codes", "m" + number))
 
 
 # ---- profile fields ----------------------------------------------------------------------
@@ -201,14 +221,12 @@ def parse(text: str, path: Optional[str] = None) -> "_core.Machine":
     m = _core.Machine(control, kind, name)
 
     profile = m.profile
-    table = doc.get("profile", {})
-    if not isinstance(table, dict):
-        raise src.error("profile must be a table", "profile")
+    table = _table(src, doc, "profile")
     _set_fields(src, profile, table, "profile")
-    m.profile = profile
+    m.profile = profile  # its values are checked with the machine's, below
 
     codes = {}
-    for key, value in doc.get("m_codes", {}).items():
+    for key, value in _table(src, doc, "m_codes").items():
         number_text = key[1:] if key[:1] in ("M", "m") else key
         if not number_text.isdigit():
             raise src.error(f"m_codes: '{key}' is no M code number", "m_codes", key)
@@ -227,9 +245,9 @@ def parse(text: str, path: Optional[str] = None) -> "_core.Machine":
         m.m_codes = codes
     except ValueError as e:
         bad = re.search(r"M(\d+)", str(e))
-        raise src.error(f"m_codes: {e}", "m_codes", bad.group(1) if bad else None) from None
+        raise src.error(f"m_codes: {e}", line=_m_code_line(src, bad.group(1)) if bad else src.line_of("m_codes")) from None
 
-    positions = doc.get("positions", {})
+    positions = _table(src, doc, "positions")
     for key, value in positions.items():
         if key in ("work_origin", "g28", "g30"):
             setattr(m, key, _triple(src, "positions", key, value, scale))
@@ -242,7 +260,7 @@ def parse(text: str, path: Optional[str] = None) -> "_core.Machine":
         else:
             raise src.error(f"positions has no '{key}' (work_origin, g28, g30, tool_change)", "positions", key)
 
-    travel = doc.get("travel", {})
+    travel = _table(src, doc, "travel")
     limits = [(-math.inf, math.inf)] * 3
     for key, value in travel.items():
         if key == "limit":
@@ -252,7 +270,7 @@ def parse(text: str, path: Optional[str] = None) -> "_core.Machine":
         elif key in _AXES:
             if not isinstance(value, list) or len(value) != 2:
                 raise src.error(f"travel.{key} must be [min, max]", "travel", key)
-            lo, hi = (_number(src, "travel", key, v) * scale for v in value)
+            lo, hi = (_number(src, "travel", key, v, "a number (or inf)", infinite=True) * scale for v in value)
             if lo > hi:
                 raise src.error(f"travel.{key}: min {value[0]} is above max {value[1]}", "travel", key)
             limits[_AXES.index(key)] = (lo, hi)
@@ -260,7 +278,7 @@ def parse(text: str, path: Optional[str] = None) -> "_core.Machine":
             raise src.error(f"travel has no '{key}' (x, y, z, limit)", "travel", key)
     m.travel = limits
 
-    for key, value in doc.get("rates", {}).items():
+    for key, value in _table(src, doc, "rates").items():
         if key not in ("rapid", "max_feed"):
             raise src.error(f"rates has no '{key}' (rapid, max_feed)", "rates", key)
         v = _triple(src, "rates", key, value, scale)
@@ -271,7 +289,12 @@ def parse(text: str, path: Optional[str] = None) -> "_core.Machine":
         m.check()
     except ValueError as e:
         bad = re.search(r"M(\d+) ", str(e))
-        raise src.error(str(e), "m_codes" if bad else None, bad.group(1) if bad else None) from None
+        if bad:
+            raise src.error(str(e), line=_m_code_line(src, bad.group(1))) from None
+        field = re.search(r"ControlProfile\.([\w.]+)", str(e))
+        path = field.group(1).split(".") if field else []
+        raise src.error(str(e), ".".join(["profile"] + path[:-1]) if path else None,
+                        path[-1] if path else None) from None
     return m
 
 
@@ -300,7 +323,15 @@ def _toml_value(v) -> str:
             return "inf" if v > 0 else "-inf"
         return repr(v)
     if isinstance(v, str):
-        return '"' + v.replace("\\", "\\\\").replace('"', '\\"').replace("\n", "\\n") + '"'
+        out = []
+        for ch in v:  # TOML basic strings: escape the quote, the backslash and control characters
+            if ch in ('"', "\\"):
+                out.append("\\" + ch)
+            elif ord(ch) < 0x20 or ord(ch) == 0x7F:
+                out.append(f"\\u{ord(ch):04X}")
+            else:
+                out.append(ch)
+        return '"' + "".join(out) + '"'
     if isinstance(v, (list, tuple)):
         return "[" + ", ".join(_toml_value(x) for x in v) + "]"
     raise TypeError(f"cannot write {v!r} to TOML")

@@ -66,6 +66,15 @@ def test_a_radius_whose_circle_cannot_see_the_chord_is_refused():
     assert (e.code, e.line) == ("arc_radius_too_large", 2)
 
 
+@pytest.mark.parametrize("dialect", ["linuxcnc", "fanuc"])
+def test_a_slightly_spiral_full_circle_still_runs(dialect):
+    # From (10, 0) about (0, 0) to (10.0005, 0): the end on the start's ray, 0.0005 further
+    # out (within the spiral tolerance): a full circle, as LinuxCNC cuts it. Its length: the
+    # mean radius 10.00025 times 2 pi.
+    res = tc.run(tc.Program.parse("G21 G17 G0 X10 Y0\nG2 X10.0005 Y0 I-10 J0 F100\nM30\n", dialect=dialect))
+    assert res.nominal.length(include_rapids=False) == pytest.approx(2 * math.pi * 10.00025, rel=1e-12)
+
+
 def test_a_flat_arc_of_large_radius_still_runs():
     # R 100 m over a 1 mm chord: sagitta 1.25e-9 mm; the arc is the chord, 1 mm long
     # (r * 2 asin(c / 2r) = 1 + c^3 / (24 r^2) = 1 + 4.2e-12).

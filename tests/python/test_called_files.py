@@ -135,11 +135,16 @@ def test_heidenhain_cannot_reach_the_root_through_a_link(tmp_path):
 
 
 @pytest.mark.parametrize("dialect", DIALECTS)
-def test_a_dangling_link_is_not_found(dialect, tmp_path):
-    _, name, _ = CASES[dialect]
-    os.symlink(tmp_path / "nothing", tmp_path / name)
-    e = _error(dialect, tmp_path)
-    assert e.code == "file_not_found"
+def test_a_dangling_link_is_no_entry_and_the_search_goes_on(dialect, tmp_path):
+    _, name, text = CASES[dialect]
+    (tmp_path / "a").mkdir()
+    (tmp_path / "b").mkdir()
+    os.symlink(tmp_path / "nothing", tmp_path / "a" / name)
+    (tmp_path / "b" / name).write_text(text)
+    for follow in (False, True):
+        res = tc.run(_main(dialect), search_path=[tmp_path / "a", tmp_path / "b"], follow_links=follow)
+        assert res.nominal.end[-1, 0] == 1.0
+        assert res.nominal.files[1].startswith(str(tmp_path / "b"))
 
 
 # ---- what is not a regular file ----------------------------------------------------------

@@ -40,6 +40,19 @@ def test_a_program_file_read_in_pieces(tmp_path, end):
     assert sum(len(p) for p in stream) == 200_001
 
 
+def test_blank_cr_lines_across_a_read_are_no_long_line(tmp_path):
+    # 300 blank lines (lone CRs) around the first read's end (64 KiB): the CRs not yet known to
+    # end lines are no line content, so max_line_length=100 holds.
+    n = 5940
+    head = "G21 G0 X0\r" + "".join(f"G1 X{k % 7} F100\r" for k in range(n))  # 10 + 11 n bytes
+    assert len(head) < 65536 < len(head) + 300
+    path = tmp_path / "blank.nc"
+    path.write_bytes((head + "\r" * 300 + "G1 X9\rM30\r").encode())
+    res = tc.run(path, max_line_length=100)
+    assert res.nominal.end[-1, 0] == 9
+    assert res.nominal.line[-1] == 1 + n + 300 + 1
+
+
 def test_a_called_fanuc_file_with_cr_ends(tmp_path):
     (tmp_path / "O1000.nc").write_bytes(b"O1000\rG1 X1 F100\r(x)\rG1 Y1\rM99\r")
     res = tc.run(tc.Program.parse("G21 G0 X0 Y0\nM98 P1000\nM30\n", dialect="fanuc"), search_path=[tmp_path])

@@ -174,9 +174,8 @@ def test_a_move_beyond_the_travel_is_an_error_at_its_line():
 
 
 def test_an_arc_that_bulges_beyond_the_travel_is_caught():
-    # From machine X-10 (program 590) a half circle of radius 20 about program X590 Y0 ...
-    # its ends at X570 and X610? No: from (590, 0) G3 to (590, 40) about (590, 20): the arc
-    # reaches program X 610 (machine X10) at its middle while both ends are inside.
+    # From (590, 0) G3 to (590, 40) about (590, 20): the arc reaches program X610 (machine
+    # X10, beyond 0) at its middle while both ends (machine X-10) are inside.
     text = "G21 G90 G0 X590 Y0 Z10\nG3 X590 Y40 I0 J20 F100\nM30\n"
     with pytest.raises(tc.ProgramError) as e:
         tc.run(tc.Program.parse(text, dialect="fanuc"), machine=_travel_machine())
@@ -366,3 +365,69 @@ def test_subprogram_codes_that_cannot_run_are_refused_at_their_line(text, what):
     with pytest.raises(tc.ParseError) as e:
         tc.Machine.parse(text)
     assert what in e.value.message and e.value.line == 3
+
+
+@pytest.mark.parametrize("rotation", [0.0, 45.0, 30.0])
+def test_arc_extremes_count_in_a_rotated_system(rotation):
+    # A full circle of radius 10 about program (0, 0): whatever the rotation of G54, it reaches
+    # machine X 10, beyond the travel's 9.
+    m = tc.Machine("linuxcnc")
+    m.travel = ((-math.inf, 9.0), (-math.inf, math.inf), (-math.inf, math.inf))
+    with pytest.raises(tc.ProgramError) as e:
+        tc.run(tc.Program.parse("G21 G17 G0 X-10 Y0\nG2 X-10 Y0 I10 J0 F100\nM2\n"), machine=m,
+               parameters={5230: rotation})
+    assert (e.value.code, e.value.line) == ("travel_limit", 2)
+    assert "X 10.0000 mm" in e.value.message
+
+
+def test_a_lathes_machine_x_is_a_diameter():
+    # Travel X up to 60 (diameter, as the control shows it): X50 is inside, X100 beyond.
+    lathe = tc.Machine.preset("fanuc-lathe")
+    lathe.travel = ((-math.inf, 60.0), (-math.inf, math.inf), (-math.inf, math.inf))
+    tc.run(tc.Program.parse("G21 G18 G98 G0 X50 Z0\nM30\n", dialect="fanuc"), machine=lathe)
+    with pytest.raises(tc.ProgramError) as e:
+        tc.run(tc.Program.parse("G21 G18 G98 G0 X100 Z0\nM30\n", dialect="fanuc"), machine=lathe)
+    assert e.value.code == "travel_limit" and "X 100.0000 mm" in e.value.message
+    # A work origin of X10 (diameter): G53 X0 is program diameter -10.
+    lathe.work_origin = (10.0, 0.0, 0.0)
+    res = tc.run(tc.Program.parse("G21 G18 G98 G53 G0 X0\nM30\n", dialect="fanuc"), machine=lathe)
+    assert res.nominal.end[-1, 0] == -5.0  # the path holds radii
+
+
+def test_one_sided_travel_round_trips():
+    m = tc.Machine.parse('control = "fanuc"\n[travel]\nx = [-inf, 100]\n')
+    assert m.travel[0] == (-math.inf, 100.0)
+    assert tc.Machine.parse(m.dumps()).travel == m.travel
+
+
+@pytest.mark.parametrize("text, line", [
+    ('control = "fanuc"\nm_codes = 5\n', 2),                      # a section that is no table
+    ('control = "fanuc"\n[profile]\nblock_limit = 0\n', 3),       # refused by the engine's check
+    ('control = "fanuc"\n[m_codes]\nM30 = "nothing"\n', 3),       # the key written M30
+    ('control = "fanuc"\n[travel]\nx = [0, "far"]\n', 3),
+])
+def test_more_bad_machine_files_name_their_line(text, line):
+    with pytest.raises(tc.ParseError) as e:
+        tc.Machine.parse(text)
+    assert (e.value.code, e.value.line) == ("machine_file", line), e.value
+
+
+def test_names_with_control_characters_round_trip():
+    m = tc.Machine("fanuc", "mill", "cell\r3\x7f \"A\" \\ B")
+    assert tc.Machine.parse(m.dumps()).name == m.name
+
+
+def test_positions_other_dialects_do_not_apply_are_said():
+    m = tc.Machine("heidenhain")
+    m.work_origin = (-100.0, 0.0, 0.0)
+    res = tc.run(tc.Program.parse("0 BEGIN PGM A MM\n1 L X+1 R0 FMAX\n2 END PGM A MM\n", dialect="heidenhain"),
+                 machine=m)
+    assert [d.code for d in res.diagnostics] == ["machine_positions_not_applied"]
+
+
+def test_a_linuxcnc_builder_subprogram_name_is_folded_to_lower_case(tmp_path):
+    (tmp_path / "mysub.ngc").write_text("o<mysub> sub\nG91 G0 Z5\nG90\no<mysub> endsub\nM2\n")
+    m = tc.Machine("linuxcnc")
+    m.m_codes = {150: tc.MachineCode("subprogram", program="MySub")}
+    res = tc.run(tc.Program.parse("G21 G0 X1 Z0\nM150\nM2\n"), machine=m, search_path=[tmp_path])
+    assert res.nominal.end[-1, 2] == 5

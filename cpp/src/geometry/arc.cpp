@@ -55,7 +55,11 @@ const char* arc_defect(const Arc& a, double unit) {
     const double r = std::hypot(u.x(), u.y()) * unit, sweep = arc_sweep(a);
     if (!std::isfinite(r) || !std::isfinite(sweep) || !std::isfinite(r * sweep))
         return "its radius, sweep or length is not a finite number";
-    if (a.turns == 0 && sweep >= 2 * kPi && (in_plane(a.end, a.plane) - in_plane(a.start, a.plane)).norm() * unit > 1e-6)
+    // The ends' gap across the start's ray: a slight spiral that ends on that ray is a full
+    // circle (LinuxCNC cuts one), an end beside it that the angle cannot see is not.
+    const Vec2 gap = in_plane(a.end, a.plane) - in_plane(a.start, a.plane);
+    const double across = std::fabs(cross2(u / std::hypot(u.x(), u.y()), gap));
+    if (a.turns == 0 && sweep >= 2 * kPi && across * unit > 1e-6)
         return "its start and end are distinct points that its circle cannot tell apart (it would be "
                "taken as a full circle)";
     return nullptr;

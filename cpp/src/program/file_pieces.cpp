@@ -54,7 +54,9 @@ std::string_view FilePieces::next() {
         // A line with no end within the limit is too long, whatever follows: stop reading it.
         const std::size_t last_nl = buf_.rfind('\n');
         const std::size_t from = last_nl == std::string::npos ? 0 : last_nl + 1;
-        if (buf_.size() - from > max_line_length_ + 2) {
+        // CRs at the end not yet decided (line ends if no LF follows) are no line content.
+        const std::size_t upto = cr_ends_line_ ? decided_ : buf_.size();
+        if (upto > from && upto - from > max_line_length_ + 2) {
             const std::size_t line =
                 lines_ + 1 + static_cast<std::size_t>(std::count(buf_.begin(), buf_.begin() + from, '\n'));
             throw ParseError(code::line_too_long,

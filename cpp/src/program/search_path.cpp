@@ -15,13 +15,12 @@ void check_search_path(const std::vector<std::string>& dirs) {
 }
 
 namespace {
-// Whether `inner` (a real path) is `dir` itself or lies below it.
+// Whether `inner` is `dir` itself or lies below it (both real paths: canonical, so without
+// a trailing separator, "." or "..").
 bool inside(const std::filesystem::path& inner, const std::filesystem::path& dir) {
     auto i = inner.begin();
-    for (auto d = dir.begin(); d != dir.end(); ++d, ++i) {
-        if (d->empty()) continue;  // a trailing separator
+    for (auto d = dir.begin(); d != dir.end(); ++d, ++i)
         if (i == inner.end() || *i != *d) return false;
-    }
     return true;
 }
 }  // namespace
@@ -30,12 +29,14 @@ CalledEntry look_in(const SearchPath& search, const std::filesystem::path& dir, 
     namespace fs = std::filesystem;
     CalledEntry e;
     std::error_code ec;
-    if (!fs::exists(fs::symlink_status(candidate, ec))) return e;  // nothing of that name
+    // Nothing of that name, or a link to nothing (a dangling link, a loop): the search goes
+    // on in the next directory, as it would for a missing file.
+    if (!fs::exists(candidate, ec)) return e;
     e.path = candidate;
     if (!search.follow_links) {
         const fs::path real = fs::canonical(candidate, ec);
         const fs::path real_dir = ec ? fs::path() : fs::canonical(dir, ec);
-        if (ec) {  // a dangling link, or a link loop
+        if (ec) {  // gone between the two looks
             e.kind = CalledEntry::refused;
             e.code = code::file_not_found;
             e.message = "Cannot read " + candidate.string() + ": " + ec.message();

@@ -31,9 +31,10 @@ Vec3 arc_point(const Arc& a, double u);
 double arc_length(const Arc& a);
 // Why an arc cannot be cut as written, or nullptr. `unit`: mm per program unit. Its radius,
 // sweep or length in mm is not a finite number (an absurd R word: R1e300 for a 1 mm chord),
-// or its start and end are distinct points (more than 1e-6 mm apart) that the circle cannot
-// tell apart, so that it would be taken as a full circle (a radius of kilometres for a chord
-// of microns: only radii beyond 1 km reach this).
+// or its end lies more than 1e-6 mm beside the start's ray from the centre and yet the angle
+// cannot tell it from the start, so that it would be taken as a full circle (a radius of
+// kilometres for a chord of microns: only radii beyond 1 km reach this). An end on that ray
+// (a slight spiral of a full circle) is a full circle, as LinuxCNC cuts it.
 const char* arc_defect(const Arc& a, double unit);
 // Number of chords so that no chord deviates more than `tolerance` from the arc; throws
 // Error("sample_too_fine") beyond 50 million chords.

@@ -20,8 +20,6 @@ struct DialectNames {
     std::array<std::string_view, 2> suffixes;
 };
 std::vector<DialectNames> dialect_names();
-// The word-address dialects the ISO front end reads (LinuxCNC, Fanuc, Rockwell).
-inline bool is_iso(Dialect d) { return d == Dialect::linuxcnc || d == Dialect::fanuc || d == Dialect::rockwell; }
 // Whether a lone CR (a run of CRs not followed by LF) ends a line, each CR one, as LF does
 // ("\r\n" and "\r\r\n" are one line end everywhere). LinuxCNC reads a line up to LF only: a
 // file with CR line ends is one long line there (checked against rs274). The other

@@ -9,7 +9,7 @@
 // that a directory of programs cannot hand the run a file from anywhere else on the machine.
 // Shops that keep their subprograms behind links set follow_links. An entry of the name that
 // is not a regular file (a FIFO, a device, a directory) is refused ("not_a_regular_file"),
-// never taken for "not found".
+// never taken for "not found"; a link to nothing is no entry (the search goes on).
 #include <filesystem>
 #include <string>
 #include <vector>

@@ -528,6 +528,7 @@ std::string Interp::find_program(const std::string& name, int column) const {
             if (auto f = entry_in(*dir, n, /*directory=*/false)) {
                 // Within the search directory `d`, not just the subdirectory the name gave.
                 const CalledEntry entry = look_in(search_, d, *f);
+                if (entry.kind == CalledEntry::absent) continue;  // a link to nothing
                 if (entry.kind == CalledEntry::refused) fail(entry.code.c_str(), "CALL PGM " + name + ": " + entry.message, column);
                 return entry.path.string();
             }
@@ -569,7 +570,7 @@ void Interp::call_program(Tokens t, int depth) {
     lookahead_ = 0;
     auto& sub = called_[file];
     if (!sub) {
-        CalledText f = read_called(search_, file, true);
+        CalledText f = read_called(search_, file, cr_ends_line(Dialect::heidenhain));
         if (!f.ok()) fail(f.code.c_str(), "CALL PGM " + text + ": " + f.message, t[0].column);
         sub = std::make_shared<const Program>(parse(f.text, file, /*strict=*/false));
     }

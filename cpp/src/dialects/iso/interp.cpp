@@ -46,8 +46,8 @@ Interp::Interp(const Program& prog, const ToolTable* tools, const ControlProfile
 // parameters (a .var file: the machine's live state) do not give them; the machine stands
 // at its zero.
 void Interp::place_machine(const Machine& m, const ParameterValues& values) {
-    const double u = st_.inch ? kMmPerInch : 1.0;
     for (int j = 0; j < 3; ++j) {
+        const double u = machine_scale(j);  // a lathe's machine X is a diameter
         if (!values.count(5221 + j)) g5x_[0][j] = m.work_origin[static_cast<std::size_t>(j)] / u;
         if (!values.count(5161 + j)) g28_[j] = m.g28[static_cast<std::size_t>(j)] / u;
         if (!values.count(5181 + j)) g30_[j] = m.g30[static_cast<std::size_t>(j)] / u;

@@ -163,6 +163,8 @@ private:
     void machine_subprogram(const MachineCode& c, int column);  // a builder M code that runs a program
     void to_tool_change_position(int column);  // M6 on a machine with a tool change position
     void check_travel(const Motion& m);         // the machine's travel limits (travel_limit)
+    // mm of the machine file per program unit of axis i: a lathe's machine X is a diameter.
+    double machine_scale(int i) const { return scale() * (i == 0 && st_.diameter ? 2.0 : 1.0); }
     void home(const BlockWords& bw, int code);  // G28 / G30 and G28.1 / G30.1
     // Sets an offset (or rotation) while the machine stays still: the program coordinates
     // of the current point change instead.
@@ -216,6 +218,7 @@ private:
     IdleWatch idle_;            // blocks in a row without a move (count_block)
     bool travel_ = false;              // the machine has travel limits to check
     std::size_t travel_warnings_ = 0;  // travel_limit warnings reported
+    std::vector<Vec3> travel_points_;  // check_travel's points, kept from move to move
     ModalState st_;
     Vec6 pos_ = Vec6::Zero();
     std::array<Vec6, 9> g5x_;

@@ -1,23 +1,24 @@
 // The machine a program runs on (control/machine.hpp): the tool change position and the
 // travel limits, in machine coordinates. Its origins are placed at start (interp.cpp).
 #include <cmath>
-#include "toolcomp/program/codes.hpp"
 #include <cstdio>
 
 #include "interp.hpp"
+#include "toolcomp/program/codes.hpp"
+#include "toolcomp/program/text.hpp"
 
 namespace toolcomp::iso {
 
 // M6 on a machine with a tool change position: the axes it names go there at rapid first
-// (Haas mill: Z to machine zero), the others stay.
+// (Haas mill: Z to machine zero), the others stay. (A lathe's machine X is a diameter, as the
+// control shows it; the interpreter keeps radii.)
 void Interp::to_tool_change_position(int column) {
     const Machine& mc = *opts_.machine;
-    const double u = scale();  // mm per program unit
     Vec6 m = to_machine(pos_);
     bool any = false;
     for (int i = 0; i < 3; ++i)
         if (const auto& v = mc.tool_change[static_cast<std::size_t>(i)]) {
-            m[i] = *v / u;
+            m[i] = *v / machine_scale(i);
             any = true;
         }
     if (!any) return;
@@ -33,7 +34,9 @@ void Interp::machine_subprogram(const MachineCode& c, int column) {
         Statement s;
         s.kind = Stmt::o_call;
         s.column = column;
-        s.label = "<" + c.program + ">";
+        std::string name = c.program;  // LinuxCNC folds a sub's name to lower case, as o<MySub> call
+        for (char& ch : name) ch = ascii_lower(ch);
+        s.label = "<" + name + ">";
         call_sub(s);
         return;
     }
@@ -47,18 +50,21 @@ void Interp::machine_subprogram(const MachineCode& c, int column) {
 
 namespace {
 // The points of a move whose machine coordinates bound it: its end, and for an arc the
-// points of its circle at 0, 90, 180 and 270 degrees that it passes (the extremes of each
-// plane axis; the start was the end of the move before).
-int bounding_points(const Motion& m, Vec3 (&out)[5]) {
-    out[0] = m.end;
+// points of its circle where a machine axis has its extreme that it passes (the start was the
+// end of the move before). `rotation`: the XY rotation of the coordinate system (radians):
+// an XY arc's extremes in machine X and Y lie that much before the program's axes; an arc in
+// another plane under a rotation is sampled every 5 degrees besides.
+int bounding_points(const Motion& m, double rotation, std::vector<Vec3>& out) {
+    out.assign(1, m.end);
     if (!m.is_arc()) return 1;
     const Arc a = m.arc();
     const PlaneAxes ax = axes(a.plane);
     const Vec2 c = in_plane(a.center, a.plane), s = in_plane(a.start, a.plane) - c;
     const double r = s.norm(), phi0 = std::atan2(s.y(), s.x()), sweep = arc_sweep(a);
-    int n = 1;
-    for (int k = 0; k < 4; ++k) {
-        const double theta = k * kPi / 2;
+    const double shift = a.plane == Plane::xy ? -rotation : 0.0;
+    const int steps = rotation != 0 && a.plane != Plane::xy ? 72 : 4;
+    for (int k = 0; k < steps; ++k) {
+        const double theta = k * 2 * kPi / steps + shift;
         // The angle from the start to theta in the arc's direction, in [0, 2 pi).
         double d = a.dir > 0 ? theta - phi0 : phi0 - theta;
         d = std::fmod(d, 2 * kPi);
@@ -68,24 +74,24 @@ int bounding_points(const Motion& m, Vec3 (&out)[5]) {
         p[ax.a] = c.x() + r * std::cos(theta);
         p[ax.b] = c.y() + r * std::sin(theta);
         p[ax.c] = a.start[ax.c] + (a.end[ax.c] - a.start[ax.c]) * (d / sweep);
-        out[n++] = p;
+        out.push_back(p);
     }
-    return n;
+    return static_cast<int>(out.size());
 }
 }  // namespace
 
 void Interp::check_travel(const Motion& m) {
     const Machine& mc = *opts_.machine;
-    Vec3 points[5];
-    const int n = bounding_points(m, points);
+    const int n = bounding_points(m, rotation_[st_.coord_system - 1] * kPi / 180, travel_points_);
+    const std::vector<Vec3>& points = travel_points_;
     static constexpr char kName[3] = {'X', 'Y', 'Z'};
     for (int k = 0; k < n; ++k) {
         Vec6 q = pos_;
         q.head<3>() = points[k];
-        const Vec6 machine = to_machine(q) * scale();
+        const Vec6 machine = to_machine(q);
         for (int i = 0; i < 3; ++i) {
             const AxisTravel& t = mc.travel[static_cast<std::size_t>(i)];
-            const double v = machine[i];
+            const double v = machine[i] * machine_scale(i);
             if (v >= t.min - 1e-6 && v <= t.max + 1e-6) continue;
             char msg[200];
             std::snprintf(msg, sizeof msg,

@@ -298,6 +298,7 @@ void Interp::call(const std::string& name, int passes, int column) {
             }
             if (!best) continue;
             const CalledEntry entry = look_in(opts_.search, dir, fs::path(dir) / best->second);
+            if (entry.kind == CalledEntry::absent) continue;  // a link to nothing
             if (entry.kind == CalledEntry::refused) fail(entry.code, "Program " + name + ": " + entry.message, column);
             found = entry.path.string();
             break;
@@ -306,7 +307,7 @@ void Interp::call(const std::string& name, int passes, int column) {
             fail(code::alarm_14011, "14011 Program " + name + " not existing or will be edited" +
                               (opts_.search.dirs.empty() ? " (no search path given)" : " (not on the search path)"),
                  column);
-        CalledText f = read_called(opts_.search, found, true);
+        CalledText f = read_called(opts_.search, found, cr_ends_line(Dialect::sinumerik));
         if (!f.ok()) fail(f.code, "Program " + name + ": " + f.message, column);
         loaded_.push_back(parse(f.text, found, false));
         p = &loaded_.back();
