@@ -2,13 +2,13 @@
 // Tangent, outside and inside corners for lines and arcs (LinuxCNC's decisions and formulas),
 // with the profile's choice of what fills an outside corner and how the entry block ends.
 #include <algorithm>
-#include "toolcomp/program/codes.hpp"
 #include <cmath>
 #include <vector>
 
 #include "radius_math.hpp"
 #include "toolcomp/compensation/radius.hpp"
 #include "toolcomp/geometry/element.hpp"
+#include "toolcomp/program/codes.hpp"
 
 namespace toolcomp {
 

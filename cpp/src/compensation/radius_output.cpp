@@ -1,12 +1,12 @@
 // Held moves, the gouge check when a held move's end is pulled back, the profile's reaction
 // to an unreachable element (error, skip with look-ahead, report), and the output window.
 #include <cmath>
-#include "toolcomp/program/codes.hpp"
 #include <cstdio>
 #include <string>
 
 #include "radius_math.hpp"
 #include "toolcomp/compensation/radius.hpp"
+#include "toolcomp/program/codes.hpp"
 
 namespace toolcomp {
 

@@ -1,13 +1,13 @@
 // The radius stage's local overcut watch: distances between tool-centre elements and the
 // programmed elements around them (exact for segments and arcs), one warning per element.
 #include <algorithm>
-#include "toolcomp/program/codes.hpp"
 #include <cmath>
 #include <cstdio>
 #include <limits>
 
 #include "radius_math.hpp"
 #include "toolcomp/compensation/overcut.hpp"
+#include "toolcomp/program/codes.hpp"
 
 namespace toolcomp {
 

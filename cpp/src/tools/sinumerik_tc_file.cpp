@@ -1,8 +1,8 @@
 // Reading and writing "$TC_DPn[t,d]=value" initialisation lines (spec §3.1).
 #include <sstream>
-#include "toolcomp/program/codes.hpp"
 
 #include "number_text.hpp"
+#include "toolcomp/program/codes.hpp"
 #include "toolcomp/program/diagnostic.hpp"
 #include "toolcomp/program/text.hpp"
 #include "toolcomp/tools/sinumerik_edge.hpp"

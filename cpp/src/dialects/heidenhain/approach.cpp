@@ -3,11 +3,11 @@
 // contour element (its tangent at PA decides the path); DEP cancels compensation after the
 // last element ends perpendicular at PE.
 #include <algorithm>
-#include "toolcomp/program/codes.hpp"
 #include <cmath>
 #include <stdexcept>
 
 #include "interp.hpp"
+#include "toolcomp/program/codes.hpp"
 
 namespace toolcomp::heidenhain {
 

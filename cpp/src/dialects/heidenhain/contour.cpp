@@ -2,11 +2,11 @@
 // with helix), and the corner elements RND and CHF, which change the elements on both sides
 // (so the last element is held back until the next one is known).
 #include <algorithm>
-#include "toolcomp/program/codes.hpp"
 #include <cmath>
 #include <optional>
 
 #include "interp.hpp"
+#include "toolcomp/program/codes.hpp"
 #include "toolcomp/program/int_value.hpp"
 #include "toolcomp/geometry/arc.hpp"
 #include "toolcomp/geometry/element.hpp"

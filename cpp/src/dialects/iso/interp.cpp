@@ -3,11 +3,11 @@
 // diameter mode, radius comp, length comp, coordinate system, path control, distance
 // modes, retract mode, G10/G28/G30/G92, motion, program stop/end.
 #include <cctype>
-#include "toolcomp/program/codes.hpp"
 #include <cmath>
 #include <stdexcept>
 
 #include "interp.hpp"
+#include "toolcomp/program/codes.hpp"
 #include "toolcomp/program/source_files.hpp"
 #include "toolcomp/tools/tool_table.hpp"
 

@@ -3,10 +3,10 @@
 // the XY move at the current level, the plunge to R, the cycle's own moves, the retract to
 // the clearance level (G98: the initial level, G99: R), repeated L times.
 #include <algorithm>
-#include "toolcomp/program/codes.hpp"
 #include <cmath>
 
 #include "interp.hpp"
+#include "toolcomp/program/codes.hpp"
 
 namespace toolcomp::iso {
 

@@ -2,7 +2,6 @@
 // calls and returns, subprogram files on the search path, the computed values of words and
 // the parameter assignments of a block.
 #include <cmath>
-#include "toolcomp/program/codes.hpp"
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -11,6 +10,7 @@
 #include "interp.hpp"
 #include "whole_numbers.hpp"
 #include "toolcomp/dialects/iso/lexer.hpp"
+#include "toolcomp/program/codes.hpp"
 #include "toolcomp/program/input_limits.hpp"
 
 namespace toolcomp::iso {

@@ -1,10 +1,10 @@
 // Straight moves and arcs (LinuxCNC convert_straight / convert_arc / arc_data_ijk / arc_data_r).
 #include <cmath>
-#include "toolcomp/program/codes.hpp"
 #include <cstdio>
 
 #include "interp.hpp"
 #include "toolcomp/motion/spindle.hpp"
+#include "toolcomp/program/codes.hpp"
 
 namespace toolcomp::iso {
 

@@ -2,9 +2,9 @@
 // convert_axis_offsets, convert_home). The machine never moves when an offset changes: the
 // program coordinates of the current point change instead.
 #include <cmath>
-#include "toolcomp/program/codes.hpp"
 
 #include "interp.hpp"
+#include "toolcomp/program/codes.hpp"
 
 namespace toolcomp::iso {
 

@@ -2,13 +2,13 @@
 // parameters computed from the interpreter's state (LinuxCNC 5161-5428, Fanuc #3000 and the
 // position variables), named parameters, and the substitution of values into messages.
 #include <algorithm>
-#include "toolcomp/program/codes.hpp"
 #include <cctype>
 #include <cmath>
 #include <cstdio>
 
 #include "interp.hpp"
 #include "whole_numbers.hpp"
+#include "toolcomp/program/codes.hpp"
 #include "toolcomp/program/text.hpp"
 #include "toolcomp/tools/tool_table.hpp"
 

@@ -2,10 +2,10 @@
 // LinuxCNC's checks (convert_cutter_compensation_on/off). The offset itself is computed by
 // the radius compensation stage after the Motion stream.
 #include <cmath>
-#include "toolcomp/program/codes.hpp"
 
 #include "interp.hpp"
 #include "whole_numbers.hpp"
+#include "toolcomp/program/codes.hpp"
 #include "toolcomp/tools/tool_table.hpp"
 
 namespace toolcomp::iso {

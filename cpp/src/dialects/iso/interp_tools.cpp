@@ -1,10 +1,10 @@
 // Tool selection and change (T, M6, M61) and tool length compensation (G43, G43.1, G43.2,
 // G44, G49), LinuxCNC convert_tool_select / convert_tool_change / convert_tool_length_offset.
 #include <cmath>
-#include "toolcomp/program/codes.hpp"
 
 #include "interp.hpp"
 #include "whole_numbers.hpp"
+#include "toolcomp/program/codes.hpp"
 #include "toolcomp/tools/tool_table.hpp"
 
 namespace toolcomp::iso {

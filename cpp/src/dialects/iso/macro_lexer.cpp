@@ -3,8 +3,8 @@
 // (O1000 program numbers, IF [..] GOTO n, IF [..] THEN, WHILE [..] DO m, END m, GOTO n).
 // Their meaning is the interpreter's (flow.cpp); here they are only read.
 #include <string>
-#include "toolcomp/program/codes.hpp"
 
+#include "toolcomp/program/codes.hpp"
 #include "toolcomp/program/text.hpp"
 
 #include "line_lexer.hpp"

@@ -3,7 +3,6 @@
 // numbers), subprogram calls (L<n>, by name, with P passes) and returns (M17, RET, M2/M30
 // in a subprogram), and the block limit.
 #include <cmath>
-#include "toolcomp/program/codes.hpp"
 #include <filesystem>
 #include <fstream>
 #include <optional>
@@ -12,6 +11,7 @@
 
 #include "interp.hpp"
 #include "toolcomp/dialects/sinumerik/lexer.hpp"
+#include "toolcomp/program/codes.hpp"
 #include "toolcomp/program/input_limits.hpp"
 #include "toolcomp/program/text.hpp"
 

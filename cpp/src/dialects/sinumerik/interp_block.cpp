@@ -3,10 +3,10 @@
 // control's order: feed, speed, tool selection and change, edge, plane, units, dimensions,
 // compensation modes, frames, motion, program stop and end, subprogram call.
 #include <algorithm>
-#include "toolcomp/program/codes.hpp"
 #include <cmath>
 
 #include "interp.hpp"
+#include "toolcomp/program/codes.hpp"
 #include "toolcomp/program/int_value.hpp"
 #include "toolcomp/dialects/sinumerik/lexer.hpp"
 #include "toolcomp/program/text.hpp"

@@ -4,10 +4,10 @@
 // helices) and the cutter radius request (G40/G41/G42, NORM/KONT, G450/G451, DISC, CDON/CDOF,
 // OFFN).
 #include <cmath>
-#include "toolcomp/program/codes.hpp"
 
 #include "interp.hpp"
 #include "toolcomp/motion/spindle.hpp"
+#include "toolcomp/program/codes.hpp"
 #include "toolcomp/program/int_value.hpp"
 #include "toolcomp/geometry/arc.hpp"
 

@@ -5,9 +5,9 @@
 // edge_from_common). The length vector follows the plane (spec §3.2) and, with a toolholder
 // (TCARR=m), its kinematics (spec §3.6).
 #include <cctype>
-#include "toolcomp/program/codes.hpp"
 
 #include "interp.hpp"
+#include "toolcomp/program/codes.hpp"
 #include "toolcomp/program/int_value.hpp"
 #include "toolcomp/program/text.hpp"
 #include "toolcomp/tools/format_sinumerik.hpp"

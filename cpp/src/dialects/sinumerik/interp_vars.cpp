@@ -2,9 +2,9 @@
 // INT/BOOL, arrays of one or two dimensions), the tool system variables $TC_DPn[t,d] and
 // $TC_CARRn[m], $P_TOOLNO / $P_TOOL, and the value-returning calls GETTCOR and LENTOAX.
 #include <cmath>
-#include "toolcomp/program/codes.hpp"
 
 #include "interp.hpp"
+#include "toolcomp/program/codes.hpp"
 #include "toolcomp/program/int_value.hpp"
 #include "toolcomp/program/text.hpp"
 #include "toolcomp/tools/sinumerik_gettcor.hpp"
