@@ -28,13 +28,13 @@ void run_pipeline(const Program& program, const ToolTable* tools, const RunOptio
 // Memory exhausted anywhere in a run (a Path's columns, a called file's text, the
 // interpreter's state) is the run's error with a stable code, ProgramError("out_of_memory"),
 // not std::bad_alloc (which Python raises as a bare MemoryError).
-[[noreturn]] void throw_out_of_memory();
+ProgramError out_of_memory_error();
 template <class F>
 auto out_of_memory_as_error(F&& f) -> decltype(f()) {
     try {
         return f();
     } catch (const std::bad_alloc&) {
-        throw_out_of_memory();
+        throw out_of_memory_error();
     }
 }
 

@@ -149,8 +149,8 @@ Program read_program(const std::string& path, std::optional<Dialect> dialect, bo
     return parse_program(text, d, path, strict, limits.max_line_length);
 }
 
-void throw_out_of_memory() {
-    throw ProgramError(code::out_of_memory,
+ProgramError out_of_memory_error() {
+    return ProgramError(code::out_of_memory,
                        "The run ran out of memory (the machine's memory or the process's limit): see max_segments, "
                        "max_bytes and ControlProfile.call_depth_limit");
 }

@@ -165,11 +165,7 @@ void PathStream::produce() {
     } catch (const ProgramSource::InputError& e) {
         error = e.error;
     } catch (const std::bad_alloc&) {
-        try {
-            throw_out_of_memory();
-        } catch (...) {
-            error = std::current_exception();
-        }
+        error = std::make_exception_ptr(out_of_memory_error());
     } catch (...) {
         error = std::current_exception();
     }

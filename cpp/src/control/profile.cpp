@@ -9,6 +9,24 @@
 
 namespace toolcomp {
 
+namespace {
+// Cutter compensation as Fanuc's type C and the 9/Series TTRC both apply it: type A entry,
+// intersections at inside and obtuse outside corners, extension blocks at outside corners
+// sharper than 90 degrees, side changes without G40, any plane, no arc in the entry block; two
+// blocks without plane motion looked past, more may overcut (warning).
+void compensation_type_c(RadiusRules& r) {
+    r.yz_plane = true;
+    r.side_change = true;
+    r.entry = EntryStyle::perpendicular_to_next;
+    r.entry_arc = false;
+    r.outside_corner = OutsideCorner::extension;
+    r.corner_limit = kPi / 2;
+    r.max_non_plane_moves = 2;
+    r.count_blocks_without_motion = true;
+    r.non_plane_reaction = NonPlaneReaction::overcut;
+}
+}  // namespace
+
 ControlProfile profile_for(Dialect d, MachineKind machine) {
     ControlProfile p;
     p.name = std::string(dialect_name(d));
@@ -48,20 +66,9 @@ ControlProfile profile_for(Dialect d, MachineKind machine) {
             p.length_axes = LengthAxes::z_only;
             p.length_subtract_word = true;
             p.modal_offset_numbers = true;
-            // Cutter compensation C: start-up type A, intersections at inside and obtuse
-            // outside corners, extension blocks at acute outside corners, any plane, no arc
-            // in the start-up block. Alarm texts as printed by 0i/30i series controls.
+            // Cutter compensation C; alarm texts as printed by 0i/30i series controls.
             RadiusRules& r = p.radius;
-            r.yz_plane = true;
-            r.side_change = true;
-            r.entry = EntryStyle::perpendicular_to_next;
-            r.entry_arc = false;
-            r.outside_corner = OutsideCorner::extension;
-            r.corner_limit = kPi / 2;
-            // Two blocks without plane motion are looked past; more may overcut (warning).
-            r.max_non_plane_moves = 2;
-            r.count_blocks_without_motion = true;
-            r.non_plane_reaction = NonPlaneReaction::overcut;
+            compensation_type_c(r);
             r.messages.entry_arc = "PS0034 NO CIRC ALLOWED IN ST-UP/EXT BLK";
             r.messages.exit_arc = "PS0034 NO CIRC ALLOWED IN ST-UP/EXT BLK";
             r.messages.entry_too_short = "PS0041 INTERFERENCE IN CRC";
@@ -117,16 +124,8 @@ ControlProfile profile_for(Dialect d, MachineKind machine) {
             p.t_format = 2;
             p.length_axes = LengthAxes::all;
             RadiusRules& r = p.radius;
-            r.yz_plane = true;
-            r.side_change = true;
-            r.entry = EntryStyle::perpendicular_to_next;
-            r.entry_arc = false;
-            r.outside_corner = OutsideCorner::extension;
-            r.corner_limit = kPi / 2;
+            compensation_type_c(r);
             r.tip_convention = TipConvention::fanuc;
-            r.max_non_plane_moves = 2;
-            r.count_blocks_without_motion = true;
-            r.non_plane_reaction = NonPlaneReaction::overcut;
             r.exit_direction_words = true;
             r.offset_change_reenters = true;
             r.messages.entry_arc = "Block format error: TTRC entry in a circular block";
