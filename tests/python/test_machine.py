@@ -1,6 +1,7 @@
 """Machines as data (tc.Machine): builder M codes, work origin, G53, tool change position,
 travel limits, machine files (TOML) read, written and refused with their line, presets."""
 import math
+import pathlib
 
 import numpy as np
 import pytest
@@ -431,3 +432,41 @@ def test_a_linuxcnc_builder_subprogram_name_is_folded_to_lower_case(tmp_path):
     m.m_codes = {150: tc.MachineCode("subprogram", program="MySub")}
     res = tc.run(tc.Program.parse("G21 G0 X1 Z0\nM150\nM2\n"), machine=m, search_path=[tmp_path])
     assert res.nominal.end[-1, 2] == 5
+
+
+def test_a_fusion_style_haas_program_on_its_machine():
+    # A metric Haas program as a CAM post writes it: % frame, O number, safe start, G28 G91 Z0,
+    # T1 M06, M08, the chip conveyor M31/M33, G41 D01 on a contour with an arc, G53 G49 Z0 and
+    # G53 X0 Y0 to park. Program zero at machine (-400, -200, -500).
+    shapely = pytest.importorskip("shapely.geometry")
+    m = tc.Machine.preset("haas-mill")
+    m.work_origin = (-400.0, -200.0, -500.0)
+    m.travel = ((-762.0, 0.0), (-406.0, 0.0), (-508.0, 0.0))
+    tools = tc.ToolTable.parse("tool,z,diameter\n1,120,10\n", "csv")
+    path = pathlib.Path(__file__).resolve().parents[1] / "programs" / "machines" / "haas_bracket_metric.nc"
+    res = tc.run(path, tools=tools, machine=m)
+    assert res.ok and not res.diagnostics
+    p = res.path
+    # Parking: G53 G49 Z0 is program Z 500, G53 X0 Y0 program (400, 200).
+    np.testing.assert_allclose(p.end[-2], [-20, -20, 500])
+    np.testing.assert_allclose(p.end[-1], [400, 200, 500])
+    # The contour (0,0)-(0,50)-(80,50), G2 about (80,30) to (100,30), (100,0), (0,0): the tool
+    # centre runs 5 mm outside it (Shapely's distance; the 400-point polygon of the arc is
+    # within 4e-5 of it), meeting at the outside corners 5*sqrt(2) off (Fanuc's intersection
+    # of the two offset lines), the arc about (80,30) at radius 25.
+    arc = np.flatnonzero(p.kind == tc.ARC_CW)
+    np.testing.assert_allclose(p.center[arc[0], :2], [80, 30])
+    np.testing.assert_allclose(p.end[arc[0], :2], [105, 30])
+    contour = [(0, 0), (0, 50), (80, 50)] + [(80 + 20 * math.cos(a), 30 + 20 * math.sin(a))
+                                               for a in np.linspace(math.pi / 2, 0, 400)] + [(100, 0), (0, 0)]
+    ring = shapely.Polygon(contour).exterior
+    on_contour = (p.side != 0) & (p.line >= 20)
+    pts, seg = p.sample(0.0005)
+    pts = pts[np.isin(seg, np.flatnonzero(on_contour))]
+    d = np.array([ring.distance(shapely.Point(x, y)) for x, y, _ in pts])
+    assert d.min() > 5 - 1e-4 and d.max() < math.sqrt(50) + 1e-9
+    assert np.median(d) == pytest.approx(5, abs=1e-4)
+    assert np.count_nonzero(np.abs(d - math.sqrt(50)) < 1e-9) == 2  # (0,50) at (-5,55), (100,0) at (105,-5)
+    with pytest.raises(tc.ProgramError) as e:  # the plain Fanuc mill does not know the conveyor
+        tc.run(path, tools=tools, machine="fanuc-mill")
+    assert (e.value.code, e.value.line) == ("unknown_m_code", 14)
