@@ -50,6 +50,7 @@ from typing import Any, Dict, List, Optional, Tuple
 
 from . import _core
 from ._errors import ParseError
+from ._files import replace_text
 
 if sys.version_info >= (3, 11):
     import tomllib
@@ -386,15 +387,9 @@ def dumps(m: "_core.Machine") -> str:
 
 
 def write(m: "_core.Machine", path) -> None:
-    """Write the machine file (a temporary file renamed over `path`: never half written)."""
-    path = os.fspath(path)
-    text = dumps(m)
-    tmp = os.path.join(os.path.dirname(os.path.abspath(path)), "." + os.path.basename(path) + ".tmp")
-    with open(tmp, "w", encoding="utf-8") as f:
-        f.write(text)
-        f.flush()
-        os.fsync(f.fileno())
-    os.replace(tmp, path)
+    """Write the machine file, replaced atomically (never half written; a link and the
+    file's permissions are kept)."""
+    replace_text(path, dumps(m), suffix=".toml")
 
 
 # ---- presets and what run() takes ----------------------------------------------------------

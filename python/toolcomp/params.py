@@ -16,9 +16,9 @@ from __future__ import annotations
 import math
 import os
 import re
-import tempfile
 
 from ._errors import ParseError
+from ._files import replace_text
 
 __all__ = ["read_var", "write_var"]
 
@@ -110,24 +110,4 @@ def write_var(path, values: dict[int, float]) -> None:
     for m in sorted(todo):
         out.append(f"{m}\t{todo[m]:f}")
     body = newline.join(out) + (newline if out else "")
-    path = os.path.realpath(path)  # a link stays a link: its target is the file written
-    folder = os.path.dirname(path)
-    try:
-        mode = os.stat(path).st_mode & 0o7777
-    except FileNotFoundError:
-        mode = None
-    fd, tmp = tempfile.mkstemp(prefix=".toolcomp-", suffix=".var", dir=folder)
-    try:
-        with os.fdopen(fd, "w", encoding="utf-8", errors="surrogateescape", newline="") as f:
-            f.write(body)
-            f.flush()
-            if mode is not None:  # the file keeps its permissions
-                os.fchmod(f.fileno(), mode)
-            os.fsync(f.fileno())
-        os.replace(tmp, path)
-    except BaseException:
-        try:
-            os.unlink(tmp)
-        except FileNotFoundError:
-            pass
-        raise
+    replace_text(path, body, suffix=".var", errors="surrogateescape")
