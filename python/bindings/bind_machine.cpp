@@ -2,6 +2,7 @@
 // writing machine files (TOML) is in the Python package (toolcomp/machine.py).
 #include "bindings.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <pybind11/stl.h>
@@ -97,7 +98,8 @@ void bind_machine(py::module_& m) {
             "m_codes", [](const Machine& mc) { return mc.m_codes; },
             [](Machine& mc, const std::map<int, MachineCode>& codes) {
                 for (const auto& [n, c] : codes)
-                    if (control_fixes_m_code(mc.control, n) || n < 0)
+                    if (n < 0 || std::find(mc.profile.fixed_m_codes.begin(), mc.profile.fixed_m_codes.end(), n) !=
+                                     mc.profile.fixed_m_codes.end())
                         throw py::value_error("M" + std::to_string(n) + " cannot be declared: the control fixes it");
                 mc.m_codes = codes;
             },

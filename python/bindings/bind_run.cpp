@@ -275,6 +275,8 @@ void bind_run(py::module_& m) {
         .def_readwrite("last_g_code_wins", &ControlProfile::last_g_code_wins,
                        "two G codes of one modal group in a block: the last counts (Fanuc); False: refused")
         .def_readwrite("max_m_code", &ControlProfile::max_m_code, "the highest M code number (LinuxCNC 199)")
+        .def_readwrite("fixed_m_codes", &ControlProfile::fixed_m_codes,
+                       "the M codes the control itself fixes, which a machine cannot declare")
         .def_readwrite("negative_l_refused", &ControlProfile::negative_l_refused,
                        "a negative L word is refused as it is read (LinuxCNC)")
         .def_readwrite("dwell_negative_p", &ControlProfile::dwell_negative_p,

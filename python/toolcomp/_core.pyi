@@ -259,6 +259,7 @@ class ControlProfile:
     linuxcnc_g_numbers: bool
     last_g_code_wins: bool
     max_m_code: int
+    fixed_m_codes: List[int]
     negative_l_refused: bool
     dwell_negative_p: bool
     dwell_x_seconds: bool

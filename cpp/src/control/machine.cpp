@@ -1,6 +1,7 @@
 // Machines: a control's profile plus the builder's configuration (control/machine.hpp).
 #include "toolcomp/control/machine.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -14,18 +15,6 @@ Machine plain_machine(Dialect control, MachineKind kind) {
     m.kind = kind;
     m.profile = profile_for(control, kind);
     return m;
-}
-
-bool control_fixes_m_code(Dialect control, int number) {
-    switch (number) {
-        case 0: case 1: case 2: case 30: return true;  // stops and ends, everywhere
-        case 98: case 99: return control == Dialect::fanuc || control == Dialect::rockwell || control == Dialect::linuxcnc;
-        case 17: return control == Dialect::sinumerik;  // end of a subprogram
-        case 60: case 61: case 62: case 63: case 64: case 65: case 66: case 67: case 68:
-        case 70: case 71: case 72: case 73: case 48: case 49: case 50: case 51: case 52: case 53:
-            return control == Dialect::linuxcnc;  // LinuxCNC's own (pallet, tool, I/O, overrides, state)
-        default: return false;
-    }
 }
 
 namespace {
@@ -42,7 +31,8 @@ void check_machine(const Machine& m) {
     if (m.profile.kind != m.kind) bad("profile", "is a profile of another kind of machine (mill / lathe)");
     for (const auto& [number, code] : m.m_codes) {
         if (number < 0 || number > 99999) bad("m_codes", "M" + std::to_string(number) + " is no M code number (0 to 99999)");
-        if (control_fixes_m_code(m.control, number))
+        if (std::find(m.profile.fixed_m_codes.begin(), m.profile.fixed_m_codes.end(), number) !=
+            m.profile.fixed_m_codes.end())
             bad("m_codes", "M" + std::to_string(number) + " is fixed by the control (" +
                                std::string(dialect_name(m.control)) + "); a machine cannot declare it");
         for (char c : code.words)

@@ -54,6 +54,12 @@ ControlProfile profile_for(Dialect d, MachineKind machine) {
         p.abort_comment = true;
         p.call_depth_message = "Too many subroutine levels";
     }
+    if (d == Dialect::linuxcnc || d == Dialect::fanuc || d == Dialect::rockwell)
+        p.fixed_m_codes.insert(p.fixed_m_codes.end(), {98, 99});
+    if (d == Dialect::linuxcnc)
+        for (int m : {48, 49, 50, 51, 52, 53, 60, 61, 62, 63, 64, 65, 66, 67, 68, 70, 71, 72, 73})
+            p.fixed_m_codes.push_back(m);
+    if (d == Dialect::sinumerik) p.fixed_m_codes.push_back(17);
     if (d == Dialect::fanuc) {
         p.last_g_code_wins = true;
         p.fanuc_g10 = true;

@@ -78,8 +78,8 @@ struct Machine {
     MachineKind kind = MachineKind::mill;
     ControlProfile profile;  // the control's profile with the machine file's overrides
 
-    // Builder M codes by number. A code the control fixes itself (program stop and end,
-    // subprogram call and return) cannot be declared (check_machine).
+    // Builder M codes by number. A code the control fixes itself (profile.fixed_m_codes:
+    // program stop and end, subprogram call and return) cannot be declared (check_machine).
     std::map<int, MachineCode> m_codes;
 
     // Where program zero (G54, the first work offset) lies in machine coordinates: G53 moves
@@ -109,10 +109,6 @@ struct Machine {
 
 // The plain machine of a control: its profile, no builder codes, machine zero at program zero.
 Machine plain_machine(Dialect control, MachineKind kind = MachineKind::mill);
-
-// The M code numbers a control fixes (M0, M1, M2, M30 everywhere; M98, M99 on Fanuc;
-// M17 and M2/M30 on the Sinumerik; ...): a machine cannot declare them.
-bool control_fixes_m_code(Dialect control, int number);
 
 // Throws std::invalid_argument naming the field for a machine that cannot be: a declared code
 // the control fixes, negative or huge code numbers, travel whose min exceeds its max, values

@@ -5,6 +5,7 @@
 // Profiles for the built-in dialects come from profile_for(); users may adjust fields.
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include "toolcomp/compensation/nose.hpp"
 #include "toolcomp/program/dialect.hpp"
@@ -231,6 +232,10 @@ struct ControlProfile {
     bool last_g_code_wins = false;
     // The highest M code number (LinuxCNC 199: "M-code greater than 199").
     int max_m_code = 99999;
+    // The M codes the control itself fixes: a machine builder cannot give them another
+    // meaning (control/machine.hpp). M0, M1, M2, M30 everywhere; M98, M99 on the ISO
+    // controls; M17 on the Sinumerik; LinuxCNC's own M48-M53, M60-M73.
+    std::vector<int> fixed_m_codes{0, 1, 2, 30};
     // G4 X (and U on lathes) is the dwell in seconds, P in milliseconds (Fanuc); false: G4 P
     // in seconds, X and U axis words.
     bool dwell_x_seconds = false;
