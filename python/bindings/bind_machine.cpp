@@ -37,10 +37,16 @@ const char* action_name(MCodeAction a) {
 using Triple = std::array<double, 3>;
 using OptTriple = std::array<std::optional<double>, 3>;
 
-Triple finite3(const char* field, const Triple& v) {
-    for (double x : v)
-        if (!std::isfinite(x)) throw py::value_error(std::string(field) + " must hold finite numbers");
-    return v;
+// An (x, y, z) field of Machine: read as it is, set only with finite numbers (by name).
+auto triple_get(Triple Machine::*f) {
+    return [f](const Machine& mc) { return mc.*f; };
+}
+auto triple_set(const char* name, Triple Machine::*f) {
+    return [name, f](Machine& mc, const Triple& v) {
+        for (double x : v)
+            if (!std::isfinite(x)) throw py::value_error(std::string(name) + " must hold finite numbers");
+        mc.*f = v;
+    };
 }
 }  // namespace
 
@@ -104,16 +110,12 @@ void bind_machine(py::module_& m) {
                 mc.m_codes = codes;
             },
             "builder M codes: {number: MachineCode} (a copy: set it back after changing it)")
-        .def_property(
-            "work_origin", [](const Machine& mc) { return mc.work_origin; },
-            [](Machine& mc, const Triple& v) { mc.work_origin = finite3("work_origin", v); },
-            "where program zero (G54) lies in machine coordinates, (x, y, z) mm")
-        .def_property(
-            "g28", [](const Machine& mc) { return mc.g28; }, [](Machine& mc, const Triple& v) { mc.g28 = finite3("g28", v); },
-            "the G28 position in machine coordinates, (x, y, z) mm")
-        .def_property(
-            "g30", [](const Machine& mc) { return mc.g30; }, [](Machine& mc, const Triple& v) { mc.g30 = finite3("g30", v); },
-            "the G30 position in machine coordinates, (x, y, z) mm")
+        .def_property("work_origin", triple_get(&Machine::work_origin),
+                      triple_set("work_origin", &Machine::work_origin), "where program zero (G54) lies in machine coordinates, (x, y, z) mm")
+        .def_property("g28", triple_get(&Machine::g28),
+                      triple_set("g28", &Machine::g28), "the G28 position in machine coordinates, (x, y, z) mm")
+        .def_property("g30", triple_get(&Machine::g30),
+                      triple_set("g30", &Machine::g30), "the G30 position in machine coordinates, (x, y, z) mm")
         .def_property(
             "tool_change", [](const Machine& mc) { return mc.tool_change; },
             [](Machine& mc, const OptTriple& v) {
@@ -139,14 +141,10 @@ void bind_machine(py::module_& m) {
             "axis travel ((xmin, xmax), (ymin, ymax), (zmin, zmax)) in machine coordinates, mm; +-inf: no limit")
         .def_readwrite("travel_limit_warning", &Machine::travel_limit_warning,
                        "a move beyond the travel is a warning (True) or an error that stops the run (False)")
-        .def_property(
-            "rapid_rate", [](const Machine& mc) { return mc.rapid_rate; },
-            [](Machine& mc, const Triple& v) { mc.rapid_rate = finite3("rapid_rate", v); },
-            "rapid traverse of each axis, mm/min (0: not given)")
-        .def_property(
-            "max_feed", [](const Machine& mc) { return mc.max_feed; },
-            [](Machine& mc, const Triple& v) { mc.max_feed = finite3("max_feed", v); },
-            "the highest feed of each axis, mm/min (0: not given)")
+        .def_property("rapid_rate", triple_get(&Machine::rapid_rate),
+                      triple_set("rapid_rate", &Machine::rapid_rate), "rapid traverse of each axis, mm/min (0: not given)")
+        .def_property("max_feed", triple_get(&Machine::max_feed),
+                      triple_set("max_feed", &Machine::max_feed), "the highest feed of each axis, mm/min (0: not given)")
         .def("check", [](const Machine& mc) { check_machine(mc); },
              "raise ValueError naming the field of a value the machine cannot have")
         .def("__repr__", [](const Machine& mc) {
