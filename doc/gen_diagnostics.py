@@ -18,14 +18,14 @@ def render(rows):
         "`Diagnostic.code`), from the engine's catalogue",
         "(`cpp/include/toolcomp/program/codes.inc`; this page is generated from it by",
         "`doc/gen_diagnostics.py`). Codes are stable: a code keeps its meaning once it is here.",
-        "A number is the control's own alarm (Sinumerik). *Text*: the message, or how it begins",
-        "where the block's values follow; empty where the message is made at the block.",
+        "A number is the control's own alarm (Sinumerik). *Text*: the message, with what the block",
+        "gives in &lt;angle brackets&gt;, or where a code's messages vary, what they say.",
         "",
         "| code | raised as | severity | text |",
         "|---|---|---|---|",
     ]
     for r in rows:
-        text = r["text"].replace("|", "\\|")
+        text = r["text"].replace("|", "\\|").replace("<", "&lt;").replace(">", "&gt;")
         code = f"`{r['code']}`" + (" (alarm)" if r["alarm"] else "")
         out.append(f"| {code} | {r['kind']} | {r['severity']} | {text} |")
     return "\n".join(out) + "\n"

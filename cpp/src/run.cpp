@@ -11,6 +11,7 @@
 #include "unchanged_path.hpp"
 #include "program/program_source.hpp"
 
+#include "control/travel.hpp"
 #include "dialects/table.hpp"
 #include "toolcomp/compensation/stages.hpp"
 
@@ -167,30 +168,18 @@ void run_pipeline(const Program& program, const ToolTable* tools, const RunOptio
     CompensationChain chain(profile, compensated, diagnostics, options.threads);
     Tee tee(nominal, chain);
     const DialectRow& row = dialect_row(program.dialect);
-    if (options.machine) {
-        if (options.machine->control != program.dialect)
-            throw ProgramError(code::machine_control, "The machine '" + options.machine->name + "' has a " +
-                                                      std::string(dialect_name(options.machine->control)) +
-                                                      " control; the program is read as " + std::string(row.name));
-        if (options.machine->has_travel_limits() && !row.checks_travel)
-            diagnostics.push_back({code::travel_not_checked, Severity::info,
-                                   "The machine's travel limits are not checked for " + std::string(row.name) +
-                                       " programs yet",
-                                   {}});
-        const Machine& mc = *options.machine;
-        const bool positions = mc.work_origin != std::array<double, 3>{0, 0, 0} ||
-                               mc.g28 != std::array<double, 3>{0, 0, 0} || mc.g30 != std::array<double, 3>{0, 0, 0} ||
-                               mc.tool_change[0] || mc.tool_change[1] || mc.tool_change[2];
-        if (positions && !row.checks_travel)
-            diagnostics.push_back({code::machine_positions_not_applied, Severity::info,
-                                   "The machine's work origin, G28/G30 and tool change positions are not applied to " +
-                                       std::string(row.name) + " programs yet",
-                                   {}});
-    }
+    if (options.machine && options.machine->control != program.dialect)
+        throw ProgramError(code::machine_control, "The machine '" + options.machine->name + "' has a " +
+                                                  std::string(dialect_name(options.machine->control)) +
+                                                  " control; the program is read as " + std::string(row.name));
+    std::optional<TravelSink> travel;
+    if (options.machine && options.machine->has_travel_limits() && !row.interpreter_checks_travel)
+        travel.emplace(*options.machine, tee, diagnostics);
+    MotionSink& sink = travel ? static_cast<MotionSink&>(*travel) : tee;
     out.files.push_back(program.name);
     try {
         try {
-            row.interpret({program, tools, profile, options, tee, diagnostics, out, hooks});
+            row.interpret({program, tools, profile, options, sink, diagnostics, out, hooks});
         } catch (const Error& e) {
             if (options.strict) {
                 SourcePos at = e.pos();

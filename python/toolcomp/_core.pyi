@@ -518,6 +518,7 @@ class Machine:
     work_origin: Tuple[float, float, float]
     g28: Tuple[float, float, float]
     g30: Tuple[float, float, float]
+    m92: Tuple[float, float, float]
     tool_change: Sequence[Optional[float]]
     travel: Sequence[Tuple[float, float]]
     travel_limit_warning: bool

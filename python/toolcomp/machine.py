@@ -250,7 +250,7 @@ def parse(text: str, path: Optional[str] = None) -> "_core.Machine":
 
     positions = _table(src, doc, "positions")
     for key, value in positions.items():
-        if key in ("work_origin", "g28", "g30"):
+        if key in ("work_origin", "g28", "g30", "m92"):
             setattr(m, key, _triple(src, "positions", key, value, scale))
         elif key == "tool_change":
             if not isinstance(value, dict) or set(value) - set(_AXES):
@@ -259,7 +259,7 @@ def parse(text: str, path: Optional[str] = None) -> "_core.Machine":
             m.tool_change = tuple(None if a not in value else _number(src, "positions", key, value[a]) * scale
                                   for a in _AXES)
         else:
-            raise src.error(f"positions has no '{key}' (work_origin, g28, g30, tool_change)", "positions", key)
+            raise src.error(f"positions has no '{key}' (work_origin, g28, g30, m92, tool_change)", "positions", key)
 
     travel = _table(src, doc, "travel")
     limits = [(-math.inf, math.inf)] * 3
@@ -371,6 +371,8 @@ def dumps(m: "_core.Machine") -> str:
     lines.append(f"work_origin = {_toml_value(list(m.work_origin))}")
     lines.append(f"g28 = {_toml_value(list(m.g28))}")
     lines.append(f"g30 = {_toml_value(list(m.g30))}")
+    if m.control == "heidenhain" or any(m.m92):
+        lines.append(f"m92 = {_toml_value(list(m.m92))}")
     given = {a: v for a, v in zip(_AXES, m.tool_change) if v is not None}
     if given:
         lines.append("tool_change = { " + ", ".join(f"{a} = {_toml_value(v)}" for a, v in given.items()) + " }")

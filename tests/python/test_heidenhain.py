@@ -372,9 +372,9 @@ def test_m_functions_of_appr_and_dep_act():
     res = pgm(text)
     assert res.path.line.max() == 8  # the DEP block
     assert res.path.feed[-1] == 200
-    with pytest.raises(tc.Error) as e:  # M91 is refused in APPR as in L
+    with pytest.raises(tc.Error) as e:  # M91 (machine datum) acts in L blocks only
         pgm(APPR.format(appr="APPR LT X+20 Y+20 Z-10 LEN15 RR F100 M91", next="L X+35 Y+35"))
-    assert (e.value.code, e.value.line) == ("unsupported_m_code", 5)
+    assert (e.value.code, e.value.line) == ("bad_word", 5) and "L blocks only" in str(e.value)
 
 
 @pytest.mark.parametrize("appr, code", [

@@ -202,13 +202,6 @@ def test_travel_warnings_let_the_run_go_on():
     assert len(res.nominal) == 3
 
 
-def test_travel_limits_of_other_dialects_are_said_to_be_unchecked():
-    m = tc.Machine("sinumerik")
-    m.travel = ((-10.0, 10.0), (-math.inf, math.inf), (-math.inf, math.inf))
-    res = tc.run(tc.Program.parse("G0 X100\nM30\n", dialect="sinumerik"), machine=m)
-    assert [d.code for d in res.diagnostics] == ["travel_not_checked"]
-
-
 # ---- files ----------------------------------------------------------------------------------
 
 FILE = """\
@@ -416,14 +409,6 @@ def test_more_bad_machine_files_name_their_line(text, line):
 def test_names_with_control_characters_round_trip():
     m = tc.Machine("fanuc", "mill", "cell\r3\x7f \"A\" \\ B")
     assert tc.Machine.parse(m.dumps()).name == m.name
-
-
-def test_positions_other_dialects_do_not_apply_are_said():
-    m = tc.Machine("heidenhain")
-    m.work_origin = (-100.0, 0.0, 0.0)
-    res = tc.run(tc.Program.parse("0 BEGIN PGM A MM\n1 L X+1 R0 FMAX\n2 END PGM A MM\n", dialect="heidenhain"),
-                 machine=m)
-    assert [d.code for d in res.diagnostics] == ["machine_positions_not_applied"]
 
 
 def test_a_linuxcnc_builder_subprogram_name_is_folded_to_lower_case(tmp_path):

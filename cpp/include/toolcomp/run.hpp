@@ -50,8 +50,7 @@ struct RunOptions {
     // The machine the program runs on (control/machine.hpp): its control must be the
     // program's dialect ("machine_control" otherwise); its profile is the run's unless
     // `profile` is given; its builder M codes, origins, tool change position and travel
-    // limits act (the origins and limits in the ISO dialects; the other dialects get a
-    // "travel_not_checked" info when the machine has limits).
+    // limits act in every dialect (doc/machines.md).
     std::shared_ptr<const Machine> machine;
     // Called with the number of blocks read (Heidenhain: executed) so far, every
     // `progress_every` blocks; may throw to stop the run.

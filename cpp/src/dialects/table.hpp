@@ -35,8 +35,10 @@ struct DialectRow {
     // A file without control flow is read and parsed a piece at a time as it runs (CAM
     // output of any length in bounded memory); else the file is read whole.
     bool read_in_pieces;
-    // The interpreter checks a machine's travel limits.
-    bool checks_travel;
+    // The interpreter checks a machine's travel limits itself (ISO: its moves are in work
+    // coordinates under offsets the program changes). Else its moves are in the machine's
+    // axes less the work origin, and the run checks them as they come (control/travel.hpp).
+    bool interpreter_checks_travel;
     Program (*parse)(std::string_view text, std::string name, bool strict);
     void (*interpret)(const DialectRun& run);
 };

@@ -87,6 +87,9 @@ struct Machine {
     std::array<double, 3> work_origin{0, 0, 0};
     // The G28 and G30 positions in machine coordinates (LinuxCNC #5161-#5163, #5181-#5183).
     std::array<double, 3> g28{0, 0, 0}, g30{0, 0, 0};
+    // Heidenhain: the additional machine datum the builder defines, in machine coordinates: a
+    // positioning block with M92 is measured from it (with M91 from the machine's zero).
+    std::array<double, 3> m92{0, 0, 0};
     // Where a tool change (M6) sends the axes it names, at rapid, before the change (Haas
     // mill: Z to machine zero); no axis: the tool changes where it stands.
     MachinePoint tool_change{};

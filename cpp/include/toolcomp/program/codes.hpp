@@ -17,7 +17,7 @@ struct CodeInfo {
     ErrorKind kind;
     Severity severity;
     const char* alarm;  // the control's alarm number, "" when the code is toolcomp's
-    const char* text;   // its text, or what the text begins with; "" when made where raised
+    const char* text;   // its message, <what the block gives> in angle brackets
 };
 
 // Every row of the catalogue, in its order.

@@ -127,6 +127,10 @@ void Interp::m_function(Tokens t, const Token& k) {
         case 0: case 1: case 3: case 4: case 5: case 6: case 8: case 9: case 13: case 14:
         case 89: case 90: case 99:
             break;  // machine functions without a geometric effect on the path
+        case 91: case 92:  // machine datums: the L block reads its coordinates from them
+            if (!t[0].is("L"))
+                fail(code::bad_word, "M" + std::to_string(m) + " acts in L blocks only (toolcomp)", k.column);
+            break;
         default:
             fail(code::unsupported_m_code, "M" + std::to_string(m) + " is not supported by toolcomp", k.column);
     }
@@ -240,6 +244,7 @@ void Interp::tool_call(Tokens t) {
             fail(code::tool_not_found, "Tool " + std::to_string(number_) + " is neither in the tool table nor defined");
         }
     }
+    if (!same_tool) to_tool_change_position();
     if (number_ >= 0) tool_ = number_;
     radius_ = number_ == 0 ? 0 : radius + dr;
     sum_dr_ = number_ == 0 ? 0 : dr + dr_tab;
@@ -252,6 +257,7 @@ void Interp::line(Tokens t) {
     paraxial_ = 0;
     modal_words(t, 1);
     Vec3 end = end_point(t, 1);
+    machine_datum_end(t, end);
     if (paraxial_ != 0) {
         // R+ / R-: a move along one axis is lengthened / shortened by the tool radius.
         const Vec3 d = end - pos_;

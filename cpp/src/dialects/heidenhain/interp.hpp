@@ -26,7 +26,9 @@ class Interp {
 public:
     Interp(const Program& prog, const ToolTable* tools, const ControlProfile& profile, MotionSink& sink,
            std::vector<Diagnostic>& diags, SearchPath search = {});
-    void set_machine(const Machine* m) { machine_ = m; }  // builder M codes
+    // The machine the program runs on (interp_machine.cpp): its builder M codes, work origin,
+    // machine datums (M91, M92) and tool change position. The run starts at its zero.
+    void set_machine(const Machine* m);
     void run();
     const std::vector<std::string>& files() const { return files_.names(); }
     // Called with the number of blocks executed so far, every `every` blocks.
@@ -57,6 +59,10 @@ private:
     Vec3 end_point(Tokens t, std::size_t from) const;  // X Y Z with I-prefix increments
     void modal_words(Tokens t, std::size_t from);      // R0/RL/RR, F/FMAX, M functions
     void m_function(Tokens t, const Token& k);  // an M word of a positioning block
+    // M91 / M92 in an L block: its absolute coordinates are the spindle's (no tool length)
+    // from the machine's zero / the additional machine datum; `end` in program coordinates.
+    void machine_datum_end(Tokens t, Vec3& end) const;
+    void to_tool_change_position();  // the machine's tool change position, before TOOL CALL
     void refuse_words(Tokens t, std::initializer_list<std::string_view> names, const char* why,
                       std::size_t from = 1) const;
     void refuse_plane_axes(Tokens t, const char* why, std::size_t from = 1) const;
@@ -109,7 +115,8 @@ private:
 
     const Program& prog_;
     const SearchPath search_;  // directories for CALL PGM, and the limits of the files read
-    const Machine* machine_ = nullptr;  // the machine's builder M codes, if any
+    const Machine* machine_ = nullptr;  // the machine, if any
+    Vec3 work_origin_ = Vec3::Zero();   // the machine's work origin (the preset), program units
     std::map<std::string, std::shared_ptr<const Program>> called_;  // parsed called programs, by file
     std::size_t executed_ = 0;  // blocks executed, called programs included (block limit)
     std::size_t moves_ = 0;     // moves put (put(), put_contour_pieces())

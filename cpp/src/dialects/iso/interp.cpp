@@ -39,7 +39,7 @@ Interp::Interp(const Program& prog, const ToolTable* tools, const ControlProfile
     if (profile.startup_feed_per_rev) st_.feed_mode = 950;
     load_parameters(opts.parameters);
     if (opts.machine) place_machine(*opts.machine, opts.parameters);
-    travel_ = opts.machine && opts.machine->has_travel_limits();
+    if (opts.machine && opts.machine->has_travel_limits()) travel_.emplace(*opts.machine);
 }
 
 // The machine's work origin (G54) and G28/G30 positions, in machine coordinates, where the
@@ -151,7 +151,7 @@ void Interp::run() {
         // the main program's line of the outermost call.
         // (A file that cannot be read or parsed fails at the call itself.)
         if (!profile_.errors_at_outermost_call || (frames_.size() < 2 && e.file().empty())) throw;
-        throw_at(e, SourcePos{frames_.size() >= 2 ? frames_[1].call_line : line_, 0});
+        throw_at(e, SourcePos{frames_.size() >= 2 ? frames_[1].call_line : line_, 0, {}});
     }
 }
 

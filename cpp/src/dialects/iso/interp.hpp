@@ -10,11 +10,13 @@
 #include <deque>
 #include <map>
 #include <memory>
+#include <optional>
 #include <set>
 #include <type_traits>
 #include <string>
 #include <vector>
 
+#include "../../control/travel.hpp"
 #include "../idle_watch.hpp"
 #include "block_words.hpp"
 #include "flow.hpp"
@@ -216,9 +218,7 @@ private:
     int line_ = 0;  // current block's source line
     std::size_t executed_ = 0;  // blocks executed, cycle repeats included (count_block)
     IdleWatch idle_;            // blocks in a row without a move (count_block)
-    bool travel_ = false;              // the machine has travel limits to check
-    std::size_t travel_warnings_ = 0;  // travel_limit warnings reported
-    std::vector<Vec3> travel_points_;  // check_travel's points, kept from move to move
+    std::optional<TravelCheck> travel_;  // the machine's travel limits, when it has any
     ModalState st_;
     Vec6 pos_ = Vec6::Zero();
     std::array<Vec6, 9> g5x_;

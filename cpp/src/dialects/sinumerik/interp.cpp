@@ -47,6 +47,12 @@ Interp::Interp(const Program& prog, const ToolTable* tools, const ControlProfile
     edges_ = opts_.tool_data;
     holders_ = opts_.toolholders;
     st_.plane = profile_.startup_plane;
+    // On a machine the run starts with the axes at the machine's zero.
+    if (const Machine* m = opts_.machine) {
+        for (int i = 0; i < 3; ++i) work_origin_[i] = m->work_origin[static_cast<std::size_t>(i)];
+        if (m->kind == MachineKind::lathe) work_origin_.x() /= 2;  // a lathe's machine X is a diameter
+        pos_ = -work_origin_;
+    }
 }
 
 void Interp::fail(const std::string& code, const std::string& msg, int column) const {

@@ -173,6 +173,7 @@ private:
     // ---- tools (interp_tools.cpp) -----------------------------------------------------------
     void select_tool(const BlockData& b);
     void change_tool();
+    void to_tool_change_position();  // the machine's tool change position, before a change
     void select_edge(int d, int column);
     const SinumerikEdge* edge() const;  // the active edge, or nullptr (T0 / D0)
     // Edge d of tool t of the ToolTable as $TC_DP data (a tool data file's own data when
@@ -217,6 +218,9 @@ private:
     std::array<double, 3> abc_{0, 0, 0};
     Frame frame_;
     Vec3 zero_shift_ = Vec3::Zero();  // type P toolholder: table rotation
+    // The machine's work origin (Machine::work_origin) in output coordinates (mm, a lathe's X
+    // a radius): output = machine coordinates of the tool tip less it. Zero without a machine.
+    Vec3 work_origin_ = Vec3::Zero();
     double feed_ = 0;                 // F: mm/min (G94) or mm/rev (G95, G96)
     double speed_ = 0;                // S: spindle speed, rev/min
     double cutting_speed_ = 0;        // S under G96: m/min

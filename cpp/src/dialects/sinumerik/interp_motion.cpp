@@ -37,9 +37,10 @@ bool Interp::mirrored() const {
 }
 
 // The end point of a move in program (workpiece) coordinates, or with `machine` (G53,
-// G153, SUPA) in output coordinates without the programmable frame.
+// G153, SUPA) in machine coordinates: no frame, no work offset; the tool offset stays active
+// (the tool tip goes there: SUPA Z0 D0 puts the spindle at machine Z0).
 Vec3 Interp::end_point(const BlockData& b, bool machine) const {
-    Vec3 p = machine ? pos_ : program_pos();
+    Vec3 p = machine ? Vec3(pos_ + work_origin_) : program_pos();
     for (int i = 0; i < 3; ++i) {
         const Value& v = b[kAxes[i]];
         if (!v.set) continue;
@@ -325,12 +326,12 @@ void Interp::execute(BlockData& b, int first_column) {
             arc(b, e);
         } else {
             Vec3 e = end_point(b, machine);
-            Vec3 out = machine ? e : frame_.apply(e) + zero_shift_;
+            Vec3 out = machine ? Vec3(e - work_origin_) : frame_.apply(e) + zero_shift_;
             abc_ = abc;
             if (st_.motion == 1 && !(feed_ > 0)) fail(code::alarm_10860, "10860 No feedrate programmed", first_column);
             Motion m = motion_(st_.motion == 0 ? MotionKind::rapid : MotionKind::line, out);
             if (machine) m.radius = RadiusRequest{};
-            const Vec2 d = in_plane(e - program_pos(), st_.plane);
+            const Vec2 d = in_plane((machine ? frame_.invert(out - zero_shift_) : e) - program_pos(), st_.plane);
             if (d.norm() > 1e-12) last_tangent_ = d.normalized();
             pos_ = out;
             ++moves_;

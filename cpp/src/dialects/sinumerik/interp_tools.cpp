@@ -37,7 +37,28 @@ void Interp::select_tool(const BlockData& b) {
     if (profile_.kind == MachineKind::lathe) change_tool();
 }
 
+// The axes the machine names for a tool change go there at rapid with the old tool (its
+// position is the axes', the spindle's: the tool tip stays its offset below).
+void Interp::to_tool_change_position() {
+    const Machine* mc = opts_.machine;
+    if (!mc) return;
+    Vec3 end = pos_;
+    for (int i = 0; i < 3; ++i)
+        if (const auto& v = mc->tool_change[static_cast<std::size_t>(i)]) {
+            const double axis = i == 0 && mc->kind == MachineKind::lathe ? *v / 2 : *v;
+            end[i] = axis - tool_offset_[i] - work_origin_[i];
+        }
+    if (end == pos_) return;
+    if (st_.side != 0) fail(code::alarm_10750, "10750 Tool change with active TRC");
+    Motion m = motion_(MotionKind::rapid, end);
+    m.radius = RadiusRequest{};
+    pos_ = end;
+    ++moves_;
+    sink_.push(m);
+}
+
 void Interp::change_tool() {
+    to_tool_change_position();
     tool_ = selected_;
     d_ = 0;
     active_.reset();

@@ -1,0 +1,59 @@
+// The machine a Klartext program runs on (control/machine.hpp): where program zero (the
+// preset) lies in machine coordinates, the machine datums of M91 and M92, and the tool
+// change position. Positions in the machine file are millimetres; the interpreter's are
+// program units.
+#include <cmath>
+
+#include "interp.hpp"
+#include "toolcomp/program/codes.hpp"
+
+namespace toolcomp::heidenhain {
+
+void Interp::set_machine(const Machine* m) {
+    machine_ = m;
+    if (!m) return;
+    for (int i = 0; i < 3; ++i) work_origin_[i] = m->work_origin[static_cast<std::size_t>(i)] / unit_;
+    pos_ = -work_origin_;  // at the machine's zero, no tool yet
+}
+
+// TNC: "coordinates in a positioning block with M91 are referenced to the machine datum
+// [with M92 to the additional machine datum]; radius compensation remains the same, the
+// tool length is not compensated" and M91/M92 act in their own block only. An axis given
+// incrementally moves by its value as in any block. Without a machine, the machine's zero is
+// program zero.
+void Interp::machine_datum_end(Tokens t, Vec3& end) const {
+    int datum = 0;
+    for (std::size_t i = 1; i < t.size(); ++i)
+        if (t[i].is("M") && t[i].has_value && (t[i].value == 91 || t[i].value == 92)) {
+            if (datum) fail(code::bad_word, "M91 and M92 in one block", t[i].column);
+            datum = static_cast<int>(t[i].value);
+        }
+    if (!datum) return;
+    static constexpr std::string_view names[3] = {"X", "Y", "Z"};
+    for (std::size_t i = 1; i < t.size(); ++i)
+        for (int a = 0; a < 3; ++a)
+            if (t[i].is(names[a]) && t[i].has_value) {
+                const double from = datum == 92 && machine_ ? machine_->m92[static_cast<std::size_t>(a)] / unit_ : 0.0;
+                end[a] = t[i].value + from - work_origin_[a] - tlo_[a];
+            }
+}
+
+// TOOL CALL of a tool on a machine with a tool change position: the axes it names go there
+// at rapid first, with the tool in the spindle (the position is the spindle's).
+void Interp::to_tool_change_position() {
+    if (!machine_) return;
+    Vec3 end = pos_;
+    for (int i = 0; i < 3; ++i)
+        if (const auto& v = machine_->tool_change[static_cast<std::size_t>(i)])
+            end[i] = *v / unit_ - work_origin_[i] - tlo_[i];
+    if (end == pos_) return;
+    if (side_ != 0) fail(code::comp_tool_change, "TOOL CALL with radius compensation RL/RR active: cancel it with R0 first");
+    settle_pending();
+    if (approach_) throw ProgramError(code::approach_without_contour, "APPR needs a contour element after it", {approach_->line, 0, {}});
+    Motion m = motion_to(MotionKind::rapid, end);
+    m.radius.side = 0;
+    put(m);
+    pos_ = end;
+}
+
+}  // namespace toolcomp::heidenhain
