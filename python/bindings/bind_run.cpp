@@ -290,6 +290,14 @@ void bind_run(py::module_& m) {
         .def_readwrite("fanuc_g10", &ControlProfile::fanuc_g10,
                        "G10 L2/L20 as Fanuc reads them (L20 and L2 P0 refused, P 1-6, no R, L2 adds in G91); "
                        "False: LinuxCNC's G10")
+        .def_readwrite("g52_offset", &ControlProfile::g52_offset,
+                       "G52 offsets all coordinate systems as LinuxCNC runs it; False: refused (not run)")
+        .def_readwrite("macro_calls", &ControlProfile::macro_calls,
+                       "G65 calls a macro program, G66/G67 (refused) are its modal calls (Fanuc); False: unknown codes")
+        .def_readwrite("m98_subprograms", &ControlProfile::m98_subprograms,
+                       "M98 P calls a subprogram, M99 returns (Fanuc); False: unknown codes")
+        .def_readwrite("ttrc_check_codes", &ControlProfile::ttrc_check_codes,
+                       "M800/M801 switch the TTRC checks off/on (9/Series); False: unknown codes")
         .def_readwrite("program_end_required", &ControlProfile::program_end_required,
                        "a program must end with M2/M30 or '%' (LinuxCNC)")
         .def_readwrite("errors_at_outermost_call", &ControlProfile::errors_at_outermost_call,

@@ -266,6 +266,10 @@ class ControlProfile:
     arc_turns_word: bool
     c_word_is_chamfer: bool
     fanuc_g10: bool
+    g52_offset: bool
+    macro_calls: bool
+    m98_subprograms: bool
+    ttrc_check_codes: bool
     program_end_required: bool
     errors_at_outermost_call: bool
     abort_comment: bool

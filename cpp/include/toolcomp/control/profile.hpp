@@ -232,6 +232,17 @@ struct ControlProfile {
     bool last_g_code_wins = false;
     // The highest M code number (LinuxCNC 199: "M-code greater than 199").
     int max_m_code = 99999;
+    // The codes beyond the ISO vocabulary every ISO control shares (codes.cpp):
+    // G52 sets an offset of all coordinate systems as LinuxCNC runs it (false: refused, not
+    // run by toolcomp);
+    bool g52_offset = false;
+    // G65 calls a macro program, G66/G67 are its modal calls (refused: not run by toolcomp)
+    // (Fanuc Macro B); false: unknown codes;
+    bool macro_calls = false;
+    // M98 P calls a subprogram, M99 returns (Fanuc); false: unknown codes;
+    bool m98_subprograms = false;
+    // M800 / M801 switch the TTRC checks off / on (9/Series); false: unknown codes.
+    bool ttrc_check_codes = false;
     // The M codes the control itself fixes: a machine builder cannot give them another
     // meaning (control/machine.hpp). M0, M1, M2, M30 everywhere; M98, M99 on the ISO
     // controls; M17 on the Sinumerik; LinuxCNC's own M48-M53, M60-M73.
@@ -309,7 +320,7 @@ struct ControlProfile {
 
     // ---- tool length compensation ------------------------------------------------------
     LengthAxes length_axes = LengthAxes::all;
-    bool length_subtract_word = false;  // G44 (subtract the offset) exists
+    bool length_subtract_word = false;  // G44 (subtract the offset) exists; false: G44 is unknown
 
     // ---- cutter radius compensation (used by the radius stage) ---------------------------
     RadiusRules radius;

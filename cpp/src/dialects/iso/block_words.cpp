@@ -37,7 +37,7 @@ int linuxcnc_g_code(const BlockWords& bw, const Word& w) {
     return static_cast<int>(code);
 }
 
-void add_g(BlockWords& bw, const Word& w, Dialect d, const ControlProfile& profile) {
+void add_g(BlockWords& bw, const Word& w, const ControlProfile& profile) {
     int code = 0;
     if (profile.linuxcnc_g_numbers) {
         code = linuxcnc_g_code(bw, w);
@@ -48,7 +48,7 @@ void add_g(BlockWords& bw, const Word& w, Dialect d, const ControlProfile& profi
         if (code > 9999) fail(code::g_code_out_of_range, "G-code out of range", bw.line, w.column);
         if (std::fabs(v10 - code) > 1e-6) fail(code::unknown_g_code, "Unknown g code used", bw.line, w.column);
     }
-    int group = g_group(code, d);
+    int group = g_group(code, profile);
     if (group == kUnknown) fail(code::unknown_g_code, "Unknown g code used", bw.line, w.column);
     if (group == kUnsupported)
         fail(code::unsupported_g_code, code_text('G', code) + " is not supported by toolcomp", bw.line, w.column);
@@ -68,7 +68,7 @@ void add_g(BlockWords& bw, const Word& w, Dialect d, const ControlProfile& profi
     bw.g_groups |= std::uint32_t{1} << group;
 }
 
-void add_m(BlockWords& bw, const Word& w, Dialect d, const ControlProfile& profile, const Machine* machine,
+void add_m(BlockWords& bw, const Word& w, const ControlProfile& profile, const Machine* machine,
            std::uint32_t& taken) {
     // Whole first, then the sign of the integer it reads as (M-0.00005 is M0 on LinuxCNC).
     if (!whole_word(w.value, profile.integer_word_slack)) fail(code::non_integer_value, "Non integer value for integer", bw.line, w.column);
@@ -91,7 +91,7 @@ void add_m(BlockWords& bw, const Word& w, Dialect d, const ControlProfile& profi
         fail(code::m_code_out_of_range, "M-code greater than " + std::to_string(profile.max_m_code) + ": M" + std::to_string(m),
              bw.line, w.column);
     if (m > 99999) fail(code::unknown_m_code, "Unknown m code used: M" + std::to_string(m), bw.line, w.column);
-    int group = m_group(m * 10, d);
+    int group = m_group(m * 10, profile);
     if (group == kUnknown) fail(code::unknown_m_code, "Unknown m code used: M" + std::to_string(m), bw.line, w.column);
     if (group == kUnsupported)
         fail(code::unsupported_m_code, "M" + std::to_string(m) + " is not supported by toolcomp", bw.line, w.column);
@@ -111,7 +111,7 @@ int BlockWords::axis_column() const {
     return col;
 }
 
-BlockWords collect_words(std::span<const Word> words, int line, Dialect dialect, const ControlProfile& profile,
+BlockWords collect_words(std::span<const Word> words, int line, const ControlProfile& profile,
                          const Machine* machine) {
     const bool slack = profile.integer_word_slack;
     BlockWords bw;
@@ -121,9 +121,9 @@ BlockWords collect_words(std::span<const Word> words, int line, Dialect dialect,
     std::uint32_t taken = 0;  // letters the machine's builder codes of the block read
     for (const Word& w : words) {
         if (w.letter == 'G') {
-            add_g(bw, w, dialect, profile);
+            add_g(bw, w, profile);
         } else if (w.letter == 'M') {
-            add_m(bw, w, dialect, profile, machine, taken);
+            add_m(bw, w, profile, machine, taken);
         } else {
             if (bw.has(w.letter)) {
                 char lower = ascii_lower(w.letter);

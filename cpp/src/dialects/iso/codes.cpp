@@ -2,12 +2,12 @@
 
 namespace toolcomp::iso {
 
-int g_group(int c, Dialect d) {
+int g_group(int c, const ControlProfile& p) {
     switch (c) {
         case 40: case 100: case 280: case 281: case 300: case 301: case 530:
         case 920: case 921: case 922: case 923:
             return g_nonmodal;
-        case 520: return d == Dialect::linuxcnc ? g_nonmodal : kUnsupported;  // G52 local offset (Fanuc: not run)
+        case 520: return p.g52_offset ? g_nonmodal : kUnsupported;
         case 382: case 383: case 384: case 385:  // probing: refused when run (see interp.cpp)
         case 0: case 10: case 20: case 30: case 730: case 740: case 800: case 810: case 820: case 830:
         case 840: case 850: case 860: case 870: case 880: case 890:
@@ -19,9 +19,9 @@ int g_group(int c, Dialect d) {
         case 200: case 210: return g_units;
         case 400: case 410: case 420: case 411: case 421: return g_radius_comp;
         case 430: case 431: case 432: case 490: return g_length_comp;
-        case 440: return d == Dialect::fanuc ? g_length_comp : kUnknown;
-        case 650: return d == Dialect::fanuc ? g_nonmodal : kUnknown;  // Fanuc G65 macro call
-        case 660: case 661: case 670: return d == Dialect::fanuc ? kUnsupported : kUnknown;  // modal macro calls
+        case 440: return p.length_subtract_word ? g_length_comp : kUnknown;
+        case 650: return p.macro_calls ? g_nonmodal : kUnknown;
+        case 660: case 661: case 670: return p.macro_calls ? kUnsupported : kUnknown;
         case 980: case 990: return g_retract;
         case 540: case 550: case 560: case 570: case 580: case 590: case 591: case 592: case 593:
             return g_coord_system;
@@ -38,7 +38,7 @@ int g_group(int c, Dialect d) {
     }
 }
 
-int m_group(int c, Dialect d) {
+int m_group(int c, const ControlProfile& p) {
     switch (c) {
         case 0: case 10: case 20: case 300: case 600: return m_stop;
         case 60: case 610: return m_tool_change;
@@ -49,10 +49,8 @@ int m_group(int c, Dialect d) {
             return m_io;  // digital/analog I/O: refused when run (see interp.cpp)
         case 190: case 700: case 710: case 720: case 730:
             return kUnsupported;
-        case 980: case 990:  // Fanuc M98 subprogram call, M99 return
-            return d == Dialect::fanuc ? m_subprogram : kUnknown;
-        case 8000: case 8010:  // 9/Series: M800 / M801 disable / enable the TTRC checks
-            return d == Dialect::rockwell ? m_checks : kUnknown;
+        case 980: case 990: return p.m98_subprograms ? m_subprogram : kUnknown;
+        case 8000: case 8010: return p.ttrc_check_codes ? m_checks : kUnknown;
         default:
             // M100-M199 are user programs on LinuxCNC: without them the code is unknown.
             return kUnknown;

@@ -3,7 +3,7 @@
 // are valid on the control but not supported by toolcomp (an explicit error, never ignored).
 //
 // Codes are held as ten times their value (G59.3 -> 593), as LinuxCNC does.
-#include "toolcomp/program/dialect.hpp"
+#include "toolcomp/control/profile.hpp"
 
 namespace toolcomp::iso {
 
@@ -22,8 +22,8 @@ enum MGroup : int {
 constexpr int kUnsupported = -2;  // a real code of the control that toolcomp does not run
 constexpr int kUnknown = -1;      // not a code of this control
 
-// Group of G code `code10` in `d`, or kUnsupported / kUnknown.
-int g_group(int code10, Dialect d);
-int m_group(int code10, Dialect d);
+// Group of G (M) code `code10` on the control of `profile`, or kUnsupported / kUnknown.
+int g_group(int code10, const ControlProfile& profile);
+int m_group(int code10, const ControlProfile& profile);
 
 }  // namespace toolcomp::iso

@@ -157,7 +157,6 @@ void Interp::run() {
 
 void Interp::run_blocks() {
     std::size_t read = 0;
-    const bool fanuc = prog_.dialect == Dialect::fanuc;
     for (;;) {
         Frame& f = frames_.back();
         const Program& p = f.prog();
@@ -190,7 +189,7 @@ void Interp::run_blocks() {
                 continue;
             }
         const std::span<const Word> words = syntax_ ? block_words(block) : p.words(block);
-        if (fanuc) {
+        if (profile_.macro_calls) {
             bool g65 = false;
             for (const Word& w : words) g65 = g65 || (w.letter == 'G' && w.value == 65);
             if (g65) {
@@ -201,10 +200,10 @@ void Interp::run_blocks() {
                 continue;
             }
         }
-        BlockWords bw = collect_words(words, block.line, p.dialect, profile_, opts_.machine);
+        BlockWords bw = collect_words(words, block.line, profile_, opts_.machine);
         if (profile_.dwell_x_seconds && bw.g[g_nonmodal] == 40) fanuc_dwell(bw);
         alarm_text_.clear();
-        if (fanuc && block.comment_count) alarm_text_ = p.comments(block)[0].text;
+        if (profile_.macro_calls && block.comment_count) alarm_text_ = p.comments(block)[0].text;
         if (block.statement_count) assignments(block);  // messages show the values after them
         if (profile_.last_comment_only) {  // LinuxCNC: the last in parentheses overwrote the others
             const Comment* last = nullptr;
