@@ -455,3 +455,11 @@ def test_a_fusion_style_haas_program_on_its_machine():
     with pytest.raises(tc.ProgramError) as e:  # the plain Fanuc mill does not know the conveyor
         tc.run(path, tools=tools, machine="fanuc-mill")
     assert (e.value.code, e.value.line) == ("unknown_m_code", 14)
+
+
+def test_a_builder_code_beyond_the_controls_m_codes_is_refused_at_its_line():
+    # LinuxCNC reads M codes up to M199 (ControlProfile.max_m_code).
+    with pytest.raises(tc.ParseError) as e:
+        tc.Machine.parse('control = "linuxcnc"\nkind = "mill"\n[m_codes]\n150 = "nothing"\n200 = "nothing"\n')
+    assert (e.value.code, e.value.line) == ("machine_file", 5) and "up to M199" in e.value.message
+    assert 200 in tc.Machine.parse('control = "fanuc"\nkind = "mill"\n[m_codes]\n200 = "nothing"\n').m_codes

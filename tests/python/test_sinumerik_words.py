@@ -80,3 +80,14 @@ def test_cip_in_the_working_plane_still_runs():
     res = tc.run(tc.Program.parse("G0 X0 Y0 Z0\nCIP X10 Y0 I1=5 J1=5 K1=0 F100\nM30\n", dialect="sinumerik"))
     np.testing.assert_allclose(res.nominal.center[-1], [5, 0, 0], atol=1e-12)
     assert res.nominal.kind[-1] == tc.ARC_CW
+
+
+@pytest.mark.parametrize("block, message", [
+    ("G1.5 X2", "12470 G function G1.5 is unknown"),
+    ("M1.5", "M1.5 is not an M function"),
+    ("M=2.25", "M2.25 is not an M function"),
+])
+def test_a_code_that_is_no_whole_number_is_quoted_as_written(block, message):
+    with pytest.raises(tc.ProgramError) as e:
+        tc.run(tc.Program.parse("G0 X1\n" + block + "\nM30\n", dialect="sinumerik"))
+    assert (e.value.line, e.value.message) == (2, message)

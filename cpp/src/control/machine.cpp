@@ -52,8 +52,9 @@ void check_machine(const Machine& m) {
                 bad("m_codes", where + "'" + code.program + "' is no subroutine name");
             }
         }
-        if (m.control == Dialect::linuxcnc && number > 199)
-            bad("m_codes", "LinuxCNC reads M codes up to M199 (M" + std::to_string(number) + ")");
+        if (number > m.profile.max_m_code)
+            bad("m_codes", "M" + std::to_string(number) + " is beyond the M codes " + std::string(dialect_name(m.control)) +
+                               " reads (up to M" + std::to_string(m.profile.max_m_code) + ")");
     }
     for (int i = 0; i < 3; ++i) {
         const std::string a = kAxis[i];

@@ -4,6 +4,7 @@
 // tables are ASCII whatever the process's locale: std::isalpha & co. take the locale's, and
 // Python sets it from the environment (in a Latin-1 locale the bytes of a UTF-8 'é' are
 // letters). The readers use these instead (tests/python/test_locale.py).
+#include <charconv>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -56,6 +57,12 @@ inline std::string_view skip_bom(std::string_view text) {
         static_cast<unsigned char>(text[2]) == 0xBF)
         text.remove_prefix(3);
     return text;
+}
+
+// The shortest text that reads back as v (1.5, 12, 1e+20), for messages quoting a value.
+inline std::string shortest_number(double v) {
+    char buf[32];
+    return std::string(buf, std::to_chars(buf, buf + sizeof buf, v).ptr);
 }
 
 constexpr bool ascii_digit(char c) { return c >= '0' && c <= '9'; }

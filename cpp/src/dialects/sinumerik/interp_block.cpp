@@ -106,14 +106,14 @@ void Interp::block(std::span<const Token> t) {
                 if (l == 'G') {
                     double v = value_of(x);
                     if (v != std::floor(v) || v < 0 || v > 9999)
-                        fail(code::alarm_12470, "12470 G function G" + std::to_string(v) + " is unknown", x.column);
+                        fail(code::alarm_12470, "12470 G function G" + shortest_number(v) + " is unknown", x.column);
                     b.g.emplace_back(int_value(v), x.column);
                     continue;
                 }
                 if (l == 'M') {
                     const double v = value_of(x);
                     if (v != std::floor(v) || v < 0 || v > 2147483647)
-                        fail(code::unsupported_m_code, "M" + std::to_string(v) + " is not an M function", x.column);
+                        fail(code::unsupported_m_code, "M" + shortest_number(v) + " is not an M function", x.column);
                     int m = int_value(v);
                     // A builder code of the machine stands for the standard code of its action.
                     if (const MachineCode* code = opts_.machine ? opts_.machine->m_code(m) : nullptr) {
