@@ -290,6 +290,17 @@ void bind_run(py::module_& m) {
         .def_readwrite("fanuc_g10", &ControlProfile::fanuc_g10,
                        "G10 L2/L20 as Fanuc reads them (L20 and L2 P0 refused, P 1-6, no R, L2 adds in G91); "
                        "False: LinuxCNC's G10")
+        .def_readwrite("startup_motion", &ControlProfile::startup_motion,
+                       "the motion mode at start, ten times its G code: 800 (G80: axis words need a motion code, "
+                       "LinuxCNC) or 0 (G00, Fanuc)")
+        .def_readwrite("cycles_own_group", &ControlProfile::cycles_own_group,
+                       "G80 is group 09 with the cycles: it cancels a cycle and the G00-G03 mode before it is back (Fanuc)")
+        .def_readwrite("startup_retract_initial", &ControlProfile::startup_retract_initial,
+                       "canned cycles return to the initial level (G98) at start (Fanuc mill); False: G99 (LinuxCNC)")
+        .def_readwrite("g53_rapid", &ControlProfile::g53_rapid,
+                       "G53 moves at rapid whatever the motion mode (Fanuc); False: it needs G0 or G1 (LinuxCNC)")
+        .def_readwrite("d_word_alone", &ControlProfile::d_word_alone,
+                       "a D word without G41/G42 sets the D number of the next G41/G42 (Fanuc)")
         .def_readwrite("g52_offset", &ControlProfile::g52_offset,
                        "G52 offsets all coordinate systems as LinuxCNC runs it; False: refused (not run)")
         .def_readwrite("macro_calls", &ControlProfile::macro_calls,

@@ -266,6 +266,11 @@ class ControlProfile:
     arc_turns_word: bool
     c_word_is_chamfer: bool
     fanuc_g10: bool
+    startup_motion: int
+    cycles_own_group: bool
+    g53_rapid: bool
+    startup_retract_initial: bool
+    d_word_alone: bool
     g52_offset: bool
     macro_calls: bool
     m98_subprograms: bool

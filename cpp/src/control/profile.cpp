@@ -69,6 +69,11 @@ ControlProfile fanuc_profile(MachineKind kind) {
     p.m98_subprograms = true;
     p.fixed_m_codes.insert(p.fixed_m_codes.end(), {98, 99});
     p.last_g_code_wins = true;
+    p.startup_motion = 0;  // G00 at power on (parameter G01 = 0)
+    p.cycles_own_group = true;
+    p.startup_retract_initial = kind == MachineKind::mill;  // G98 (on the T series G98 is feed per minute)
+    p.g53_rapid = true;
+    p.d_word_alone = true;
     p.fanuc_g10 = true;
     p.dwell_x_seconds = true;
     p.arc_turns_word = false;
@@ -120,6 +125,11 @@ ControlProfile rockwell_profile() {
     const ControlProfile plain;
     p.call_depth_limit = plain.call_depth_limit;
     p.last_g_code_wins = plain.last_g_code_wins;
+    p.startup_motion = plain.startup_motion;
+    p.cycles_own_group = plain.cycles_own_group;
+    p.startup_retract_initial = plain.startup_retract_initial;
+    p.g53_rapid = plain.g53_rapid;
+    p.d_word_alone = plain.d_word_alone;
     p.fanuc_g10 = plain.fanuc_g10;
     p.dwell_x_seconds = plain.dwell_x_seconds;
     p.length_subtract_word = plain.length_subtract_word;
@@ -247,6 +257,8 @@ void check_profile(const ControlProfile& p) {
     if (r.lookahead > 1000) bad("radius.lookahead", "at most 1000", r.lookahead);
     if (p.call_depth_limit > kMaxCallDepthLimit)
         bad("call_depth_limit", "at most " + std::to_string(kMaxCallDepthLimit), static_cast<double>(p.call_depth_limit));
+    if (p.startup_motion != 0 && p.startup_motion != 10 && p.startup_motion != 800)
+        bad("startup_motion", "0 (G00), 10 (G01) or 800 (G80)", p.startup_motion);
     if (p.no_motion_limit < 1) bad("no_motion_limit", "a count >= 1", 0);
     if (p.block_limit < 1) bad("block_limit", "a count >= 1", 0);
     if (p.t_format < 0 || p.t_format > 6) bad("t_format", "0 (Fanuc) or a 9/Series format 1-6", p.t_format);

@@ -232,6 +232,23 @@ struct ControlProfile {
     bool last_g_code_wins = false;
     // The highest M code number (LinuxCNC 199: "M-code greater than 199").
     int max_m_code = 99999;
+    // The motion mode at program start, as ten times its G code: 800 (G80: axis words need a
+    // motion code first, as LinuxCNC starts) or 0 (G00, Fanuc's power-on mode).
+    int startup_motion = 800;
+    // Canned cycles return to the initial level (G98) at program start (Fanuc M series);
+    // false: to the R point (G99), as LinuxCNC starts.
+    bool startup_retract_initial = false;
+    // G80 is G group 09 with the canned cycles (Fanuc): it cancels a cycle and the motion mode
+    // of group 01 (G00-G03) before the cycle is again in effect, so G80 beside G00 is no
+    // conflict and axis words after G80 move; false: G80 is a motion mode of its own, axis
+    // words after it are refused (LinuxCNC).
+    bool cycles_own_group = false;
+    // G53 moves at rapid traverse whatever the motion mode (Fanuc); false: it needs G0 or G1
+    // ("Must use g0 or g1 with g53", LinuxCNC).
+    bool g53_rapid = false;
+    // A D word without G41/G42 sets the modal D number for the next G41/G42 (Fanuc, with
+    // modal_offset_numbers: G43 H1 D1 at a tool change); false: refused as unused.
+    bool d_word_alone = false;
     // The codes beyond the ISO vocabulary every ISO control shares (codes.cpp):
     // G52 sets an offset of all coordinate systems as LinuxCNC runs it (false: refused, not
     // run by toolcomp);

@@ -9,7 +9,8 @@ int g_group(int c, const ControlProfile& p) {
             return g_nonmodal;
         case 520: return p.g52_offset ? g_nonmodal : kUnsupported;
         case 382: case 383: case 384: case 385:  // probing: refused when run (see interp.cpp)
-        case 0: case 10: case 20: case 30: case 730: case 740: case 800: case 810: case 820: case 830:
+        case 800: return p.cycles_own_group ? g_cycle : g_motion;
+        case 0: case 10: case 20: case 30: case 730: case 740: case 810: case 820: case 830:
         case 840: case 850: case 860: case 870: case 880: case 890:
             return g_motion;
         case 170: case 180: case 190: return g_plane;

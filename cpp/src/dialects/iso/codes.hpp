@@ -9,7 +9,7 @@ namespace toolcomp::iso {
 
 enum GGroup : int {
     g_nonmodal = 0, g_motion = 1, g_plane = 2, g_distance = 3, g_arc_distance = 4,
-    g_feed_mode = 5, g_units = 6, g_radius_comp = 7, g_length_comp = 8, g_retract = 10,
+    g_feed_mode = 5, g_units = 6, g_radius_comp = 7, g_length_comp = 8, g_cycle = 9, g_retract = 10,
     g_coord_system = 12, g_path_control = 13, g_spindle_mode = 14, g_lathe_diameter = 15,
     g_group_count = 16
 };

@@ -37,6 +37,9 @@ Interp::Interp(const Program& prog, const ToolTable* tools, const ControlProfile
     st_.diameter = profile.x_diameter;
     st_.plane = profile.startup_plane;
     if (profile.startup_feed_per_rev) st_.feed_mode = 950;
+    st_.motion = profile.startup_motion;
+    st_.retract_initial = profile.startup_retract_initial;
+    if (st_.motion != 800) plain_motion_ = st_.motion;
     load_parameters(opts.parameters);
     if (opts.machine) place_machine(*opts.machine, opts.parameters);
     if (opts.machine && opts.machine->has_travel_limits()) travel_.emplace(*opts.machine);
@@ -266,7 +269,7 @@ void Interp::check_words(const BlockWords& bw, int motion_to_be) {
     const bool g87 = motion_to_be == 870;  // back boring takes I J K too
     const bool cycle_block = is_cycle(motion_to_be);
     auto col = [&](char c) { return bw[c].column; };
-    if (bw.has('D')) {
+    if (bw.has('D') && !(profile_.d_word_alone && !profile_.t_offsets)) {
         int rc = bw.g[g_radius_comp];
         if (!(rc == 410 || rc == 411 || rc == 420 || rc == 421 || bw.g[g_spindle_mode] == 960))
             fail(code::unused_word, "D word with no G41, G41.1, G42, G42.1, G71, G71.1, G71.2 or G96 to use it", col('D'));
@@ -360,6 +363,11 @@ bool Interp::execute(const BlockWords& bw) {
     const int motion_code = bw.g[g_motion];
     const bool axes = bw.has_axis();
     if (profile_.g_code_system_a && bw.g_groups != 0) system_a_codes(bw);
+    // G80 of group 09 (cycles_own_group): the cycle ends, the group 01 mode before it is back.
+    if (bw.g[g_cycle] == 800 && (is_cycle(st_.motion) || st_.motion == 800)) {
+        st_.motion = plain_motion_;
+        cycle_il_set_ = false;
+    }
 
     // Which motion the axis words feed (LinuxCNC's "motion_to_be").
     const bool data_axes = axes_are_data(bw);
@@ -373,6 +381,7 @@ bool Interp::execute(const BlockWords& bw) {
     if (motion_code == 800 && axes) fail(code::axis_with_g80, "Cannot use axis values with g80", bw.axis_column());
     int motion_to_be = motion_code;
     if (motion_to_be < 0 && axes && !data_axes) motion_to_be = st_.motion;
+    if (g0 == 530 && profile_.g53_rapid && axes) motion_to_be = 0;  // Fanuc: G53 at rapid, whatever the mode
     if (bare && motion_to_be < 0 && !axes && (st_.motion == 20 || st_.motion == 30) &&
         (bw.has('I') || bw.has('J') || bw.has('K')))
         motion_to_be = st_.motion;  // "I1" alone under G2: an arc
@@ -550,6 +559,10 @@ bool Interp::execute(const BlockWords& bw) {
         if (bw.g[g_arc_distance] >= 0) st_.arc_absolute = bw.g[g_arc_distance] == 901;
         if (bw.g[g_retract] >= 0 && !profile_.t_offsets) st_.retract_initial = bw.g[g_retract] == 980;
     }
+    if (bw.has('D') && profile_.d_word_alone && !profile_.t_offsets) {
+        const int rc = bw.g[g_radius_comp];
+        if (rc != 410 && rc != 411 && rc != 420 && rc != 421) modal_d_number(bw);
+    }
     // 19: G10, G28/G30, G92
     switch (g0) {
         case 100: g10(bw); break;
@@ -561,6 +574,7 @@ bool Interp::execute(const BlockWords& bw) {
     prev_motion_ = st_.motion;
     if (motion_code >= 0 && !is_cycle(motion_code)) cycle_il_set_ = false;
     if (motion_code >= 0) st_.motion = motion_code;
+    if (motion_code == 0 || motion_code == 10 || motion_code == 20 || motion_code == 30) plain_motion_ = motion_code;
     // A motion code with its axis words (or, bare, without them: a zero-length move or a
     // whole circle), or axis words that are not data under a modal motion.
     const bool moves = bare ? motion_to_be >= 0 && motion_to_be != 800 && (motion_code >= 0 || !data_axes)

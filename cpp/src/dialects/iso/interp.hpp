@@ -191,6 +191,7 @@ private:
 
     // ---- cutter radius compensation request (interp_radius.cpp) ----------------------------
     void radius_comp(const BlockWords& bw, int code);
+    void modal_d_number(const BlockWords& bw);  // D without G41/G42 (ControlProfile::d_word_alone)
     void set_radius_from_offset();
     // LinuxCNC's rule after G40: the next G0/G1 must come before any arc; moves of G28/G30 and
     // canned cycles do not count (the stage alone would take them as straight moves).
@@ -241,6 +242,7 @@ private:
     bool checks_ = true;  // gouge checks on (9/Series M801) or off (M800)
     CycleMemory cyc_;
     int prev_motion_ = 800;      // motion mode before the current block
+    int plain_motion_ = 0;       // the last G0/G1/G2/G3 mode (G80 of group 09 returns to it)
     double cycle_il_ = 0;        // initial level of the running canned cycle
     bool cycle_il_set_ = false;
     int spindle_ = 0;            // 0 stopped, 1 clockwise, -1 counter-clockwise

@@ -79,6 +79,20 @@ void Interp::radius_comp(const BlockWords& bw, int code) {
 }
 
 // Lathes with T offsets: the nose radius and tip of the active offset (geometry + wear).
+// Fanuc: a D word without G41/G42 is the D number the next G41/G42 takes (G43 H1 D1 at a
+// tool change). Under compensation it would change the offset from the next block on, which
+// toolcomp does not model: refused.
+void Interp::modal_d_number(const BlockWords& bw) {
+    const WordSlot d = bw['D'];
+    if (!d_word_whole(d.value, profile_.integer_word_slack))
+        fail(code::comp_d_not_integer, "The D word must be a whole number", d.column);
+    if (d.value < -0.5) fail(code::comp_negative_d, "Negative d word tool radius index used", d.column);
+    if (comp_on())
+        fail(code::unsupported_word, "A D word changing the offset while cutter compensation is on is not supported by toolcomp",
+             d.column);
+    last_d_ = int_value(d.value);
+}
+
 void Interp::set_radius_from_offset() {
     const OffsetValues v = offset_values();
     radius_.radius = v.radius;

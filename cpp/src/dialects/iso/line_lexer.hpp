@@ -87,6 +87,7 @@ private:
     bool fanuc_statement();        // IF / WHILE / END / GOTO at the start of a block
     void assignment();             // #n = value, #<name> = value
     bool keyword(std::string_view k);  // consumes k (upper case) when the text continues with it
+    bool macro_word(std::string_view k);  // keyword(k) or its first two letters (Fanuc abbreviations)
     void rest_is_comments();       // after an O-word or a GOTO: only comments may follow
 
     std::string& s_;  // the line as LinuxCNC reads it (comment texts kept as written)

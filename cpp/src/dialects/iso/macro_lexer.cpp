@@ -31,6 +31,12 @@ std::int32_t LineLexer::expression(bool value_only) {
     }
 }
 
+// A Fanuc macro word, or its abbreviation: its first two letters (WH for WHILE, GO for GOTO,
+// TH for THEN, EN for END), as the control takes them.
+bool LineLexer::macro_word(std::string_view k) {
+    return keyword(k) || keyword(k.substr(0, 2));
+}
+
 bool LineLexer::keyword(std::string_view k) {
     if (s_.size() - i_ < k.size()) return false;
     for (std::size_t j = 0; j < k.size(); ++j)
@@ -179,14 +185,14 @@ bool LineLexer::fanuc_statement() {
     };
     if (keyword("IF") && !at_end() && s_[i_] == '[') {
         st.value = condition();
-        if (keyword("GOTO")) {
+        if (macro_word("GOTO")) {
             st.kind = Stmt::if_goto;
             st.target = expression(true);
             prog_.add_statement(std::move(st));
             rest_is_comments();
             return true;
         }
-        if (keyword("THEN")) {
+        if (macro_word("THEN")) {
             st.kind = Stmt::if_then;
             prog_.add_statement(std::move(st));
             first_word_ = false;
@@ -195,7 +201,7 @@ bool LineLexer::fanuc_statement() {
         fail(code::bad_macro_statement, "GOTO or THEN expected after the IF condition");
     }
     i_ = start;
-    if (keyword("WHILE") && !at_end() && s_[i_] == '[') {
+    if (macro_word("WHILE") && !at_end() && s_[i_] == '[') {
         st.value = condition();
         if (!keyword("DO")) fail(code::bad_macro_statement, "DO expected after the WHILE condition");
         st.kind = Stmt::while_do;
@@ -205,7 +211,7 @@ bool LineLexer::fanuc_statement() {
         return true;
     }
     i_ = start;
-    if (keyword("END") && !at_end() && digit(s_[i_])) {
+    if (macro_word("END") && !at_end() && digit(s_[i_])) {
         st.kind = Stmt::end_loop;
         st.loop = loop_number();
         prog_.add_statement(std::move(st));
@@ -213,7 +219,7 @@ bool LineLexer::fanuc_statement() {
         return true;
     }
     i_ = start;
-    if (keyword("GOTO")) {
+    if (macro_word("GOTO")) {
         st.kind = Stmt::goto_n;
         st.target = expression(true);
         prog_.add_statement(std::move(st));
