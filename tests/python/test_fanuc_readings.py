@@ -100,3 +100,31 @@ def test_each_reading_is_a_profile_field(field, text, code, line):
     with pytest.raises(tc.ProgramError) as e:
         tc.run(tc.Program.parse(text, dialect="fanuc"), profile=p, tools=_tools())
     assert (e.value.code, e.value.line) == (code, line)
+
+
+# ---- lathe (G-code system A) ------------------------------------------------------------------
+
+def test_g50_s_clamps_the_spindle_under_constant_surface_speed():
+    # G96 S200 (m/min), G99 F0.2 (mm/rev): at diameter 50 the spindle turns
+    # 1000 * 200 / (pi * 50) = 1273.24 rev/min, the feed 254.648 mm/min; at diameter 10 it
+    # would turn 6366 rev/min, G50 S2000 holds it at 2000: 400 mm/min.
+    text = "G21 G18 G50 S2000\nG96 S200 M3\nG99\nG0 X50 Z1\nG1 Z-10 F0.2\nX10\nM30\n"
+    res = _run(text, machine="lathe")
+    np.testing.assert_allclose(res.nominal.feed[1:], [0.2 * 1000 * 200 / (np.pi * 50), 400.0])
+    # Without the clamp the speed at diameter 10 stands.
+    res = _run(text.replace("G50 S2000", ""), machine="lathe")
+    np.testing.assert_allclose(res.nominal.feed[-1], 0.2 * 1000 * 200 / (np.pi * 10))
+
+
+def test_g50_x_z_sets_the_coordinate_system():
+    # At X10 (diameter) Z-10, G50 X0 Z0 makes that point program zero; X20 is then diameter
+    # 20 from it: radius 10 further out, 10 along Z.
+    res = _run("G21 G18 G0 X10 Z-10\nG50 X0 Z0\nG1 X20 F0.2 S500 M3\nM30\n", machine="lathe")
+    np.testing.assert_allclose(res.nominal.end[-1], [10, 0, 0])
+    np.testing.assert_allclose(res.nominal.start[-1], [0, 0, 0])
+    with pytest.raises(tc.ProgramError) as e:
+        _run("G21 G18 G0 X10 Z-10\nG50 U2\nM30\n", machine="lathe")
+    assert (e.value.code, e.value.line) == ("unsupported_word", 2)
+    with pytest.raises(tc.ProgramError) as e:  # G50 is no code of a Fanuc mill here
+        _run("G21 G50 S2000\nM30\n")
+    assert (e.value.code, e.value.line) == ("unknown_g_code", 1)

@@ -8,6 +8,7 @@ int g_group(int c, const ControlProfile& p) {
         case 920: case 921: case 922: case 923:
             return g_nonmodal;
         case 520: return p.g52_offset ? g_nonmodal : kUnsupported;
+        case 500: return p.g_code_system_a ? g_nonmodal : kUnknown;  // lathe: coordinates, spindle clamp
         case 382: case 383: case 384: case 385:  // probing: refused when run (see interp.cpp)
         case 800: return p.cycles_own_group ? g_cycle : g_motion;
         case 0: case 10: case 20: case 30: case 730: case 740: case 810: case 820: case 830:

@@ -17,7 +17,7 @@ namespace {
 bool is_cycle(int motion) {
     return motion == 730 || motion == 740 || (motion >= 810 && motion <= 890);
 }
-bool uses_axes_group0(int g0) { return g0 == 100 || g0 == 280 || g0 == 300 || g0 == 920 || g0 == 520; }
+bool uses_axes_group0(int g0) { return g0 == 100 || g0 == 280 || g0 == 300 || g0 == 920 || g0 == 520 || g0 == 500; }
 // Codes whose block's axis words are data, not a move: G10, G28, G30, G92 and the tool
 // length offsets given as axis values (G43.1, G43.2).
 bool axes_are_data(const BlockWords& bw) {
@@ -508,7 +508,7 @@ bool Interp::execute(const BlockWords& bw) {
     // motion_arc): an F word there times its own block only.
     if (bw.has('F') && !(st_.feed_mode == 930 && profile_.feed_mode_clears_feed))
         feed_ = bw['F'].value * (st_.feed_mode == 930 ? 1.0 : scale());
-    if (bw.has('S')) speed_ = bw['S'].value;
+    if (bw.has('S') && g0 != 500) speed_ = bw['S'].value;
     if (int sm = bw.g[g_spindle_mode]; sm >= 0) {  // G96 (D: its speed limit) / G97
         css_ = sm == 960;
         if (css_) css_max_ = bw.has('D') ? std::fabs(bw['D'].value) : 0;  // no D: no limit
@@ -568,6 +568,7 @@ bool Interp::execute(const BlockWords& bw) {
         case 100: g10(bw); break;
         case 280: case 281: case 300: case 301: home(bw, g0); break;
         case 920: case 921: case 922: case 923: case 520: g92(bw, g0); break;
+        case 500: g50(bw); break;
         default: break;
     }
     // 20: motion

@@ -160,6 +160,7 @@ private:
     void set_coord_system(int n);
     void g10(const BlockWords& bw);
     void g92(const BlockWords& bw, int code);
+    void g50(const BlockWords& bw);  // G-code system A: G50 X Z (as G92), G50 S (spindle clamp)
     // ---- the machine (interp_machine.cpp) -----------------------------------------------
     void place_machine(const Machine& m, const ParameterValues& values);
     void machine_subprogram(const MachineCode& c, int column);  // a builder M code that runs a program
@@ -232,6 +233,7 @@ private:
     double speed_ = 0;  // S, rev/min (G96: surface speed, m/min or ft/min)
     bool css_ = false;       // G96 constant surface speed
     double css_max_ = 0;     // G96 D: the spindle speed it may not exceed (0: none given)
+    double spindle_clamp_ = 0;  // G50 S (G-code system A): the highest speed under G96 (0: none)
     int tool_ = 0;      // tool in the spindle
     int block_tool_ = 0;  // and before the block being executed
     // The tool G41/G42 without D and G43 without H (or H0) take: the one in the spindle, or

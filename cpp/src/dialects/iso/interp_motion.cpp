@@ -73,6 +73,7 @@ double Interp::feed_for(const BlockWords& bw, int code, double length, double x_
             const double r = std::fabs(x_end) * scale();  // mm
             double rpm = css_rpm(speed_ * (st_.inch ? 304.8 : 1000.0), r);  // S in ft/min or m/min
             if (css_max_ > 0) rpm = std::min(rpm, css_max_);
+            if (spindle_clamp_ > 0) rpm = std::min(rpm, spindle_clamp_);
             return std::isfinite(rpm) ? feed_ * rpm : std::nan("");
         }
         default:

@@ -141,6 +141,22 @@ void Interp::g92(const BlockWords& bw, int code) {
     }
 }
 
+// G50 in G-code system A (Fanuc T series, Haas lathe): X/Z set the coordinate system as
+// G92 does in the other systems; S is the highest spindle speed of constant surface speed
+// (G96), kept until the next G50 S. U and W would shift it: refused.
+void Interp::g50(const BlockWords& bw) {
+    const int col = bw.g_column[g_nonmodal];
+    if (bw.has('U') || bw.has('W'))
+        fail(code::unsupported_word, "G50 with U or W (a shift of the coordinate system) is not supported by toolcomp",
+             bw[bw.has('U') ? 'U' : 'W'].column);
+    if (!bw.has('S') && !bw.has_axis()) fail(code::g92_no_axes, "G50 needs X/Z (the coordinate system) or S (the spindle clamp)", col);
+    if (bw.has('S')) {
+        if (bw['S'].value < 0) fail(code::bad_word, "G50 S: the spindle speed clamp cannot be negative", bw['S'].column);
+        spindle_clamp_ = bw['S'].value;
+    }
+    if (bw.has_axis()) g92(bw, 920);
+}
+
 void Interp::home(const BlockWords& bw, int code) {
     Vec6& stored = (code == 280 || code == 281) ? g28_ : g30_;
     if (code == 281 || code == 301) {  // G28.1 / G30.1: remember where the machine is
