@@ -271,6 +271,8 @@ class ControlProfile:
     g53_rapid: bool
     startup_retract_initial: bool
     d_word_alone: bool
+    turning_cycles: bool
+    turning_escape: float
     g52_offset: bool
     macro_calls: bool
     m98_subprograms: bool

@@ -103,6 +103,7 @@ ControlProfile fanuc_profile(MachineKind kind) {
         p.length_axes = LengthAxes::all;
         r.tip_convention = TipConvention::fanuc;
         p.g_code_system_a = true;
+        p.turning_cycles = true;
     }
     return p;
 }
@@ -137,6 +138,7 @@ ControlProfile rockwell_profile() {
     p.startup_feed_per_rev = plain.startup_feed_per_rev;
     p.c_word_is_chamfer = plain.c_word_is_chamfer;
     p.g_code_system_a = plain.g_code_system_a;
+    p.turning_cycles = plain.turning_cycles;
     p.macro_calls = plain.macro_calls;
     p.m98_subprograms = plain.m98_subprograms;
     // The texts of the control's messages are not in the manual excerpt: these name the
@@ -257,6 +259,7 @@ void check_profile(const ControlProfile& p) {
     if (r.lookahead > 1000) bad("radius.lookahead", "at most 1000", r.lookahead);
     if (p.call_depth_limit > kMaxCallDepthLimit)
         bad("call_depth_limit", "at most " + std::to_string(kMaxCallDepthLimit), static_cast<double>(p.call_depth_limit));
+    at_least("turning_escape", p.turning_escape, 0);
     if (p.startup_motion != 0 && p.startup_motion != 10 && p.startup_motion != 800)
         bad("startup_motion", "0 (G00), 10 (G01) or 800 (G80)", p.startup_motion);
     if (p.no_motion_limit < 1) bad("no_motion_limit", "a count >= 1", 0);

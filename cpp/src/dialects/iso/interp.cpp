@@ -17,7 +17,10 @@ namespace {
 bool is_cycle(int motion) {
     return motion == 730 || motion == 740 || (motion >= 810 && motion <= 890);
 }
-bool uses_axes_group0(int g0) { return g0 == 100 || g0 == 280 || g0 == 300 || g0 == 920 || g0 == 520 || g0 == 500; }
+bool uses_axes_group0(int g0) {
+    return g0 == 100 || g0 == 280 || g0 == 300 || g0 == 920 || g0 == 520 || g0 == 500 || g0 == 700 || g0 == 710 ||
+           g0 == 720;
+}
 // Codes whose block's axis words are data, not a move: G10, G28, G30, G92 and the tool
 // length offsets given as axis values (G43.1, G43.2).
 bool axes_are_data(const BlockWords& bw) {
@@ -163,6 +166,14 @@ void Interp::run_blocks() {
     for (;;) {
         Frame& f = frames_.back();
         const Program& p = f.prog();
+        if (f.kind == Frame::g70 && f.pc >= f.stop) {  // G70's contour done: back to where it began
+            const Vec6 back = f.back;
+            line_ = f.call_line;
+            file_ = f.at->file;
+            frames_.pop_back();
+            if (back != pos_) straight(MotionKind::rapid, back, std::nan(""));
+            continue;
+        }
         if (f.pc >= p.size()) {
             if (frames_.size() == 1) {
                 const Program* next = opts_.next_piece && !p.syntax_error ? opts_.next_piece() : nullptr;
@@ -265,6 +276,7 @@ void Interp::check_words(const BlockWords& bw, int motion_to_be) {
              bw['C'].column);
     if ((bw.letters & kChecked) == 0) return;  // none of the words that need a code to use them
     const int g0 = bw.g[g_nonmodal];
+    if (g0 == 700 || g0 == 710 || g0 == 720) return;  // the lathe cycles read their words (interp_turning.cpp)
     const bool arc = motion_to_be == 20 || motion_to_be == 30;
     const bool g87 = motion_to_be == 870;  // back boring takes I J K too
     const bool cycle_block = is_cycle(motion_to_be);
@@ -454,7 +466,7 @@ bool Interp::execute(const BlockWords& bw) {
                 // 9/Series: compensation ends here for the moment (the last move its exit) and
                 // the first move in the new system is an entry.
                 if (comp_before) {
-                    sink_.control({ControlKind::radius_off, line_, Vec3::Zero(), file_});
+                    out().control({ControlKind::radius_off, line_, Vec3::Zero(), file_});
                     comp_moved_ = false;
                 }
             } else if (bw.g[g_coord_system] >= 0) {
@@ -569,6 +581,8 @@ bool Interp::execute(const BlockWords& bw) {
         case 280: case 281: case 300: case 301: home(bw, g0); break;
         case 920: case 921: case 922: case 923: case 520: g92(bw, g0); break;
         case 500: g50(bw); break;
+        case 700: finishing_cycle(bw); break;
+        case 710: case 720: roughing_cycle(bw, g0); break;
         default: break;
     }
     // 20: motion

@@ -65,7 +65,7 @@ struct LoadedProgram {
 
 // Where execution is: the main program, or a subprogram and where it returns to.
 struct Frame {
-    enum Kind : std::uint8_t { main, o_call, m98, g65 } kind = main;
+    enum Kind : std::uint8_t { main, o_call, m98, g65, g70 } kind = main;
     const LoadedProgram* at = nullptr;
     std::size_t pc = 0;         // next block
     std::size_t entry = 0;      // first block of the body (M98 / G65 L repeats)
@@ -74,6 +74,8 @@ struct Frame {
     int call_line = 0;          // line of the calling block (in the caller's file)
     std::map<std::size_t, long> repeat_counts;  // o-repeat block -> passes left
     std::map<std::string, std::size_t> opened;  // LinuxCNC: if/while/repeat label -> its block, this call
+    std::size_t stop = 0;         // G70: the block after the contour's last
+    Vec6 back = Vec6::Zero();     // G70: where the tool goes at rapid after the contour
     const Program& prog() const { return *at->prog; }
 };
 
@@ -148,6 +150,8 @@ private:
     // ---- motion (interp_motion.cpp) --------------------------------------------------------
     Motion motion_to(MotionKind kind, const Vec6& end) const;
     void straight(MotionKind kind, const Vec6& end, double feed);
+    void emit(const Motion& m);  // a move out, the position at its end
+    MotionSink& out() { return capture_ ? *capture_ : sink_; }
     Vec2 center_from_radius_lcnc(const Vec2& s, const Vec2& e, double R, int dir) const;
     void set_units(bool inch);
     void motion_line(const BlockWords& bw, int code, bool machine_coords);
@@ -209,6 +213,21 @@ private:
 
     // ---- canned cycles (interp_cycles.cpp) ---------------------------------------------------
     void cycle(const BlockWords& bw, int code);
+
+    // ---- lathe cycles: G70, G71, G72 (interp_turning.cpp) -------------------------------------
+    void roughing_cycle(const BlockWords& bw, int code);
+    void finishing_cycle(const BlockWords& bw);
+    // The blocks N<p> .. N<q> of the running program (their indexes), for G70-G73.
+    std::pair<std::size_t, std::size_t> contour_blocks(const BlockWords& bw);
+    // The moves of blocks [from, to] as they would run from here, nothing else changed: where
+    // the first block ends, and the moves of the others.
+    struct ContourMoves {
+        Vec3 first_end = Vec3::Zero();
+        std::vector<Motion> moves;
+    };
+    ContourMoves read_contour(std::size_t from, std::size_t to);
+    MotionSink* capture_ = nullptr;  // while a contour is read: where its moves go
+    double turn_depth_ = 0, turn_escape_ = -1;  // G71 U R / G72 W R (program units; -1: not given)
 
     const Program& prog_;  // the main program
     const ToolTable* tools_;

@@ -102,11 +102,17 @@ Motion Interp::motion_to(MotionKind kind, const Vec6& end) const {
 void Interp::straight(MotionKind kind, const Vec6& end, double feed) {
     Motion m = motion_to(kind, end);
     m.feed = feed;
+    emit(m);
+}
+
+// A move of the program: to the sink (or to a lathe cycle's contour being read).
+void Interp::emit(const Motion& m) {
     comp_moved_ = comp_moved_ || comp_on();
-    if (travel_) check_travel(m);
+    if (travel_ && !capture_) check_travel(m);
     ++moves_;
-    sink_.push(m);
-    pos_ = end;
+    out().push(m);
+    pos_.head<3>() = m.end;
+    pos_.tail<3>() = Vec3(m.abc[0], m.abc[1], m.abc[2]);
 }
 
 void Interp::motion_line(const BlockWords& bw, int code, bool machine_coords) {
@@ -233,11 +239,7 @@ void Interp::motion_arc(const BlockWords& bw, int code) {
     }
     m.feed = feed_for(bw, code, length, end[0]);
     inverse_time_rate(m.feed);
-    comp_moved_ = comp_moved_ || comp_on();
-    if (travel_) check_travel(m);
-    ++moves_;
-    sink_.push(m);
-    pos_ = end;
+    emit(m);
 }
 
 }  // namespace toolcomp::iso

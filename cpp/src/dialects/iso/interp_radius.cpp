@@ -19,7 +19,7 @@ void Interp::radius_comp(const BlockWords& bw, int code) {
             for (int i = 0; i < 3; ++i)
                 if (bw.has(offs[i])) dir[i] = bw[offs[i]].value;
         }
-        if (radius_.side != 0) sink_.control({ControlKind::radius_off, line_, dir, file_});
+        if (radius_.side != 0) out().control({ControlKind::radius_off, line_, dir, file_});
         if (radius_.side != 0 && radius_.radius > 0 && comp_moved_ && profile_.radius.exit_must_be_straight)
             arc_not_allowed_ = true;
         comp_moved_ = false;

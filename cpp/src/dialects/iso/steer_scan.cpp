@@ -1,5 +1,7 @@
 // may_steer: a byte scan (no parsing) for what makes a program's blocks depend on each
-// other beyond the modal state: any letter O outside a parenthesised comment, or M99.
+// other beyond the modal state: any letter O outside a parenthesised comment, M99, or a P
+// on a line with G70-G73 (a lathe cycle reading the blocks N<P> .. N<Q>).
+#include <algorithm>
 #include <cstddef>
 
 #include "toolcomp/dialects/iso/lexer.hpp"
@@ -15,9 +17,26 @@ bool has_special(const char* p) {
     unsigned any = 0;
     for (std::size_t k = 0; k < kRun; ++k) {
         const unsigned char c = static_cast<unsigned char>(p[k]);
-        any |= static_cast<unsigned>(c == '(') | (c == 'O') | (c == 'o') | (c == 'M') | (c == 'm');
+        any |= static_cast<unsigned>(c == '(') | (c == 'O') | (c == 'o') | (c == 'M') | (c == 'm') | (c == 'P') |
+               (c == 'p');
     }
     return any != 0;
+}
+// Whether the line around text[i] has G70, G71, G72 or G73 (blanks and leading zeros
+// allowed: G 71, G071).
+bool line_has_contour_cycle(std::string_view text, std::size_t i) {
+    std::size_t b = text.rfind('\n', i);
+    b = b == std::string_view::npos ? 0 : b + 1;
+    const std::size_t e = std::min(text.find('\n', i), text.size());
+    for (std::size_t k = b; k < e; ++k) {
+        if (text[k] != 'G' && text[k] != 'g') continue;
+        std::size_t j = k + 1;
+        while (j < e && (text[j] == ' ' || text[j] == '\t' || text[j] == '0')) ++j;
+        if (j < e && text[j] == '7' && j + 1 < e && text[j + 1] >= '0' && text[j + 1] <= '3' &&
+            (j + 2 >= e || text[j + 2] < '0' || text[j + 2] > '9'))
+            return true;
+    }
+    return false;
 }
 }  // namespace
 
@@ -47,6 +66,8 @@ bool may_steer(std::string_view text) {
                 value = value * 10 + (d - '0');
             }
             if (value == 99) return true;
+        } else if ((c == 'P' || c == 'p') && line_has_contour_cycle(text, i)) {
+            return true;
         }
     }
     return false;

@@ -1,0 +1,66 @@
+#pragma once
+// Stock removal of a lathe's roughing cycles (Fanuc G71 / G72, type I): the passes that cut
+// a finishing contour out of the stock between it and the start point. Dialect-free: the
+// interpreter reads the cycle's words and the contour's blocks; this computes the moves.
+//
+// Plane coordinates of the cut: `u` along the passes (Z for G71, X radius for G72), `v`
+// across them, the direction the passes step in (X radius for G71, Z for G72).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "toolcomp/geometry/vec.hpp"
+
+namespace toolcomp::cycles {
+
+// An element of the contour, from the end of the one before: a line, or an arc about
+// `center` (dir +1 counter-clockwise in (u, v), -1 clockwise).
+struct ContourPiece {
+    Vec2 end;
+    Vec2 center = Vec2::Zero();
+    int dir = 0;   // 0: a line
+    int line = 0;  // the block's source line
+};
+
+struct Contour {
+    Vec2 start = Vec2::Zero();  // its first point: where the P block ends
+    std::vector<ContourPiece> pieces;
+};
+
+enum class StepKind : std::uint8_t { rapid, feed, arc };
+
+// A move of the cycle, from the end of the one before.
+struct Step {
+    StepKind kind;
+    Vec2 end;
+    Vec2 center = Vec2::Zero();
+    int dir = 0;
+    int line = 0;  // the contour block it follows (0: the cycle's own block)
+};
+
+struct Roughing {
+    Vec2 start = Vec2::Zero();      // where the tool stands when the cycle begins (A)
+    double depth = 0;               // depth of cut of a pass (Δd), > 0
+    double retract = 0;             // the escape after each pass, at 45 degrees (e), >= 0
+    Vec2 allowance = Vec2::Zero();  // finishing allowance: the contour is shifted by it
+    bool rapid_infeed = true;       // the P block is G00: the passes start at rapid, else at feed
+    std::size_t max_passes = 1000000;
+};
+
+// A contour or parameters the control refuses: the catalogue code, the control's alarm
+// text, and the contour block it concerns (0: the cycle's block).
+struct CycleError {
+    const char* code;
+    std::string message;
+    int line = 0;
+};
+
+// Type I: the contour's v never turns back towards the start's side of where it began, u
+// never turns back. The passes step from the start point by `depth` while they lie short of
+// the contour's first point; each runs along u to the shifted contour, escapes at 45
+// degrees by `retract` and goes back to the start's u at rapid. Then one pass along the
+// shifted contour (what the passes left, at most `depth`, and an even allowance) and a
+// rapid back to the start point. Throws CycleError.
+std::vector<Step> rough_type1(const Contour& contour, const Roughing& r);
+
+}  // namespace toolcomp::cycles
