@@ -128,3 +128,19 @@ def test_g50_x_z_sets_the_coordinate_system():
     with pytest.raises(tc.ProgramError) as e:  # G50 is no code of a Fanuc mill here
         _run("G21 G50 S2000\nM30\n")
     assert (e.value.code, e.value.line) == ("unknown_g_code", 1)
+
+
+@pytest.mark.parametrize("r", [1.0, 5.0])
+def test_g40_right_after_a_lead_out_arc(r):
+    # Fusion 360 / Mastercam lead-out: the contour along +X, a G03 arc of radius 10 about
+    # (50, 10) turning towards the tool's side (G41), then G01 G40 off it. Type C: the arc's
+    # compensated end lies r towards its centre, (60 - r, 10); the G40 block ends at its
+    # programmed point.
+    tools = tc.ToolTable()
+    tools.set(tc.Tool(1, edges=[tc.CuttingEdge(radius=r, length=[0.0, 0.0, 50.0])]))
+    text = ("G21 G90 G17 G00 X-20. Y-20.\nG43 H1 Z5.\nG01 Z-2. F100.\nG41 D1 X-10. Y-10.\nG01 X0 Y0\nX50.\n"
+            "G03 X60. Y10. R10.\nG01 G40 X70. Y-10.\nM30\n")
+    res = _run(text, tools=tools)
+    assert res.ok
+    np.testing.assert_allclose(res.path.end[res.path.line == 7][-1], [60 - r, 10, -2], atol=1e-9)
+    np.testing.assert_allclose(res.path.end[-1], [70, -10, -2], atol=1e-9)

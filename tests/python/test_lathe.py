@@ -129,9 +129,11 @@ def test_g28_with_u_and_w_sends_x_and_z_home(block, mid, home):
 ])
 def test_fanuc_lathe_g_code_system_a(block, code, what):
     # G90/G92/G94 are box cycles on a system-A lathe, not distance mode, coordinate setting
-    # and feed per minute: refused, never read as the mill's codes.
+    # and feed per minute: without the lathe cycles (test_lathe_single_cycles.py) refused,
+    # never read as the mill's codes.
     prof = tc.ControlProfile("fanuc", machine="lathe")
     assert prof.g_code_system_a and not tc.ControlProfile("fanuc").g_code_system_a
+    prof.turning_cycles = False
     with pytest.raises(tc.ProgramError) as e:
         tc.run(tc.Program.parse(FANUC_LATHE_START + block + "\nM30\n", "fanuc"), profile=prof)
     assert e.value.code == code and e.value.line == 4 and what in e.value.message

@@ -324,7 +324,8 @@ void Interp::check_words(const BlockWords& bw, int motion_to_be) {
                  "Q word with no G5, G10, G64, G73, G76, G83, M19, M66, M67, M68 or user M code that uses it",
                  col('Q'));
     }
-    if (bw.has('R') && !(arc || cycle_block || g0 == 100))
+    const bool single_cycle = motion_to_be == 900 || motion_to_be == 920 || motion_to_be == 940;
+    if (bw.has('R') && !(arc || cycle_block || single_cycle || g0 == 100))
         fail(code::unused_word, "R word with no g code that uses it", col('R'));
 }
 
@@ -351,6 +352,8 @@ void Interp::system_a_codes(const BlockWords& bw) const {
         {g_distance, 910, code::unknown_g_code, "G91 does not exist in G-code system A (U and W are the incremental words)"},
         {g_nonmodal, 920, code::unsupported_g_code, "G92 is the threading cycle in G-code system A: not supported by toolcomp"},
         {g_feed_mode, 940, code::unsupported_g_code, "G94 is the facing cycle in G-code system A: not supported by toolcomp"},
+        {g_nonmodal, 750, code::unsupported_g_code, "G75 is the grooving cycle on a lathe: not supported by toolcomp"},
+        {g_nonmodal, 760, code::unsupported_g_code, "G76 is the multiple threading cycle on a lathe: not supported by toolcomp"},
         // The mill's canned cycles mean other cycles on a Fanuc lathe (G73 pattern repeating,
         // G74 end face peck drilling, G83-G89 face and side drilling with live tools).
         {g_motion, 730, code::unsupported_g_code, "G73 is the pattern repeating cycle on a lathe: not supported by toolcomp"},
@@ -598,6 +601,8 @@ bool Interp::execute(const BlockWords& bw) {
         switch (motion_to_be) {
             case 0: case 10: motion_line(bw, motion_to_be, g0 == 530); break;
             case 20: case 30: motion_arc(bw, motion_to_be); break;
+            case 320: thread_line(bw); break;
+            case 900: case 920: case 940: single_cycle(bw, motion_to_be); break;
             default: cycle(bw, motion_to_be); break;
         }
     } else if ((motion_code == 20 || motion_code == 30) && (bw.has('I') || bw.has('J') || bw.has('K') || bw.has('R'))) {

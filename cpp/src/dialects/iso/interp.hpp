@@ -216,6 +216,13 @@ private:
 
     // ---- lathe cycles: G70, G71, G72 (interp_turning.cpp) -------------------------------------
     void roughing_cycle(const BlockWords& bw, int code);
+    // G-code system A's single cycles and threading (interp_lathe_single.cpp).
+    void thread_line(const BlockWords& bw);                 // G32
+    void single_cycle(const BlockWords& bw, int code);      // G90, G92, G94
+    double thread_feed(double x_end) const;                 // F as the lead: mm/min at X (radius)
+    struct SingleCycle {
+        double z = 0, x = 0, r = 0;  // the last cycle's end Z, X and taper R (program units)
+    } single_{};
     void finishing_cycle(const BlockWords& bw);
     // The blocks N<p> .. N<q> of the running program (their indexes), for G70-G73.
     std::pair<std::size_t, std::size_t> contour_blocks(const BlockWords& bw);

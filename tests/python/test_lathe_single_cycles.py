@@ -1,0 +1,93 @@
+"""G-code system A's single cycles and threading on Fanuc and Haas lathes: G90 turning, G92
+threading, G94 facing (modal: a block with only X or Z repeats them), G32 thread cutting.
+Numbers by hand: X words are diameters (radius = X / 2); feeds per revolution times S."""
+import numpy as np
+import pytest
+
+import toolcomp as tc
+
+PROGRAM = """\
+G21 G18 G97 S500 M3
+G99
+G0 X32 Z5
+G92 X29.3 Z-20 F1.5
+X28.9
+X28.6
+G0 X40
+G90 X25 Z-30 F0.2
+X20
+G94 X10 Z-2 F0.1
+Z-4
+G32 Z-10 F1.0
+M30
+"""
+
+
+def _run(text, **kw):
+    return tc.run(tc.Program.parse(text, dialect="fanuc"), machine=kw.pop("machine", "lathe"), **kw)
+
+
+def _rows(res, line):
+    sel = res.nominal.line == line
+    return res.nominal.end[sel][:, [0, 2]], res.nominal.kind[sel], res.nominal.feed[sel]
+
+
+def test_g92_threads_pass_by_pass_from_its_start_point():
+    res = _run(PROGRAM)
+    # From A (radius 16, Z5): rapid to the pass's X, the thread at 1.5 mm/rev x 500 rev/min
+    # = 750 mm/min, rapid out to A's X, rapid back to A's Z. X28.9, X28.6 repeat it.
+    for line, x in [(4, 14.65), (5, 14.45), (6, 14.3)]:
+        ends, kinds, feeds = _rows(res, line)
+        np.testing.assert_allclose(ends, [(x, 5), (x, -20), (16, -20), (16, 5)])
+        assert list(kinds) == [tc.RAPID, tc.LINE, tc.RAPID, tc.RAPID]
+        assert feeds[1] == 750
+
+
+def test_g90_turns_and_g94_faces():
+    res = _run(PROGRAM)
+    ends, kinds, feeds = _rows(res, 8)  # from A (20, 5): 0.2 mm/rev x 500 = 100 mm/min
+    np.testing.assert_allclose(ends, [(12.5, 5), (12.5, -30), (20, -30), (20, 5)])
+    assert list(kinds) == [tc.RAPID, tc.LINE, tc.LINE, tc.RAPID] and feeds[1] == feeds[2] == 100
+    np.testing.assert_allclose(_rows(res, 9)[0], [(10, 5), (10, -30), (20, -30), (20, 5)])  # X20 repeats, Z kept
+    ends, kinds, feeds = _rows(res, 10)  # G94: Z first, feed along X, back along Z
+    np.testing.assert_allclose(ends, [(20, -2), (5, -2), (5, 5), (20, 5)])
+    assert list(kinds) == [tc.RAPID, tc.LINE, tc.LINE, tc.RAPID] and feeds[1] == 50
+    np.testing.assert_allclose(_rows(res, 11)[0], [(20, -4), (5, -4), (5, 5), (20, 5)])  # Z-4 repeats, X kept
+
+
+def test_g32_cuts_a_thread_at_lead_times_speed():
+    ends, kinds, feeds = _rows(_run(PROGRAM), 12)
+    np.testing.assert_allclose(ends, [(20, -10)])
+    assert kinds[0] == tc.LINE and feeds[0] == 500  # F1.0 is the lead: 1 mm x 500 rev/min
+
+
+def test_a_taper_r_moves_the_start_of_the_cut():
+    # G90 R-2 (radius): the cut starts 2 mm below its end's radius 12.5.
+    res = _run("G21 G18 G97 S500 M3\nG99\nG0 X40 Z5\nG90 X25 Z-30 R-2 F0.2\nM30\n")
+    np.testing.assert_allclose(_rows(res, 4)[0], [(10.5, 5), (12.5, -30), (20, -30), (20, 5)])
+
+
+def test_inch_on_haas_lathe():
+    # G20: X1.0 diameter = radius 12.7 mm; G92 F0.0625 (16 TPI) at S400: 25 in/min.
+    text = "G20 G18 G97 S400 M3\nG99\nG0 X1.2 Z0.2\nG92 X0.95 Z-1. F0.0625\nX0.93\nG0 X3.\nM30\n"
+    res = _run(text, machine="haas-lathe")
+    ends, kinds, feeds = _rows(res, 4)
+    np.testing.assert_allclose(ends / 25.4, [(0.475, 0.2), (0.475, -1), (0.6, -1), (0.6, 0.2)])
+    assert feeds[1] == pytest.approx(0.0625 * 400 * 25.4)
+
+
+@pytest.mark.parametrize("text, code, line", [
+    ("G21 G18 G97 S500 M3\nG0 X30 Z5\nG92 X28 F1.5\nM30\n", "cycle_bad_value", 3),  # no Z
+    ("G21 G18 G97 M3\nG0 X30 Z5\nG92 X28 Z-10 F1.5\nM30\n", "zero_spindle_speed", 3),
+    ("G21 G18 G97 S500 M3\nG0 X30 Z5\nG75 R1\nM30\n", "unsupported_g_code", 3),
+    ("G21 G18 G97 S500 M3\nG0 X30 Z5\nG76 P010060 Q100 R0.02\nM30\n", "unsupported_g_code", 3),
+])
+def test_what_is_refused(text, code, line):
+    with pytest.raises(tc.ProgramError) as e:
+        _run(text)
+    assert (e.value.code, e.value.line) == (code, line), str(e.value)
+
+
+def test_a_fanuc_mill_keeps_g90_g92_g94():
+    res = tc.run(tc.Program.parse("G21 G17 G90 G94 G0 X10 Y10\nG92 X0 Y0\nG1 X5 F100\nM30\n", dialect="fanuc"))
+    np.testing.assert_allclose(res.nominal.end[-1], [5, 0, 0])
