@@ -80,7 +80,7 @@ def test_inch_on_haas_lathe():
     ("G21 G18 G97 S500 M3\nG0 X30 Z5\nG92 X28 F1.5\nM30\n", "cycle_bad_value", 3),  # no Z
     ("G21 G18 G97 M3\nG0 X30 Z5\nG92 X28 Z-10 F1.5\nM30\n", "zero_spindle_speed", 3),
     ("G21 G18 G97 S500 M3\nG0 X30 Z5\nG75 R1\nM30\n", "unsupported_g_code", 3),
-    ("G21 G18 G97 S500 M3\nG0 X30 Z5\nG76 P010060 Q100 R0.02\nM30\n", "unsupported_g_code", 3),
+    ("G21 G18 G97 S500 M3\nG0 X30 Z5\nG76 X28 Z-10 K1 D0.3 F1.5\nM30\n", "unsupported_word", 3),  # Haas form
 ])
 def test_what_is_refused(text, code, line):
     with pytest.raises(tc.ProgramError) as e:
@@ -91,3 +91,53 @@ def test_what_is_refused(text, code, line):
 def test_a_fanuc_mill_keeps_g90_g92_g94():
     res = tc.run(tc.Program.parse("G21 G17 G90 G94 G0 X10 Y10\nG92 X0 Y0\nG1 X5 F100\nM30\n", dialect="fanuc"))
     np.testing.assert_allclose(res.nominal.end[-1], [5, 0, 0])
+
+
+# ---- G76 ----------------------------------------------------------------------------------------
+
+G76 = """\
+G21 G18 G97 S600 M3
+G0 X32 Z5
+G76 P020060 Q100 R0.05
+G76 X28.16 Z-20 P920 Q300 F1.5
+M30
+"""
+
+
+def test_g76_threads_in_passes_of_falling_depth():
+    # Height P920 = 0.92 mm, first depth Q300 = 0.3, least Q100 = 0.1, allowance R0.05, two
+    # finishing passes (P02..), 60 degrees. Depths 0.3*sqrt(n), at least 0.1 more each time:
+    # 0.3, 0.424264, 0.524264, 0.624264, 0.724264, 0.824264, then 0.87 (= 0.92 - 0.05), then
+    # 0.92 twice. Each pass: rapid to X (radius) = root 14.08 + 0.92 - depth, its Z moved by
+    # -depth * tan(30 deg) along the flank, the thread at 1.5 x 600 = 900 mm/min, rapid out to
+    # X16, rapid back to Z5.
+    res = tc.run(tc.Program.parse(G76, dialect="fanuc"), machine="lathe")
+    depths = [0.3, 0.3 * 2 ** 0.5, 0.3 * 2 ** 0.5 + 0.1, 0.3 * 2 ** 0.5 + 0.2, 0.3 * 2 ** 0.5 + 0.3,
+              0.3 * 2 ** 0.5 + 0.4, 0.87, 0.92, 0.92]
+    expected = []
+    for d in depths:
+        x, s = 14.08 + 0.92 - d, -d * np.tan(np.radians(30))
+        expected += [(x, 5 + s), (x, -20 + s), (16, -20 + s), (16, 5)]
+    sel = res.nominal.line == 4
+    np.testing.assert_allclose(res.nominal.end[sel][:, [0, 2]], expected, atol=1e-9)
+    feeds = res.nominal.feed[sel]
+    assert list(feeds[1::4]) == [900.0] * len(depths)
+
+
+def test_g76_chamfer_pulls_out_at_45_degrees():
+    # P011060: one finishing pass, chamfer 10 tenths of the lead (1.5 mm): the thread ends
+    # 1.5 mm early and pulls out 1.5 mm (radius) at 45 degrees to the end Z.
+    res = tc.run(tc.Program.parse(G76.replace("P020060", "P011060"), dialect="fanuc"), machine="lathe")
+    sel = res.nominal.line == 4
+    ends = res.nominal.end[sel][:, [0, 2]]
+    x, s = 14.7, -0.3 * np.tan(np.radians(30))
+    np.testing.assert_allclose(ends[:5], [(x, 5 + s), (x, -18.5 + s), (x + 1.5, -20 + s), (16, -20 + s), (16, 5)],
+                               atol=1e-9)
+
+
+@pytest.mark.parametrize("change", [("Q300", "Q0"), ("P920 Q300", "P920.5 Q300"), ("P020060", "P020061"),
+                                    ("R0.05", "R1.0")])
+def test_g76_refuses_what_the_control_refuses(change):
+    with pytest.raises(tc.ProgramError) as e:
+        tc.run(tc.Program.parse(G76.replace(*change), dialect="fanuc"), machine="lathe")
+    assert e.value.code == "cycle_bad_value" and e.value.line in (3, 4)

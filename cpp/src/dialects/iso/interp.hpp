@@ -220,6 +220,11 @@ private:
     void thread_line(const BlockWords& bw);                 // G32
     void single_cycle(const BlockWords& bw, int code);      // G90, G92, G94
     double thread_feed(double x_end) const;                 // F as the lead: mm/min at X (radius)
+    void threading_cycle(const BlockWords& bw);             // G76 (interp_threading.cpp)
+    struct Threading {
+        int finishing = 1, chamfer = 0, angle = 60;  // G76 P(m)(r)(a)
+        double min_depth = 0, allowance = 0;         // Q(Δdmin), R(d), program units
+    } thread_{};
     struct SingleCycle {
         double z = 0, x = 0, r = 0;  // the last cycle's end Z, X and taper R (program units)
     } single_{};
