@@ -167,9 +167,12 @@ def test_a_fanuc_lathe_feeds_per_revolution_at_power_on():
 def test_mill_cycle_codes_are_not_read_as_mill_cycles_on_a_fanuc_lathe(code):
     # G74 on a Fanuc lathe is end face peck drilling, G73 pattern repeating, G83-G89 live
     # tool drilling: run as the mill's cycles they gave another path without a word.
+    # (G73 and G74 run as those lathe cycles: test_turning_cycles.py; without them, refused.)
     text = f"G21 G18 G0 X0 Z10 T0101 S500 M3\n{code} R1\n{code} Z-20 Q5 F0.1\nM30\n"
+    profile = tc.ControlProfile("fanuc", machine="lathe")
+    profile.turning_cycles = code not in ("G73", "G74")
     with pytest.raises(tc.Error) as e:
-        tc.run(tc.Program.parse(text, dialect="fanuc"), profile=tc.ControlProfile("fanuc", machine="lathe"))
+        tc.run(tc.Program.parse(text, dialect="fanuc"), profile=profile)
     assert (e.value.code, e.value.line) == ("unsupported_g_code", 2)
 
 

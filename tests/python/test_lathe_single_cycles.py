@@ -79,7 +79,7 @@ def test_inch_on_haas_lathe():
 @pytest.mark.parametrize("text, code, line", [
     ("G21 G18 G97 S500 M3\nG0 X30 Z5\nG92 X28 F1.5\nM30\n", "cycle_bad_value", 3),  # no Z
     ("G21 G18 G97 M3\nG0 X30 Z5\nG92 X28 Z-10 F1.5\nM30\n", "zero_spindle_speed", 3),
-    ("G21 G18 G97 S500 M3\nG0 X30 Z5\nG75 R1\nM30\n", "unsupported_g_code", 3),
+
     ("G21 G18 G97 S500 M3\nG0 X30 Z5\nG76 X28 Z-10 K1 D0.3 F1.5\nM30\n", "unsupported_word", 3),  # Haas form
 ])
 def test_what_is_refused(text, code, line):

@@ -223,3 +223,56 @@ def test_linuxcnc_keeps_refusing_its_g71():
     with pytest.raises(tc.ProgramError) as e:
         tc.run(tc.Program.parse("G21 G18 G0 X10 Z2\nG71 P10 Q20 D1\nM2\n"), machine="lathe")
     assert e.value.code == "unsupported_g_code"
+
+
+# ---- G73 pattern repeating, G74 / G75 pecking --------------------------------------------------
+
+def test_g73_repeats_the_contour_shifted_ever_closer():
+    # Relief U3 (radius) W1 in 3 passes, allowance U0.4 (0.2 radius) W0.1: the contour
+    # (5, 0) (5, -10) (10, -15) (15, -15) (radius, Z) shifted by (3.2, 1.1), (1.7, 0.6),
+    # (0.2, 0.1); each pass from A (15, 2) at rapid (the P block is G00) and back.
+    text = ("G21 G18 G97 S600 M3\nG99\nG0 X30 Z2\nG73 U3 W1 R3\nG73 P10 Q20 U0.4 W0.1 F0.2\nN10 G0 X10 Z0\nG1 Z-10\n"
+            "X20 Z-15\nN20 X30\nM30\n")
+    res = _lathe(text)
+    sel = res.nominal.line == 5
+    expected = []
+    for dx, dz in [(3.2, 1.1), (1.7, 0.6), (0.2, 0.1)]:
+        expected += [(5 + dx, dz), (5 + dx, -10 + dz), (10 + dx, -15 + dz), (15 + dx, -15 + dz), (15, 2)]
+    np.testing.assert_allclose(_xz(res.nominal)[sel], expected, atol=1e-9)
+    assert np.all(res.nominal.feed[sel][res.nominal.kind[sel] == tc.LINE] == 0.2 * 600)
+
+
+def test_g75_grooves_in_pecks():
+    # From X42 Z-20 (radius 21): grooves at Z-20, -23, -26 (Q3000: 3 mm), each pecked 2 mm
+    # (P2000) deep to radius 15, 0.5 back after each peck (R0.5), out to 21 at rapid.
+    text = "G21 G18 G97 S600 M3\nG99\nG0 X42 Z-20\nG75 R0.5\nG75 X30 Z-26 P2000 Q3000 F0.05\nM30\n"
+    res = _lathe(text)
+    sel = res.nominal.line == 5
+    expected = []
+    for z in (-20, -23, -26):
+        if z != -20:
+            expected.append((21, z))
+        expected += [(19, z), (19.5, z), (17, z), (17.5, z), (15, z), (21, z)]
+    expected.append((21, -20))
+    np.testing.assert_allclose(_xz(res.nominal)[sel], expected, atol=1e-9)
+    assert set(res.nominal.feed[sel][res.nominal.kind[sel] == tc.LINE]) == {0.05 * 600}
+
+
+def test_g74_pecks_along_z():
+    # Peck drilling on the axis from Z5: 3 mm pecks (Q3000), 1 mm back (R1), to Z-8.
+    text = "G21 G18 G97 S600 M3\nG99\nG0 X0 Z5\nG74 R1\nG74 Z-8 Q3000 F0.1\nM30\n"
+    res = _lathe(text)
+    sel = res.nominal.line == 5
+    np.testing.assert_allclose(_xz(res.nominal)[sel], [(0, 2), (0, 3), (0, -1), (0, 0), (0, -4), (0, -3), (0, -7),
+                                                         (0, -6), (0, -8), (0, 5)], atol=1e-9)
+
+
+@pytest.mark.parametrize("text, code", [
+    ("G75 X30 Z-26 P2000 F0.05", "cycle_bad_value"),  # a second groove without a shift
+    ("G75 X30 Z-20 P2000.5 F0.05", "cycle_bad_value"),
+    ("G75 X30 Z-20 P2000 R0.2 F0.05", "unsupported_word"),  # the relief at the bottom
+])
+def test_g75_refusals(text, code):
+    with pytest.raises(tc.ProgramError) as e:
+        _lathe("G21 G18 G97 S600 M3\nG99\nG0 X42 Z-20\n" + text + "\nM30\n")
+    assert (e.value.code, e.value.line) == (code, 4)

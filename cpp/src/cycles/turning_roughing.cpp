@@ -122,4 +122,20 @@ std::vector<Step> rough_type1(const Contour& contour, const Roughing& r) {
     return out;
 }
 
+std::vector<Step> pattern_repeat(const Contour& contour, const Vec2& start, const Vec2& first, const Vec2& last,
+                                 int passes, bool rapid_approach) {
+    if (passes < 1)
+        throw CycleError{code::cycle_bad_value, "PS0062 ILLEGAL COMMAND IN G71-G76: the number of divisions must be 1 or more"};
+    std::vector<Step> out;
+    for (int j = 1; j <= passes; ++j) {
+        const double t = passes == 1 ? 0.0 : static_cast<double>(passes - j) / (passes - 1);
+        const Vec2 s = last + t * (first - last);
+        out.push_back({rapid_approach ? StepKind::rapid : StepKind::feed, contour.start + s});
+        for (const ContourPiece& p : contour.pieces)
+            out.push_back({p.dir == 0 ? StepKind::feed : StepKind::arc, p.end + s, p.center + s, p.dir, p.line});
+        out.push_back({StepKind::rapid, start});
+    }
+    return out;
+}
+
 }  // namespace toolcomp::cycles

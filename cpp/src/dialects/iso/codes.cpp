@@ -6,7 +6,9 @@ int g_group(int c, const ControlProfile& p) {
     // G-code system A with the lathe cycles: G32 threading, G90 / G92 / G94 the turning,
     // threading and facing cycles, modal in group 01.
     if (p.g_code_system_a && p.turning_cycles && (c == 320 || c == 900 || c == 920 || c == 940)) return g_motion;
-    if (p.g_code_system_a && (c == 750 || c == 760)) return g_nonmodal;  // lathe cycles (G75 refused when run)
+    // G73 pattern repeating, G74 / G75 peck drilling / grooving, G76 threading (group 00).
+    if (p.g_code_system_a && p.turning_cycles && (c == 730 || c == 740 || c == 750 || c == 760)) return g_nonmodal;
+    if (p.g_code_system_a && c == 750) return kUnsupported;
     switch (c) {
         case 40: case 100: case 280: case 281: case 300: case 301: case 530:
         case 920: case 921: case 922: case 923:

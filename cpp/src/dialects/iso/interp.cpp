@@ -19,7 +19,7 @@ bool is_cycle(int motion) {
 }
 bool uses_axes_group0(int g0) {
     return g0 == 100 || g0 == 280 || g0 == 300 || g0 == 920 || g0 == 520 || g0 == 500 || g0 == 700 || g0 == 710 ||
-           g0 == 720 || g0 == 760;
+           g0 == 720 || g0 == 730 || g0 == 740 || g0 == 750 || g0 == 760;
 }
 // Codes whose block's axis words are data, not a move: G10, G28, G30, G92 and the tool
 // length offsets given as axis values (G43.1, G43.2).
@@ -276,7 +276,7 @@ void Interp::check_words(const BlockWords& bw, int motion_to_be) {
              bw['C'].column);
     if ((bw.letters & kChecked) == 0) return;  // none of the words that need a code to use them
     const int g0 = bw.g[g_nonmodal];
-    if (g0 == 700 || g0 == 710 || g0 == 720 || g0 == 760) return;  // the lathe cycles read their words
+    if (g0 >= 700 && g0 <= 760 && g0 % 10 == 0) return;  // the lathe cycles G70-G76 read their words
     const bool arc = motion_to_be == 20 || motion_to_be == 30;
     const bool g87 = motion_to_be == 870;  // back boring takes I J K too
     const bool cycle_block = is_cycle(motion_to_be);
@@ -352,7 +352,6 @@ void Interp::system_a_codes(const BlockWords& bw) const {
         {g_distance, 910, code::unknown_g_code, "G91 does not exist in G-code system A (U and W are the incremental words)"},
         {g_nonmodal, 920, code::unsupported_g_code, "G92 is the threading cycle in G-code system A: not supported by toolcomp"},
         {g_feed_mode, 940, code::unsupported_g_code, "G94 is the facing cycle in G-code system A: not supported by toolcomp"},
-        {g_nonmodal, 750, code::unsupported_g_code, "G75 is the grooving cycle on a lathe: not supported by toolcomp"},
         // The mill's canned cycles mean other cycles on a Fanuc lathe (G73 pattern repeating,
         // G74 end face peck drilling, G83-G89 face and side drilling with live tools).
         {g_motion, 730, code::unsupported_g_code, "G73 is the pattern repeating cycle on a lathe: not supported by toolcomp"},
@@ -586,6 +585,8 @@ bool Interp::execute(const BlockWords& bw) {
         case 700: finishing_cycle(bw); break;
         case 710: case 720: roughing_cycle(bw, g0); break;
         case 760: threading_cycle(bw); break;
+        case 730: pattern_cycle(bw); break;
+        case 740: case 750: peck_cycle(bw, g0); break;
         default: break;
     }
     // 20: motion

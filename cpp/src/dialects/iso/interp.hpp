@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "../../control/travel.hpp"
+#include "../../cycles/turning_roughing.hpp"
 #include "../idle_watch.hpp"
 #include "block_words.hpp"
 #include "flow.hpp"
@@ -229,6 +230,17 @@ private:
         double z = 0, x = 0, r = 0;  // the last cycle's end Z, X and taper R (program units)
     } single_{};
     void finishing_cycle(const BlockWords& bw);
+    void pattern_cycle(const BlockWords& bw);              // G73
+    BlockWords first_block(std::size_t from, int col);     // the P block of G71-G73 (G00/G01)
+    static Vec2 turning_uv(const Vec3& q, bool along_z);
+    cycles::Contour cycle_contour(std::size_t from, std::size_t to, bool along_z);
+    void emit_steps(const std::vector<cycles::Step>& steps, bool along_z, const BlockWords& bw, int col);
+    void peck_cycle(const BlockWords& bw, int code);       // G74, G75 (interp_grooving.cpp)
+    struct PatternRepeat {
+        double relief_x = 0, relief_z = 0;  // G73 U(Δi) W(Δk), program units (X a radius)
+        int divisions = 1;                  // G73 R(d)
+    } pattern_{};
+    double peck_return_ = -1;  // G74 / G75 R(e), program units; -1: not given
     // The blocks N<p> .. N<q> of the running program (their indexes), for G70-G73.
     std::pair<std::size_t, std::size_t> contour_blocks(const BlockWords& bw);
     // The moves of blocks [from, to] as they would run from here, nothing else changed: where

@@ -137,45 +137,19 @@ void Interp::roughing_cycle(const BlockWords& bw, int code) {
     const auto [from, to] = contour_blocks(bw);
 
     // The P block: G00 or G01, and in type I only the stepping axis (X for G71, Z for G72).
-    const Frame& f = frames_.back();
-    const Program& p = f.prog();
-    {
-        const Block& b = p.blocks()[from];
-        const BlockWords first = collect_words(syntax_ ? block_words(b) : p.words(b), b.line, profile_, opts_.machine);
-        const int motion = first.g[g_motion] >= 0 ? first.g[g_motion] : st_.motion;
-        if (motion != 0 && motion != 10)
-            fail(code::cycle_first_block, "PS0065 ILLEGAL COMMAND IN G71-G73: the P block must be G00 or G01", col);
-        const bool along = g71 ? first.has('Z') || first.has('W') : first.has('X') || first.has('U');
-        if (along)
-            fail(code::unsupported_g_code,
-                 std::string(name) + " type II (the P block moves in " + (g71 ? "Z" : "X") + " too) is not supported by toolcomp", col);
-    }
-    const bool rapid_infeed = [&] {
-        const Block& b = p.blocks()[from];
-        const BlockWords first = collect_words(syntax_ ? block_words(b) : p.words(b), b.line, profile_, opts_.machine);
-        return (first.g[g_motion] >= 0 ? first.g[g_motion] : st_.motion) == 0;
-    }();
-    const ContourMoves contour_moves = read_contour(from, to);
-    const std::vector<Motion>& moves = contour_moves.moves;
-    line_ = bw.line;
-
-    // Plane coordinates of the cut: G71 (u, v) = (Z, X), the ZX plane's (a, b); G72 (X, Z),
-    // mirrored, so its arcs turn the other way.
-    auto uv = [&](const Vec3& q) { return g71 ? Vec2(q.z(), q.x()) : Vec2(q.x(), q.z()); };
-    cycles::Contour contour;
-    contour.start = uv(contour_moves.first_end);
-    for (const Motion& m : moves) {
-        cycles::ContourPiece piece{uv(m.end), uv(m.center), 0, m.line};
-        if (m.is_arc()) piece.dir = (m.kind == MotionKind::arc_ccw ? 1 : -1) * (g71 ? 1 : -1);
-        contour.pieces.push_back(piece);
-    }
+    const BlockWords first = first_block(from, col);
+    if (g71 ? first.has('Z') || first.has('W') : first.has('X') || first.has('U'))
+        fail(code::unsupported_g_code,
+             std::string(name) + " type II (the P block moves in " + (g71 ? "Z" : "X") + " too) is not supported by toolcomp", col);
     cycles::Roughing r;
-    r.start = uv(pos_.head<3>());
+    r.rapid_infeed = (first.g[g_motion] >= 0 ? first.g[g_motion] : st_.motion) == 0;
+    const cycles::Contour contour = cycle_contour(from, to, g71);
+    line_ = bw.line;
+    r.start = turning_uv(pos_.head<3>(), g71);
     r.depth = depth;
     r.retract = escape;
     const double du = word(bw, 'U') / 2, dw = word(bw, 'W');  // U: a diameter
     r.allowance = g71 ? Vec2(dw, du) : Vec2(du, dw);
-    r.rapid_infeed = rapid_infeed;
     std::vector<cycles::Step> steps;
     try {
         steps = cycles::rough_type1(contour, r);
@@ -183,9 +157,87 @@ void Interp::roughing_cycle(const BlockWords& bw, int code) {
         if (e.line) line_ = e.line;
         fail(e.code, e.message, e.line ? 0 : col);
     }
+    emit_steps(steps, g71, bw, col);
+    // A contour that follows its cycle is the cycle's: the program goes on after it.
+    if (from == frames_.back().pc) frames_.back().pc = to + 1;
+}
+
+// G73 U(Δi) W(Δk) R(d); G73 P Q U(Δu) W(Δw) F: d passes along the contour, the first shifted
+// by Δi + Δu/2 in X (radius) and Δk + Δw in Z, the last by the allowance, those between
+// evenly; each from the start point and back to it. The contour need not be monotonic.
+void Interp::pattern_cycle(const BlockWords& bw) {
+    const int col = bw.g_column[g_nonmodal];
+    for (char c : {'X', 'Z', 'I', 'K', 'D'})
+        if (bw.has(c)) fail(code::unsupported_word, std::string(1, c) + " in G73 is not supported by toolcomp", bw[c].column);
+    if (!bw.has('P') && !bw.has('Q')) {  // G73 U(Δi) W(Δk) R(d)
+        if (bw.has('U')) pattern_.relief_x = bw['U'].value;
+        if (bw.has('W')) pattern_.relief_z = bw['W'].value;
+        if (bw.has('R')) {
+            const double d = bw['R'].value;
+            if (d != std::floor(d) || d < 1 || d > 100000)
+                fail(code::cycle_bad_value, "PS0062 ILLEGAL COMMAND IN G71-G76: G73 R is the number of divisions, 1 or more",
+                     bw['R'].column);
+            pattern_.divisions = static_cast<int>(d);
+        }
+        return;
+    }
+    if (bw.has('R')) fail(code::unsupported_word, "R in G73 with P and Q is not supported by toolcomp", bw['R'].column);
+    if (comp_on())
+        fail(code::unsupported_g_code, "G73 with tool nose radius compensation on is not supported by toolcomp (G40 first; "
+                                       "G41/G42 in the contour act in G70)", col);
+    if (st_.plane != Plane::zx) fail(code::cycle_bad_value, "PS0062 ILLEGAL COMMAND IN G71-G76: G73 needs the ZX plane (G18)", col);
+    if (feed_ <= 0) fail(code::zero_feed, "Cannot feed with zero feed rate in G73", col);
+    check_feed_per_rev(col);
+    const auto [from, to] = contour_blocks(bw);
+    const BlockWords first = first_block(from, col);
+    const bool rapid = (first.g[g_motion] >= 0 ? first.g[g_motion] : st_.motion) == 0;
+    const cycles::Contour contour = cycle_contour(from, to, true);
+    line_ = bw.line;
+    const Vec2 last(word(bw, 'W'), word(bw, 'U') / 2);  // (Z, X radius)
+    const Vec2 relief(pattern_.relief_z, pattern_.relief_x);
+    std::vector<cycles::Step> steps;
+    try {
+        steps = cycles::pattern_repeat(contour, turning_uv(pos_.head<3>(), true), last + relief, last, pattern_.divisions, rapid);
+    } catch (const cycles::CycleError& e) {
+        fail(e.code, e.message, col);
+    }
+    emit_steps(steps, true, bw, col);
+    if (from == frames_.back().pc) frames_.back().pc = to + 1;
+}
+
+// The P block of G71-G73: G00 or G01 (given, or the mode in force).
+BlockWords Interp::first_block(std::size_t from, int col) {
+    const Program& p = frames_.back().prog();
+    const Block& b = p.blocks()[from];
+    BlockWords first = collect_words(syntax_ ? block_words(b) : p.words(b), b.line, profile_, opts_.machine);
+    const int motion = first.g[g_motion] >= 0 ? first.g[g_motion] : st_.motion;
+    if (motion != 0 && motion != 10)
+        fail(code::cycle_first_block, "PS0065 ILLEGAL COMMAND IN G71-G73: the P block must be G00 or G01", col);
+    return first;
+}
+
+// Plane coordinates of a turning cycle's cut: G71 and G73 (u, v) = (Z, X), the ZX plane's
+// (a, b); G72 (X, Z), mirrored, so its arcs turn the other way.
+Vec2 Interp::turning_uv(const Vec3& q, bool along_z) { return along_z ? Vec2(q.z(), q.x()) : Vec2(q.x(), q.z()); }
+
+cycles::Contour Interp::cycle_contour(std::size_t from, std::size_t to, bool along_z) {
+    const ContourMoves moves = read_contour(from, to);
+    cycles::Contour contour;
+    contour.start = turning_uv(moves.first_end, along_z);
+    for (const Motion& m : moves.moves) {
+        cycles::ContourPiece piece{turning_uv(m.end, along_z), turning_uv(m.center, along_z), 0, m.line};
+        if (m.is_arc()) piece.dir = (m.kind == MotionKind::arc_ccw ? 1 : -1) * (along_z ? 1 : -1);
+        contour.pieces.push_back(piece);
+    }
+    return contour;
+}
+
+// The moves of a turning cycle, at the cycle block's line: rapid, feed (the modal F, per
+// revolution under G99), arcs.
+void Interp::emit_steps(const std::vector<cycles::Step>& steps, bool along_z, const BlockWords& bw, int col) {
     auto at = [&](const Vec2& q) {
         Vec6 e = pos_;
-        if (g71) e[2] = q.x(), e[0] = q.y();
+        if (along_z) e[2] = q.x(), e[0] = q.y();
         else e[0] = q.x(), e[2] = q.y();
         return e;
     };
@@ -198,14 +250,12 @@ void Interp::roughing_cycle(const BlockWords& bw, int code) {
         } else if (s.kind == cycles::StepKind::feed) {
             straight(MotionKind::line, end, feed_for(bw, 10, 0, end[0]));
         } else {
-            Motion m = motion_to((s.dir * (g71 ? 1 : -1)) > 0 ? MotionKind::arc_ccw : MotionKind::arc_cw, end);
+            Motion m = motion_to((s.dir * (along_z ? 1 : -1)) > 0 ? MotionKind::arc_ccw : MotionKind::arc_cw, end);
             m.center = at(s.center).head<3>();
             m.feed = feed_for(bw, 20, 0, end[0]);
             emit(m);
         }
     }
-    // A contour that follows its cycle is the cycle's: the program goes on after it.
-    if (from == frames_.back().pc) frames_.back().pc = to + 1;
 }
 
 // G70 P Q: the contour's blocks run as written (their F, S, G41/G42 now act), then the tool
