@@ -92,6 +92,7 @@ def test_macro_b_words_take_their_two_letter_abbreviations():
     ("cycles_own_group", "G21 G00 G80\nX10.\nM30\n", "axis_without_motion", 2),
     ("g53_rapid", "G21 G90 G00 X0 Y0\nG02 X10. Y0 R5. F100.\nG53 Z0\nM30\n", "g53_motion", 3),
     ("d_word_alone", "G21 G00 X0\nG43 H1 D1 Z5.\nM30\n", "unused_word", 2),
+    ("motion_beside_data_axes", "G21 G90 G01 X10. Y10. F100.\nG00 G28 X0 Y0\nX5.\nM30\n", "two_axis_codes", 2),
 ])
 def test_each_reading_is_a_profile_field(field, text, code, line):
     assert tc.run(tc.Program.parse(text, dialect="fanuc"), tools=_tools()).ok
@@ -144,3 +145,11 @@ def test_g40_right_after_a_lead_out_arc(r):
     assert res.ok
     np.testing.assert_allclose(res.path.end[res.path.line == 7][-1], [60 - r, 10, -2], atol=1e-9)
     np.testing.assert_allclose(res.path.end[-1], [70, -10, -2], atol=1e-9)
+
+
+def test_g0_beside_g28_sets_the_mode_and_g28_takes_the_axes():
+    # "G0 G28 U0. W0." (Mastercam's lathe posts), here on a mill: G28 through X0 Y0 to the G28
+    # position (machine zero), and G00 is the mode after it.
+    res = _run("G21 G90 G01 X10. Y10. F100.\nG00 G28 X0 Y0\nX5.\nM30\n")
+    np.testing.assert_allclose(res.nominal.end[1:], [[0, 0, 0], [0, 0, 0], [5, 0, 0]])
+    assert res.nominal.kind[-1] == tc.RAPID

@@ -77,7 +77,8 @@ def test_the_9_series_is_the_fanuc_lathe_with_its_differences():
         # the Fanuc readings the 9/Series excerpt does not confirm
         "call_depth_limit", "last_g_code_wins", "fanuc_g10", "dwell_x_seconds", "length_subtract_word",
         "modal_offset_numbers", "startup_feed_per_rev", "c_word_is_chamfer", "g_code_system_a", "macro_calls",
-        "m98_subprograms", "startup_motion", "cycles_own_group", "g53_rapid", "d_word_alone", "turning_cycles"}
+        "m98_subprograms", "startup_motion", "cycles_own_group", "g53_rapid", "d_word_alone", "turning_cycles",
+        "motion_beside_data_axes"}
     assert rockwell["t_format"] == 2 and rockwell["ttrc_check_codes"] and not rockwell["m98_subprograms"]
 
 

@@ -276,3 +276,57 @@ def test_g75_refusals(text, code):
     with pytest.raises(tc.ProgramError) as e:
         _lathe("G21 G18 G97 S600 M3\nG99\nG0 X42 Z-20\n" + text + "\nM30\n")
     assert (e.value.code, e.value.line) == (code, 4)
+
+
+# ---- programs as CAM posts write them ------------------------------------------------------------
+
+PROGRAMS = __import__("pathlib").Path(__file__).resolve().parents[1] / "programs" / "lathe"
+
+
+def _line_of(path, text):
+    """The 1-based line of the file that holds `text`."""
+    return next(i for i, l in enumerate(path.read_text().splitlines(), 1) if text in l)
+
+
+def _cam_tools():
+    t = tc.ToolTable()
+    t.set(tc.Tool(1, edges=[tc.CuttingEdge(radius=0.8, orientation=3)]))
+    t.set(tc.Tool(2, edges=[tc.CuttingEdge(radius=0.4, orientation=3)]))
+    return t
+
+
+@pytest.mark.parametrize("machine", ["haas-lathe", "fanuc-lathe"])
+def test_a_mastercam_fanuc_lathe_program_runs(machine):
+    # G0 T0101, G50 S3000, G96, G99 G1 Z1., the two-block G71 with G42 in the contour, G70
+    # with the finishing tool, G0 G28 U0. W0. M05 (G0 beside G28: the axis words are G28's).
+    res = tc.run(str(PROGRAMS / "spacer_mastercam_fanuc_metric.nc"), dialect="fanuc", machine=machine,
+                 tools=_cam_tools())
+    assert res.ok
+    at = _line_of(PROGRAMS / "spacer_mastercam_fanuc_metric.nc", "G71 P100")
+    g71 = res.nominal.line == at
+    # From A (radius 24, Z1), depth 2: levels 22 ... 12. The shifted contour: (10.2, 1.1),
+    # (10.2, 0.1), (12.2, -1.9), (12.2, -19.9), (18.2, -19.9), (20.2, -21.9), (20.2, -34.9),
+    # (24.2, -34.9). Level 22 meets the last face at Z-34.9; level 20 the chamfer at
+    # Z = -19.9 - (20 - 18.2) = -21.7; levels 18 ... 14 the face at Z-19.9; 12 the chamfer at
+    # Z = 0.1 - (12 - 10.2) = -1.7.
+    cuts = res.nominal.end[g71 & (res.nominal.kind == tc.LINE)][:, [0, 2]]
+    np.testing.assert_allclose(cuts[:7], [(22, -34.9), (20, -21.7), (18, -19.9), (16, -19.9), (14, -19.9),
+                                           (12, -1.7), (10.2, 0.1)], atol=1e-9)
+    # The G70 pass is compensated (G42 in the contour, tool 2's 0.4 mm nose).
+    contour = (res.path.line > at) & (res.path.line <= at + 8)
+    assert not np.allclose(res.path.end[contour], res.nominal.end[(res.nominal.line > at) & (res.nominal.line <= at + 8)])
+
+
+def test_a_fusion_360_haas_lathe_program_runs_in_inch():
+    # G20, G28 U0. / G28 W0., G50 S2500, T101, G54, G99, G96 S656, the one-block G71 with D.
+    res = tc.run(str(PROGRAMS / "flange_fusion_haas_inch.nc"), dialect="fanuc", machine="haas-lathe",
+                 tools=_cam_tools())
+    assert res.ok
+    g71 = res.nominal.line == _line_of(PROGRAMS / "flange_fusion_haas_inch.nc", "G71 P27")
+    cuts = res.nominal.end[g71 & (res.nominal.kind == tc.LINE)][:, [0, 2]] / 25.4
+    # From A (radius 1.03, Z0.1) by D0.05: levels 0.98 ... 0.48 (11 of them); 0.98 meets the
+    # last face at Z-0.795 (-0.8 + W0.005), as do 0.93 ... 0.73 (the face from radius 0.71 to
+    # 0.96); 0.68 ... 0.53 the R0.2 fillet; 0.48 the chamfer.
+    levels = 1.03 - 0.05 * np.arange(1, 12)
+    np.testing.assert_allclose(cuts[:11, 0], levels, atol=1e-9)
+    np.testing.assert_allclose(cuts[:5, 1], -0.795, atol=1e-9)

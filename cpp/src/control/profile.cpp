@@ -73,6 +73,7 @@ ControlProfile fanuc_profile(MachineKind kind) {
     p.cycles_own_group = true;
     p.startup_retract_initial = kind == MachineKind::mill;  // G98 (on the T series G98 is feed per minute)
     p.g53_rapid = true;
+    p.motion_beside_data_axes = true;
     p.d_word_alone = true;
     p.fanuc_g10 = true;
     p.dwell_x_seconds = true;
@@ -130,6 +131,7 @@ ControlProfile rockwell_profile() {
     p.cycles_own_group = plain.cycles_own_group;
     p.startup_retract_initial = plain.startup_retract_initial;
     p.g53_rapid = plain.g53_rapid;
+    p.motion_beside_data_axes = plain.motion_beside_data_axes;
     p.d_word_alone = plain.d_word_alone;
     p.fanuc_g10 = plain.fanuc_g10;
     p.dwell_x_seconds = plain.dwell_x_seconds;

@@ -243,6 +243,10 @@ struct ControlProfile {
     // conflict and axis words after G80 move; false: G80 is a motion mode of its own, axis
     // words after it are refused (LinuxCNC).
     bool cycles_own_group = false;
+    // A G00-G03 beside a code whose axis words are its data (G28, G30, G10, G92, G50) only
+    // sets the motion mode: the axis words are that code's (Fanuc, "G0 G28 U0 W0"); false:
+    // refused ("Cannot use two g codes that both use axis values", LinuxCNC).
+    bool motion_beside_data_axes = false;
     // G53 moves at rapid traverse whatever the motion mode (Fanuc); false: it needs G0 or G1
     // ("Must use g0 or g1 with g53", LinuxCNC).
     bool g53_rapid = false;

@@ -386,7 +386,7 @@ bool Interp::execute(const BlockWords& bw) {
     const bool data_axes = axes_are_data(bw);
     const bool bare = profile_.bare_motion_codes;
     if (motion_code >= 0 && motion_code != 800) {
-        if (bare ? uses_axes_group0(g0) : data_axes && axes)
+        if (bare ? uses_axes_group0(g0) : data_axes && axes && !profile_.motion_beside_data_axes)
             fail(code::two_axis_codes, "Cannot use two g codes that both use axis values", bw.g_column[g_nonmodal]);
         if (bare && !axes && motion_code != 0 && motion_code != 10 && motion_code != 20 && motion_code != 30)
             fail(code::axes_missing, "All axes missing with motion code", bw.g_column[g_motion]);
