@@ -463,3 +463,33 @@ def test_a_builder_code_beyond_the_controls_m_codes_is_refused_at_its_line():
         tc.Machine.parse('control = "linuxcnc"\nkind = "mill"\n[m_codes]\n150 = "nothing"\n200 = "nothing"\n')
     assert (e.value.code, e.value.line) == ("machine_file", 5) and "up to M199" in e.value.message
     assert 200 in tc.Machine.parse('control = "fanuc"\nkind = "mill"\n[m_codes]\n200 = "nothing"\n').m_codes
+
+
+def test_an_inch_fusion_360_haas_program_runs_on_haas_mill():
+    # Fusion 360's Haas post: G53 G0 Z0. parking, T1 M6, G43 Z0.6 H1, a G42 contour with an
+    # arc, G98 G83 pecking at two holes, G80 then Z0.6 (in G00), G53 G0 Z0. Program zero at
+    # machine (-15, -8, -20) in: the tool change position Z0 and the parking put the spindle at
+    # machine Z0, the tip a tool length below: program Z = 20 in - length.
+    m = tc.Machine.preset("haas-mill")
+    m.work_origin = (-15 * 25.4, -8 * 25.4, -20 * 25.4)
+    tools = tc.ToolTable()
+    tools.set(tc.Tool(1, edges=[tc.CuttingEdge(radius=0.25 * 25.4, length=[0.0, 0.0, 4 * 25.4])]))
+    tools.set(tc.Tool(2, edges=[tc.CuttingEdge(radius=0.125 * 25.4, length=[0.0, 0.0, 3.5 * 25.4])]))
+    path = pathlib.Path(__file__).resolve().parents[1] / "programs" / "machines" / "bracket_fusion_haas_inch.nc"
+    res = tc.run(path, tools=tools, machine=m)
+    assert res.ok and not res.diagnostics
+    inch = res.path.end / 25.4
+    lines = res.path.line
+    # The contour (0,0) (2,0), G3 about (2,0.25) to (2.25,0.25), (2.25,1.5), (0,1.5), (0,0)
+    # with G42 and r 0.25: the centre 0.25 outside, the arc at radius 0.5, the corners at the
+    # offset lines' intersections, the start-up and the last block perpendicular at their ends.
+    contour = (lines >= 19) & (lines <= 24)
+    np.testing.assert_allclose(inch[contour][:, :2], [(0, -0.25), (2, -0.25), (2.5, 0.25), (2.5, 1.75),
+                                                       (-0.25, 1.75), (-0.25, 0)], atol=1e-9)
+    # G83 down to Z-0.35 at both holes, back to the initial level Z0.2 (G98).
+    drill = (lines >= 38) & (lines <= 39)
+    assert inch[drill][:, 2].min() == pytest.approx(-0.35)
+    assert inch[lines == 38][-1, 2] == pytest.approx(0.2) and inch[lines == 39][-1, 2] == pytest.approx(0.2)
+    # G80 (line 40), then Z0.6 at rapid; G53 G0 Z0. with tool 2 (3.5 in): program Z 20 - 3.5.
+    assert res.path.kind[lines == 41][0] == tc.RAPID and inch[lines == 41][0, 2] == pytest.approx(0.6)
+    np.testing.assert_allclose(inch[-1], [1.5, 0.5, 16.5], atol=1e-9)
