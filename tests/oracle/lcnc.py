@@ -62,7 +62,9 @@ PRINT_TOL = 6e-5  # rs274 prints %.4f: half a unit of the last digit plus roundi
 RAPID, LINE, ARC_CW, ARC_CCW = 0, 1, 2, 3
 
 _PLANES = {"CANON_PLANE_XY": 17, "CANON_PLANE_XZ": 18, "CANON_PLANE_YZ": 19}
-_CALL = re.compile(r"^\s*\d+\s+N\S*\s+([A-Z_0-9]+)\((.*)\)\s*$")
+# "   8 N1006941SET_FEED_RATE(100.0000)": rs274 pads the N field to six characters, and a
+# longer block number runs into the call's name.
+_CALL = re.compile(r"^\s*\d+\s+N(?:\.+|\d+)\s*([A-Z_][A-Z_0-9]*)\((.*)\)\s*$")
 
 
 def available() -> bool:
@@ -197,12 +199,22 @@ def _floats(args: str):
 class _State:
     scale: float = 1.0                                    # mm per program unit
     plane: int = 17
-    feed: float = 0.0                                     # mm/min
+    feed: float = 0.0                                     # as programmed, mm/min or mm/rev
+    per_rev: bool = False                                 # G95: SET_FEED_MODE(0, 1)
+    speed: float = 0.0                                    # SET_SPINDLE_SPEED: rev/min (G96: surface speed)
+    css: bool = False                                     # G96: SET_SPINDLE_MODE(0 max) with max > 0
     tlo: np.ndarray = field(default_factory=lambda: np.zeros(3))
     g5x: np.ndarray = field(default_factory=lambda: np.zeros(3))
     g92: np.ndarray = field(default_factory=lambda: np.zeros(3))
     rot: float = 0.0                                      # degrees
     pos: np.ndarray = field(default_factory=lambda: np.zeros(3))   # program coords, mm
+
+    def feed_now(self):
+        """The feed in mm/min, as toolcomp's column has it: per revolution times the spindle's
+        speed; under constant surface speed the speed follows X: NaN, not compared."""
+        if not self.per_rev:
+            return self.feed
+        return np.nan if self.css else self.feed * self.speed
 
     def to_machine(self, p):
         c, s = math.cos(math.radians(self.rot)), math.sin(math.radians(self.rot))
@@ -238,6 +250,12 @@ def parse_canon(text: str) -> dict:
             st.plane = _PLANES.get(args.strip(), st.plane)
         elif name == "SET_FEED_RATE":
             st.feed = _floats(args)[0] * st.scale
+        elif name == "SET_FEED_MODE":
+            st.per_rev = _floats(args)[1] == 1
+        elif name == "SET_SPINDLE_SPEED":
+            st.speed = _floats(args)[1]
+        elif name == "SET_SPINDLE_MODE":
+            st.css = float(args.split()[-1]) > 0
         elif name in ("USE_TOOL_LENGTH_OFFSET", "SET_G5X_OFFSET", "SET_G92_OFFSET", "SET_XY_ROTATION"):
             machine = st.to_machine(st.pos)
             v = _floats(args)
@@ -255,7 +273,7 @@ def parse_canon(text: str) -> dict:
             end = np.array(v[:3]) * st.scale
             kind = RAPID if name == "STRAIGHT_TRAVERSE" else LINE
             rows.append((kind, st.pos.copy(), end, np.full(3, np.nan), 0, np.array(v[3:6]),
-                         st.tlo.copy(), np.nan if kind == RAPID else st.feed, st.plane, st.scale))
+                         st.tlo.copy(), np.nan if kind == RAPID else st.feed_now(), st.plane, st.scale))
             st.pos = end
         elif name == "ARC_FEED":
             v = _floats(args)
@@ -267,7 +285,7 @@ def parse_canon(text: str) -> dict:
             center = np.array(_plane_to_xyz(st.plane, c1, c2, 0.0))
             center[normal] = st.pos[normal]
             rows.append((ARC_CW if turn < 0 else ARC_CCW, st.pos.copy(), end, center, turn,
-                         np.array(v[6:9]), st.tlo.copy(), st.feed, st.plane, st.scale))
+                         np.array(v[6:9]), st.tlo.copy(), st.feed_now(), st.plane, st.scale))
             st.pos = end
     n = len(rows)
     col = lambda i: [r[i] for r in rows]  # noqa: E731

@@ -155,3 +155,15 @@ def test_compare_accepts_split_full_turns():
     tc_one["end"] = np.array([[10.0, 0, -2]])
     with pytest.raises(compare.Mismatch):           # one revolution is not two
         compare.compare(rs, tc_one)
+
+
+def test_long_block_numbers_and_feed_per_revolution(tmp_path):
+    # rs274 pads N to six characters: "N1006941SET_FEED_RATE(...)" runs into the name. G95:
+    # F0.2 mm/rev at S1000 is 200 mm/min, toolcomp's column; under G96 the speed follows X
+    # and the feed is not compared (NaN).
+    p = tmp_path / "n.ngc"
+    p.write_text("G21 G90 G95 S1000 M3\nN1006941 G1 X10 F0.2\nN5 G94 X20 F100\nG95 G96 S100 D2000 X30 F0.1\nM2\n")
+    rs = lcnc.nominal(str(p))
+    np.testing.assert_allclose(rs["end"][:, 0], [10, 20, 30])
+    np.testing.assert_allclose(rs["feed"][:2], [200, 100])
+    assert np.isnan(rs["feed"][2])
