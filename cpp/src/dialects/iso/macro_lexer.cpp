@@ -157,7 +157,14 @@ void LineLexer::o_word() {
             st.value = bracket(false);
             break;
         case Stmt::o_call:
-            while (!at_end() && s_[i_] == '[') {
+            // LinuxCNC reads comments between the arguments: o<s> call [1] (first) [2].
+            for (;;) {
+                while (!at_end() && (s_[i_] == ' ' || s_[i_] == '\t')) ++i_;
+                if (!at_end() && s_[i_] == '(') {
+                    comment_paren();
+                    continue;
+                }
+                if (at_end() || s_[i_] != '[') break;
                 if (st.args.size() == 30) fail(code::too_many_arguments, "Too many subroutine parameters");
                 st.args.push_back(expression(true));
             }
