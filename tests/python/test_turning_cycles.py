@@ -330,3 +330,13 @@ def test_a_fusion_360_haas_lathe_program_runs_in_inch():
     levels = 1.03 - 0.05 * np.arange(1, 12)
     np.testing.assert_allclose(cuts[:11, 0], levels, atol=1e-9)
     np.testing.assert_allclose(cuts[:5, 1], -0.795, atol=1e-9)
+
+
+def test_the_contours_feed_acts_in_g70_only():
+    # F50 in the contour: the roughing keeps the cycle's F200; G70 cuts the contour at F50
+    # from the block that gives it (the P block's rapid has none).
+    res = _lathe(OD.replace("G1 Z-20\n", "G1 Z-20 F50\n"))
+    g71 = (res.nominal.line == 7) & (res.nominal.kind == tc.LINE)
+    assert set(res.nominal.feed[g71]) == {200.0}
+    g70 = np.isin(res.nominal.line, [9, 10, 11, 12])
+    assert set(res.nominal.feed[g70]) == {50.0}

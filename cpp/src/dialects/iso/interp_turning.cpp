@@ -52,7 +52,7 @@ Interp::ContourMoves Interp::read_contour(std::size_t from, std::size_t to) {
     const Block* block = block_;
     const ModalState st = st_;
     const Vec6 pos = pos_;
-    const double feed = feed_, speed = speed_;
+    const double feed = feed_, speed = speed_, css_max = css_max_;
     const bool css = css_, arc_not_allowed = arc_not_allowed_, comp_moved = comp_moved_;
     const RadiusRequest radius = radius_;
     const std::size_t moves = moves_;
@@ -92,7 +92,7 @@ Interp::ContourMoves Interp::read_contour(std::size_t from, std::size_t to) {
     block_ = block;
     st_ = st;
     pos_ = pos;
-    feed_ = feed, speed_ = speed;
+    feed_ = feed, speed_ = speed, css_max_ = css_max;
     css_ = css, arc_not_allowed_ = arc_not_allowed, comp_moved_ = comp_moved;
     radius_ = radius;
     moves_ = moves;
