@@ -299,6 +299,8 @@ void bind_run(py::module_& m) {
                        "canned cycles return to the initial level (G98) at start (Fanuc mill); False: G99 (LinuxCNC)")
         .def_readwrite("motion_beside_data_axes", &ControlProfile::motion_beside_data_axes,
                        "G00-G03 beside G28/G30/G10/G92/G50 only sets the mode, the axis words are that code's (Fanuc)")
+        .def_readwrite("g84_axes_warning", &ControlProfile::g84_axes_warning,
+                       "warn at G84 in G18/G19: LinuxCNC 2.9 feeds that tap along the plane's axes out of order")
         .def_readwrite("g53_rapid", &ControlProfile::g53_rapid,
                        "G53 moves at rapid whatever the motion mode (Fanuc); False: it needs G0 or G1 (LinuxCNC)")
         .def_readwrite("d_word_alone", &ControlProfile::d_word_alone,

@@ -269,6 +269,7 @@ class ControlProfile:
     startup_motion: int
     cycles_own_group: bool
     g53_rapid: bool
+    g84_axes_warning: bool
     motion_beside_data_axes: bool
     startup_retract_initial: bool
     d_word_alone: bool

@@ -167,3 +167,18 @@ def test_long_block_numbers_and_feed_per_revolution(tmp_path):
     np.testing.assert_allclose(rs["end"][:, 0], [10, 20, 30])
     np.testing.assert_allclose(rs["feed"][:2], [200, 100])
     assert np.isnan(rs["feed"][2])
+
+
+@pytest.mark.parametrize("plane, block", [("G18", "G99 G84 X5 Z20 Y-8 R2 F100"), ("G19", "G99 G84 Y5 Z7 X-8 R2 F100")])
+def test_g84_off_the_xy_plane_is_reported_where_linuxcnc_feeds(plane, block, tmp_path):
+    # LinuxCNC 2.9 feeds G84 in G18/G19 to the plane's coordinates in another axis order; toolcomp
+    # keeps the tap on the hole's axis and its warning names the point rs274 feeds to.
+    import toolcomp as tc
+    p = tmp_path / "g84.ngc"
+    p.write_text(f"G21 {plane} G90 G94 S500 M3\nG0 X0 Y0 Z0\n{block}\nG80\nM2\n")
+    rs = lcnc.nominal(str(p))
+    feed_to = rs["end"][rs["kind"] == lcnc.LINE][0]
+    res = tc.run(tc.Program.read(str(p)))
+    (w,) = [d for d in res.diagnostics if d.code == "g84_off_axis"]
+    assert w.line == 3
+    assert "X%.4f Y%.4f Z%.4f" % tuple(feed_to) in w.message

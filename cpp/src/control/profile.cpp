@@ -56,6 +56,7 @@ ControlProfile linuxcnc_profile(MachineKind kind) {
     p.errors_at_outermost_call = true;
     p.abort_comment = true;
     p.g52_offset = true;
+    p.g84_axes_warning = true;
     p.fixed_m_codes.insert(p.fixed_m_codes.end(), {98, 99, 48, 49, 50, 51, 52, 53, 60, 61, 62, 63, 64, 65, 66, 67,
                                                    68, 70, 71, 72, 73});
     return p;

@@ -247,6 +247,10 @@ struct ControlProfile {
     // sets the motion mode: the axis words are that code's (Fanuc, "G0 G28 U0 W0"); false:
     // refused ("Cannot use two g codes that both use axis values", LinuxCNC).
     bool motion_beside_data_axes = false;
+    // G84 in G18 / G19 is reported: LinuxCNC 2.9 feeds its tap to the plane's coordinates in
+    // another axis order (a warning with the point it goes to; the path keeps the tap on the
+    // hole's axis).
+    bool g84_axes_warning = false;
     // G53 moves at rapid traverse whatever the motion mode (Fanuc); false: it needs G0 or G1
     // ("Must use g0 or g1 with g53", LinuxCNC).
     bool g53_rapid = false;

@@ -3,6 +3,7 @@
 // the XY move at the current level, the plunge to R, the cycle's own moves, the retract to
 // the clearance level (G98: the initial level, G99: R), repeated L times.
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 
 #include "interp.hpp"
@@ -131,6 +132,19 @@ void Interp::cycle(const BlockWords& bw, int code) {
         switch (code) {
             case 740:
             case 840:  // tapping: feed in, reverse the spindle, feed straight out to clearance
+                if (code == 840 && st_.plane != Plane::xy && profile_.g84_axes_warning) {
+                    // LinuxCNC 2.9 feeds its G84 in G18 / G19 to the plane's coordinates and
+                    // the depth in another axis order (its own test records it): the tap
+                    // would go elsewhere. toolcomp keeps the tap on the hole's axis and says so.
+                    const bool g18 = st_.plane == Plane::zx;
+                    const double x = g18 ? bottom : b, y = g18 ? a : bottom, z = g18 ? b : a;
+                    char msg[240];
+                    std::snprintf(msg, sizeof msg,
+                                  "LinuxCNC 2.9 feeds G84 in G%d to X%.4f Y%.4f Z%.4f (the plane's axes out of "
+                                  "order); toolcomp returns the tap along the hole's axis",
+                                  g18 ? 18 : 19, x, y, z);
+                    diags_.push_back({code::g84_off_axis, Severity::warning, msg, {line_, 0, file_name()}});
+                }
                 fed(at(a, b, bottom));
                 fed(at(a, b, clear));
                 break;
