@@ -222,6 +222,11 @@ private:
     void single_cycle(const BlockWords& bw, int code);      // G90, G92, G94
     double thread_feed(double x_end) const;                 // F as the lead: mm/min at X (radius)
     void threading_cycle(const BlockWords& bw);             // G76 (interp_threading.cpp)
+    // A lathe cycle's P or Q written in least input increments: its whole number (0 when the
+    // block has none), refused (PS0062) unless whole and 0 or more; one increment in program units.
+    double whole_count(const BlockWords& bw, char c, const char* cycle) const;
+    double least_increment() const { return st_.inch ? 1e-4 : 1e-3; }
+    double spindle_rpm(double x_end) const;  // S, or under G96 the speed at X (radius), clamped
     struct Threading {
         int finishing = 1, chamfer = 0, angle = 60;  // G76 P(m)(r)(a)
         double min_depth = 0, allowance = 0;         // Q(Δdmin), R(d), program units
@@ -232,6 +237,7 @@ private:
     void finishing_cycle(const BlockWords& bw);
     void pattern_cycle(const BlockWords& bw);              // G73
     BlockWords first_block(std::size_t from, int col);     // the P block of G71-G73 (G00/G01)
+    void contour_cycle_can_start(const char* name, int col) const;
     static Vec2 turning_uv(const Vec3& q, bool along_z);
     cycles::Contour cycle_contour(std::size_t from, std::size_t to, bool along_z);
     void emit_steps(const std::vector<cycles::Step>& steps, bool along_z, const BlockWords& bw, int col);

@@ -38,15 +38,7 @@ void Interp::peck_cycle(const BlockWords& bw, int code) {
     if (feed_ <= 0) fail(code::zero_feed, "Cannot feed with zero feed rate in " + name, col);
     check_feed_per_rev(col);
     if (comp_on()) fail(code::unsupported_g_code, name + " with tool nose radius compensation on is not supported by toolcomp", col);
-    const double increment = st_.inch ? 1e-4 : 1e-3;
-    auto whole = [&](char c) {
-        if (!bw.has(c)) return 0.0;
-        const double v = bw[c].value;
-        if (v != std::floor(v) || v < 0)
-            fail(code::cycle_bad_value, "PS0062 ILLEGAL COMMAND IN G71-G76: " + name + " " + c +
-                                            " is a whole number of least increments, 0 or more", bw[c].column);
-        return v * increment;
-    };
+    auto whole = [&](char c) { return whole_count(bw, c, name.c_str()) * least_increment(); };
     // Peck along axis p, grooves side by side along axis s (X = 0, Z = 2).
     const int p = g75 ? 0 : 2, s = g75 ? 2 : 0;
     const double peck = whole(g75 ? 'P' : 'Q'), shift = whole(g75 ? 'Q' : 'P');

@@ -12,7 +12,6 @@
 #include <cmath>
 
 #include "interp.hpp"
-#include "toolcomp/motion/spindle.hpp"
 #include "toolcomp/program/codes.hpp"
 
 namespace toolcomp::iso {
@@ -20,12 +19,7 @@ namespace toolcomp::iso {
 // F is the lead (mm or inch per revolution) whatever G98/G99 say; the spindle's speed is S
 // (G97), or under G96 the speed at X, held by G50 S.
 double Interp::thread_feed(double x_end) const {
-    double rpm = speed_;
-    if (css_) {
-        rpm = css_rpm(speed_ * (st_.inch ? 304.8 : 1000.0), std::fabs(x_end) * scale());
-        if (css_max_ > 0) rpm = std::min(rpm, css_max_);
-        if (spindle_clamp_ > 0) rpm = std::min(rpm, spindle_clamp_);
-    }
+    const double rpm = spindle_rpm(x_end);
     return std::isfinite(rpm) ? feed_ * rpm : std::nan("");
 }
 

@@ -67,18 +67,23 @@ double Interp::feed_for(const BlockWords& bw, int code, double length, double x_
                      code == 10 ? "F word missing with inverse time g1 move" : "F word missing with inverse time arc move");
             return std::max(profile_.inverse_time_min_rate * scale(), bw['F'].value * length);
         case 950: {  // units per revolution
-            if (!css_) return feed_ * speed_;
-            // G96: the spindle turns to keep the surface speed at the tool's radius, taken
-            // where the move ends, no faster than D. At the axis without D: not known.
-            const double r = std::fabs(x_end) * scale();  // mm
-            double rpm = css_rpm(speed_ * (st_.inch ? 304.8 : 1000.0), r);  // S in ft/min or m/min
-            if (css_max_ > 0) rpm = std::min(rpm, css_max_);
-            if (spindle_clamp_ > 0) rpm = std::min(rpm, spindle_clamp_);
+            const double rpm = spindle_rpm(x_end);
             return std::isfinite(rpm) ? feed_ * rpm : std::nan("");
         }
         default:
             return feed_;
     }
+}
+
+// G96: the spindle turns to keep the surface speed at the tool's radius, taken where the
+// move ends, no faster than D (or G50 S). At the axis without a limit: not known (inf).
+double Interp::spindle_rpm(double x_end) const {
+    if (!css_) return speed_;
+    const double r = std::fabs(x_end) * scale();  // mm
+    double rpm = css_rpm(speed_ * (st_.inch ? 304.8 : 1000.0), r);  // S in ft/min or m/min
+    if (css_max_ > 0) rpm = std::min(rpm, css_max_);
+    if (spindle_clamp_ > 0) rpm = std::min(rpm, spindle_clamp_);
+    return rpm;
 }
 
 Motion Interp::motion_to(MotionKind kind, const Vec6& end) const {

@@ -19,16 +19,19 @@
 
 namespace toolcomp::iso {
 
+double Interp::whole_count(const BlockWords& bw, char c, const char* cycle) const {
+    if (!bw.has(c)) return 0.0;
+    const double v = bw[c].value;
+    if (v != std::floor(v) || v < 0)
+        fail(code::cycle_bad_value, std::string("PS0062 ILLEGAL COMMAND IN G71-G76: ") + cycle + " " + c +
+                                        " is a whole number of least increments, 0 or more", bw[c].column);
+    return v;
+}
+
 void Interp::threading_cycle(const BlockWords& bw) {
     const int col = bw.g_column[g_nonmodal];
-    const double increment = st_.inch ? 1e-4 : 1e-3;  // program units per least increment
-    auto whole = [&](char c) {
-        const double v = bw[c].value;
-        if (v != std::floor(v) || v < 0)
-            fail(code::cycle_bad_value, std::string("PS0062 ILLEGAL COMMAND IN G71-G76: G76 ") + c +
-                                            " is a whole number of least increments", bw[c].column);
-        return v;
-    };
+    const double increment = least_increment();
+    auto whole = [&](char c) { return whole_count(bw, c, "G76"); };
     for (char c : {'I', 'K', 'D', 'A', 'Y'})
         if (bw.has(c)) fail(code::unsupported_word, std::string(1, c) + " in G76 is not supported by toolcomp (the one-block form)", bw[c].column);
     const bool end_words = bw.has('X') || bw.has('U') || bw.has('Z') || bw.has('W');

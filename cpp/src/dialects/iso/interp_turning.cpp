@@ -124,12 +124,7 @@ void Interp::roughing_cycle(const BlockWords& bw, int code) {
         return;
     }
     if (bw.has('R')) fail(code::unsupported_word, std::string("R in ") + name + " with P and Q is not supported by toolcomp (R1: type II)", bw['R'].column);
-    if (comp_on())
-        fail(code::unsupported_g_code, std::string(name) + " with tool nose radius compensation on is not supported by toolcomp (G40 first; G41/G42 in the contour act in G70)",
-             col);
-    if (st_.plane != Plane::zx) fail(code::cycle_bad_value, std::string("PS0062 ILLEGAL COMMAND IN G71-G76: ") + name + " needs the ZX plane (G18)", col);
-    if (feed_ <= 0) fail(code::zero_feed, std::string("Cannot feed with zero feed rate in ") + name, col);
-    check_feed_per_rev(col);
+    contour_cycle_can_start(name, col);
     double depth = turn_depth_;
     if (bw.has('D')) depth = bw['D'].value;
     if (!(depth > 0)) fail(code::cycle_bad_value, "PS0062 ILLEGAL COMMAND IN G71-G76: no depth of cut (U in the first block, or D)", col);
@@ -182,12 +177,7 @@ void Interp::pattern_cycle(const BlockWords& bw) {
         return;
     }
     if (bw.has('R')) fail(code::unsupported_word, "R in G73 with P and Q is not supported by toolcomp", bw['R'].column);
-    if (comp_on())
-        fail(code::unsupported_g_code, "G73 with tool nose radius compensation on is not supported by toolcomp (G40 first; "
-                                       "G41/G42 in the contour act in G70)", col);
-    if (st_.plane != Plane::zx) fail(code::cycle_bad_value, "PS0062 ILLEGAL COMMAND IN G71-G76: G73 needs the ZX plane (G18)", col);
-    if (feed_ <= 0) fail(code::zero_feed, "Cannot feed with zero feed rate in G73", col);
-    check_feed_per_rev(col);
+    contour_cycle_can_start("G73", col);
     const auto [from, to] = contour_blocks(bw);
     const BlockWords first = first_block(from, col);
     const bool rapid = (first.g[g_motion] >= 0 ? first.g[g_motion] : st_.motion) == 0;
@@ -203,6 +193,17 @@ void Interp::pattern_cycle(const BlockWords& bw) {
     }
     emit_steps(steps, true, bw, col);
     if (from == frames_.back().pc) frames_.back().pc = to + 1;
+}
+
+// What G71-G73 need to start: no nose radius compensation on, the ZX plane, a feed.
+void Interp::contour_cycle_can_start(const char* name, int col) const {
+    if (comp_on())
+        fail(code::unsupported_g_code, std::string(name) + " with tool nose radius compensation on is not supported by "
+                                       "toolcomp (G40 first; G41/G42 in the contour act in G70)", col);
+    if (st_.plane != Plane::zx)
+        fail(code::cycle_bad_value, std::string("PS0062 ILLEGAL COMMAND IN G71-G76: ") + name + " needs the ZX plane (G18)", col);
+    if (feed_ <= 0) fail(code::zero_feed, std::string("Cannot feed with zero feed rate in ") + name, col);
+    check_feed_per_rev(col);
 }
 
 // The P block of G71-G73: G00 or G01 (given, or the mode in force).
