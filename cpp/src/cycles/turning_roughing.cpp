@@ -2,27 +2,13 @@
 
 #include <cmath>
 
+#include "contour_math.hpp"
 #include "toolcomp/program/codes.hpp"
 
 namespace toolcomp::cycles {
 
 namespace {
-constexpr double kEps = 1e-9;  // program units
-constexpr double kPi = 3.14159265358979323846;
-
-double sign_of(double x) { return x > kEps ? 1.0 : x < -kEps ? -1.0 : 0.0; }
-
-// The angle of p about c, and the sweep from angle a0 to a in direction dir, in [0, 2 pi).
-double angle_of(const Vec2& p, const Vec2& c) { return std::atan2(p.y() - c.y(), p.x() - c.x()); }
-double swept(double a0, double a, int dir) {
-    double d = dir > 0 ? a - a0 : a0 - a;
-    d = std::fmod(d, 2 * kPi);
-    return d < 0 ? d + 2 * kPi : d;
-}
-
-[[noreturn]] void not_monotonic(int line) {
-    throw CycleError{code::cycle_not_monotonic, "PS0064 THE FINISHING SHAPE IS NOT A MONOTONOUS CHANGE", line};
-}
+constexpr double kEps = kContourEps;
 
 // Type I: from `from`, along the piece, u moves only in du and v only in dv (or stands).
 void check_monotonic(const Vec2& from, const ContourPiece& p, double du, double dv) {
@@ -71,20 +57,28 @@ double meet(const Contour& c, double level, double dv) {
 }
 }  // namespace
 
-std::vector<Step> rough_type1(const Contour& contour, const Roughing& r) {
+void check_roughing(const Contour& contour, const Roughing& r) {
     if (!(r.depth > 0) || !std::isfinite(r.depth))
         throw CycleError{code::cycle_bad_value, "PS0062 ILLEGAL COMMAND IN G71-G76: the depth of cut must be above 0"};
     if (!(r.retract >= 0) || !std::isfinite(r.retract))
         throw CycleError{code::cycle_bad_value, "PS0062 ILLEGAL COMMAND IN G71-G76: the escape amount must be 0 or more"};
     if (contour.pieces.empty())
         throw CycleError{code::cycle_bad_value, "PS0062 ILLEGAL COMMAND IN G71-G76: the contour has no element after its first block"};
-    // The contour shifted by the finishing allowance.
-    Contour c = contour;
-    c.start += r.allowance;
-    for (ContourPiece& p : c.pieces) {
-        p.end += r.allowance;
-        p.center += r.allowance;
-    }
+}
+
+std::vector<Step> rough_type1(const Contour& contour, const Roughing& r) {
+    check_roughing(contour, r);
+    // The contour shifted by the allowances: what the levels leave, then the finishing allowance.
+    auto shifted = [&](const Vec2& by) {
+        Contour c = contour;
+        c.start += by;
+        for (ContourPiece& p : c.pieces) {
+            p.end += by;
+            p.center += by;
+        }
+        return c;
+    };
+    const Contour c = shifted(r.allowance + r.rough_allowance);
     const Vec2 a = r.start;
     const double dv = sign_of(contour.start.y() - a.y());  // the passes step towards the contour's start
     const double du = sign_of(c.pieces.back().end.x() - c.start.x());
@@ -115,8 +109,9 @@ std::vector<Step> rough_type1(const Contour& contour, const Roughing& r) {
         out.push_back({StepKind::rapid, Vec2(end - du * r.retract, level - dv * r.retract)});
         out.push_back({StepKind::rapid, Vec2(a.x(), level - dv * r.retract)});
     }
-    out.push_back({infeed, c.start, Vec2::Zero(), 0, c.pieces.front().line});
-    for (const ContourPiece& p : c.pieces)
+    const Contour f = shifted(r.allowance);
+    out.push_back({infeed, f.start, Vec2::Zero(), 0, f.pieces.front().line});
+    for (const ContourPiece& p : f.pieces)
         out.push_back({p.dir == 0 ? StepKind::feed : StepKind::arc, p.end, p.center, p.dir, p.line});
     out.push_back({StepKind::rapid, a});
     return out;

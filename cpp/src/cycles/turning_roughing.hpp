@@ -1,5 +1,5 @@
 #pragma once
-// Stock removal of a lathe's roughing cycles (Fanuc G71 / G72, type I): the passes that cut
+// Stock removal of a lathe's roughing cycles (Fanuc G71 / G72, types I and II): the passes that cut
 // a finishing contour out of the stock between it and the start point. Dialect-free: the
 // interpreter reads the cycle's words and the contour's blocks; this computes the moves.
 //
@@ -43,6 +43,7 @@ struct Roughing {
     double depth = 0;               // depth of cut of a pass (Δd), > 0
     double retract = 0;             // the escape after each pass, at 45 degrees (e), >= 0
     Vec2 allowance = Vec2::Zero();  // finishing allowance: the contour is shifted by it
+    Vec2 rough_allowance = Vec2::Zero();  // more left by the levels (Haas I, K), taken by the contour pass
     bool rapid_infeed = true;       // the P block is G00: the passes start at rapid, else at feed
     std::size_t max_passes = 1000000;
 };
@@ -62,6 +63,16 @@ struct CycleError {
 // shifted contour (what the passes left, at most `depth`, and an even allowance) and a
 // rapid back to the start point. Throws CycleError.
 std::vector<Step> rough_type1(const Contour& contour, const Roughing& r);
+
+// Type II: the contour's v may turn back (pockets), its u never. Each level cuts where the
+// boundary (the line from the start point to the contour's first point, then the contour)
+// lies beyond it; a pass goes down the wall to the level, cuts to where the contour rises
+// to it, follows the contour back up to the level before, retracts by `retract` across the
+// cut and returns over its start at rapid. Where a level is split by a hump, the pockets
+// are roughed one after the other, each to its bottom. Then one pass along the shifted
+// contour from the start point and a rapid back to it (above the stock first). Throws
+// CycleError.
+std::vector<Step> rough_type2(const Contour& contour, const Roughing& r);
 
 // Pattern repeating (G73): `passes` passes along the contour, the first shifted by `first`,
 // the last by `last`, the ones between evenly; each from the start point to the shifted

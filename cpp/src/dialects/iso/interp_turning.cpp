@@ -109,12 +109,12 @@ void Interp::roughing_cycle(const BlockWords& bw, int code) {
     const int col = bw.g_column[g_nonmodal];
     const bool g71 = code == 710;
     const char name[] = {'G', '7', g71 ? '1' : '2', '\0'};
-    for (char c : {'X', 'Z', 'I', 'K'})
+    for (char c : {'X', 'Z'})
         if (bw.has(c))
             fail(code::unsupported_word, std::string(1, c) + " in " + name + " is not supported by toolcomp", bw[c].column);
     if (!bw.has('P') && !bw.has('Q')) {  // G71 U(depth) R(escape) / G72 W(depth) R(escape)
         const char depth = g71 ? 'U' : 'W';
-        if (bw.has(g71 ? 'W' : 'U') || bw.has('D'))
+        if (bw.has(g71 ? 'W' : 'U') || bw.has('D') || bw.has('I') || bw.has('K'))
             fail(code::unsupported_word, std::string(name) + " without P and Q reads " + depth + " (the depth of cut) and R (the escape)",
                  col);
         if (bw.has(depth)) turn_depth_ = bw[depth].value;
@@ -123,7 +123,9 @@ void Interp::roughing_cycle(const BlockWords& bw, int code) {
             fail(code::cycle_bad_value, "PS0062 ILLEGAL COMMAND IN G71-G76: the depth of cut must be above 0", bw[depth].column);
         return;
     }
-    if (bw.has('R')) fail(code::unsupported_word, std::string("R in ") + name + " with P and Q is not supported by toolcomp (R1: type II)", bw['R'].column);
+    if (bw.has('R') && bw['R'].value != 1)
+        fail(code::cycle_bad_value, std::string("PS0062 ILLEGAL COMMAND IN G71-G76: R in ") + name +
+                                        " with P and Q selects type II (R1)", bw['R'].column);
     contour_cycle_can_start(name, col);
     double depth = turn_depth_;
     if (bw.has('D')) depth = bw['D'].value;
@@ -131,11 +133,10 @@ void Interp::roughing_cycle(const BlockWords& bw, int code) {
     const double escape = turn_escape_ >= 0 ? turn_escape_ : profile_.turning_escape / scale();
     const auto [from, to] = contour_blocks(bw);
 
-    // The P block: G00 or G01, and in type I only the stepping axis (X for G71, Z for G72).
+    // The P block: G00 or G01; type II when it has the cutting axis too (X for G71, Z for
+    // G72: its word need not move it), or with R1 (Haas in YASNAC mode).
     const BlockWords first = first_block(from, col);
-    if (g71 ? first.has('Z') || first.has('W') : first.has('X') || first.has('U'))
-        fail(code::unsupported_g_code,
-             std::string(name) + " type II (the P block moves in " + (g71 ? "Z" : "X") + " too) is not supported by toolcomp", col);
+    const bool type2 = bw.has('R') || (g71 ? first.has('Z') || first.has('W') : first.has('X') || first.has('U'));
     cycles::Roughing r;
     r.rapid_infeed = (first.g[g_motion] >= 0 ? first.g[g_motion] : st_.motion) == 0;
     const cycles::Contour contour = cycle_contour(from, to, g71);
@@ -145,9 +146,11 @@ void Interp::roughing_cycle(const BlockWords& bw, int code) {
     r.retract = escape;
     const double du = word(bw, 'U') / 2, dw = word(bw, 'W');  // U: a diameter
     r.allowance = g71 ? Vec2(dw, du) : Vec2(du, dw);
+    const double ri = word(bw, 'I'), rk = word(bw, 'K');  // Haas: rough allowances (I a radius)
+    r.rough_allowance = g71 ? Vec2(rk, ri) : Vec2(ri, rk);
     std::vector<cycles::Step> steps;
     try {
-        steps = cycles::rough_type1(contour, r);
+        steps = type2 ? cycles::rough_type2(contour, r) : cycles::rough_type1(contour, r);
     } catch (const cycles::CycleError& e) {
         if (e.line) line_ = e.line;
         fail(e.code, e.message, e.line ? 0 : col);
