@@ -306,9 +306,11 @@ void bind_run(py::module_& m) {
         .def_readwrite("d_word_alone", &ControlProfile::d_word_alone,
                        "a D word without G41/G42 sets the D number of the next G41/G42 (Fanuc)")
         .def_readwrite("turning_cycles", &ControlProfile::turning_cycles,
-                       "the Fanuc T series' G70 finishing and G71/G72 stock removal cycles (type I)")
+                       "the Fanuc T series' lathe cycles G70-G76, G90/G92/G94 and G32")
         .def_readwrite("turning_escape", &ControlProfile::turning_escape,
                        "the escape of a G71/G72 pass when the cycle gives no R, mm (Fanuc parameter 5133, Haas setting 73)")
+        .def_readwrite("roughing_nose_allowance", &ControlProfile::roughing_nose_allowance,
+                       "G41/G42 in a G71/G72 contour: the roughing passes leave the nose radius more allowance (Haas)")
         .def_readwrite("g52_offset", &ControlProfile::g52_offset,
                        "G52 offsets all coordinate systems as LinuxCNC runs it; False: refused (not run)")
         .def_readwrite("macro_calls", &ControlProfile::macro_calls,

@@ -275,6 +275,7 @@ class ControlProfile:
     d_word_alone: bool
     turning_cycles: bool
     turning_escape: float
+    roughing_nose_allowance: bool
     g52_offset: bool
     macro_calls: bool
     m98_subprograms: bool

@@ -183,7 +183,6 @@ def test_g70_with_nose_radius_compensation_cuts_as_the_contour_written_out():
     (("G71 P10 Q20", "G71 P10"), "cycle_p_q_missing", 7),
     (("G71 P10 Q20", "G71 P10 Q30"), "cycle_sequence_not_found", 7),
     (("N10 G0 X20", "N10 G2 X20 R5"), "cycle_first_block", 7),
-    (("N10 G0 X20", "N10 G0 X20 Z1"), "unsupported_g_code", 7),  # type II
     (("G1 Z-20\n", "G1 Z-20 M8\n"), "cycle_improper_block", 9),
     (("G71 U2 R0.5", "G71 U0 R0.5"), "cycle_bad_value", 6),
     (("G0 X52 Z2\n", "G0 X20 Z2\n"), "cycle_bad_value", 7),  # the contour starts at the start's X

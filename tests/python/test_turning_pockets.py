@@ -84,3 +84,120 @@ def test_g71_type2_roughs_pocket_by_pocket():
     assert list(kind[:n]) == [k for _, k in expected]
     np.testing.assert_allclose(got[n:], [p for p, _ in contour], atol=1e-9)
     assert list(kind[n:]) == [k for _, k in contour]
+
+
+# G72 (facing): the passes run along X, the levels step in Z. Start A: X80 Z2; U = 40 - X/2,
+# V = 2 - Z. The contour in (U, V): (0, 8) (10, 8) (15, 4) (20, 4) (25, 10) (30, 10) (35, 0):
+# a face groove beyond a land exactly at level 4.
+FACE = """\
+G21 G18 G40
+T0101
+G97 S1000 M3
+G98
+G0 X80 Z2
+G72 W2 R0.5
+G72 P10 Q20 F200
+N10 G0 X80 Z-6
+G1 X60
+X50 Z-2
+X40
+X30 Z-8
+X20
+N20 X10 Z2
+M30
+"""
+
+
+def test_g72_type2_faces_a_groove_beyond_a_land_on_a_level():
+    res = _lathe(FACE)
+    assert res.ok, res.diagnostics
+    sel = res.nominal.line == 7
+    end = res.nominal.end[sel]
+    got = np.column_stack([40 - end[:, 0], 2 - end[:, 2]])
+    kind = res.nominal.kind[sel]
+    r, f = tc.RAPID, tc.LINE
+    near = lambda v: 10 + (8 - v) * 5 / 4   # (10, 8) -> (15, 4)
+    far = lambda v: 20 + (v - 4) * 5 / 6    # (20, 4) -> (25, 10)
+    last = lambda v: 30 + (10 - v) / 2      # (30, 10) -> (35, 0)
+    expected = [
+        ((0, 2), r), ((last(2), 2), f), ((35, 0), f), ((35, -0.5), r), ((0, -0.5), r),
+        # level 4 lies on the land: the first span ends at the land, the cut's climb runs along it
+        ((0, 2), r), ((0, 4), r), ((15, 4), f), ((20, 4), f), ((20, 3.5), r), ((0, 3.5), r),
+        ((0, 4), r), ((0, 6), r), ((near(6), 6), f), ((15, 4), f), ((15, 3.5), r), ((0, 3.5), r),
+        # the groove, from the land's far end (level 2 less R above it)
+        ((0, 1.5), r), ((20, 1.5), r), ((20, 4), f),
+        ((last(4), 4), f), ((last(2), 2), f), ((last(2), 1.5), r), ((20, 1.5), r),
+        ((20, 4), f), ((far(6), 6), f), ((last(6), 6), f), ((last(4), 4), f), ((last(4), 3.5), r), ((far(6), 3.5), r),
+        ((far(6), 6), f), ((far(8), 8), f), ((last(8), 8), f), ((last(6), 6), f), ((last(6), 5.5), r), ((far(8), 5.5), r),
+        ((far(8), 0), r), ((0, 0), r), ((0, 8), r),
+        ((10, 8), f), ((15, 4), f), ((20, 4), f), ((25, 10), f), ((30, 10), f), ((35, 0), f), ((0, 0), r),
+    ]
+    assert len(got) == len(expected)
+    np.testing.assert_allclose(got, [p for p, _ in expected], atol=1e-9)
+    assert list(kind) == [k for _, k in expected]
+
+
+def _g71(contour, cycle="G71 P10 Q20 F200", start="G0 X50 Z2"):
+    return f"G21 G18 G40\nT0101\nG97 S1000 M3\nG98\n{start}\nG71 U2 R0.5\n{cycle}\n{contour}\nM30\n"
+
+
+def test_type2_refuses_a_contour_turning_back_along_the_cut():
+    with pytest.raises(tc.ProgramError) as e:
+        _lathe(_g71("N10 G0 X30 Z2\nG1 Z-10\nX40 Z-5\nN20 X50"))
+    assert (e.value.code, e.value.line) == ("cycle_not_monotonic", 10)
+
+
+def test_r1_selects_type2_and_other_r_values_are_refused():
+    # With R1 the P block X alone reads as type II: the contour's pocket is roughed (a type I
+    # reading would refuse the contour going deeper again).
+    pocket = "N10 G0 X30\nG1 Z-10\nX40 Z-15\nX24 Z-25\nN20 X50 Z-30"
+    with pytest.raises(tc.ProgramError) as e:
+        _lathe(_g71(pocket))
+    assert e.value.code == "cycle_not_monotonic"
+    res = _lathe(_g71(pocket, "G71 P10 Q20 R1 F200"))
+    assert res.ok, res.diagnostics
+    # The deepest level cut is 12 below the start's X (radius 25 - 12 = 13): the pocket's bottom
+    # lies at radius 12, less than one depth below it.
+    cuts = res.nominal.end[(res.nominal.line == 7) & (res.nominal.kind == tc.LINE)]
+    assert cuts[:, 0].min() == pytest.approx(12)
+    levels = sorted({round(x, 9) for x in cuts[:, 0] if round(x, 9) in {23, 21, 19, 17, 15, 13}})
+    assert levels == [13, 15, 17, 19, 21, 23]
+    with pytest.raises(tc.ProgramError) as e:
+        _lathe(_g71(pocket, "G71 P10 Q20 R2 F200"))
+    assert (e.value.code, e.value.line, e.value.column) == ("cycle_bad_value", 7, 13)
+
+
+def test_haas_rough_allowances_are_left_by_the_levels_and_taken_by_the_contour_pass():
+    # Type I, OD: contour X20 (radius 10) from Z2 to Z-20, then X50. I0.5 (radius) and K0.2
+    # leave the levels short of radius 10.5 and Z -19.8; the contour pass runs on the contour
+    # itself (no U, W).
+    res = _lathe(_g71("N10 G0 X20\nG1 Z-20\nN20 X50", "G71 P10 Q20 D3 I0.5 K0.2 F200", "G0 X50 Z2"))
+    assert res.ok, res.diagnostics
+    sel = res.nominal.line == 7
+    xz = res.nominal.end[sel][:, [0, 2]]
+    kind = res.nominal.kind[sel]
+    cuts = xz[kind == tc.LINE]
+    # Levels 22, 19, 16, 13 (radius; 10.5 + 3 > 13 > 10.5): each cut ends at the shoulder Z -19.8.
+    np.testing.assert_allclose(cuts[:4], [(22, -19.8), (19, -19.8), (16, -19.8), (13, -19.8)], atol=1e-9)
+    # Then the contour pass: to radius 10 at Z2 (rapid, the P block is G00), Z-20, X50.
+    np.testing.assert_allclose(xz[-4:], [(10, 2), (10, -20), (25, -20), (25, 2)], atol=1e-9)
+
+
+@pytest.mark.parametrize("machine, nose", [("haas-lathe", 0.8), ("lathe", 0.0)])
+def test_g42_in_the_contour_adds_the_nose_radius_to_the_roughing_allowance_on_haas(machine, nose):
+    # Nose radius 0.8, tip 3 (Fanuc/Haas numbering: the imaginary tip at -X -Z of the nose's
+    # centre). Haas: the passes leave 0.8 more in X (radius) and Z; Fanuc: the contour as programmed.
+    tools = tc.ToolTable()
+    tools.set(tc.Tool(1, edges=[tc.CuttingEdge(radius=0.8, orientation=3)]))
+    text = _g71("N10 G0 G42 X20\nG1 Z-20\nN20 G40 X50", "G71 P10 Q20 D3 F200")
+    res = tc.run(tc.Program.parse(text, dialect="fanuc"), machine=machine, tools=tools)
+    assert res.ok, res.diagnostics
+    sel = res.nominal.line == 7
+    xz = res.nominal.end[sel][:, [0, 2]]
+    cuts = xz[res.nominal.kind[sel] == tc.LINE]
+    # Levels 22, 19, 16, 13 (radius), short of 10 + nose; each cut to Z -20 + nose.
+    np.testing.assert_allclose(cuts[:4], [(22, -20 + nose), (19, -20 + nose), (16, -20 + nose), (13, -20 + nose)],
+                               atol=1e-9)
+    # The contour pass on the contour shifted by the nose radius in X and Z.
+    np.testing.assert_allclose(xz[-4:], [(10 + nose, 2 + nose), (10 + nose, -20 + nose), (25 + nose, -20 + nose),
+                                         (25, 2)], atol=1e-9)

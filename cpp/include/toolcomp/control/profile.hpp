@@ -326,13 +326,20 @@ struct ControlProfile {
     // increments). false: G90/G91 distance modes, G92 coordinate setting, G94 feed per minute.
     bool g_code_system_a = false;
     // The Fanuc T series' multiple repetitive cycles: G70 finishing along the P..Q contour,
-    // G71 / G72 stock removal in turning / facing (type I), in their two-block form
+    // G71 / G72 stock removal in turning / facing (types I and II), in their two-block form
     // (G71 U R; G71 P Q U W F) and their one-block form (G71 P Q U W D F, Haas and older
     // Fanuc). false: refused (LinuxCNC's G70-G72 read other words).
     bool turning_cycles = false;
     // The escape of a G71/G72 pass when the cycle gives no R (Fanuc parameter 5133, Haas
     // setting 73), in mm; the machine's value belongs in its machine file.
     double turning_escape = 1.0;
+    // G41/G42 in a G71/G72 contour: the roughing passes (levels and contour pass) leave the
+    // nose radius more allowance,
+    // from the tip towards the nose's centre in each axis (Haas: "cutter compensation is
+    // approximated by adjusting the roughing allowance according to the radius and tip type").
+    // false: the passes follow the contour as programmed (Fanuc: the compensation of the
+    // finishing shape is cancelled while roughing).
+    bool roughing_nose_allowance = false;
     // H and D are modal offset numbers (Fanuc): G43/G44 without H take the last H, G41/G42
     // without D the last D, both 0 at the start, and H0/D0 are no offset. false: without H or D
     // the tool in the spindle gives them, and H0 is that tool too (LinuxCNC).

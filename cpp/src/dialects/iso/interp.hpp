@@ -239,7 +239,8 @@ private:
     BlockWords first_block(std::size_t from, int col);     // the P block of G71-G73 (G00/G01)
     void contour_cycle_can_start(const char* name, int col) const;
     static Vec2 turning_uv(const Vec3& q, bool along_z);
-    cycles::Contour cycle_contour(std::size_t from, std::size_t to, bool along_z);
+    cycles::Contour cycle_contour(std::size_t from, std::size_t to, bool along_z, RadiusRequest* nose = nullptr);
+    Vec2 nose_allowance(const RadiusRequest& nose, const cycles::Contour& contour, const Vec2& start, bool g71) const;
     void emit_steps(const std::vector<cycles::Step>& steps, bool along_z, const BlockWords& bw, int col);
     void peck_cycle(const BlockWords& bw, int code);       // G74, G75 (interp_grooving.cpp)
     struct PatternRepeat {
@@ -254,6 +255,7 @@ private:
     struct ContourMoves {
         Vec3 first_end = Vec3::Zero();
         std::vector<Motion> moves;
+        RadiusRequest nose;  // the first G41/G42 in the contour (side 0: none)
     };
     ContourMoves read_contour(std::size_t from, std::size_t to);
     MotionSink* capture_ = nullptr;  // while a contour is read: where its moves go

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "../../cycles/turning_roughing.hpp"
+#include "toolcomp/compensation/nose.hpp"
 #include "interp.hpp"
 #include "toolcomp/program/codes.hpp"
 #include "toolcomp/program/text.hpp"
@@ -83,6 +84,7 @@ Interp::ContourMoves Interp::read_contour(std::size_t from, std::size_t to) {
             fail(code::cycle_improper_block, "PS0066 IMPROPER G-CODE IN G71-G73: an M code in the contour");
         if (bw.has('T')) fail(code::cycle_improper_block, "PS0066 IMPROPER G-CODE IN G71-G73: a T word in the contour", bw['T'].column);
         execute(bw);
+        if (radius_.side != 0 && out.nose.side == 0) out.nose = radius_;
         if (k == from) {
             out.first_end = pos_.head<3>();
             sink.moves.clear();
@@ -139,7 +141,8 @@ void Interp::roughing_cycle(const BlockWords& bw, int code) {
     const bool type2 = bw.has('R') || (g71 ? first.has('Z') || first.has('W') : first.has('X') || first.has('U'));
     cycles::Roughing r;
     r.rapid_infeed = (first.g[g_motion] >= 0 ? first.g[g_motion] : st_.motion) == 0;
-    const cycles::Contour contour = cycle_contour(from, to, g71);
+    RadiusRequest nose;
+    const cycles::Contour contour = cycle_contour(from, to, g71, &nose);
     line_ = bw.line;
     r.start = turning_uv(pos_.head<3>(), g71);
     r.depth = depth;
@@ -148,6 +151,7 @@ void Interp::roughing_cycle(const BlockWords& bw, int code) {
     r.allowance = g71 ? Vec2(dw, du) : Vec2(du, dw);
     const double ri = word(bw, 'I'), rk = word(bw, 'K');  // Haas: rough allowances (I a radius)
     r.rough_allowance = g71 ? Vec2(rk, ri) : Vec2(ri, rk);
+    if (nose.side != 0 && profile_.roughing_nose_allowance) r.allowance += nose_allowance(nose, contour, r.start, g71);
     std::vector<cycles::Step> steps;
     try {
         steps = type2 ? cycles::rough_type2(contour, r) : cycles::rough_type1(contour, r);
@@ -224,8 +228,9 @@ BlockWords Interp::first_block(std::size_t from, int col) {
 // (a, b); G72 (X, Z), mirrored, so its arcs turn the other way.
 Vec2 Interp::turning_uv(const Vec3& q, bool along_z) { return along_z ? Vec2(q.z(), q.x()) : Vec2(q.x(), q.z()); }
 
-cycles::Contour Interp::cycle_contour(std::size_t from, std::size_t to, bool along_z) {
+cycles::Contour Interp::cycle_contour(std::size_t from, std::size_t to, bool along_z, RadiusRequest* nose) {
     const ContourMoves moves = read_contour(from, to);
+    if (nose) *nose = moves.nose;
     cycles::Contour contour;
     contour.start = turning_uv(moves.first_end, along_z);
     for (const Motion& m : moves.moves) {
@@ -234,6 +239,18 @@ cycles::Contour Interp::cycle_contour(std::size_t from, std::size_t to, bool alo
         contour.pieces.push_back(piece);
     }
     return contour;
+}
+
+// Haas's reading of G41/G42 in a roughing contour: the passes leave the nose radius more, in
+// each axis from the imaginary tip towards the nose's centre (-r·σ); where the tip lies at
+// the centre in an axis (tips 5-9, 0), r towards the stock (the start point's side of the
+// contour, in (u, v) of the cut).
+Vec2 Interp::nose_allowance(const RadiusRequest& nose, const cycles::Contour& contour, const Vec2& start, bool g71) const {
+    const TipVector t = tip_vector(nose.orientation, profile_.radius.tip_convention);
+    const double r = nose.radius;
+    const Vec2 stock(start.x() > contour.pieces.back().end.x() ? 1.0 : -1.0, start.y() > contour.start.y() ? 1.0 : -1.0);
+    const Vec2 tip = g71 ? Vec2(t.z, t.x) : Vec2(t.x, t.z);  // (u, v)
+    return {tip.x() != 0 ? -r * tip.x() : r * stock.x(), tip.y() != 0 ? -r * tip.y() : r * stock.y()};
 }
 
 // The moves of a turning cycle, at the cycle block's line: rapid, feed (the modal F, per
