@@ -201,3 +201,63 @@ def test_g42_in_the_contour_adds_the_nose_radius_to_the_roughing_allowance_on_ha
     # The contour pass on the contour shifted by the nose radius in X and Z.
     np.testing.assert_allclose(xz[-4:], [(10 + nose, 2 + nose), (10 + nose, -20 + nose), (25 + nose, -20 + nose),
                                          (25, 2)], atol=1e-9)
+
+
+def test_type2_passes_never_enter_the_part_on_random_contours():
+    """Independent check with Shapely: on random pocketed contours, no move of the cycle
+    (cuts, climbs, rapids) passes inside the part (the region between the contour and the
+    axis), and every level's cut ends on the contour."""
+    shapely = pytest.importorskip("shapely")
+    from shapely.geometry import LineString, Polygon
+
+    rng = np.random.default_rng(7)
+    for trial in range(40):
+        n = rng.integers(3, 8)
+        zs = np.round(np.cumsum(rng.uniform(2, 8, n)) * -1, 3)
+        xs = np.round(rng.uniform(4, 20, n), 3)  # radius, as written (the diameter to 0.001)
+        x0 = round(rng.uniform(4, 20), 3)
+        lines = [f"N10 G0 X{2 * x0:.3f} Z0"] + [f"G1 X{2 * x:.3f} Z{z:.3f}" for x, z in zip(xs, zs)]
+        lines.append(f"N20 X50 Z{zs[-1] - 1:.3f}")
+        text = _g71("\n".join(lines), f"G71 P10 Q20 D{rng.uniform(0.5, 3):.2f} F200", "G0 X50 Z2")
+        res = _lathe(text.replace("G71 U2 R0.5", f"G71 U2 R{rng.uniform(0, 1):.2f}"))
+        assert res.ok, (text, res.diagnostics)
+        pts = [(0.0, x0)] + list(zip(zs, xs)) + [(zs[-1] - 1, 25.0)]
+        part = Polygon(pts + [(pts[-1][0], 0.0), (0.0, 0.0)]).buffer(-1e-6)
+        sel = res.nominal.line == 7
+        start = res.nominal.start[sel][:, [2, 0]]
+        end = res.nominal.end[sel][:, [2, 0]]
+        assert np.all(np.isfinite(end))
+        for a, b in zip(start, end):
+            assert not LineString([a, b]).intersects(part), (trial, a, b, text)
+
+
+def test_type2_pocket_on_an_arc():
+    # A half-circle groove (G2 from Z-5 to Z-15 at X30, R5: centre Z-10 X30, its bottom at
+    # radius 10) after a land at radius 15; depth 3. Levels (radius) 22, 19, 16 run to the last
+    # wall (X30 Z-20 -> X50 Z-22: Z = -20 - (x - 15) / 5); level 13 lies below the land: it
+    # comes down the P block's line and the land and along the arc to where it meets the level,
+    # Z = -10 + sqrt(5^2 - 2^2), cuts to Z = -10 - sqrt(21), follows the arc, the land and the
+    # wall up to level 16. Level 10 is the groove's bottom: the contour pass takes it.
+    text = _g71("N10 G0 X30 Z2\nG1 Z-5\nG2 X30 Z-15 R5\nG1 Z-20\nN20 X50 Z-22", "G71 P10 Q20 F200")
+    res = _lathe(text.replace("G71 U2", "G71 U3"))
+    assert res.ok, res.diagnostics
+    sel = res.nominal.line == 7
+    zx = res.nominal.end[sel][:, [2, 0]]
+    kind = res.nominal.kind[sel]
+    wall = lambda x: -20 - (x - 15) / 5
+    h = np.sqrt(21)
+    r, f = tc.RAPID, tc.LINE
+    level13 = [((2, 16), r), ((2, 15), r), ((-5, 15), f), ((-10 + h, 13), None), ((-10 - h, 13), f),
+               ((-15, 15), None), ((-20, 15), f), ((wall(16), 16), f), ((wall(16), 16.5), r), ((-10 + h, 16.5), r)]
+    i = 17  # after the passes at 22 (5 moves: down, cut, climb, out, back) and 19, 16 (6: two down)
+    np.testing.assert_allclose(zx[i - 5:i], [(2, 16), (wall(16), 16), (wall(19), 19), (wall(19), 19.5), (2, 19.5)],
+                               atol=1e-9)
+    np.testing.assert_allclose(zx[i:i + len(level13)], [p for p, _ in level13], atol=1e-9)
+    for (p, k), got, c in zip(level13, kind[i:], res.nominal.center[sel][i:]):
+        if k is None:  # the arc of the groove, about its centre
+            assert got in (tc.ARC_CW, tc.ARC_CCW)
+            np.testing.assert_allclose(c[[2, 0]], (-10, 15), atol=1e-9)
+        else:
+            assert got == k
+    # Then out of the groove to A and the contour pass.
+    np.testing.assert_allclose(zx[i + len(level13):i + len(level13) + 3], [(-10 + h, 25), (2, 25), (2, 15)], atol=1e-9)
