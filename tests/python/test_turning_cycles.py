@@ -305,12 +305,14 @@ def test_a_mastercam_fanuc_lathe_program_runs(machine):
     g71 = res.nominal.line == at
     # From A (radius 24, Z1), depth 2: levels 22 ... 12. The shifted contour: (10.2, 1.1),
     # (10.2, 0.1), (12.2, -1.9), (12.2, -19.9), (18.2, -19.9), (20.2, -21.9), (20.2, -34.9),
-    # (24.2, -34.9). Level 22 meets the last face at Z-34.9; level 20 the chamfer at
-    # Z = -19.9 - (20 - 18.2) = -21.7; levels 18 ... 14 the face at Z-19.9; 12 the chamfer at
-    # Z = 0.1 - (12 - 10.2) = -1.7.
+    # (24.2, -34.9), and on Haas (G42 in the contour: the rough allowance grows by tool 1's
+    # nose radius n = 0.8 in X and Z, tip 3) n further in both. Level 22 meets the last face
+    # at Z-34.9 + n; level 20 the chamfer at Z = -19.9 + n - (20 - 18.2 - n) = -21.7 + 2n;
+    # levels 18 ... 14 the face at Z-19.9 + n; 12 the chamfer at Z = -1.7 + 2n.
+    n = 0.8 if machine == "haas-lathe" else 0.0
     cuts = res.nominal.end[g71 & (res.nominal.kind == tc.LINE)][:, [0, 2]]
-    np.testing.assert_allclose(cuts[:7], [(22, -34.9), (20, -21.7), (18, -19.9), (16, -19.9), (14, -19.9),
-                                           (12, -1.7), (10.2, 0.1)], atol=1e-9)
+    np.testing.assert_allclose(cuts[:7], [(22, -34.9 + n), (20, -21.7 + 2 * n), (18, -19.9 + n), (16, -19.9 + n),
+                                           (14, -19.9 + n), (12, -1.7 + 2 * n), (10.2 + n, 0.1 + n)], atol=1e-9)
     # The G70 pass is compensated (G42 in the contour, tool 2's 0.4 mm nose).
     contour = (res.path.line > at) & (res.path.line <= at + 8)
     assert not np.allclose(res.path.end[contour], res.nominal.end[(res.nominal.line > at) & (res.nominal.line <= at + 8)])
