@@ -18,7 +18,8 @@ constexpr std::pair<const char*, MCodeAction> kActions[] = {
     {"spindle_ccw", MCodeAction::spindle_ccw},   {"spindle_stop", MCodeAction::spindle_stop},
     {"program_stop", MCodeAction::program_stop}, {"optional_stop", MCodeAction::optional_stop},
     {"program_end", MCodeAction::program_end},   {"tool_change", MCodeAction::tool_change},
-    {"subprogram", MCodeAction::subprogram},
+    {"subprogram", MCodeAction::subprogram},     {"thread_chamfer_on", MCodeAction::thread_chamfer_on},
+    {"thread_chamfer_off", MCodeAction::thread_chamfer_off},
 };
 
 MCodeAction action_from(const std::string& s) {

@@ -309,6 +309,14 @@ void bind_run(py::module_& m) {
                        "the Fanuc T series' lathe cycles G70-G76, G90/G92/G94 and G32")
         .def_readwrite("turning_escape", &ControlProfile::turning_escape,
                        "the escape of a G71/G72 pass when the cycle gives no R, mm (Fanuc parameter 5133, Haas setting 73)")
+        .def_readwrite("thread_chamfer", &ControlProfile::thread_chamfer,
+                       "the pull-out chamfer at the end of G92 and one-block G76 threads, in leads (Haas setting 95; 0: none)")
+        .def_readwrite("thread_chamfer_angle", &ControlProfile::thread_chamfer_angle,
+                       "the thread chamfer's angle from the Z axis, degrees (Haas setting 96)")
+        .def_readwrite("thread_finish_allowance", &ControlProfile::thread_finish_allowance,
+                       "the one-block G76's finishing allowance, mm (Haas setting 86)")
+        .def_readwrite("thread_min_cut", &ControlProfile::thread_min_cut,
+                       "the one-block G76's least depth of a pass, mm (Haas setting 99)")
         .def_readwrite("roughing_nose_allowance", &ControlProfile::roughing_nose_allowance,
                        "G41/G42 in a G71/G72 contour: the roughing passes leave the nose radius more allowance (Haas)")
         .def_readwrite("g52_offset", &ControlProfile::g52_offset,

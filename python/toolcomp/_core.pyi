@@ -276,6 +276,10 @@ class ControlProfile:
     turning_cycles: bool
     turning_escape: float
     roughing_nose_allowance: bool
+    thread_chamfer: float
+    thread_chamfer_angle: float
+    thread_finish_allowance: float
+    thread_min_cut: float
     g52_offset: bool
     macro_calls: bool
     m98_subprograms: bool

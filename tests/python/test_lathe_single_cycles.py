@@ -68,19 +68,55 @@ def test_a_taper_r_moves_the_start_of_the_cut():
 
 
 def test_inch_on_haas_lathe():
-    # G20: X1.0 diameter = radius 12.7 mm; G92 F0.0625 (16 TPI) at S400: 25 in/min.
+    # G20: X1.0 diameter = radius 12.7 mm; G92 F0.0625 (16 TPI) at S400: 25 in/min. Haas
+    # ends the thread with a chamfer of one lead (setting 95) at 45 degrees (setting 96): the
+    # thread stops 0.0625 short of Z-1 and pulls out 0.0625 (radius) to Z-1; M24 turns it off.
     text = "G20 G18 G97 S400 M3\nG99\nG0 X1.2 Z0.2\nG92 X0.95 Z-1. F0.0625\nX0.93\nG0 X3.\nM30\n"
     res = _run(text, machine="haas-lathe")
     ends, kinds, feeds = _rows(res, 4)
-    np.testing.assert_allclose(ends / 25.4, [(0.475, 0.2), (0.475, -1), (0.6, -1), (0.6, 0.2)])
+    np.testing.assert_allclose(ends / 25.4, [(0.475, 0.2), (0.475, -0.9375), (0.5375, -1), (0.6, -1), (0.6, 0.2)])
+    assert list(kinds) == [tc.RAPID, tc.LINE, tc.LINE, tc.RAPID, tc.RAPID]
     assert feeds[1] == pytest.approx(0.0625 * 400 * 25.4)
+    res = _run(text.replace("G99", "G99 M24"), machine="haas-lathe")
+    np.testing.assert_allclose(_rows(res, 4)[0] / 25.4, [(0.475, 0.2), (0.475, -1), (0.6, -1), (0.6, 0.2)])
+    res = _run(text, machine="fanuc-lathe")  # parameter 5130 at 0: no chamfer
+    np.testing.assert_allclose(_rows(res, 4)[0] / 25.4, [(0.475, 0.2), (0.475, -1), (0.6, -1), (0.6, 0.2)])
+
+
+def test_haas_one_block_g76():
+    # G76 X27.546 Z-20 K1.227 D0.4 A60 F2 from A (X34 Z5, radius 17): passes at 0.4 sqrt(n)
+    # while short of K (n = 1 ... 9: 0.4 ... 1.2), then one at K = 1.227. Pass at depth d: X
+    # (radius) 13.773 + 1.227 - d = 15 - d, Z moved by -d tan 30; the thread to Z-20 (moved
+    # alike) less the chamfer of one lead (2 mm), out 2 mm at 45 degrees, rapid to A's X, to A.
+    res = _run("G21 G18 G97 S500 M3\nG0 X34 Z5\nG76 X27.546 Z-20 K1.227 D0.4 A60 F2\nM30\n", machine="haas-lathe")
+    ends, kinds, _ = _rows(res, 3)
+    t = np.tan(np.radians(30))
+    depths = [0.4 * np.sqrt(n) for n in range(1, 10)] + [1.227]
+    expected = []
+    for d in depths:
+        x, s = 15 - d, -d * t
+        expected += [(x, 5 + s), (x, -20 + s + 2), (x + 2, -20 + s), (17, -20 + s), (17, 5)]
+    np.testing.assert_allclose(ends, expected, atol=1e-9)
+    assert list(kinds[:5]) == [tc.RAPID, tc.LINE, tc.LINE, tc.RAPID, tc.RAPID]
+    # Settings 86 (finishing allowance) and 99 (least cut), in mm, from the machine: with
+    # 0.05 and 0.2 the passes are 0.4, 0.6, 0.8, 1.0 (each at least 0.2 deeper), then
+    # 1.177 (K less the allowance) and 1.227.
+    m = tc.Machine.preset("haas-lathe")
+    profile = m.profile
+    profile.thread_finish_allowance, profile.thread_min_cut = 0.05, 0.2
+    m.profile = profile
+    res = _run("G21 G18 G97 S500 M3\nG0 X34 Z5\nG76 X27.546 Z-20 K1.227 D0.4 A60 F2 M24\nM30\n", machine=m)
+    ends, kinds, _ = _rows(res, 3)
+    np.testing.assert_allclose(ends[1::4, 0], [15 - d for d in (0.4, 0.6, 0.8, 1.0, 1.177, 1.227)], atol=1e-9)
 
 
 @pytest.mark.parametrize("text, code, line", [
     ("G21 G18 G97 S500 M3\nG0 X30 Z5\nG92 X28 F1.5\nM30\n", "cycle_bad_value", 3),  # no Z
     ("G21 G18 G97 M3\nG0 X30 Z5\nG92 X28 Z-10 F1.5\nM30\n", "zero_spindle_speed", 3),
 
-    ("G21 G18 G97 S500 M3\nG0 X30 Z5\nG76 X28 Z-10 K1 D0.3 F1.5\nM30\n", "unsupported_word", 3),  # Haas form
+    ("G21 G18 G97 S500 M3\nG0 X30 Z5\nG76 X28 Z-10 K1 D0.3 F1.5 P2\nM30\n", "unsupported_word", 3),  # Haas P2
+    ("G21 G18 G97 S500 M3\nG0 X30 Z5\nG76 X28 Z-10 K1 D0.3 F1.5 A60.5\nM30\n", "cycle_bad_value", 3),
+    ("G21 G18 G97 S500 M3\nG0 X30 Z5\nG76 X28 Z-10 K1 F1.5\nM30\n", "cycle_bad_value", 3),  # no D
 ])
 def test_what_is_refused(text, code, line):
     with pytest.raises(tc.ProgramError) as e:

@@ -263,6 +263,11 @@ void check_profile(const ControlProfile& p) {
     if (p.call_depth_limit > kMaxCallDepthLimit)
         bad("call_depth_limit", "at most " + std::to_string(kMaxCallDepthLimit), static_cast<double>(p.call_depth_limit));
     at_least("turning_escape", p.turning_escape, 0);
+    at_least("thread_chamfer", p.thread_chamfer, 0);
+    at_least("thread_finish_allowance", p.thread_finish_allowance, 0);
+    at_least("thread_min_cut", p.thread_min_cut, 0);
+    if (!(p.thread_chamfer_angle > 0 && p.thread_chamfer_angle < 90))
+        bad("thread_chamfer_angle", "above 0 and below 90 degrees", p.thread_chamfer_angle);
     if (p.startup_motion != 0 && p.startup_motion != 10 && p.startup_motion != 800)
         bad("startup_motion", "0 (G00), 10 (G01) or 800 (G80)", p.startup_motion);
     if (p.no_motion_limit < 1) bad("no_motion_limit", "a count >= 1", 0);

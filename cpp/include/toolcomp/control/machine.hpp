@@ -35,6 +35,8 @@ enum class MCodeAction : std::uint8_t {
     tool_change,    // as M6
     subprogram,     // runs `program` after its block: LinuxCNC o<program> call (a remap to an O-word
                     // sub, name.ngc on the search path), Fanuc M98 P<number> (a macro M code)
+    thread_chamfer_on,   // the pull-out chamfer at the end of G76/G92 threads (Haas M23), on at start
+    thread_chamfer_off,  // no pull-out chamfer (Haas M24)
 };
 
 // The standard code an action acts like (8 for coolant_on, ...); -1 for nothing.

@@ -340,6 +340,14 @@ struct ControlProfile {
     // false: the passes follow the contour as programmed (Fanuc: the compensation of the
     // finishing shape is cancelled while roughing).
     bool roughing_nose_allowance = false;
+    // Threads (G92, the one-block G76): the pull-out chamfer at the thread's end, in leads
+    // (Haas setting 95; 0: none), and its angle from the Z axis in degrees (setting 96);
+    // Haas M23/M24 (machine actions thread_chamfer_on/off) switch it. The one-block G76's
+    // finishing allowance (setting 86) and least depth of a pass (setting 99), in mm.
+    double thread_chamfer = 0;
+    double thread_chamfer_angle = 45;
+    double thread_finish_allowance = 0;
+    double thread_min_cut = 0;
     // H and D are modal offset numbers (Fanuc): G43/G44 without H take the last H, G41/G42
     // without D the last D, both 0 at the start, and H0/D0 are no offset. false: without H or D
     // the tool in the spindle gives them, and H0 is that tool too (LinuxCNC).

@@ -79,6 +79,10 @@ void add_m(BlockWords& bw, const Word& w, const ControlProfile& profile, const M
             for (char c : code->words) taken |= letter_bit(c);
             if (++bw.m_count > 4) fail(code::too_many_m_codes, "Too many m codes on line", bw.line, w.column);
             m = standard_m_code(code->action);
+            if (code->action == MCodeAction::thread_chamfer_on || code->action == MCodeAction::thread_chamfer_off) {
+                if (bw.thread_chamfer >= 0) fail(code::modal_group_conflict, "Two M codes for the thread chamfer in one block", bw.line, w.column);
+                bw.thread_chamfer = code->action == MCodeAction::thread_chamfer_on ? 1 : 0;
+            }
             if (code->action == MCodeAction::subprogram) {
                 if (bw.machine_call) fail(code::too_many_m_codes, "Two M codes that run subprograms in one block", bw.line, w.column);
                 bw.machine_call = code;

@@ -37,6 +37,7 @@ struct BlockWords {
     std::array<int, m_group_count> m;
     std::array<int, m_group_count> m_column{};
     int m_count = 0;
+    std::int8_t thread_chamfer = -1;            // a builder code turning the thread chamfer on (1) / off (0)
     const MachineCode* machine_call = nullptr;  // a builder M code that runs a subprogram
     int machine_call_column = 0;
 

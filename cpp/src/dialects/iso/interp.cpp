@@ -372,6 +372,7 @@ void Interp::system_a_codes(const BlockWords& bw) const {
 
 bool Interp::execute(const BlockWords& bw) {
     block_tool_ = tool_;
+    if (bw.thread_chamfer >= 0) thread_chamfer_on_ = bw.thread_chamfer == 1;
     const int g0 = bw.g[g_nonmodal];
     const int motion_code = bw.g[g_motion];
     const bool axes = bw.has_axis();

@@ -231,6 +231,19 @@ private:
         int finishing = 1, chamfer = 0, angle = 60;  // G76 P(m)(r)(a)
         double min_depth = 0, allowance = 0;         // Q(Δdmin), R(d), program units
     } thread_{};
+    bool thread_chamfer_on_ = true;  // Haas M23 / M24: the profile's thread chamfer is cut
+    // One G76 (either form): the depth of each pass, cut from the start point A to `end`
+    // (the thread's root at its end), taper (radius, the start's minus the end's), the flank
+    // angle of the infeed (degrees), the pull-out chamfer's length along Z and its angle.
+    struct ThreadPasses {
+        std::vector<double> depths;
+        double height = 0, taper = 0, angle = 0, chamfer = 0, chamfer_angle = 45;
+        Vec6 end = Vec6::Zero();
+    };
+    void thread_passes(const ThreadPasses& t, int col);
+    void haas_threading(const BlockWords& bw, int col);     // G76 X Z K D A I F (one block)
+    double thread_chamfer_length(double lead) const;        // the profile's chamfer when on
+    void thread_cut(const Vec6& s, const Vec6& e, double chamfer, double angle, double out);
     struct SingleCycle {
         double z = 0, x = 0, r = 0;  // the last cycle's end Z, X and taper R (program units)
     } single_{};

@@ -8,7 +8,7 @@
 //
 // R is the taper: how much the cut's start lies beyond its end (X radius for G90/G92, Z for
 // G94). A block with only X or Z (U, W) under a cycle repeats it with the other value kept.
-// The thread chamfer at the end of G92 (a parameter of the machine) is not cut.
+// G92's thread ends with the profile's pull-out chamfer (thread_chamfer, Haas M23/M24).
 #include <cmath>
 
 #include "interp.hpp"
@@ -71,8 +71,8 @@ void Interp::single_cycle(const BlockWords& bw, int code) {
         const Vec6 p1 = at(single_.x + single_.r, a[2]), p2 = at(single_.x, single_.z), p3 = at(a[0], single_.z);
         straight(MotionKind::rapid, p1, std::nan(""));
         if (code == 920) {
-            straight(MotionKind::line, p2, thread_feed(p2[0]));
-            straight(MotionKind::rapid, p3, std::nan(""));
+            thread_cut(p1, p2, thread_chamfer_length(feed_ / scale()), profile_.thread_chamfer_angle, a[0] >= p2[0] ? 1.0 : -1.0);
+            straight(MotionKind::rapid, at(a[0], pos_[2]), std::nan(""));
         } else {
             straight(MotionKind::line, p2, feed_at(p2));
             straight(MotionKind::line, p3, feed_at(p3));
