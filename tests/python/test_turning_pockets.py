@@ -261,3 +261,36 @@ def test_type2_pocket_on_an_arc():
             assert got == k
     # Then out of the groove to A and the contour pass.
     np.testing.assert_allclose(zx[i + len(level13):i + len(level13) + 3], [(-10 + h, 25), (2, 25), (2, 15)], atol=1e-9)
+
+
+def test_a_haas_shaft_with_a_groove_and_a_thread_runs_in_inch():
+    """A hand-written Haas program (inch): type II G71 (Z in the P block) over a relief
+    groove, G70 with G42, a one-block G76 with Haas's one-lead chamfer."""
+    from pathlib import Path
+    path = Path(__file__).parent.parent / "programs" / "lathe" / "shaft_groove_thread_haas_inch.nc"
+    tools = tc.ToolTable()
+    for n, r, tip in [(1, 0.031, 3), (2, 0.015, 3), (3, 0.0, 8)]:
+        tools.set(tc.Tool(n, edges=[tc.CuttingEdge(radius=r * 25.4, orientation=tip)]))
+    res = tc.run(str(path), dialect="fanuc", machine="haas-lathe", tools=tools)
+    assert res.ok, res.diagnostics
+    lines = path.read_text().splitlines()
+    g71 = lines.index("G71 P100 Q200 U0.02 W0.005 D0.06 F0.012") + 1
+    # Levels from A (radius 0.8) by 0.06; the contour shifted by (radius 0.01, Z 0.005). At
+    # level 0.44 the groove is a pocket of its own: its near wall (-0.995, 0.4475) ->
+    # (-1.095, 0.385) meets it at Z -1.007, its far wall (-1.295, 0.385) -> (-1.395, 0.51) at
+    # Z -1.339.
+    sel = (res.nominal.line == g71) & (res.nominal.kind == tc.LINE)
+    start = res.nominal.start[sel][:, [0, 2]] / 25.4
+    end = res.nominal.end[sel][:, [0, 2]] / 25.4
+    groove = [i for i in range(len(end)) if abs(start[i, 0] - 0.44) < 1e-9 and abs(end[i, 0] - 0.44) < 1e-9
+              and abs(start[i, 1] + 1.007) < 1e-9]
+    assert len(groove) == 1
+    assert end[groove[0], 1] == pytest.approx(-1.339, abs=1e-9)
+    # G76: first pass at 0.012: X (radius) 0.36955 + 0.068 - 0.012, Z moved by -0.012 tan 30;
+    # the thread stops one lead (0.1111) short of Z-0.9 and pulls out 0.1111 at 45 degrees.
+    g76 = lines.index("G76 X0.7391 Z-0.9 K0.068 D0.012 A60 F0.1111") + 1
+    ends = res.nominal.end[res.nominal.line == g76][:, [0, 2]] / 25.4
+    s = -0.012 * np.tan(np.radians(30))
+    x = 0.36955 + 0.068 - 0.012
+    np.testing.assert_allclose(ends[:5], [(x, 0.3 + s), (x, -0.9 + s + 0.1111), (x + 0.1111, -0.9 + s),
+                                          (0.5, -0.9 + s), (0.5, 0.3)], atol=1e-9)

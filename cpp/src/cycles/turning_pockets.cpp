@@ -60,7 +60,11 @@ public:
                              "passes have no direction"};
         if (du_ == 0) not_monotonic(contour.pieces.back().line);
         approach_kind_ = r.rapid_infeed ? StepKind::rapid : StepKind::feed;
-        add({Vec2::Zero(), local(s), Vec2::Zero(), 0, contour.pieces.front().line, true});
+        // The contour may not begin behind the start point along the cut; the allowance may
+        // put it there (the P block at A's Z, W > 0): the stock then begins above it.
+        if ((contour.start.x() - r.start.x()) * du_ < -kEps) not_monotonic(contour.pieces.front().line);
+        top_ = Vec2(std::min(0.0, local(s).x()), 0);
+        add({top_, local(s), Vec2::Zero(), 0, contour.pieces.front().line, true});
         Vec2 from = local(s);
         for (const ContourPiece& p : contour.pieces) {
             const Vec2 end = local(p.end + rough);
@@ -76,7 +80,7 @@ public:
 
     std::vector<Step> plan() {
         std::vector<Pending> pockets;
-        rough({{{0, Vec2::Zero()}, end_point()}, 0, {0, Vec2::Zero()}}, pockets, true);
+        rough({{{0, top_}, end_point()}, 0, {0, top_}}, pockets, true);
         while (!pockets.empty()) {
             const Pending p = pockets.back();
             pockets.pop_back();
@@ -98,6 +102,7 @@ private:
     std::vector<Piece> b_;
     std::vector<Step> out_;
     Vec2 cur_ = Vec2::Zero();
+    Vec2 top_ = Vec2::Zero();  // where the stock's boundary begins: A, or above a contour behind it
     std::size_t passes_ = 0;
 
     Vec2 local(const Vec2& q) const { return {(q.x() - r_.start.x()) * du_, (q.y() - r_.start.y()) * dv_}; }
