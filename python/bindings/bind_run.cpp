@@ -309,6 +309,8 @@ void bind_run(py::module_& m) {
                        "the Fanuc T series' lathe cycles G70-G76, G90/G92/G94 and G32")
         .def_readwrite("turning_escape", &ControlProfile::turning_escape,
                        "the escape of a G71/G72 pass when the cycle gives no R, mm (Fanuc parameter 5133, Haas setting 73)")
+        .def_readwrite("pattern_return_shifted", &ControlProfile::pattern_return_shifted,
+                       "G73: after each pass the tool goes back to the start shifted as the next pass (Haas)")
         .def_readwrite("thread_chamfer", &ControlProfile::thread_chamfer,
                        "the pull-out chamfer at the end of G92 and one-block G76 threads, in leads (Haas setting 95; 0: none)")
         .def_readwrite("thread_chamfer_angle", &ControlProfile::thread_chamfer_angle,

@@ -276,6 +276,7 @@ class ControlProfile:
     turning_cycles: bool
     turning_escape: float
     roughing_nose_allowance: bool
+    pattern_return_shifted: bool
     thread_chamfer: float
     thread_chamfer_angle: float
     thread_finish_allowance: float

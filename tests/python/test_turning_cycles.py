@@ -241,6 +241,25 @@ def test_g73_repeats_the_contour_shifted_ever_closer():
     assert np.all(res.nominal.feed[sel][res.nominal.kind[sel] == tc.LINE] == 0.2 * 600)
 
 
+def test_haas_one_block_g73_returns_to_the_start_shifted_as_the_next_pass():
+    # The same cycle in Haas's one block: I3 (radius) K1 the distance from the first pass to
+    # the last, D3 passes. Haas: "when block Q is reached a rapid departure move is executed to
+    # the Start position plus the offset for the second roughing pass": after the first pass
+    # to A + (1.7, 0.6) (the second pass's shift), after the second to A + (0.2, 0.1), after
+    # the last to A.
+    text = ("G21 G18 G97 S600 M3\nG99\nG0 X30 Z2\nG73 P10 Q20 U0.4 W0.1 I3 K1 D3 F0.2\nN10 G0 X10 Z0\nG1 Z-10\n"
+            "X20 Z-15\nN20 X30\nM30\n")
+    res = tc.run(tc.Program.parse(text, dialect="fanuc"), machine="haas-lathe")
+    sel = res.nominal.line == 4
+    expected = []
+    for (dx, dz), back in [((3.2, 1.1), (15 + 1.7, 2 + 0.6)), ((1.7, 0.6), (15 + 0.2, 2 + 0.1)), ((0.2, 0.1), (15, 2))]:
+        expected += [(5 + dx, dz), (5 + dx, -10 + dz), (10 + dx, -15 + dz), (15 + dx, -15 + dz), back]
+    np.testing.assert_allclose(_xz(res.nominal)[sel], expected, atol=1e-9)
+    # On a Fanuc lathe each pass goes back to A itself.
+    res = _lathe(text)
+    np.testing.assert_allclose(_xz(res.nominal)[res.nominal.line == 4][[4, 9, 14]], [(15, 2)] * 3, atol=1e-9)
+
+
 def test_g75_grooves_in_pecks():
     # From X42 Z-20 (radius 21): grooves at Z-20, -23, -26 (Q3000: 3 mm), each pecked 2 mm
     # (P2000) deep to radius 15, 0.5 back after each peck (R0.5), out to 21 at rapid.

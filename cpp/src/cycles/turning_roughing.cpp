@@ -118,17 +118,20 @@ std::vector<Step> rough_type1(const Contour& contour, const Roughing& r) {
 }
 
 std::vector<Step> pattern_repeat(const Contour& contour, const Vec2& start, const Vec2& first, const Vec2& last,
-                                 int passes, bool rapid_approach) {
+                                 int passes, bool rapid_approach, bool return_shifted) {
     if (passes < 1)
         throw CycleError{code::cycle_bad_value, "PS0062 ILLEGAL COMMAND IN G71-G76: the number of divisions must be 1 or more"};
     std::vector<Step> out;
-    for (int j = 1; j <= passes; ++j) {
+    auto shift = [&](int j) {
         const double t = passes == 1 ? 0.0 : static_cast<double>(passes - j) / (passes - 1);
-        const Vec2 s = last + t * (first - last);
+        return last + t * (first - last);
+    };
+    for (int j = 1; j <= passes; ++j) {
+        const Vec2 s = shift(j);
         out.push_back({rapid_approach ? StepKind::rapid : StepKind::feed, contour.start + s});
         for (const ContourPiece& p : contour.pieces)
             out.push_back({p.dir == 0 ? StepKind::feed : StepKind::arc, p.end + s, p.center + s, p.dir, p.line});
-        out.push_back({StepKind::rapid, start});
+        out.push_back({StepKind::rapid, return_shifted && j < passes ? start + shift(j + 1) : start});
     }
     return out;
 }

@@ -76,8 +76,9 @@ std::vector<Step> rough_type2(const Contour& contour, const Roughing& r);
 
 // Pattern repeating (G73): `passes` passes along the contour, the first shifted by `first`,
 // the last by `last`, the ones between evenly; each from the start point to the shifted
-// contour's first point (rapid or feed), along it at feed, and at rapid back to the start.
+// contour's first point (rapid or feed), along it at feed, and at rapid back to the start
+// (return_shifted: to the start shifted as the next pass is, the last pass to the start).
 std::vector<Step> pattern_repeat(const Contour& contour, const Vec2& start, const Vec2& first, const Vec2& last,
-                                 int passes, bool rapid_approach);
+                                 int passes, bool rapid_approach, bool return_shifted);
 
 }  // namespace toolcomp::cycles

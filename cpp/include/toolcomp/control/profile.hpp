@@ -344,6 +344,10 @@ struct ControlProfile {
     // (Haas setting 95; 0: none), and its angle from the Z axis in degrees (setting 96);
     // Haas M23/M24 (machine actions thread_chamfer_on/off) switch it. The one-block G76's
     // finishing allowance (setting 86) and least depth of a pass (setting 99), in mm.
+    // G73: after each pass but the last the tool goes back to the start point shifted as the
+    // next pass is (Haas: "a rapid departure move ... to the Start position plus the offset
+    // for the second roughing pass"). false: back to the start point itself.
+    bool pattern_return_shifted = false;
     double thread_chamfer = 0;
     double thread_chamfer_angle = 45;
     double thread_finish_allowance = 0;

@@ -169,9 +169,11 @@ void Interp::roughing_cycle(const BlockWords& bw, int code) {
 // evenly; each from the start point and back to it. The contour need not be monotonic.
 void Interp::pattern_cycle(const BlockWords& bw) {
     const int col = bw.g_column[g_nonmodal];
-    for (char c : {'X', 'Z', 'I', 'K', 'D'})
+    for (char c : {'X', 'Z'})
         if (bw.has(c)) fail(code::unsupported_word, std::string(1, c) + " in G73 is not supported by toolcomp", bw[c].column);
     if (!bw.has('P') && !bw.has('Q')) {  // G73 U(Δi) W(Δk) R(d)
+        for (char c : {'I', 'K', 'D'})
+            if (bw.has(c)) fail(code::unsupported_word, std::string(1, c) + " in G73 without P and Q", bw[c].column);
         if (bw.has('U')) pattern_.relief_x = bw['U'].value;
         if (bw.has('W')) pattern_.relief_z = bw['W'].value;
         if (bw.has('R')) {
@@ -184,6 +186,18 @@ void Interp::pattern_cycle(const BlockWords& bw) {
         return;
     }
     if (bw.has('R')) fail(code::unsupported_word, "R in G73 with P and Q is not supported by toolcomp", bw['R'].column);
+    // The one-block form (Haas): I, K the distance from the first pass to the last (I a
+    // radius), D the number of passes; for this cycle only.
+    PatternRepeat pattern = pattern_;
+    if (bw.has('I')) pattern.relief_x = bw['I'].value;
+    if (bw.has('K')) pattern.relief_z = bw['K'].value;
+    if (bw.has('D')) {
+        const double d = bw['D'].value;
+        if (d != std::floor(d) || d < 1 || d > 100000)
+            fail(code::cycle_bad_value, "PS0062 ILLEGAL COMMAND IN G71-G76: G73 D is the number of passes, 1 or more",
+                 bw['D'].column);
+        pattern.divisions = static_cast<int>(d);
+    }
     contour_cycle_can_start("G73", col);
     const auto [from, to] = contour_blocks(bw);
     const BlockWords first = first_block(from, col);
@@ -191,10 +205,11 @@ void Interp::pattern_cycle(const BlockWords& bw) {
     const cycles::Contour contour = cycle_contour(from, to, true);
     line_ = bw.line;
     const Vec2 last(word(bw, 'W'), word(bw, 'U') / 2);  // (Z, X radius)
-    const Vec2 relief(pattern_.relief_z, pattern_.relief_x);
+    const Vec2 relief(pattern.relief_z, pattern.relief_x);
     std::vector<cycles::Step> steps;
     try {
-        steps = cycles::pattern_repeat(contour, turning_uv(pos_.head<3>(), true), last + relief, last, pattern_.divisions, rapid);
+        steps = cycles::pattern_repeat(contour, turning_uv(pos_.head<3>(), true), last + relief, last, pattern.divisions, rapid,
+                                       profile_.pattern_return_shifted);
     } catch (const cycles::CycleError& e) {
         fail(e.code, e.message, col);
     }
