@@ -243,6 +243,7 @@ private:
     void thread_passes(const ThreadPasses& t, int col);
     void haas_threading(const BlockWords& bw, int col);     // G76 X Z K D A I F (one block)
     double thread_chamfer_length(double lead) const;        // the profile's chamfer when on
+    std::vector<double> thread_depths(double first, double least, double rough_to, int col) const;
     void thread_cut(const Vec6& s, const Vec6& e, double chamfer, double angle, double out);
     struct SingleCycle {
         double z = 0, x = 0, r = 0;  // the last cycle's end Z, X and taper R (program units)
@@ -251,6 +252,7 @@ private:
     void pattern_cycle(const BlockWords& bw);              // G73
     BlockWords first_block(std::size_t from, int col);     // the P block of G71-G73 (G00/G01)
     void contour_cycle_can_start(const char* name, int col) const;
+    int pass_count(const BlockWords& bw, char c) const;    // G73 R / D
     static Vec2 turning_uv(const Vec3& q, bool along_z);
     cycles::Contour cycle_contour(std::size_t from, std::size_t to, bool along_z, RadiusRequest* nose = nullptr);
     Vec2 nose_allowance(const RadiusRequest& nose, const cycles::Contour& contour, const Vec2& start, bool g71) const;

@@ -72,13 +72,7 @@ void Interp::threading_cycle(const BlockWords& bw) {
     t.taper = bw.has('R') ? bw['R'].value : 0.0;
     t.angle = thread_.angle;
     t.chamfer = thread_.chamfer * (feed_ / scale()) / 10;
-    for (int n = 1;; ++n) {
-        double d = first * std::sqrt(static_cast<double>(n));
-        if (!t.depths.empty() && d - t.depths.back() < thread_.min_depth) d = t.depths.back() + thread_.min_depth;
-        if (d >= rough_to - 1e-12) break;
-        t.depths.push_back(d);
-        if (t.depths.size() > 100000) fail(code::cycle_bad_value, "PS0062 ILLEGAL COMMAND IN G71-G76: more than 100000 passes", col);
-    }
+    t.depths = thread_depths(first, thread_.min_depth, rough_to, col);
     t.depths.push_back(rough_to);
     for (int m = 0; m < thread_.finishing; ++m) t.depths.push_back(height);
     thread_passes(t, col);
@@ -120,16 +114,22 @@ void Interp::haas_threading(const BlockWords& bw, int col) {
     t.chamfer = thread_chamfer_length(feed_ / scale());
     t.chamfer_angle = profile_.thread_chamfer_angle;
     const double rough_to = height - allowance;
-    for (int n = 1;; ++n) {
-        double d = first * std::sqrt(static_cast<double>(n));
-        if (!t.depths.empty() && d - t.depths.back() < least) d = t.depths.back() + least;
-        if (d >= rough_to - 1e-12) break;
-        t.depths.push_back(d);
-        if (t.depths.size() > 100000) fail(code::cycle_bad_value, "PS0062 ILLEGAL COMMAND IN G71-G76: more than 100000 passes", col);
-    }
+    t.depths = thread_depths(first, least, rough_to, col);
     if (allowance > 0) t.depths.push_back(rough_to);
     t.depths.push_back(height);
     thread_passes(t, col);
+}
+
+// The depths of the passes short of rough_to: first·√n, each at least `least` deeper.
+std::vector<double> Interp::thread_depths(double first, double least, double rough_to, int col) const {
+    std::vector<double> depths;
+    for (int n = 1;; ++n) {
+        double d = first * std::sqrt(static_cast<double>(n));
+        if (!depths.empty() && d - depths.back() < least) d = depths.back() + least;
+        if (d >= rough_to - 1e-12) return depths;
+        depths.push_back(d);
+        if (depths.size() > 100000) fail(code::cycle_bad_value, "PS0062 ILLEGAL COMMAND IN G71-G76: more than 100000 passes", col);
+    }
 }
 
 double Interp::thread_chamfer_length(double lead) const {

@@ -176,13 +176,7 @@ void Interp::pattern_cycle(const BlockWords& bw) {
             if (bw.has(c)) fail(code::unsupported_word, std::string(1, c) + " in G73 without P and Q", bw[c].column);
         if (bw.has('U')) pattern_.relief_x = bw['U'].value;
         if (bw.has('W')) pattern_.relief_z = bw['W'].value;
-        if (bw.has('R')) {
-            const double d = bw['R'].value;
-            if (d != std::floor(d) || d < 1 || d > 100000)
-                fail(code::cycle_bad_value, "PS0062 ILLEGAL COMMAND IN G71-G76: G73 R is the number of divisions, 1 or more",
-                     bw['R'].column);
-            pattern_.divisions = static_cast<int>(d);
-        }
+        if (bw.has('R')) pattern_.divisions = pass_count(bw, 'R');
         return;
     }
     if (bw.has('R')) fail(code::unsupported_word, "R in G73 with P and Q is not supported by toolcomp", bw['R'].column);
@@ -191,13 +185,7 @@ void Interp::pattern_cycle(const BlockWords& bw) {
     PatternRepeat pattern = pattern_;
     if (bw.has('I')) pattern.relief_x = bw['I'].value;
     if (bw.has('K')) pattern.relief_z = bw['K'].value;
-    if (bw.has('D')) {
-        const double d = bw['D'].value;
-        if (d != std::floor(d) || d < 1 || d > 100000)
-            fail(code::cycle_bad_value, "PS0062 ILLEGAL COMMAND IN G71-G76: G73 D is the number of passes, 1 or more",
-                 bw['D'].column);
-        pattern.divisions = static_cast<int>(d);
-    }
+    if (bw.has('D')) pattern.divisions = pass_count(bw, 'D');
     contour_cycle_can_start("G73", col);
     const auto [from, to] = contour_blocks(bw);
     const BlockWords first = first_block(from, col);
@@ -215,6 +203,15 @@ void Interp::pattern_cycle(const BlockWords& bw) {
     }
     emit_steps(steps, true, bw, col);
     if (from == frames_.back().pc) frames_.back().pc = to + 1;
+}
+
+// G73 R (two-block) or D (one-block): the number of passes, a whole number from 1.
+int Interp::pass_count(const BlockWords& bw, char c) const {
+    const double d = bw[c].value;
+    if (d != std::floor(d) || d < 1 || d > 100000)
+        fail(code::cycle_bad_value, std::string("PS0062 ILLEGAL COMMAND IN G71-G76: G73 ") + c + " is the number of passes, 1 or more",
+             bw[c].column);
+    return static_cast<int>(d);
 }
 
 // What G71-G73 need to start: no nose radius compensation on, the ZX plane, a feed.
