@@ -55,7 +55,7 @@ int m_group(int c, const ControlProfile& p) {
         case 70: case 80: case 90: return m_coolant;
         case 480: case 490: case 500: case 510: case 520: case 530: return m_override;
         case 620: case 630: case 640: case 650: case 660: case 670: case 680:
-            return m_io;  // digital/analog I/O: refused when run (see interp.cpp)
+            return m_io;  // digital/analog I/O: no effect on the path (interp_machine.cpp)
         case 190: case 700: case 710: case 720: case 730:
             return kUnsupported;
         case 980: case 990: return p.m98_subprograms ? m_subprogram : kUnknown;

@@ -300,7 +300,7 @@ void Interp::check_words(const BlockWords& bw, int motion_to_be) {
     if (bw.has('K') && !(arc || g87 || exit_dir)) fail(code::unused_word, "K word with no G2, G3, G33, G33.1, G76, or G87 to use it", col('K'));
     if (bw.has('L')) {
         int rc = bw.g[g_radius_comp];
-        if (!(g0 == 100 || cycle_block || rc >= 410))  // G41, G41.1, G42, G42.1
+        if (!(g0 == 100 || cycle_block || rc >= 410 || bw.m[m_io] == 660))  // G41, G41.1, G42, G42.1, M66
             fail(code::unused_word,
                  "L word with no G10, cutter compensation, canned cycle, digital/analog input, M98 or NURBS code",
                  col('L'));
@@ -505,8 +505,7 @@ bool Interp::execute(const BlockWords& bw) {
     if (motion_code >= 382 && motion_code <= 385)
         fail(code::unsupported_g_code, "G38." + std::to_string(motion_code - 380) + " is not supported by toolcomp",
              bw.g_column[g_motion]);
-    if (int io = bw.m[m_io]; io >= 0)
-        fail(code::unsupported_m_code, "M" + std::to_string(io / 10) + " is not supported by toolcomp", bw.m_column[m_io]);
+    if (bw.m[m_io] >= 0) io_code(bw);
 
     // 2-4: feed mode, feed, speed
     if (modal) {

@@ -212,6 +212,8 @@ private:
     void fanuc_dwell(BlockWords& bw) const;           // G04 X / U: the dwell, not a move
     void inverse_time_rate(double feed);
 
+    void io_code(const BlockWords& bw);  // M62-M68 (interp_io.cpp)
+
     // ---- canned cycles (interp_cycles.cpp) ---------------------------------------------------
     void cycle(const BlockWords& bw, int code);
 
