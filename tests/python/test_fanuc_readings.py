@@ -153,3 +153,4 @@ def test_g0_beside_g28_sets_the_mode_and_g28_takes_the_axes():
     res = _run("G21 G90 G01 X10. Y10. F100.\nG00 G28 X0 Y0\nX5.\nM30\n")
     np.testing.assert_allclose(res.nominal.end[1:], [[0, 0, 0], [0, 0, 0], [5, 0, 0]])
     assert res.nominal.kind[-1] == tc.RAPID
+

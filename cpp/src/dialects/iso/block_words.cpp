@@ -110,7 +110,7 @@ void add_m(BlockWords& bw, const Word& w, const ControlProfile& profile, const M
 
 int BlockWords::axis_column() const {
     int col = 0;
-    for (char c : {'X', 'Y', 'Z', 'A', 'B', 'C', 'U', 'V', 'W'})
+    for (char c : {'X', 'Y', 'Z', 'A', 'B', 'C', 'U', 'V', 'W', '@', '^'})
         if (has(c) && (col == 0 || (*this)[c].column < col)) col = (*this)[c].column;
     return col;
 }

@@ -18,19 +18,21 @@ struct WordSlot {
     bool set = false;
 };
 
+// A word's slot: A..Z, then LinuxCNC's polar coordinates @ (radius) and ^ (angle).
+constexpr int letter_index(char c) { return c == '@' ? 26 : c == '^' ? 27 : c - 'A'; }
 // A letter's bit in BlockWords::letters.
-constexpr std::uint32_t letter_bit(char c) { return std::uint32_t{1} << (c - 'A'); }
+constexpr std::uint32_t letter_bit(char c) { return std::uint32_t{1} << letter_index(c); }
 
 struct BlockWords {
     int line = 0;
-    // A..Z except G and M: the value and column of each letter in `letters` (the others are
-    // never read, nor cleared for each block).
+    // A..Z except G and M, @ and ^: the value and column of each letter in `letters` (the
+    // others are never read, nor cleared for each block).
     struct Slot {
         double value;
         int column;
     };
-    std::array<Slot, 26> letter;
-    std::uint32_t letters = 0;  // bit c - 'A' for each letter the block has
+    std::array<Slot, 28> letter;
+    std::uint32_t letters = 0;  // letter_bit(c) for each letter the block has
     std::uint32_t g_groups = 0;         // bit of each G group with a code
     std::array<int, g_group_count> g;   // code10 per group, -1 when none
     std::array<int, g_group_count> g_column{};
@@ -43,20 +45,22 @@ struct BlockWords {
 
     static constexpr std::uint32_t kAxes = letter_bit('X') | letter_bit('Y') | letter_bit('Z') | letter_bit('A') |
                                            letter_bit('B') | letter_bit('C') | letter_bit('U') | letter_bit('V') |
-                                           letter_bit('W');
+                                           letter_bit('W') | letter_bit('@') | letter_bit('^');
+    static constexpr std::uint32_t kPolar = letter_bit('@') | letter_bit('^');
 
     // The letter's word; an unset slot (value 0, column 0) when the block has none.
     WordSlot operator[](char c) const {
         if (!has(c)) return {};
-        const Slot& s = letter[static_cast<std::size_t>(c - 'A')];
+        const Slot& s = letter[static_cast<std::size_t>(letter_index(c))];
         return {s.value, s.column, true};
     }
     void set(char c, double value, int column) {
-        letter[static_cast<std::size_t>(c - 'A')] = {value, column};
+        letter[static_cast<std::size_t>(letter_index(c))] = {value, column};
         letters |= letter_bit(c);
     }
     bool has(char c) const { return (letters & letter_bit(c)) != 0; }
     bool has_axis() const { return (letters & kAxes) != 0; }
+    bool has_polar() const { return (letters & kPolar) != 0; }
     // A G code of a group other than motion (G0-G3, cycles), resp. an M code: a plain move
     // has neither, and execute() passes over what they would set.
     bool modal_codes() const { return (g_groups & ~(std::uint32_t{1} << g_motion)) != 0; }

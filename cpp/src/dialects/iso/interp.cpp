@@ -376,6 +376,7 @@ bool Interp::execute(const BlockWords& bw) {
     const int g0 = bw.g[g_nonmodal];
     const int motion_code = bw.g[g_motion];
     const bool axes = bw.has_axis();
+    if (bw.has_polar()) polar_checks(bw);
     if (profile_.g_code_system_a && bw.g_groups != 0) system_a_codes(bw);
     // G80 of group 09 (cycles_own_group): the cycle ends, the group 01 mode before it is back.
     if (bw.g[g_cycle] == 800 && (is_cycle(st_.motion) || st_.motion == 800)) {

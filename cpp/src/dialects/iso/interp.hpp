@@ -213,6 +213,8 @@ private:
     void inverse_time_rate(double feed);
 
     void io_code(const BlockWords& bw);  // M62-M68 (interp_io.cpp)
+    void polar_end(const BlockWords& bw, Vec6& end) const;  // @ ^ (interp_motion.cpp)
+    void polar_checks(const BlockWords& bw) const;
 
     // ---- canned cycles (interp_cycles.cpp) ---------------------------------------------------
     void cycle(const BlockWords& bw, int code);

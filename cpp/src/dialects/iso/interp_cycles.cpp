@@ -53,16 +53,25 @@ void Interp::cycle(const BlockWords& bw, int code) {
         cycle_il_set_ = true;
     }
     double old_cc = cycle_il_;
-    double a = pos_[ax.a], b = pos_[ax.b], da = 0, db = 0, r, bottom;
+    double a = pos_[ax.a], b = pos_[ax.b], da = 0, db = 0, dr = 0, dt = 0, r, bottom;
     const char la = letters[ax.a], lb = letters[ax.b];
+    constexpr double kD2R = 3.14159265358979323846 / 180.0;
     if (st_.incremental) {
         if (bw.has(la)) da = axis_value(bw, ax.a);
         if (bw.has(lb)) db = axis_value(bw, ax.b);
+        if (bw.has('@')) dr = bw['@'].value;  // polar (G17): each repeat further out and on
+        if (bw.has('^')) dt = bw['^'].value * kD2R;
         r = cyc_.r + old_cc;
         bottom = r + cyc_.z;  // the depth word is measured from R
     } else {
         if (bw.has(la)) a = axis_value(bw, ax.a);
         if (bw.has(lb)) b = axis_value(bw, ax.b);
+        if (bw.has_polar()) {  // about the origin, the one not given from the current point
+            const double radius = bw.has('@') ? bw['@'].value : std::hypot(pos_[1], pos_[0]);
+            const double theta = bw.has('^') ? bw['^'].value * kD2R : std::atan2(pos_[1], pos_[0]);
+            a = radius * std::cos(theta);
+            b = radius * std::sin(theta);
+        }
         r = cyc_.r;
         bottom = cyc_.z;
     }
@@ -115,6 +124,15 @@ void Interp::cycle(const BlockWords& bw, int code) {
         if (rep > 0) count_block(bw['L'].column);
         a += da;
         b += db;
+        auto polar_step = [&](double more_radius, double more_angle) {  // LinuxCNC's CYCLE_MACRO
+            if (b == 0 && a == 0)
+                fail(code::polar_coordinates, "Incremental motion with polar coordinates is indeterminate when at the origin");
+            const double theta = std::atan2(b, a) + more_angle, radius = std::hypot(b, a) + more_radius;
+            a = radius * std::cos(theta);
+            b = radius * std::sin(theta);
+        };
+        if (dr != 0) polar_step(dr, 0.0);
+        if (dt != 0) polar_step(0.0, dt);
         // To the hole at the level the tool is at when that is above R, else at the clearance
         // level (LinuxCNC 2.9: after a G99 cycle a G98 one with a lower R moves across at
         // the old R; a tool below R goes diagonally up), then down to R.

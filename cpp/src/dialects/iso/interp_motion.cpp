@@ -43,7 +43,60 @@ Vec6 Interp::find_end(const BlockWords& bw) const {
     // Fanuc lathes: U and W are increments of X (a diameter in diameter mode) and Z.
     if (bw.has('U')) end[0] = pos_[0] + bw['U'].value * (st_.diameter ? 0.5 : 1.0);
     if (bw.has('W')) end[2] = pos_[2] + bw['W'].value;
+    if (bw.has_polar()) polar_end(bw, end);
     return end;
+}
+
+// LinuxCNC's polar coordinates (G17, no X or Y: polar_checks): @ the radius and ^ the angle
+// (degrees) about the program's origin, the one not given kept from the current point. In
+// G91 @ adds to the current point's radius and ^ turns it about the origin. (find_ends)
+void Interp::polar_end(const BlockWords& bw, Vec6& end) const {
+    constexpr double kD2R = 3.14159265358979323846 / 180.0;
+    double& x = end[0];
+    double& y = end[1];
+    const bool r = bw.has('@'), t = bw.has('^');
+    auto fail_polar = [&](const char* why) { fail(code::polar_coordinates, why, bw[r ? '@' : '^'].column); };
+    if (!st_.incremental) {
+        if (r && t) {
+            x = bw['@'].value * std::cos(bw['^'].value * kD2R);
+            y = bw['@'].value * std::sin(bw['^'].value * kD2R);
+        } else if (r) {
+            if (y == 0 && x == 0) fail_polar("Must specify angle in polar coordinate if at the origin");
+            const double theta = std::atan2(y, x);
+            x = bw['@'].value * std::cos(theta);
+            y = bw['@'].value * std::sin(theta);
+        } else {
+            const double radius = std::hypot(y, x);
+            x = radius * std::cos(bw['^'].value * kD2R);
+            y = radius * std::sin(bw['^'].value * kD2R);
+        }
+        return;
+    }
+    if (r) {
+        if (y == 0 && x == 0) fail_polar("Incremental motion with polar coordinates is indeterminate when at the origin");
+        const double theta = std::atan2(y, x), radius = std::hypot(y, x) + bw['@'].value;
+        x = radius * std::cos(theta);
+        y = radius * std::sin(theta);
+    }
+    if (t) {
+        if (y == 0 && x == 0) fail_polar("G91 motion with polar coordinates is indeterminate when at the origin");
+        const double theta = std::atan2(y, x) + bw['^'].value * kD2R, radius = std::hypot(y, x);
+        x = radius * std::cos(theta);
+        y = radius * std::sin(theta);
+    }
+}
+
+// What LinuxCNC refuses of polar coordinates before it runs the block (enhance_block), and
+// the codes that take axis words, where toolcomp does not read them.
+void Interp::polar_checks(const BlockWords& bw) const {
+    const int col = bw[bw.has('@') ? '@' : '^'].column, g0 = bw.g[g_nonmodal];
+    if (st_.plane != Plane::xy) fail(code::polar_coordinates, "Cannot use polar coordinate except in G17 plane", col);
+    if (bw.has('X')) fail(code::polar_coordinates, "Cannot specify both polar coordinate and X word", bw['X'].column);
+    if (bw.has('Y')) fail(code::polar_coordinates, "Cannot specify both polar coordinate and Y word", bw['Y'].column);
+    if (g0 == 920) fail(code::polar_coordinates, "Polar coordinates can only be used for motion", col);
+    if (g0 == 530) fail(code::polar_coordinates, "Cannot use polar coordinates with G53", col);
+    if (g0 == 100 || g0 == 280 || g0 == 300 || g0 == 520)
+        fail(code::unsupported_word, "Polar coordinates with G" + std::to_string(g0 / 10) + " are not supported by toolcomp", col);
 }
 
 // LinuxCNC keeps an inverse-time move's rate as its feed rate (what a canned cycle in G93
@@ -163,8 +216,8 @@ void Interp::motion_arc(const BlockWords& bw, int code) {
     if (bw.has(c_off))
         fail(code::arc_offset_wrong_axis,
              std::string(1, c_off) + " word given for arc in " + plane_name + " plane", bw[c_off].column);
-    auto has_axis_word = [&](char l) {
-        return bw.has(l) || (l == 'X' && bw.has('U')) || (l == 'Z' && bw.has('W'));
+    auto has_axis_word = [&](char l) {  // polar coordinates count for X and Y (G17 only)
+        return bw.has(l) || (l == 'X' && bw.has('U')) || (l == 'Z' && bw.has('W')) || (l != 'Z' && bw.has_polar());
     };
     if (r_form && !has_axis_word(a_l) && !has_axis_word(b_l)) {
         // LinuxCNC names the axes in alphabetical order: "X and z words missing ... xz plane".
