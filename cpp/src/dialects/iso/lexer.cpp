@@ -136,11 +136,16 @@ void LineLexer::run() {
             fail(code::bad_character, "Bad character '" + shown + "' used");
         }
         Word w{u, 0, col()};
+        const std::size_t word_start = i_;
         ++i_;
         // LinuxCNC reads a line number as unsigned digits
         if (u == 'N' && prog_.dialect == Dialect::linuxcnc && i_ < s_.size() && (s_[i_] == '+' || s_[i_] == '-'))
             fail(code::bad_line_number, "Bad format unsigned integer");
         word_value(w);
+        // LinuxCNC 2.9's Fanuc-style subprogram call and return.
+        if (u == 'M' && prog_.dialect == Dialect::linuxcnc && w.expr < 0 && (w.value == 98 || w.value == 99))
+            fail_at(code::unsupported_m_code, std::string(w.value == 98 ? "M98 (Fanuc-style subprogram call)" : "M99 (Fanuc-style return)") +
+                                                  " is not supported by toolcomp", word_start);
         prog_.add_word(w);
         if (u != 'N') first_word_ = false;
     }

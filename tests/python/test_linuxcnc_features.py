@@ -1,0 +1,44 @@
+"""LinuxCNC features: polar coordinates (@ radius, ^ angle), whose paths are compared with rs274
+and the gcode module in tests/programs/oracle/polar_coordinates.ngc and its errors in
+tests/programs/errors/polar_*.ngc (here what toolcomp refuses on its own, and one path worked
+by hand), and the LinuxCNC features toolcomp does not run, refused by name."""
+import numpy as np
+import pytest
+
+import toolcomp as tc
+
+
+def test_a_bolt_circle_of_holes_with_g91_polar_repeats():
+    # G81 at @30 ^0, then G91 ^90 L3: holes at 90, 180, 270 degrees on radius 30.
+    res = tc.run(tc.Program.parse("G21 G17 G0 X0 Y0 Z5\nG81 @30 ^0 R1 Z-2 F100\nG91 G81 ^90 R-4 Z-3 L3\nG80\nM2\n"))
+    holes = res.nominal.end[(res.nominal.kind == tc.LINE)][:, :2]
+    np.testing.assert_allclose(holes, [(30, 0), (0, 30), (-30, 0), (0, -30)], atol=1e-12)
+
+
+def test_linuxcnc_polar_coordinates_with_codes_that_read_axis_words_are_refused():
+    # LinuxCNC reads @/^ with G28/G30 as the intermediate point and ignores them with G10/G52;
+    # toolcomp refuses them there rather than guess, naming the feature.
+    for code in ("G28", "G30", "G52", "G10 L2 P1"):
+        with pytest.raises(tc.ProgramError) as e:
+            tc.run(tc.Program.parse(f"G21 G0 X1 Y1\n{code} @5 ^30\nM2\n"))
+        assert e.value.code == "unsupported_word" and "Polar coordinates" in str(e.value), code
+    # Fanuc has no polar words.
+    with pytest.raises(tc.ParseError) as e:
+        tc.Program.parse("G0 @5\n", dialect="fanuc")
+    assert e.value.code == "bad_character"
+
+
+@pytest.mark.parametrize("text, code, column, feature", [
+    ("G21\nM98 P100\nM2\n", "unsupported_m_code", 1, "M98"),
+    ("G21\nG0 X1 M99\n", "unsupported_m_code", 7, "M99"),
+    ("G21\nM2\nO100 (a numbered subprogram)\nG0 X1\nM99\n", "unsupported_o_word", None, "numbered subprograms"),
+    ("G21 G18\nG71.1 Q1 X10 Z0 D1\nM2\n", "unsupported_g_code", 1, "G71.1"),
+    ("G21 G18\nG72.2 Q1 X10 Z0 D1\nM2\n", "unsupported_g_code", 1, "G72.2"),
+])
+def test_linuxcnc_features_not_run_are_named(text, code, column, feature):
+    # LinuxCNC 2.9 runs these; toolcomp does not yet, and says so rather than blaming the program.
+    with pytest.raises((tc.ParseError, tc.ProgramError)) as e:
+        tc.run(tc.Program.parse(text))
+    assert e.value.code == code and feature in str(e.value) and "not supported by toolcomp" in str(e.value)
+    if column is not None:
+        assert e.value.column == column
