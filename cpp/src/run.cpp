@@ -254,6 +254,7 @@ Result run_main(const Program& program, const ToolTable* tools, const RunOptions
         res.path.files = std::move(out.files);
     }
     res.parameters = std::move(out.parameters);
+    res.tools = std::move(out.tools);
     return res;
 }
 }  // namespace

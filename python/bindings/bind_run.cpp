@@ -287,6 +287,8 @@ void bind_run(py::module_& m) {
                        "C beside X/Z in a lathe's G1 is the Fanuc T chamfer (refused), not a C axis move")
         .def_readwrite("dwell_x_seconds", &ControlProfile::dwell_x_seconds,
                        "G4 X (U on lathes) is the dwell in seconds, P in milliseconds (Fanuc)")
+        .def_readwrite("g10_tool_table", &ControlProfile::g10_tool_table,
+                       "G10 L1 sets a tool's offsets in the run's copy of the tool table (LinuxCNC); False: refused")
         .def_readwrite("fanuc_g10", &ControlProfile::fanuc_g10,
                        "G10 L2/L20 as Fanuc reads them (L20 and L2 P0 refused, P 1-6, no R, L2 adds in G91); "
                        "False: LinuxCNC's G10")
@@ -392,6 +394,9 @@ void bind_run(py::module_& m) {
             "the compensated Path (after the compensation stages); the `nominal` Path itself when no stage changed "
             "a segment (a program without compensation: stored once)")
         .def_readonly("blocks", &Result::blocks, "number of blocks in the program")
+        .def_readonly("tools", &Result::tools,
+                      "the tool table as the program left it when it edited it (LinuxCNC G10 L1: the run's copy; "
+                      "the table passed in is never changed), else None")
         .def_readonly("parameters", &Result::parameters,
                       "numbered parameters set at the end of the run, {number: value} (LinuxCNC, Fanuc; vacant "
                       "Fanuc variables and LinuxCNC zeros left out)")

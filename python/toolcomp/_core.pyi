@@ -266,6 +266,7 @@ class ControlProfile:
     arc_turns_word: bool
     c_word_is_chamfer: bool
     fanuc_g10: bool
+    g10_tool_table: bool
     startup_motion: int
     cycles_own_group: bool
     g53_rapid: bool
@@ -320,6 +321,8 @@ class Result:
     def path(self) -> Path: ...
     @property
     def blocks(self) -> int: ...
+    @property
+    def tools(self) -> ToolTable | None: ...
     @property
     def parameters(self) -> dict[int, float]: ...
     @property

@@ -32,7 +32,7 @@ Known differences, handled explicitly (never by loosening the comparison):
    * Feed is 0 until the first F word (gcode_oracle.py passes initcode "F0": the module's canon
      stub GET_EXTERNAL_FEED_RATE returns 1), so the zero-feed error programs fail as in LinuxCNC.
 2. Artefacts of the module's canon layer, where the module is demonstrably not LinuxCNC
-   (MODULE_ARTEFACTS). After a tool change (M6, M61) the interpreter re-reads the current position
+   (MODULE_ARTEFACTS; and MODULE_WITHOUT_G10_L1: its SET_TOOL_TABLE_ENTRY does nothing). After a tool change (M6, M61) the interpreter re-reads the current position
    with GET_EXTERNAL_POSITION_*; in gcodemodule.cc those return the last STRAIGHT_TRAVERSE /
    STRAIGHT_FEED end in program coordinates: ARC_FEED never updates it ("XXX: set _pos_*") and tool
    length offset changes are not applied. LinuxCNC's emccanon returns the real position. So, after
@@ -182,9 +182,20 @@ def _select(mod: dict, rows) -> dict:
 # ---------------------------------------------------------------------------------------------
 # programs
 
+# Known difference 2 (the module's canon layer): gcodemodule.cc's SET_TOOL_TABLE_ENTRY does nothing,
+# so a G10 L1 edit never reaches the tool data the module serves. rs274 applies it, and
+# test_oracle.py compares these programs with rs274.
+MODULE_WITHOUT_G10_L1 = {"g10_l1_tool_table"}
+
+
 @pytest.mark.parametrize("prog", sorted(PROGRAMS.glob("*.ngc")), ids=lambda p: p.stem)
 def test_program_matches_gcode_module(prog):
     tbl = _table_for(prog)
+    if prog.stem in MODULE_WITHOUT_G10_L1:
+        diffs = differences(module_run(prog, tbl), toolcomp_columns(toolcomp_nominal(prog, tbl)))
+        assert diffs, "the gcode module now applies G10 L1: compare %s directly" % prog.name
+        pytest.xfail("gcode module: SET_TOOL_TABLE_ENTRY is a no-op, G10 L1 is not applied (rs274 agrees "
+                     "with toolcomp)")
     assert_same(module_run(prog, tbl), toolcomp_nominal(prog, tbl), prog.name)
 
 

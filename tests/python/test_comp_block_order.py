@@ -44,11 +44,13 @@ def test_g53_straight_moves_count():
     assert res.path.kind[-1] == tc.ARC_CW
 
 
-def test_a_tool_table_edit_under_compensation_is_refused_as_not_run():
-    # LinuxCNC allows G10 L1 while compensating (only L2/L20 of the active system are refused);
-    # toolcomp does not run tool table edits, and says so
-    with pytest.raises(tc.ProgramError, match=r"G10 L1 \(tool table edit\) is not supported by toolcomp"):
-        run("G41 D1\nG1 X10 Y0\nG10 L1 P1 R3\nG1 Y10\n")
+def test_a_tool_table_edit_under_compensation_leaves_the_radius_in_effect():
+    # LinuxCNC allows G10 L1 while compensating (only L2/L20 of the active system are refused):
+    # the radius G41 took stays until the next G41, so the path is the one without the edit.
+    edited = run("G41 D1\nG1 X10 Y0\nG10 L1 P1 R3\nG1 Y10\nG40 G0 X20\n")
+    plain = run("G41 D1\nG1 X10 Y0\nS1000\nG1 Y10\nG40 G0 X20\n")
+    np.testing.assert_array_equal(edited.path.end, plain.path.end)
+    assert edited.tools[1].edges[0].radius == 3
     with pytest.raises(tc.ProgramError, match="Cannot change the active coordinate system"):
         run("G41 D1\nG1 X10 Y0\nG10 L20 P1 X3\nG1 Y10\n")
 

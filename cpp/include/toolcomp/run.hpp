@@ -15,10 +15,9 @@
 #include "toolcomp/program/diagnostic.hpp"
 #include "toolcomp/program/input_limits.hpp"
 #include "toolcomp/program/program.hpp"
+#include "toolcomp/tools/tool_table.hpp"
 
 namespace toolcomp {
-
-class ToolTable;
 
 // Parse program text in the given dialect. strict: throws ParseError at the first syntax
 // error; otherwise the error is kept in the Program and raised when a run reaches it. A line
@@ -92,6 +91,7 @@ struct Result {
     std::size_t blocks = 0;
     std::optional<Blank> blank;  // the workpiece blank the program declares (mm), if any
     std::map<int, double> parameters;  // numbered parameters set at the end (LinuxCNC, Fanuc)
+    std::optional<ToolTable> tools;    // the tool table as the program left it, when it edited it (G10 L1)
     bool ok() const;
 };
 

@@ -291,6 +291,9 @@ struct ControlProfile {
     // L2 values add to the offset. False: LinuxCNC's G10 (L2 absolute even in G91, P0 the
     // active system, P up to 9, R the rotation).
     bool fanuc_g10 = false;
+    // G10 L1 P<tool> X Y Z A B C R I J Q sets a tool's offsets in the run's copy of the tool
+    // table (LinuxCNC). false: refused (not run).
+    bool g10_tool_table = false;
 
     // ---- how a program runs and ends (ISO dialects) -------------------------------------
     // A program must end with M2/M30 or '%' (LinuxCNC: "File ended with no percent sign or

@@ -213,6 +213,7 @@ private:
     void inverse_time_rate(double feed);
 
     void io_code(const BlockWords& bw);  // M62-M68 (interp_io.cpp)
+    void g10_tool(const BlockWords& bw);  // G10 L1 (interp_tool_table.cpp)
     void polar_end(const BlockWords& bw, Vec6& end) const;  // @ ^ (interp_motion.cpp)
     void polar_checks(const BlockWords& bw) const;
 
@@ -281,7 +282,8 @@ private:
     double turn_depth_ = 0, turn_escape_ = -1;  // G71 U R / G72 W R (program units; -1: not given)
 
     const Program& prog_;  // the main program
-    const ToolTable* tools_;
+    const ToolTable* tools_;                  // the caller's table, or edited_tools_ after a G10 L1
+    std::optional<ToolTable> edited_tools_;  // the run's copy, made at the first G10 L1
     const ControlProfile& profile_;
     InterpretOptions opts_;
     MotionSink& sink_;

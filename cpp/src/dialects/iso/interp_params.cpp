@@ -298,6 +298,6 @@ std::string Interp::substitute(const std::string& text) {
     return out;
 }
 
-InterpretOutput Interp::output() const { return {files_, params_.snapshot()}; }
+InterpretOutput Interp::output() const { return {files_, params_.snapshot(), edited_tools_}; }
 
 }  // namespace toolcomp::iso

@@ -3,6 +3,7 @@
 // The ISO interpreter: runs a Program block by block with LinuxCNC's modal semantics (or
 // Fanuc's where the profile says so) and emits the Motion stream.
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,10 +13,7 @@
 #include "toolcomp/program/diagnostic.hpp"
 #include "toolcomp/program/program.hpp"
 #include "toolcomp/program/search_path.hpp"
-
-namespace toolcomp {
-class ToolTable;
-}
+#include "toolcomp/tools/tool_table.hpp"
 
 namespace toolcomp::iso {
 
@@ -47,6 +45,7 @@ struct InterpretOptions {
 struct InterpretOutput {
     std::vector<std::string> files;  // the files moves came from, main program first (Motion::file)
     ParameterValues parameters;      // numbered parameters at the end (set ones only)
+    std::optional<ToolTable> tools;  // the tool table as the program left it, when it edited it (G10 L1)
 };
 
 // Emits every move into `sink`; non-fatal messages go to `diagnostics`.
