@@ -249,6 +249,7 @@ private:
     void haas_threading(const BlockWords& bw, int col);     // G76 X Z K D A I F (one block)
     double thread_chamfer_length(double lead) const;        // the profile's chamfer when on
     std::vector<double> thread_depths(double first, double least, double rough_to, int col) const;
+    void thread_cycle_can_start(int col) const;
     void thread_cut(const Vec6& s, const Vec6& e, double chamfer, double angle, double out);
     struct SingleCycle {
         double z = 0, x = 0, r = 0;  // the last cycle's end Z, X and taper R (program units)

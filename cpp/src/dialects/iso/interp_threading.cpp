@@ -59,8 +59,7 @@ void Interp::threading_cycle(const BlockWords& bw) {
     }
     if (!(bw.has('X') || bw.has('U')) || !(bw.has('Z') || bw.has('W')) || !bw.has('P') || !bw.has('Q') || !bw.has('F'))
         fail(code::cycle_bad_value, "PS0062 ILLEGAL COMMAND IN G71-G76: G76 needs X (U), Z (W), P (height), Q (first depth) and F", col);
-    if (speed_ <= 0) fail(code::zero_spindle_speed, "G76 needs the spindle turning (S)", col);
-    if (comp_on()) fail(code::unsupported_g_code, "G76 with tool nose radius compensation on is not supported by toolcomp", col);
+    thread_cycle_can_start(col);
     const double height = whole('P') * increment, first = whole('Q') * increment;
     const double rough_to = height - thread_.allowance;
     if (!(first > 0) || !(height > 0) || rough_to <= 0 || thread_.min_depth > height)
@@ -93,8 +92,7 @@ void Interp::haas_threading(const BlockWords& bw, int col) {
                                      "supported by toolcomp", bw['P'].column);
     if (!(bw.has('X') || bw.has('U')) || !(bw.has('Z') || bw.has('W')) || !bw.has('K') || !bw.has('D') || !bw.has('F'))
         fail(code::cycle_bad_value, "PS0062 ILLEGAL COMMAND IN G71-G76: G76 needs X (U), Z (W), K (height), D (first depth) and F", col);
-    if (speed_ <= 0) fail(code::zero_spindle_speed, "G76 needs the spindle turning (S)", col);
-    if (comp_on()) fail(code::unsupported_g_code, "G76 with tool nose radius compensation on is not supported by toolcomp", col);
+    thread_cycle_can_start(col);
     const double height = bw['K'].value, first = bw['D'].value;
     const double allowance = profile_.thread_finish_allowance / scale(), least = profile_.thread_min_cut / scale();
     double angle = 0;
@@ -118,6 +116,12 @@ void Interp::haas_threading(const BlockWords& bw, int col) {
     if (allowance > 0) t.depths.push_back(rough_to);
     t.depths.push_back(height);
     thread_passes(t, col);
+}
+
+// What either G76 needs to start: the spindle turning, no nose radius compensation.
+void Interp::thread_cycle_can_start(int col) const {
+    if (speed_ <= 0) fail(code::zero_spindle_speed, "G76 needs the spindle turning (S)", col);
+    if (comp_on()) fail(code::unsupported_g_code, "G76 with tool nose radius compensation on is not supported by toolcomp", col);
 }
 
 // The depths of the passes short of rough_to: first·√n, each at least `least` deeper.
