@@ -289,6 +289,8 @@ void bind_run(py::module_& m) {
                        "G4 X (U on lathes) is the dwell in seconds, P in milliseconds (Fanuc)")
         .def_readwrite("g10_tool_table", &ControlProfile::g10_tool_table,
                        "G10 L1 sets a tool's offsets in the run's copy of the tool table (LinuxCNC); False: refused")
+        .def_readwrite("numbered_subprograms", &ControlProfile::numbered_subprograms,
+                       "Fanuc-style numbered subprograms as LinuxCNC 2.9 reads them: O<n> ... M99, M98 P L as a line's first word")
         .def_readwrite("fanuc_g10", &ControlProfile::fanuc_g10,
                        "G10 L2/L20 as Fanuc reads them (L20 and L2 P0 refused, P 1-6, no R, L2 adds in G91); "
                        "False: LinuxCNC's G10")

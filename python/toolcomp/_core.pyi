@@ -267,6 +267,7 @@ class ControlProfile:
     c_word_is_chamfer: bool
     fanuc_g10: bool
     g10_tool_table: bool
+    numbered_subprograms: bool
     startup_motion: int
     cycles_own_group: bool
     g53_rapid: bool

@@ -294,6 +294,11 @@ struct ControlProfile {
     // G10 L1 P<tool> X Y Z A B C R I J Q sets a tool's offsets in the run's copy of the tool
     // table (LinuxCNC). false: refused (not run).
     bool g10_tool_table = false;
+    // LinuxCNC 2.9's Fanuc-style numbered subprograms: a bare O<n> line begins one, M98 P<n>
+    // [L<count>] as a line's first word calls it (<n>.ngc on the search path first, else the
+    // first O<n> after the call), M99 as a line's first word returns; #1-#30 are shared;
+    // M99 in the main program ends it as M2 does.
+    bool numbered_subprograms = false;
 
     // ---- how a program runs and ends (ISO dialects) -------------------------------------
     // A program must end with M2/M30 or '%' (LinuxCNC: "File ended with no percent sign or

@@ -32,8 +32,12 @@ enum class Stmt : std::uint8_t {
     // LinuxCNC O-words (label: "100" or "<name>")
     o_sub, o_endsub, o_call, o_return, o_if, o_elseif, o_else, o_endif,
     o_while, o_endwhile, o_do, o_repeat, o_endrepeat, o_break, o_continue,
+    // LinuxCNC 2.9's Fanuc-style numbered subprograms: M98 as a line's first word (the call;
+    // the line's other words are read, not run), M99 as a line's first word (the return in a
+    // subprogram; in the main program the block runs as a stop)
+    m98_call, m99_return,
     // Fanuc Macro B
-    program_number,  // O1000 (label) at the start of a program
+    program_number,  // O1000 (label) at the start of a program; LinuxCNC: a bare O<n> line
     goto_n,          // GOTO n (target: expression of the sequence number)
     if_goto,         // IF [cond] GOTO n
     if_then,         // IF [cond] THEN: the assignments after it in the block are conditional

@@ -58,7 +58,8 @@ int m_group(int c, const ControlProfile& p) {
             return m_io;  // digital/analog I/O: no effect on the path (interp_machine.cpp)
         case 190: case 700: case 710: case 720: case 730:
             return kUnsupported;
-        case 980: case 990: return p.m98_subprograms ? m_subprogram : kUnknown;
+        case 990: if (p.numbered_subprograms) return m_stop; [[fallthrough]];  // LinuxCNC: M99 in main = M2
+        case 980: return p.m98_subprograms ? m_subprogram : kUnknown;
         case 8000: case 8010: return p.ttrc_check_codes ? m_checks : kUnknown;
         default:
             // M100-M199 are user programs on LinuxCNC: without them the code is unknown.

@@ -152,7 +152,8 @@ FlowInfo scan_flow(const Program& prog) {
                     f.links[k].loop = stack.front().block;  // LinuxCNC returns even with the wrong label
                 break;  // outside a sub definition: a return from the called file, checked when run
             case Stmt::program_number:
-                f.programs.emplace(std::stol(s->label), k);
+                if (prog.dialect != Dialect::linuxcnc) f.programs.emplace(std::stol(s->label), k);
+                else f.numbered.emplace_back(s->label, k);
                 break;
             case Stmt::while_do:
                 fanuc_loops.push_back({k, s->loop});

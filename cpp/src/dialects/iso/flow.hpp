@@ -37,6 +37,7 @@ struct FlowInfo {
     std::map<std::string, std::size_t> subs;    // LinuxCNC label -> sub block
     std::map<long, std::size_t> numbers;        // Fanuc: N number -> first block with it
     std::map<long, std::size_t> programs;       // Fanuc O number -> its block
+    std::vector<std::pair<std::string, std::size_t>> numbered;  // LinuxCNC bare O<n>: label, block (in order)
 };
 
 inline constexpr const char* kNestedSub = "Nested subroutine definition";

@@ -198,7 +198,7 @@ void Interp::run_blocks() {
         count_block();
         block_ = &block;
         if (block.statement_count)
-            if (const Statement* s = control_statement(p, block)) {
+            if (const Statement* s = control_statement(p, block); s && !(s->kind == Stmt::m99_return && frames_.size() < 2)) {
                 control(*s, k);
                 continue;
             }
@@ -613,7 +613,9 @@ bool Interp::execute(const BlockWords& bw) {
     // 21: stop / end
     int stop = bw.m[m_stop];
     if (stop == 0 || stop == 10 || stop == 600) sink_.control({ControlKind::stop, line_, Vec3::Zero(), file_});
-    if (stop == 20 || stop == 300) {
+    if (stop == 990 && frames_.size() > 1)  // LinuxCNC: M99 not first in a subprogram's line
+        fail(code::m99_in_sub, "Bug:  Reached convert_stop() from M99 as subprogram return", bw.m_column[m_stop]);
+    if (stop == 20 || stop == 300 || stop == 990) {  // M99 in the main program: M2 (LinuxCNC, standalone)
         sink_.control({ControlKind::program_end, line_, Vec3::Zero(), file_});
         radius_ = {};  // M2/M30 end compensation (and reset the other modes)
         return false;

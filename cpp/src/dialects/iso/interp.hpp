@@ -72,6 +72,7 @@ struct Frame {
     std::size_t entry = 0;      // first block of the body (M98 / G65 L repeats)
     std::size_t sub_block = FlowInfo::npos;  // LinuxCNC: the sub block of the running subroutine
     long repeats_left = 0;      // M98 / G65 L: passes still to run after this one
+    long m98_loop = -1;         // LinuxCNC M98 L: passes still to run of the call on this level (-1: none)
     int call_line = 0;          // line of the calling block (in the caller's file)
     std::map<std::size_t, long> repeat_counts;  // o-repeat block -> passes left
     std::map<std::string, std::size_t> opened;  // LinuxCNC: if/while/repeat label -> its block, this call
@@ -340,6 +341,9 @@ private:
     std::vector<double> scratch_values_;
     std::string alarm_text_;                         // Fanuc #3000: the comment of the block
     std::set<std::pair<const LoadedProgram*, std::size_t>> recorded_subs_;  // definitions passed or called
+    std::map<std::string, std::pair<const LoadedProgram*, std::size_t>> numbered_found_;  // LinuxCNC O<n> found by M98
+    void numbered_call(std::size_t k);    // LinuxCNC M98 (interp_numbered.cpp)
+    void numbered_return(std::size_t k);  // LinuxCNC M99 in a subprogram
     bool value_returned_ = false;
     double value_ = 0;                               // #<_value>: what the last return gave
 };

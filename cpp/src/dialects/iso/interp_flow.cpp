@@ -164,9 +164,12 @@ void Interp::call_sub(const Statement& s) {
         where = &main_;
         found = where->flow.subs.find(label);
     }
-    if (found == where->flow.subs.end())
+    if (found == where->flow.subs.end()) {
+        for (const auto& [l, at] : where->flow.numbered)  // LinuxCNC's search meets a numbered sub
+            if (l == label) fail(code::o_word_structure, "Fanuc 'O....' subroutine must be called with 'M98'");
         fail(code::unknown_o_word, "EOF in file:" + frames_.back().prog().name + " seeking o-word: o<" + name +
                                    "> from line: " + std::to_string(line_));
+    }
     const std::size_t sub = found->second;
     if (where->flow.at(sub).partner == npos) {
         line_ = where->prog->last_line;
@@ -187,6 +190,8 @@ void Interp::call_sub(const Statement& s) {
 }
 
 void Interp::return_from_sub(const Statement& s) {
+    if (frames_.size() > 1 && frames_.back().kind == Frame::m98 && profile_.numbered_subprograms)
+        fail(code::o_word_structure, "Fanuc 'O....' subroutine definition must end with 'M99'");
     if (frames_.size() < 2 || frames_.back().kind != Frame::o_call)
         fail(code::return_outside_sub, std::to_string(line_) + ": not in a subroutine definition: '" + s.text + "'");
     const bool has_value = s.value >= 0;
@@ -278,7 +283,17 @@ void Interp::control(const Statement& s, std::size_t k) {
             if (links.endif == npos) unclosed();
             f.pc = links.endif + 1;
             break;
-        case Stmt::o_endif: case Stmt::o_do: case Stmt::program_number:  // (LinuxCNC lets do labels repeat)
+        case Stmt::o_endif: case Stmt::o_do:  // (LinuxCNC lets do labels repeat)
+            break;
+        case Stmt::program_number:  // a program's number (Fanuc); LinuxCNC: where a numbered sub begins
+            if (profile_.numbered_subprograms && f.kind == Frame::o_call)
+                fail(code::o_word_structure, "Fanuc 'O....' subroutine must be called with 'M98'");
+            break;
+        case Stmt::m98_call:
+            numbered_call(k);
+            break;
+        case Stmt::m99_return:
+            numbered_return(k);
             break;
         case Stmt::o_while:
             if (links.closes_do) {

@@ -142,12 +142,25 @@ void LineLexer::run() {
         if (u == 'N' && prog_.dialect == Dialect::linuxcnc && i_ < s_.size() && (s_[i_] == '+' || s_[i_] == '-'))
             fail(code::bad_line_number, "Bad format unsigned integer");
         word_value(w);
-        // LinuxCNC 2.9's Fanuc-style subprogram call and return.
-        if (u == 'M' && prog_.dialect == Dialect::linuxcnc && w.expr < 0 && (w.value == 98 || w.value == 99))
-            fail_at(code::unsupported_m_code, std::string(w.value == 98 ? "M98 (Fanuc-style subprogram call)" : "M99 (Fanuc-style return)") +
-                                                  " is not supported by toolcomp", word_start);
+        // LinuxCNC 2.9's Fanuc-style subprogram call and return, as a line's first word.
+        if (u == 'M' && prog_.dialect == Dialect::linuxcnc && first_word_ && w.expr < 0 && (w.value == 98 || w.value == 99)) {
+            Statement st;
+            st.kind = w.value == 98 ? Stmt::m98_call : Stmt::m99_return;
+            st.column = w.column;
+            prog_.add_statement(std::move(st));
+            first_word_ = false;
+            if (w.value == 98) {  // the call is the statement; M99 stays a word for the main program
+                m98_ = true;
+                continue;
+            }
+        }
         prog_.add_word(w);
         if (u != 'N') first_word_ = false;
+    }
+    if (m98_) {  // LinuxCNC reads the call's P when it reads the line
+        bool p = false;
+        for (const Word& w : prog_.words(prog_.blocks().back())) p = p || w.letter == 'P';
+        if (!p) fail_at(code::program_number_missing, "Found 'm98' code with no P-word", 0);
     }
 }
 

@@ -101,6 +101,7 @@ private:
     int line_;
     Program& prog_;
     bool first_word_ = true;
+    bool m98_ = false;  // LinuxCNC: the line begins with M98
     bool macros_ = false;
 };
 

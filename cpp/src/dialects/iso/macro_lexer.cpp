@@ -138,10 +138,12 @@ void LineLexer::o_word() {
         // LinuxCNC 2.9 (O<n> ... M99, called with M98).
         std::size_t k = i_;
         while (k < s_.size() && (s_[k] == ' ' || s_[k] == '\t')) ++k;
-        if (prog_.dialect == Dialect::linuxcnc && (k >= s_.size() || s_[k] == '(' || s_[k] == ';'))
-            fail(code::unsupported_o_word,
-                 "Fanuc-style numbered subprograms (O<n> ... M99, called with M98) are not supported by toolcomp");
-        fail(code::unknown_control_command, "Unknown control command in o word");
+        if (prog_.dialect != Dialect::linuxcnc || !(k >= s_.size() || s_[k] == '(' || s_[k] == ';') || st.target >= 0)
+            fail(code::unknown_control_command, "Unknown control command in o word");
+        st.kind = Stmt::program_number;
+        prog_.add_statement(std::move(st));
+        rest_is_comments();
+        return;
     }
     st.kind = found->kind;
     // Structures are matched by their labels before the program runs: a computed number only

@@ -43,6 +43,11 @@ public:
     void enter(const std::vector<double>& args);
     void enter_fanuc(const std::array<double, 34>& locals);
     void leave();
+    // A call that shares #1-#30 with its caller (LinuxCNC M98): only named locals are its own.
+    void enter_scope() { scopes_.emplace_back(); }
+    void leave_scope() {
+        if (scopes_.size() > 1) scopes_.pop_back();
+    }
     std::size_t depth() const { return saved_.size(); }
 
     // Values to start from (numbered); the values at the end.
