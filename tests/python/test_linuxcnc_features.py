@@ -29,9 +29,6 @@ def test_linuxcnc_polar_coordinates_with_codes_that_read_axis_words_are_refused(
 
 
 @pytest.mark.parametrize("text, code, column, feature", [
-    ("G21\nM98 P100\nM2\n", "unsupported_m_code", 1, "M98"),
-    ("G21\nG0 X1 M99\n", "unsupported_m_code", 7, "M99"),
-    ("G21\nM2\nO100 (a numbered subprogram)\nG0 X1\nM99\n", "unsupported_o_word", None, "numbered subprograms"),
     ("G21 G18\nG71.1 Q1 X10 Z0 D1\nM2\n", "unsupported_g_code", 1, "G71.1"),
     ("G21 G18\nG72.2 Q1 X10 Z0 D1\nM2\n", "unsupported_g_code", 1, "G72.2"),
 ])
