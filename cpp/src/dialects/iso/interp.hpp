@@ -342,6 +342,7 @@ private:
     std::string alarm_text_;                         // Fanuc #3000: the comment of the block
     std::set<std::pair<const LoadedProgram*, std::size_t>> recorded_subs_;  // definitions passed or called
     std::map<std::string, std::pair<const LoadedProgram*, std::size_t>> numbered_found_;  // LinuxCNC O<n> found by M98
+    void enter_sub(Frame::Kind kind, const LoadedProgram* where, std::size_t block);
     void numbered_call(std::size_t k);    // LinuxCNC M98 (interp_numbered.cpp)
     void numbered_return(std::size_t k);  // LinuxCNC M99 in a subprogram
     bool value_returned_ = false;

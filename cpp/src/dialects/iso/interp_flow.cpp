@@ -109,6 +109,18 @@ void Interp::push_frame(Frame f) {
     frames_.push_back(std::move(f));
 }
 
+// A call of the LinuxCNC subroutine that begins at `block` of `where` (its sub or O<n> line),
+// from the running block.
+void Interp::enter_sub(Frame::Kind kind, const LoadedProgram* where, std::size_t block) {
+    Frame f;
+    f.kind = kind;
+    f.call_line = line_;
+    f.at = where;
+    f.pc = f.entry = block + 1;
+    f.sub_block = block;
+    push_frame(std::move(f));
+}
+
 const LoadedProgram* Interp::load(const std::string& file_name) {
     if (auto it = by_file_.find(file_name); it != by_file_.end()) return it->second;
     for (const std::string& dir : opts_.search.dirs) {
@@ -178,13 +190,7 @@ void Interp::call_sub(const Statement& s) {
     // A definition the flow has not passed yet is recorded now (a forward call): the flow
     // must then never reach it.
     recorded_subs_.insert({where, sub});
-    Frame f;
-    f.kind = Frame::o_call;
-    f.call_line = line_;
-    f.at = where;
-    f.pc = f.entry = sub + 1;
-    f.sub_block = sub;
-    push_frame(std::move(f));
+    enter_sub(Frame::o_call, where, sub);
     params_.enter(args);
     value_returned_ = false;
 }

@@ -63,13 +63,7 @@ void Interp::numbered_call(std::size_t k) {
                                        std::to_string(line_));
         numbered_found_.emplace(label, std::make_pair(where, block));
     }
-    Frame f;
-    f.kind = Frame::m98;
-    f.call_line = line_;
-    f.at = where;
-    f.pc = f.entry = block + 1;
-    f.sub_block = block;
-    push_frame(std::move(f));
+    enter_sub(Frame::m98, where, block);
     params_.enter_scope();
 }
 
