@@ -291,6 +291,12 @@ void bind_run(py::module_& m) {
                        "G10 L1 sets a tool's offsets in the run's copy of the tool table (LinuxCNC); False: refused")
         .def_readwrite("numbered_subprograms", &ControlProfile::numbered_subprograms,
                        "Fanuc-style numbered subprograms as LinuxCNC 2.9 reads them: O<n> ... M99, M98 P L as a line's first word")
+        .def_readwrite("modal_state_codes", &ControlProfile::modal_state_codes,
+                       "M70-M73 save, invalidate and restore the modal state, M73 until the subroutine returns (LinuxCNC)")
+        .def_readwrite("tool_change_stops_spindle", &ControlProfile::tool_change_stops_spindle,
+                       "M6 stops the spindle (LinuxCNC without TOOL_CHANGE_WITH_SPINDLE_ON)")
+        .def_readwrite("restore_feed_speed_always", &ControlProfile::restore_feed_speed_always,
+                       "M72/M73 restores set F and S even when unchanged (LinuxCNC 2.9.1 on); False: only when they differ")
         .def_readwrite("fanuc_g10", &ControlProfile::fanuc_g10,
                        "G10 L2/L20 as Fanuc reads them (L20 and L2 P0 refused, P 1-6, no R, L2 adds in G91); "
                        "False: LinuxCNC's G10")

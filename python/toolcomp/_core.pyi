@@ -268,6 +268,9 @@ class ControlProfile:
     fanuc_g10: bool
     g10_tool_table: bool
     numbered_subprograms: bool
+    modal_state_codes: bool
+    restore_feed_speed_always: bool
+    tool_change_stops_spindle: bool
     startup_motion: int
     cycles_own_group: bool
     g53_rapid: bool

@@ -299,6 +299,16 @@ struct ControlProfile {
     // first O<n> after the call), M99 as a line's first word returns; #1-#30 are shared;
     // M99 in the main program ends it as M2 does.
     bool numbered_subprograms = false;
+    // LinuxCNC's M70 (save), M71 (invalidate), M72 (restore) and M73 (save, restored when the
+    // subroutine returns) of the modal state, one snapshot per call level; a restore runs the
+    // differences as G-code (interp_modal_state.cpp). false: M70-M73 are unknown M codes.
+    bool modal_state_codes = false;
+    // M6 stops the spindle: a program turns it on again after the change (LinuxCNC without
+    // [EMCIO]TOOL_CHANGE_WITH_SPINDLE_ON; read back by #<_spindle_on> and M70).
+    bool tool_change_stops_spindle = false;
+    // A restore sets F and S always, not only when they differ (LinuxCNC from 2.9.1 on; the
+    // 2.9.0 interpreter, the default, compares them).
+    bool restore_feed_speed_always = false;
 
     // ---- how a program runs and ends (ISO dialects) -------------------------------------
     // A program must end with M2/M30 or '%' (LinuxCNC: "File ended with no percent sign or

@@ -56,7 +56,9 @@ int m_group(int c, const ControlProfile& p) {
         case 480: case 490: case 500: case 510: case 520: case 530: return m_override;
         case 620: case 630: case 640: case 650: case 660: case 670: case 680:
             return m_io;  // digital/analog I/O: no effect on the path (interp_machine.cpp)
-        case 190: case 700: case 710: case 720: case 730:
+        case 700: case 710: case 720: case 730:  // LinuxCNC: in M3-M5's group
+            return p.modal_state_codes ? m_spindle : kUnsupported;
+        case 190:
             return kUnsupported;
         case 990: if (p.numbered_subprograms) return m_stop; [[fallthrough]];  // LinuxCNC: M99 in main = M2
         case 980: return p.m98_subprograms ? m_subprogram : kUnknown;

@@ -123,6 +123,8 @@ void Interp::set_units(bool inch) {
     lengths(g30_);
     for (double* v : {&cyc_.r, &cyc_.z, &cyc_.q, &cyc_.i, &cyc_.j, &cyc_.k, &cycle_il_}) *v *= f;
     radius_.radius *= f;
+    // LinuxCNC reads the G64 tolerance back from the machine here, which holds it in G64 only.
+    if (st_.path_control != 640) tolerance_ = 0;
 }
 
 void Interp::fail(const char* code, const std::string& msg, int column) const {
@@ -538,7 +540,11 @@ bool Interp::execute(const BlockWords& bw) {
         }
         // 7-9: spindle, coolant, overrides: state of the machine, not of the path (the spindle
         // direction matters to the boring cycles).
-        if (int sp = bw.m[m_spindle]; sp >= 0) spindle_ = sp == 30 ? 1 : sp == 40 ? -1 : 0;
+        if (int sp = bw.m[m_spindle]; sp >= 700) {
+            if (modal_state(bw)) return true;  // LinuxCNC M70-M73; after a restore: the block ends
+        } else if (sp >= 0) {
+            spindle_ = sp == 30 ? 1 : sp == 40 ? -1 : 0;
+        }
         machine_.update(bw);  // coolant and overrides (read by #<_flood>, #<_feed_override>, ...)
     }
     // 10: dwell
@@ -562,6 +568,11 @@ bool Interp::execute(const BlockWords& bw) {
         // 16-18: path control, distance modes, retract mode
         if (bw.g[g_path_control] >= 0) {
             st_.path_control = bw.g[g_path_control];
+            if (st_.path_control == 640) {  // P and Q kept as given (LinuxCNC's M70 saves them)
+                const WordSlot p = bw['P'], q = bw['Q'];
+                tolerance_ = p.set && p.value >= 0 ? p.value : 0;
+                naivecam_ = q.set && q.value >= 0 ? q.value : p.set && p.value >= 0 ? p.value : 0;
+            }
             if (st_.path_control == 640 && !warned_blending_) {  // once a run
                 info(code::blending_not_modelled,
                      "G64 blending is a tolerance of the executed path: toolcomp returns the programmed path",

@@ -21,6 +21,7 @@
 #include "../idle_watch.hpp"
 #include "block_words.hpp"
 #include "flow.hpp"
+#include "modal_snapshot.hpp"
 #include "params.hpp"
 #include "toolcomp/dialects/iso/interpreter.hpp"
 #include "toolcomp/program/expr.hpp"
@@ -78,6 +79,7 @@ struct Frame {
     std::map<std::string, std::size_t> opened;  // LinuxCNC: if/while/repeat label -> its block, this call
     std::size_t stop = 0;         // G70: the block after the contour's last
     Vec6 back = Vec6::Zero();     // G70: where the tool goes at rapid after the contour
+    ModalSnapshot saved;          // LinuxCNC M70 / M73 of this call level
     const Program& prog() const { return *at->prog; }
 };
 
@@ -212,6 +214,14 @@ private:
     void load_parameters(const ParameterValues& values);  // start values, the machine's state among them
     void fanuc_dwell(BlockWords& bw) const;           // G04 X / U: the dwell, not a move
     void inverse_time_rate(double feed);
+
+    // ---- LinuxCNC M70-M73 (interp_modal_state.cpp) ---------------------------------------------
+    ModalSnapshot snapshot() const;
+    bool modal_state(const BlockWords& bw);  // true: an M72 restore ran, the block ends there
+    bool restore_modal(const ModalSnapshot& saved, int column);  // true: it ran G-code
+    void run_restore_text(const std::string& text, int column);
+    void restore_on_return(const ModalSnapshot& saved, int call_line);  // M73's, at a subroutine's return
+    double tolerance_ = 0, naivecam_ = 0;  // LinuxCNC G64 P and Q, as given
 
     void io_code(const BlockWords& bw);  // M62-M68 (interp_io.cpp)
     void g10_tool(const BlockWords& bw);  // G10 L1 (interp_tool_table.cpp)

@@ -202,10 +202,13 @@ void Interp::return_from_sub(const Statement& s) {
         fail(code::return_outside_sub, std::to_string(line_) + ": not in a subroutine definition: '" + s.text + "'");
     const bool has_value = s.value >= 0;
     const double v = has_value ? eval(s.value, s.column) : 0.0;
+    const ModalSnapshot saved = frames_.back().saved;
+    const int call_line = frames_.back().call_line;
     frames_.pop_back();
     params_.leave();
     value_returned_ = has_value;
     value_ = v;  // a return without a value resets #<_value> to 0
+    restore_on_return(saved, call_line);
 }
 
 void Interp::control(const Statement& s, std::size_t k) {

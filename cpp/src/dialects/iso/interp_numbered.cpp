@@ -77,8 +77,11 @@ void Interp::numbered_return(std::size_t k) {
             fail(code::bad_o_word, "Unexpected character after O-word", w.column);
     if (f.kind == Frame::o_call)
         fail(code::o_word_structure, "'O.... endsub' or 'O.... return' must follow 'O.... sub' subroutine definition");
+    const ModalSnapshot saved = f.saved;
+    const int call_line = f.call_line;
     frames_.pop_back();
     params_.leave_scope();
+    restore_on_return(saved, call_line);
 }
 
 }  // namespace toolcomp::iso

@@ -217,7 +217,7 @@ double Interp::get(const std::string& name, std::span<const double>) {
     if (name == "_incremental") return st_.incremental ? 1 : 0;
     if (name == "_current_tool") return tool_;
     if (name == "_selected_tool") return selected_;
-    if (name == "_feed") return feed_ / scale();
+    if (name == "_feed") return st_.feed_mode == 930 ? feed_ : feed_ / scale();
     if (name == "_rpm") return speed_;
     if (name.size() == 2 && name[0] == '_') {
         static constexpr char kAxes[] = "xyzabc";
@@ -279,7 +279,8 @@ std::string Interp::substitute(const std::string& text) {
             for (std::size_t k = j + 1; k < close; ++k)
                 if (text[k] != ' ' && text[k] != '\t') name.push_back(ascii_lower(text[k]));
             const double* v = params_.named(name);
-            out += v ? number_text(*v) : "######";
+            // LinuxCNC's read-only #<_x>, #<_feed>, ... are values too
+            out += v ? number_text(*v) : predefined(name) ? number_text(get(name, {})) : "######";
             i = close;
             continue;
         }
