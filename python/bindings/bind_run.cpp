@@ -288,7 +288,7 @@ void bind_run(py::module_& m) {
         .def_readwrite("dwell_x_seconds", &ControlProfile::dwell_x_seconds,
                        "G4 X (U on lathes) is the dwell in seconds, P in milliseconds (Fanuc)")
         .def_readwrite("g10_tool_table", &ControlProfile::g10_tool_table,
-                       "G10 L1 sets a tool's offsets in the run's copy of the tool table (LinuxCNC); False: refused")
+                       "G10 L1/L10/L11 set a tool's offsets in the run's copy of the tool table (LinuxCNC); False: refused")
         .def_readwrite("numbered_subprograms", &ControlProfile::numbered_subprograms,
                        "Fanuc-style numbered subprograms as LinuxCNC 2.9 reads them: O<n> ... M99, M98 P L as a line's first word")
         .def_readwrite("modal_state_codes", &ControlProfile::modal_state_codes,

@@ -46,8 +46,41 @@ def test_what_linuxcnc_refuses(block, message):
     assert (str(e.value.message), e.value.line) == (message, 2)
 
 
-def test_g10_l10_and_l11_stay_refused_by_name():
-    for l in (10, 11):
-        with pytest.raises(tc.ProgramError) as e:
-            tc.run(tc.Program.parse(f"G21\nG10 L{l} P2 Z0\nM2\n"), tools=_tools())
-        assert e.value.code == "unsupported_g10" and "not supported by toolcomp" in str(e.value)
+def _edge(res, n):
+    return res.tools[n].edges[0]
+
+
+def test_l10_sets_the_offset_that_makes_here_read_the_word():
+    # G54 (25, 50, 75), T1 (Z25) with G43, the tool at Z37.5, G92 Z12.5 (a 25 mm shift):
+    # L10 P1 Z5 = 12.5 (the point) + 25 (the offset in effect) - 5 = 32.5; G5x and G92 cancel out.
+    tools = tc.ToolTable()
+    tools.set(tc.Tool(1, edges=[tc.CuttingEdge(radius=5.0, length=[0.0, 0.0, 25.0])]))
+    tools.set(tc.Tool(2, edges=[tc.CuttingEdge(radius=3.0, length=[1.0, 0.0, 30.5])]))
+    text = ("G21 G10 L2 P1 X25 Y50 Z75\nG10 L2 P9 X0 Y0 Z-50\nG54 T1 M6\nG43\nG0 X7.5 Y10 Z37.5\nG92 Z12.5\n"
+            "G10 L10 P1 Z5\nG10 L11 P2 X0 Z0\nM2\n")
+    res = tc.run(tc.Program.parse(text), tools=tools)
+    assert _edge(res, 1).length[2] == pytest.approx(32.5, abs=1e-12)
+    # L11: the machine point (X 7.5 + 25 = 32.5; Z 12.5 + 25 + 75 + 25 = 137.5) less G59.3 (0, 0, -50)
+    assert list(_edge(res, 2).length) == pytest.approx([32.5, 0.0, 187.5], abs=1e-12)
+    assert res.nominal.tool_offset[-1].tolist() == [0, 0, 25.0]  # in effect until G43 takes it again
+
+
+def test_l10_in_a_rotated_system_turns_x_and_y():
+    # LinuxCNC's own g10-l1-l10 test: G54 turned 45 degrees, tool 1 at the origin, offsets zero.
+    tools = tc.ToolTable()
+    tools.set(tc.Tool(1, edges=[tc.CuttingEdge(radius=1.0, length=[0.0, 0.0, 0.0])]))
+    res = tc.run(tc.Program.parse("G21 G10 L2 P1 R45\nG54 T1 M6\nG10 L10 P1 X1\nM2\n"), tools=tools)
+    h = 0.5 ** 0.5
+    assert list(_edge(res, 1).length[:2]) == pytest.approx([-h, -h], abs=1e-12)
+    res = tc.run(tc.Program.parse("G21 G10 L2 P1 R45\nG54 T1 M6\nG10 L10 P1 X1\nG10 L10 P1 Y1\nM2\n"),
+                 tools=tools)  # Y alone keeps the part along the turned X: (0, -2 h)
+    assert list(_edge(res, 1).length[:2]) == pytest.approx([0.0, -2 * h], abs=1e-12)
+
+
+def test_in_diameter_mode_x_is_a_diameter():
+    tools = tc.ToolTable()
+    tools.set(tc.Tool(1, edges=[tc.CuttingEdge(radius=0.4, length=[0.0, 0.0, 0.0])]))
+    res = tc.run(tc.Program.parse("G21 G18 G7 T1 M6\nG0 X20 Z0\nG10 L10 P1 X10\nM2\n"), tools=tools)
+    assert _edge(res, 1).length[0] == pytest.approx(5.0)  # the tool at radius 10, the word a 5 mm radius
+    res = tc.run(tc.Program.parse("G21 G18 G7 T1 M6\nG10 L1 P1 X10\nM2\n"), tools=tools)
+    assert _edge(res, 1).length[0] == pytest.approx(5.0)

@@ -292,7 +292,7 @@ struct ControlProfile {
     // active system, P up to 9, R the rotation).
     bool fanuc_g10 = false;
     // G10 L1 P<tool> X Y Z A B C R I J Q sets a tool's offsets in the run's copy of the tool
-    // table (LinuxCNC). false: refused (not run).
+    // table, L10 and L11 from where the tool is (LinuxCNC). false: refused (not run).
     bool g10_tool_table = false;
     // LinuxCNC 2.9's Fanuc-style numbered subprograms: a bare O<n> line begins one, M98 P<n>
     // [L<count>] as a line's first word calls it (<n>.ngc on the search path first, else the

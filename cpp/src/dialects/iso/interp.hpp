@@ -224,7 +224,7 @@ private:
     double tolerance_ = 0, naivecam_ = 0;  // LinuxCNC G64 P and Q, as given
 
     void io_code(const BlockWords& bw);  // M62-M68 (interp_io.cpp)
-    void g10_tool(const BlockWords& bw);  // G10 L1 (interp_tool_table.cpp)
+    void g10_tool(const BlockWords& bw, int l);  // G10 L1 / L10 / L11 (interp_tool_table.cpp)
     void polar_end(const BlockWords& bw, Vec6& end) const;  // @ ^ (interp_motion.cpp)
     void polar_checks(const BlockWords& bw) const;
 
