@@ -269,6 +269,7 @@ class ControlProfile:
     g10_tool_table: bool
     numbered_subprograms: bool
     modal_state_codes: bool
+    spindle_sync_motion: bool
     restore_feed_speed_always: bool
     tool_change_stops_spindle: bool
     startup_motion: int

@@ -258,6 +258,12 @@ class Collector:
 
     straight_probe = straight_feed
 
+    def rigid_tap(self, x, y, z, *rest):  # in to the point and back out, as AXIS draws it
+        start = self.cols["end"][-1] if self.cols["end"] else [0.0, 0.0, 0.0]
+        abc = self.cols["abc"][-1] if self.cols["abc"] else (0.0, 0.0, 0.0)
+        self._row(LINE, [x * MM_PER_INCH, y * MM_PER_INCH, z * MM_PER_INCH], [math.nan] * 3, 0, abc)
+        self._row(LINE, list(start), [math.nan] * 3, 0, abc)
+
     def arc_feed(self, e1, e2, c1, c2, rot, ax, a, b, c, *uvw):
         e1, e2, c1, c2, ax = (v * MM_PER_INCH for v in (e1, e2, c1, c2, ax))
         nan = math.nan

@@ -208,10 +208,14 @@ class _State:
     g92: np.ndarray = field(default_factory=lambda: np.zeros(3))
     rot: float = 0.0                                      # degrees
     pos: np.ndarray = field(default_factory=lambda: np.zeros(3))   # program coords, mm
+    sync: float = np.nan                                  # START_SPEED_FEED_SYNC lead, mm/rev (NaN: none)
 
     def feed_now(self):
-        """The feed in mm/min, as toolcomp's column has it: per revolution times the spindle's
-        speed; under constant surface speed the speed follows X: NaN, not compared."""
+        """The feed in mm/min, as toolcomp's column has it: per revolution (G95, or the lead of
+        a spindle-synchronised move) times the spindle's speed; under constant surface speed the
+        speed follows X: NaN, not compared."""
+        if not np.isnan(self.sync):
+            return np.nan if self.css else self.sync * self.speed
         if not self.per_rev:
             return self.feed
         return np.nan if self.css else self.feed * self.speed
@@ -239,6 +243,7 @@ def parse_canon(text: str) -> dict:
     """Parse rs274 canonical output into numpy columns in millimetres (see module doc)."""
     st = _State()
     rows = []  # kind, start3, end3, center3, turns, abc3, tlo3, feed, plane, scale
+    feed_tol = []  # per row: how well the feed is known (a printed lead: 5e-7 units per rev)
     for raw in text.splitlines():
         m = _CALL.match(raw)
         if not m:
@@ -252,6 +257,20 @@ def parse_canon(text: str) -> dict:
             st.feed = _floats(args)[0] * st.scale
         elif name == "SET_FEED_MODE":
             st.per_rev = _floats(args)[1] == 1
+        elif name == "START_SPEED_FEED_SYNC":   # (lead, velocity mode); rs274 drops the H
+            synced = 0.0 if np.isnan(st.sync) else 5e-7 * st.scale * st.speed + 1e-9
+            feed_tol += [synced] * (len(rows) - len(feed_tol))
+            st.sync = _floats(args)[0] * st.scale
+        elif name == "STOP_SPEED_FEED_SYNCH":
+            # the rows made while synchronised: their feed from a lead printed to 1e-6
+            feed_tol += [5e-7 * st.scale * st.speed + 1e-9] * (len(rows) - len(feed_tol))
+            st.sync = np.nan
+        elif name == "RIGID_TAP":               # in to the point and back out (the position stays)
+            end = np.array(_floats(args)[:3]) * st.scale
+            abc = rows[-1][5] if rows else np.zeros(3)
+            for a, b in ((st.pos, end), (end, st.pos.copy())):
+                rows.append((LINE, a.copy(), b.copy(), np.full(3, np.nan), 0, abc,
+                             st.tlo.copy(), st.feed_now(), st.plane, st.scale))
         elif name == "SET_SPINDLE_SPEED":
             st.speed = _floats(args)[1]
         elif name == "SET_SPINDLE_MODE":
@@ -289,6 +308,7 @@ def parse_canon(text: str) -> dict:
             st.pos = end
     n = len(rows)
     col = lambda i: [r[i] for r in rows]  # noqa: E731
+    feed_tol += [0.0] * (n - len(feed_tol))
     vec = lambda i: np.array(col(i), dtype=float).reshape(n, 3)  # noqa: E731
     return {
         "kind": np.array(col(0), dtype=np.uint8),
@@ -298,6 +318,7 @@ def parse_canon(text: str) -> dict:
         "feed": np.array(col(7), dtype=float),
         "plane": np.array(col(8), dtype=np.int8),
         "units": np.array(col(9), dtype=float),
+        "feed_tol": np.array(feed_tol[:n], dtype=float),
     }
 
 

@@ -175,7 +175,7 @@ def test_profile_setting_changes_length_axes():
      "Cutter radius compensation allowed only in XY, XZ planes", 2, 5),
     ("G21\nG41 D1\nT2 M6\nM2\n", tc.ProgramError, "comp_tool_change",
      "Cannot change tools with cutter radius compensation on", 3, 4),
-    ("G21\nG33 X1 K1\nM2\n", tc.ProgramError, "unsupported_g_code", "G33 is not supported by toolcomp", 2, 1),
+    ("G21\nG17.1 X1\nM2\n", tc.ProgramError, "unsupported_g_code", "G17.1 is not supported by toolcomp", 2, 1),
     ("G21\nG0 X1\n", tc.ProgramError, "no_program_end", "File ended with no percent sign or program end", 2, 0),
 ])
 def test_errors_have_code_message_line_column(text, cls, code, message, line, column):

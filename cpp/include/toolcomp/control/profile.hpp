@@ -303,6 +303,10 @@ struct ControlProfile {
     // subroutine returns) of the modal state, one snapshot per call level; a restore runs the
     // differences as G-code (interp_modal_state.cpp). false: M70-M73 are unknown M codes.
     bool modal_state_codes = false;
+    // LinuxCNC's spindle-synchronised motion: G33 (K per revolution), G33.1 rigid tapping
+    // (in and back out, I the return's speed factor) and the G76 threading cycle (P I J K R Q
+    // H E L), modal in the motion group (interp_spindle_sync.cpp). false: refused.
+    bool spindle_sync_motion = false;
     // M6 stops the spindle: a program turns it on again after the change (LinuxCNC without
     // [EMCIO]TOOL_CHANGE_WITH_SPINDLE_ON; read back by #<_spindle_on> and M70).
     bool tool_change_stops_spindle = false;

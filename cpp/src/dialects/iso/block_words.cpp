@@ -130,6 +130,8 @@ BlockWords collect_words(std::span<const Word> words, int line, const ControlPro
             add_m(bw, w, profile, machine, taken);
         } else {
             if (bw.has(w.letter)) {
+                if (w.letter == '$')
+                    fail(code::spindle_choice, "Multiple spindle choice ($) words on one line", bw.line, w.column);
                 char lower = ascii_lower(w.letter);
                 fail(code::multiple_words, std::string("Multiple ") + lower + " words on one line", bw.line, w.column);
             }

@@ -18,8 +18,9 @@ struct WordSlot {
     bool set = false;
 };
 
-// A word's slot: A..Z, then LinuxCNC's polar coordinates @ (radius) and ^ (angle).
-constexpr int letter_index(char c) { return c == '@' ? 26 : c == '^' ? 27 : c - 'A'; }
+// A word's slot: A..Z, then LinuxCNC's polar coordinates @ (radius) and ^ (angle), and its
+// spindle choice $.
+constexpr int letter_index(char c) { return c == '@' ? 26 : c == '^' ? 27 : c == '$' ? 28 : c - 'A'; }
 // A letter's bit in BlockWords::letters.
 constexpr std::uint32_t letter_bit(char c) { return std::uint32_t{1} << letter_index(c); }
 
@@ -31,7 +32,7 @@ struct BlockWords {
         double value;
         int column;
     };
-    std::array<Slot, 28> letter;
+    std::array<Slot, 29> letter;
     std::uint32_t letters = 0;  // letter_bit(c) for each letter the block has
     std::uint32_t g_groups = 0;         // bit of each G group with a code
     std::array<int, g_group_count> g;   // code10 per group, -1 when none

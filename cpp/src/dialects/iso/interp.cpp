@@ -276,7 +276,8 @@ void Interp::check_words(const BlockWords& bw, int motion_to_be) {
              "C beside X or Z in G1 is the chamfer of a Fanuc lathe: not supported by toolcomp (a C axis move "
              "stands in a block of its own)",
              bw['C'].column);
-    if ((bw.letters & kChecked) == 0) return;  // none of the words that need a code to use them
+    const bool sync = motion_to_be == 330 || motion_to_be == 331, g76 = motion_to_be == 760;  // LinuxCNC
+    if ((bw.letters & kChecked) == 0 && !sync && !g76) return;  // none of the words that need a code to use them
     const int g0 = bw.g[g_nonmodal];
     if (g0 >= 700 && g0 <= 760 && g0 % 10 == 0) return;  // the lathe cycles G70-G76 read their words
     const bool arc = motion_to_be == 20 || motion_to_be == 30;
@@ -289,20 +290,20 @@ void Interp::check_words(const BlockWords& bw, int motion_to_be) {
             fail(code::unused_word, "D word with no G41, G41.1, G42, G42.1, G71, G71.1, G71.2 or G96 to use it", col('D'));
     }
     const bool io = bw.m[m_io] >= 0;  // M62-M68 take P, Q and E
-    if (bw.has('E') && !(io && bw.m[m_io] >= 660)) fail(code::unused_word, "E word with no G70, G76, M66, M67 or M68 to use it", col('E'));
+    if (bw.has('E') && !(io && bw.m[m_io] >= 660) && !g76) fail(code::unused_word, "E word with no G70, G76, M66, M67 or M68 to use it", col('E'));
     if (bw.has('H')) {
         int lc = bw.g[g_length_comp];
-        if (!(lc == 430 || lc == 432 || lc == 440)) fail(code::unused_word, "H word with no G43 or G76 to use it", col('H'));
+        if (!(lc == 430 || lc == 432 || lc == 440 || g76)) fail(code::unused_word, "H word with no G43 or G76 to use it", col('H'));
     }
     const bool exit_dir = bw.g[g_radius_comp] == 400 && profile_.radius.exit_direction_words;
-    if (bw.has('I') && !(arc || g87 || exit_dir || g0 == 100))
+    if (bw.has('I') && !(arc || g87 || exit_dir || g0 == 100 || motion_to_be == 331 || g76))
         fail(code::unused_word, "I word with no G2, G3, G5, G5.1, G10, G33.1, G76, or G87 to use it", col('I'));
-    if (bw.has('J') && !(arc || g87 || exit_dir || g0 == 100))
+    if (bw.has('J') && !(arc || g87 || exit_dir || g0 == 100 || g76))
         fail(code::unused_word, "J word with no G2, G3, G5, G5.1, G10, G76 or G87 to use it", col('J'));
-    if (bw.has('K') && !(arc || g87 || exit_dir)) fail(code::unused_word, "K word with no G2, G3, G33, G33.1, G76, or G87 to use it", col('K'));
+    if (bw.has('K') && !(arc || g87 || exit_dir || sync || g76)) fail(code::unused_word, "K word with no G2, G3, G33, G33.1, G76, or G87 to use it", col('K'));
     if (bw.has('L')) {
         int rc = bw.g[g_radius_comp];
-        if (!(g0 == 100 || cycle_block || rc >= 410 || bw.m[m_io] == 660))  // G41, G41.1, G42, G42.1, M66
+        if (!(g0 == 100 || cycle_block || rc >= 410 || bw.m[m_io] == 660 || g76))  // G41, G41.1, G42, G42.1, M66
             fail(code::unused_word,
                  "L word with no G10, cutter compensation, canned cycle, digital/analog input, M98 or NURBS code",
                  col('L'));
@@ -311,7 +312,7 @@ void Interp::check_words(const BlockWords& bw, int motion_to_be) {
         int m = bw.m[m_override];
         bool ok = arc || io || g0 == 40 || g0 == 100 || bw.g[g_path_control] == 640 || motion_to_be == 820 ||
                   motion_to_be == 860 || motion_to_be == 880 || motion_to_be == 890 ||
-                  (m >= 500 && m <= 530);
+                  (m >= 500 && m <= 530) || g76;
         if (!ok)
             fail(code::unused_word,
                  "P word with no G2 G3 G4 G10 G64 G5 G5.2 G76 G82 G86 G88 G89 or M50 M51 M52 M53 M62 M63 M64 "
@@ -320,15 +321,21 @@ void Interp::check_words(const BlockWords& bw, int motion_to_be) {
     }
     if (bw.has('Q')) {
         bool ok = (io && bw.m[m_io] >= 660) || g0 == 100 || bw.g[g_path_control] == 640 || motion_to_be == 730 || motion_to_be == 830 ||
-                  bw.m[m_tool_change] == 610;
+                  bw.m[m_tool_change] == 610 || g76;
         if (!ok)
             fail(code::unused_word,
                  "Q word with no G5, G10, G64, G73, G76, G83, M19, M66, M67, M68 or user M code that uses it",
                  col('Q'));
     }
     const bool single_cycle = motion_to_be == 900 || motion_to_be == 920 || motion_to_be == 940;
-    if (bw.has('R') && !(arc || cycle_block || single_cycle || g0 == 100))
+    if (bw.has('R') && !(arc || cycle_block || single_cycle || g0 == 100 || g76))
         fail(code::unused_word, "R word with no g code that uses it", col('R'));
+    const int mcol = bw.g[g_motion] >= 0 ? bw.g_column[g_motion] : bw.axis_column();
+    if (sync && !bw.has('K')) fail(code::sync_motion_words, "K word missing with g33/g33.1", mcol);
+    if (sync && bw.has('F')) fail(code::sync_motion_words, "F word used with a g33/g33.1", col('F'));
+    if (g76 && (!bw.has('P') || bw['P'].value == -1)) fail(code::sync_motion_words, "P word missing with G76", mcol);
+    if (g76 && !(bw.has('I') && bw.has('J') && bw.has('K')))
+        fail(code::sync_motion_words, "I J or K words missing with G76", mcol);
 }
 
 // Fanuc G04 X1.5 / U1.5 (lathes): the dwell in seconds, the X or U word not a move. Only one
@@ -414,6 +421,7 @@ bool Interp::execute(const BlockWords& bw) {
     }
     if ((g0 == 920 || g0 == 520) && !axes) fail(code::g92_no_axes, "All axes missing with g52 or g92", bw.g_column[g_nonmodal]);
     check_words(bw, motion_to_be);
+    spindle_choice(bw, motion_to_be);
     if (bw.g[g_spindle_mode] == 960 && !bw.has('S') && profile_.g96_needs_s)
         fail(code::g96_s_missing, "S word missing with G96", bw.g_column[g_spindle_mode]);
     if (bw.has('U') || bw.has('V') || bw.has('W')) {
@@ -555,7 +563,11 @@ bool Interp::execute(const BlockWords& bw) {
         // 11-12: plane, units (an F in the same block was read in the old units, as LinuxCNC does)
         if (bw.g[g_units] >= 0) set_units(bw.g[g_units] == 200);
         if (bw.g[g_plane] >= 0) st_.plane = bw.g[g_plane] == 170 ? Plane::xy : bw.g[g_plane] == 180 ? Plane::zx : Plane::yz;
-        if (bw.g[g_lathe_diameter] >= 0) st_.diameter = bw.g[g_lathe_diameter] == 70;
+        if (bw.g[g_lathe_diameter] >= 0) {
+            const bool d = bw.g[g_lathe_diameter] == 70;
+            diameter_switched_ = d != st_.diameter;  // (LinuxCNC's G76 reads it)
+            st_.diameter = d;
+        }
         // 13: cutter radius compensation (requested here, applied by the compensation stage)
         if (bw.g[g_radius_comp] >= 0) radius_comp(bw, bw.g[g_radius_comp]);
         // 14: tool length compensation
@@ -615,6 +627,9 @@ bool Interp::execute(const BlockWords& bw) {
             case 0: case 10: motion_line(bw, motion_to_be, g0 == 530); break;
             case 20: case 30: motion_arc(bw, motion_to_be); break;
             case 320: thread_line(bw); break;
+            case 330: sync_line(bw); break;
+            case 331: rigid_tap(bw); break;
+            case 760: lcnc_threading(bw); break;
             case 900: case 920: case 940: single_cycle(bw, motion_to_be); break;
             default: cycle(bw, motion_to_be); break;
         }

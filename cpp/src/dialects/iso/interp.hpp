@@ -223,6 +223,15 @@ private:
     void restore_on_return(const ModalSnapshot& saved, int call_line);  // M73's, at a subroutine's return
     double tolerance_ = 0, naivecam_ = 0;  // LinuxCNC G64 P and Q, as given
 
+    // ---- LinuxCNC's spindle-synchronised motion (interp_spindle_sync.cpp) ------------------
+    void sync_line(const BlockWords& bw);       // G33
+    void rigid_tap(const BlockWords& bw);       // G33.1
+    void lcnc_threading(const BlockWords& bw);  // G76
+    void sync_can_start(const BlockWords& bw, const char* what) const;
+    void spindle_choice(const BlockWords& bw, int motion_to_be) const;  // $
+    double sync_feed(double lead, double x_end) const;  // lead (program units) per rev: mm/min
+    bool diameter_switched_ = false;  // this block's G7 / G8 changed the mode
+
     void io_code(const BlockWords& bw);  // M62-M68 (interp_io.cpp)
     void g10_tool(const BlockWords& bw, int l);  // G10 L1 / L10 / L11 (interp_tool_table.cpp)
     void polar_end(const BlockWords& bw, Vec6& end) const;  // @ ^ (interp_motion.cpp)

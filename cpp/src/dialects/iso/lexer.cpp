@@ -126,7 +126,8 @@ void LineLexer::run() {
         } else if (u == 'O' && first_word_) {
             fail(code::o_word_not_supported, "O-word subprograms and control flow are not supported in this dialect");
         }
-        if (u == '$') fail(code::bad_character, "Unknown word where unary operation could be");
+        if (u == '$' && prog_.dialect != Dialect::linuxcnc)
+            fail(code::bad_character, "Unknown word where unary operation could be");
         if (!is_word_letter(u, prog_.dialect) || (u == 'N' && (!first_word_ || prog_.blocks().back().word_count > 0))) {
             // LinuxCNC writes a byte beyond ASCII as an octal escape ('\303')
             const auto byte = static_cast<unsigned char>(c);
