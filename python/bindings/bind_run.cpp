@@ -18,6 +18,27 @@ MachineKind machine_kind(const std::string& k) {
     return k == "lathe" ? MachineKind::lathe : MachineKind::mill;
 }
 
+// run(probes=...): None (no contact), or the contact point X Y Z [A B C] (mm, degrees).
+std::vector<ProbeResult> probe_results(const std::vector<std::optional<std::vector<double>>>& given) {
+    std::vector<ProbeResult> out;
+    for (const auto& g : given) {
+        ProbeResult r;
+        r.contact = g.has_value();
+        if (g) {
+            if (g->size() != 3 && g->size() != 6)
+                throw py::value_error("a probe result is None (no contact) or X Y Z [A B C]: " + std::to_string(g->size()) +
+                                      " numbers given");
+            for (std::size_t i = 0; i < g->size(); ++i) {
+                if (!std::isfinite((*g)[i])) throw py::value_error("a probe result's coordinates must be finite");
+                r.point[i] = (*g)[i];
+            }
+            r.axes = static_cast<int>(g->size());
+        }
+        out.push_back(r);
+    }
+    return out;
+}
+
 // `progress` is held by the caller's frame for the whole run.
 RunOptions run_options(bool strict, bool block_delete, std::optional<ControlProfile> profile, py::object& progress,
                        std::size_t progress_every, std::vector<std::string> search_path,
@@ -471,10 +492,11 @@ void bind_run(py::module_& m) {
            std::optional<ControlProfile> profile, py::object progress, std::size_t progress_every,
            std::vector<std::string> search_path, std::map<int, double> parameters, std::size_t max_segments,
            bool threads, bool follow_links, std::uint64_t max_bytes, std::size_t max_line_length,
-           std::optional<Machine> machine) {
+           std::optional<Machine> machine, const std::vector<std::optional<std::vector<double>>>& probes) {
             RunOptions o = run_options(strict, block_delete, std::move(profile), progress, progress_every,
                                        std::move(search_path), std::move(parameters), max_segments, threads,
                                        follow_links, machine);
+            o.probes = probe_results(probes);
             o.limits = ReadLimits{max_bytes, max_line_length};
             const auto table = snapshot(tools);
             py::gil_scoped_release nogil;
@@ -485,7 +507,7 @@ void bind_run(py::module_& m) {
         py::arg("search_path") = std::vector<std::string>{}, py::arg("parameters") = std::map<int, double>{},
         py::arg("max_segments") = kDefaultMaxSegments, py::arg("threads") = true, py::arg("follow_links") = false,
         py::arg("max_bytes") = kDefaultMaxProgramBytes, py::arg("max_line_length") = kDefaultMaxLineLength,
-        py::arg("machine") = py::none(),
+        py::arg("machine") = py::none(), py::arg("probes") = std::vector<std::optional<std::vector<double>>>{},
         "Interpret a Program with an optional ToolTable and apply tool compensation; returns a Result. strict=True "
         "raises the first error, strict=False returns the path up to it; block_delete skips '/' blocks; profile "
         "overrides the dialect's ControlProfile; progress(blocks_read) is called every progress_every blocks; "
@@ -495,17 +517,20 @@ void bind_run(py::module_& m) {
         "ProgramError 'memory_limit' at the line of the block that crossed it; threads=False keeps the "
         "overcut watch on the run's thread (for batches that keep every core busy); follow_links lets a called file be a "
         "link out of its search directory; max_bytes and max_line_length bound every called file. The GIL is "
-        "released while the program runs.");
+        "released while the program runs. probes: what the probe moves (LinuxCNC G38.2-G38.5) meet, one per "
+        "probe move in order: None (no contact) or the contact point X Y Z [A B C] in the program's coordinates "
+        "(mm); beyond them a probe touches at its target.");
     m.def(
         "run_file",
         [](const std::string& path, std::optional<std::string> dialect, const ToolTable* tools, bool strict,
            bool block_delete, std::optional<ControlProfile> profile, py::object progress, std::size_t progress_every,
            std::vector<std::string> search_path, std::map<int, double> parameters, std::size_t max_segments,
            std::uint64_t max_bytes, std::size_t max_line_length, bool threads, bool follow_links,
-           std::optional<Machine> machine) {
+           std::optional<Machine> machine, const std::vector<std::optional<std::vector<double>>>& probes) {
             RunOptions o = run_options(strict, block_delete, std::move(profile), progress, progress_every,
                                        std::move(search_path), std::move(parameters), max_segments, threads,
                                        follow_links, machine);
+            o.probes = probe_results(probes);
             std::optional<Dialect> d;
             if (dialect) d = dialect_from_name(*dialect);
             const auto table = snapshot(tools);
@@ -516,6 +541,7 @@ void bind_run(py::module_& m) {
         py::arg("profile"), py::arg("progress"), py::arg("progress_every"), py::arg("search_path"),
         py::arg("parameters"), py::arg("max_segments"), py::arg("max_bytes"), py::arg("max_line_length"),
         py::arg("threads") = true, py::arg("follow_links") = false, py::arg("machine") = py::none(),
+        py::arg("probes") = std::vector<std::optional<std::vector<double>>>{},
         "run() on a program file, read leniently; a LinuxCNC / Fanuc file without control flow is read and "
         "parsed a piece at a time as it runs (see toolcomp.run).");
 }

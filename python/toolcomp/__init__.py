@@ -58,7 +58,7 @@ _sys.modules[__name__ + ".sinumerik"] = sinumerik  # type: ignore[assignment]  #
 def run(program, tools=None, *, dialect=None, strict=True, block_delete=False, profile=None,
         units="mm", progress=None, progress_every=65536, search_path=(), parameters=None,
         max_segments=20_000_000, max_bytes=2**31, max_line_length=2**20, threads=True, follow_links=False,
-        machine=None):
+        machine=None, probes=()):
     """Interpret ``program`` and apply tool compensation.
 
     ``program`` is a :class:`Program` or a path to a program file (dialect from the suffix
@@ -86,7 +86,11 @@ def run(program, tools=None, *, dialect=None, strict=True, block_delete=False, p
     (``not_a_regular_file``); an empty directory name is refused (ValueError). ``parameters`` gives numbered parameters their
     start values: a ``{number: value}`` dict, or the path of a LinuxCNC ``.var`` file (read
     with :func:`toolcomp.params.read_var`); ``result.parameters`` holds the values at the
-    end. The GIL is released while the program runs.
+    end. ``probes`` says what the probe moves (LinuxCNC G38.2-G38.5) meet, one entry per
+    probe move in order: ``None`` (no contact: G38.2/G38.4 then fail as the machine would) or
+    the contact point ``(x, y, z[, a, b, c])`` in the program's coordinates of the active
+    system, mm; the probe move ends there and #5061-#5070 read it. A probe move beyond the list
+    touches at its target (warning ``probe_move``). The GIL is released while the program runs.
 
     Limits (each raises a :class:`Error` subclass with a stable ``code``): a program file
     larger than ``max_bytes`` is refused before it is read (``input_too_large``, as is every
@@ -117,12 +121,12 @@ def run(program, tools=None, *, dialect=None, strict=True, block_delete=False, p
                               profile=profile, progress=progress, progress_every=progress_every,
                               search_path=search_path, parameters=parameters, max_segments=max_segments,
                               max_bytes=max_bytes, max_line_length=max_line_length, threads=threads,
-                              follow_links=follow_links, machine=machine)
+                              follow_links=follow_links, machine=machine, probes=list(probes))
     return _core.run(program, tools, strict=strict, block_delete=block_delete, profile=profile,
                      progress=progress, progress_every=progress_every, search_path=search_path,
                      parameters=parameters, max_segments=max_segments, threads=threads,
                      follow_links=follow_links, max_bytes=max_bytes, max_line_length=max_line_length,
-                     machine=machine)
+                     machine=machine, probes=list(probes))
 
 
 def _whole_at_least(name, value, least):

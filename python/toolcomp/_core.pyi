@@ -344,7 +344,8 @@ def run(program: Program, tools: Optional[ToolTable] = None, strict: bool = True
         search_path: Sequence[str] = (), parameters: Mapping[int, float] = ...,
         max_segments: int = 20000000, threads: bool = True, follow_links: bool = False,
         max_bytes: int = 2147483648, max_line_length: int = 1048576,
-        machine: Optional[Machine] = None) -> Result: ...
+        machine: Optional[Machine] = None,
+        probes: Sequence[Optional[Sequence[float]]] = ()) -> Result: ...
 
 class PathStream:
     """Iterator over a run's compensated path in chunks; see toolcomp.iter_run."""
@@ -379,7 +380,8 @@ def iter_run_program(program: Program, tools: Optional[ToolTable], *, strict: bo
 def run_file(path: str, dialect: Optional[str], tools: Optional[ToolTable], *, strict: bool, block_delete: bool,
              profile: Optional[ControlProfile], progress: Optional[Callable[[int], None]], progress_every: int,
              search_path: Sequence[str], parameters: Mapping[int, float], max_segments: int, max_bytes: int,
-             max_line_length: int, threads: bool = True, follow_links: bool = False) -> Result: ...
+             max_line_length: int, threads: bool = True, follow_links: bool = False,
+             machine: Optional[Machine] = None, probes: Sequence[Optional[Sequence[float]]] = ()) -> Result: ...
 
 _Plane = Union[int, str]  # 17, 18, 19 or "G17", "G18", "G19"
 _EdgeMap = dict[Tuple[int, int], "sinumerik.Edge"]

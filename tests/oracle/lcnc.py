@@ -244,6 +244,7 @@ def parse_canon(text: str) -> dict:
     st = _State()
     rows = []  # kind, start3, end3, center3, turns, abc3, tlo3, feed, plane, scale
     feed_tol = []  # per row: how well the feed is known (a printed lead: 5e-7 units per rev)
+    probes = []    # where each STRAIGHT_PROBE stopped (program coordinates, mm)
     for raw in text.splitlines():
         m = _CALL.match(raw)
         if not m:
@@ -290,6 +291,14 @@ def parse_canon(text: str) -> dict:
         elif name in ("STRAIGHT_TRAVERSE", "STRAIGHT_FEED", "STRAIGHT_PROBE"):
             v = _floats(args)
             end = np.array(v[:3]) * st.scale
+            if name == "STRAIGHT_PROBE":
+                # rs274's canon stops the probe 0.254 mm (0.01 in) short of its target, back
+                # towards the start; the next move begins there. The row ends where the probe
+                # stopped, and that point is the run's probe result (run(probes=...)).
+                d = np.linalg.norm(end - st.pos)
+                if d > 0:
+                    end = end + 0.254 * (st.pos - end) / d
+                probes.append(tuple(end))
             kind = RAPID if name == "STRAIGHT_TRAVERSE" else LINE
             rows.append((kind, st.pos.copy(), end, np.full(3, np.nan), 0, np.array(v[3:6]),
                          st.tlo.copy(), np.nan if kind == RAPID else st.feed_now(), st.plane, st.scale))
@@ -319,6 +328,7 @@ def parse_canon(text: str) -> dict:
         "plane": np.array(col(8), dtype=np.int8),
         "units": np.array(col(9), dtype=float),
         "feed_tol": np.array(feed_tol[:n], dtype=float),
+        "probes": probes,
     }
 
 

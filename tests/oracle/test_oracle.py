@@ -25,17 +25,29 @@ def _table_for(prog: Path) -> Path:
     return own if own.exists() else PROGRAMS / "tools.tbl"
 
 
-def _toolcomp_nominal(prog: Path, tbl: Path):
+def _toolcomp_nominal(prog: Path, tbl: Path, probes=()):
     tc = pytest.importorskip("toolcomp")
-    res = tc.run(tc.Program.read(str(prog)), tools=tc.ToolTable.read(str(tbl)))
+    res = tc.run(tc.Program.read(str(prog)), tools=tc.ToolTable.read(str(tbl)), probes=probes)
     return res.nominal
+
+
+# rs274's canon simulates a probe its own way: #5061-#5069 at the target, the position 0.254
+# mm short of it, #5070 always 0 (neither the machine nor LinuxCNC's preview, which the
+# precise tests compare with). A program that reads the probe's result therefore differs.
+RS274_PROBE_SIMULATION = {"probing_g38"}
 
 
 @pytest.mark.parametrize("prog", sorted(PROGRAMS.glob("*.ngc")), ids=lambda p: p.stem)
 def test_program_matches_rs274(prog):
     tbl = _table_for(prog)
     rs = lcnc.nominal(prog, tbl)
-    compare.compare(rs, _toolcomp_nominal(prog, tbl), label=prog.name)
+    # the probes stop where rs274's canon stopped them (lcnc.parse_canon)
+    ours = _toolcomp_nominal(prog, tbl, rs["probes"])
+    if prog.stem in RS274_PROBE_SIMULATION:
+        with pytest.raises(compare.Mismatch):
+            compare.compare(rs, ours, label=prog.name)
+        pytest.xfail("rs274 reads its probe results at the target but stops 0.254 mm short of it")
+    compare.compare(rs, ours, label=prog.name)
 
 
 @pytest.mark.parametrize("seed", range(N_GENERATED))

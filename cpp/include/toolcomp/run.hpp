@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "toolcomp/control/machine.hpp"
+#include "toolcomp/control/probe.hpp"
 #include "toolcomp/control/profile.hpp"
 #include "toolcomp/path.hpp"
 #include "toolcomp/program/diagnostic.hpp"
@@ -67,6 +68,9 @@ struct RunOptions {
     ReadLimits limits;
     // Numbered parameters the run starts from (LinuxCNC, Fanuc): a .var file's values.
     std::map<int, double> parameters;
+    // What the probe moves (LinuxCNC G38.2-G38.5) meet, one per probe move in order
+    // (control/probe.hpp); beyond them a probe touches at its target.
+    std::vector<ProbeResult> probes;
     // Segments the programmed path and the compensated path may each hold: the segment
     // beyond it stops the run with ProgramError("memory_limit") at its block's line.
     std::size_t max_segments = kDefaultMaxSegments;

@@ -42,6 +42,7 @@ void interpret_iso(const DialectRun& r) {
     iopts.search = search_of(o);
     iopts.machine = o.machine.get();
     iopts.parameters = o.parameters;
+    iopts.probes = o.probes;
     iopts.next_piece = r.hooks.next_piece;
     iopts.file_opened = r.hooks.file_opened;
     iso::interpret(r.program, r.tools, r.profile, iopts, r.sink, r.diagnostics, &r.out);

@@ -511,11 +511,6 @@ bool Interp::execute(const BlockWords& bw) {
             fail(code::comp_probe, "Cannot probe with cutter radius comp on", bw.g_column[g_motion]);
     }
 
-    // Real codes of the control that toolcomp does not run (after the control's own refusals
-    // above, which come first on the control too).
-    if (motion_code >= 382 && motion_code <= 385)
-        fail(code::unsupported_g_code, "G38." + std::to_string(motion_code - 380) + " is not supported by toolcomp",
-             bw.g_column[g_motion]);
     if (bw.m[m_io] >= 0) io_code(bw);
 
     // 2-4: feed mode, feed, speed
@@ -630,6 +625,7 @@ bool Interp::execute(const BlockWords& bw) {
             case 330: sync_line(bw); break;
             case 331: rigid_tap(bw); break;
             case 760: lcnc_threading(bw); break;
+            case 382: case 383: case 384: case 385: probe(bw, motion_to_be); break;
             case 900: case 920: case 940: single_cycle(bw, motion_to_be); break;
             default: cycle(bw, motion_to_be); break;
         }

@@ -223,6 +223,12 @@ private:
     void restore_on_return(const ModalSnapshot& saved, int call_line);  // M73's, at a subroutine's return
     double tolerance_ = 0, naivecam_ = 0;  // LinuxCNC G64 P and Q, as given
 
+    // ---- LinuxCNC's straight probe G38.2-G38.5 (interp_probe.cpp) -------------------------
+    void probe(const BlockWords& bw, int code);
+    std::size_t probes_used_ = 0;             // probe moves so far (the next takes opts_.probes[this])
+    std::array<double, 10> probe_values_{};   // #5061-#5070 after a probe
+    bool probed_ = false;
+
     // ---- LinuxCNC's spindle-synchronised motion (interp_spindle_sync.cpp) ------------------
     void sync_line(const BlockWords& bw);       // G33
     void rigid_tap(const BlockWords& bw);       // G33.1

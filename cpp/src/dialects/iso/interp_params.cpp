@@ -40,6 +40,7 @@ bool Interp::system_param(int n, double& v) const {
         return false;
     }
     auto axis9 = [](const Vec6& p, int j) { return j < 6 ? p[j] : 0.0; };  // U V W: none
+    if (n >= 5061 && n <= 5070 && probed_) return v = probe_values_[static_cast<std::size_t>(n - 5061)], true;
     if (n >= 5161 && n <= 5169) return v = axis9(g28_, n - 5161), true;
     if (n >= 5181 && n <= 5189) return v = axis9(g30_, n - 5181), true;
     // G92.2 suspends the offsets and keeps these; G92.3 takes them back.

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "toolcomp/control/machine.hpp"
+#include "toolcomp/control/probe.hpp"
 #include "toolcomp/control/profile.hpp"
 #include "toolcomp/motion/motion.hpp"
 #include "toolcomp/program/diagnostic.hpp"
@@ -30,6 +31,8 @@ struct InterpretOptions {
     // the limits they are read within (program/search_path.hpp).
     SearchPath search;
     ParameterValues parameters;  // start values (they win over the machine's origins)
+    // What the probe moves (G38.2-G38.5) meet, in order; beyond them a probe touches at its target.
+    std::vector<ProbeResult> probes;
     // The machine the program runs on: its builder M codes, work origin, G28/G30 positions,
     // tool change position and travel limits (control/machine.hpp); nullptr: none.
     const Machine* machine = nullptr;
