@@ -53,10 +53,13 @@ auto triple_set(const char* name, Triple Machine::*f) {
 
 void bind_machine(py::module_& m) {
     py::class_<MachineCode>(m, "MachineCode", "A builder M code: what it does for the path, and its name.")
-        .def(py::init([](const std::string& action, std::string name, std::string words, std::string program) {
-                 return MachineCode{action_from(action), std::move(name), std::move(words), std::move(program)};
+        .def(py::init([](const std::string& action, std::string name, std::string words, std::string program,
+                         std::string argspec) {
+                 return MachineCode{action_from(action), std::move(name), std::move(words), std::move(program),
+                                    std::move(argspec)};
              }),
-             py::arg("action"), py::arg("name") = "", py::arg("words") = "", py::arg("program") = "")
+             py::arg("action"), py::arg("name") = "", py::arg("words") = "", py::arg("program") = "",
+             py::arg("argspec") = "")
         .def_property(
             "action", [](const MachineCode& c) { return action_name(c.action); },
             [](MachineCode& c, const std::string& a) { c.action = action_from(a); },
@@ -67,14 +70,19 @@ void bind_machine(py::module_& m) {
                        "the letters it reads in its block (\"P\" for Haas M59 P1133), taken out of the block")
         .def_readwrite("program", &MachineCode::program,
                        "subprogram: the program it runs (LinuxCNC a sub's name, Fanuc an O number)")
+        .def_readwrite("argspec", &MachineCode::argspec,
+                       "LinuxCNC subprogram: REMAP's argspec, the words the sub gets as #<p> locals (upper case "
+                       "required, lower case optional; '@' as #1, #2, ...; '>' a feed, '^' a spindle speed)")
         .def("__eq__", [](const MachineCode& a, const MachineCode& b) {
-            return a.action == b.action && a.name == b.name && a.words == b.words && a.program == b.program;
+            return a.action == b.action && a.name == b.name && a.words == b.words && a.program == b.program &&
+                   a.argspec == b.argspec;
         })
         .def("__repr__", [](const MachineCode& c) {
             return "MachineCode('" + std::string(action_name(c.action)) + "', " +
                    py::repr(py::str(c.name)).cast<std::string>() +
                    (c.words.empty() ? std::string() : ", words='" + c.words + "'") +
-                   (c.program.empty() ? std::string() : ", program='" + c.program + "'") + ")";
+                   (c.program.empty() ? std::string() : ", program='" + c.program + "'") +
+                   (c.argspec.empty() ? std::string() : ", argspec='" + c.argspec + "'") + ")";
         });
 
     py::class_<Machine>(m, "Machine",

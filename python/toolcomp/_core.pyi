@@ -528,11 +528,13 @@ class sinumerik:
 
 class MachineCode:
     """A builder M code: what it does for the path, its name, the words it reads, the program it runs."""
-    def __init__(self, action: str, name: str = "", words: str = "", program: str = "") -> None: ...
+    def __init__(self, action: str, name: str = "", words: str = "", program: str = "",
+                 argspec: str = "") -> None: ...
     action: str
     name: str
     words: str
     program: str
+    argspec: str
 
 class Machine:
     """A machine: a control (its ControlProfile) plus what its builder configured."""

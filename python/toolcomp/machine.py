@@ -234,12 +234,14 @@ def parse(text: str, path: Optional[str] = None) -> "_core.Machine":
         number = int(number_text)
         if isinstance(value, str):
             value = {"action": value}
-        if not isinstance(value, dict) or set(value) - {"action", "name", "words", "program"} or "action" not in value:
+        if (not isinstance(value, dict) or set(value) - {"action", "name", "words", "program", "argspec"}
+                or "action" not in value):
             raise src.error(f"m_codes.{key} must be an action or {{ action = ..., name = ..., words = ..., "
-                            "program = ... }}", "m_codes", key)
+                            "program = ..., argspec = ... }}", "m_codes", key)
         try:
             codes[number] = _core.MachineCode(value["action"], str(value.get("name", "")),
-                                              str(value.get("words", "")).upper(), str(value.get("program", "")))
+                                              str(value.get("words", "")).upper(), str(value.get("program", "")),
+                                              str(value.get("argspec", "")))
         except ValueError as e:
             raise src.error(f"m_codes.{key}: {e}", "m_codes", key) from None
     try:
@@ -366,6 +368,8 @@ def dumps(m: "_core.Machine") -> str:
                 value["words"] = code.words
             if code.program:
                 value["program"] = code.program
+            if code.argspec:
+                value["argspec"] = code.argspec
             lines.append(f"{number} = {{ " + ", ".join(f"{k} = {_toml_value(v)}" for k, v in value.items()) + " }")
     lines.append("\n[positions]")
     lines.append(f"work_origin = {_toml_value(list(m.work_origin))}")

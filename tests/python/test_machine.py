@@ -335,13 +335,13 @@ def test_the_mill_lathe_shorthand_still_works():
 
 
 def test_a_builder_code_that_runs_a_subprogram(tmp_path):
-    # LinuxCNC: a remap of M150 to the O-word sub probe_tip (probe_tip.ngc on the search path);
+    # LinuxCNC: a remap of M250 to the O-word sub probe_tip (probe_tip.ngc on the search path);
     # Fanuc: a macro M code running O9020. Both lift Z by 5 (G91) after their block.
     (tmp_path / "probe_tip.ngc").write_text("o<probe_tip> sub\nG91 G0 Z5\nG90\no<probe_tip> endsub\nM2\n")
     (tmp_path / "O9020.nc").write_text("O9020\nG91 G0 Z5\nG90\nM99\n")
-    lin = tc.Machine.parse('control = "linuxcnc"\n[m_codes]\n150 = { action = "subprogram", program = "probe_tip" }\n')
+    lin = tc.Machine.parse('control = "linuxcnc"\n[m_codes]\n250 = { action = "subprogram", program = "probe_tip" }\n')
     fan = tc.Machine.parse('control = "fanuc"\n[m_codes]\nM80 = { action = "subprogram", program = "O9020" }\n')
-    for machine, dialect, text in ((lin, "linuxcnc", "G21 G0 X1 Z0\nM150\nG0 X2\nM2\n"),
+    for machine, dialect, text in ((lin, "linuxcnc", "G21 G0 X1 Z0\nM250\nG0 X2\nM2\n"),
                                    (fan, "fanuc", "G21 G0 X1 Z0\nM80\nG0 X2\nM30\n")):
         res = tc.run(tc.Program.parse(text, dialect=dialect), machine=machine, search_path=[tmp_path])
         np.testing.assert_array_equal(res.nominal.end, [[1, 0, 0], [1, 0, 5], [2, 0, 5]])
@@ -414,8 +414,8 @@ def test_names_with_control_characters_round_trip():
 def test_a_linuxcnc_builder_subprogram_name_is_folded_to_lower_case(tmp_path):
     (tmp_path / "mysub.ngc").write_text("o<mysub> sub\nG91 G0 Z5\nG90\no<mysub> endsub\nM2\n")
     m = tc.Machine("linuxcnc")
-    m.m_codes = {150: tc.MachineCode("subprogram", program="MySub")}
-    res = tc.run(tc.Program.parse("G21 G0 X1 Z0\nM150\nM2\n"), machine=m, search_path=[tmp_path])
+    m.m_codes = {250: tc.MachineCode("subprogram", program="MySub")}
+    res = tc.run(tc.Program.parse("G21 G0 X1 Z0\nM250\nM2\n"), machine=m, search_path=[tmp_path])
     assert res.nominal.end[-1, 2] == 5
 
 
@@ -458,10 +458,11 @@ def test_a_fusion_style_haas_program_on_its_machine():
 
 
 def test_a_builder_code_beyond_the_controls_m_codes_is_refused_at_its_line():
-    # LinuxCNC reads M codes up to M199 (ControlProfile.max_m_code).
+    # LinuxCNC reads M codes up to M199 in programs (ControlProfile.max_m_code) and remaps
+    # M200-M999.
     with pytest.raises(tc.ParseError) as e:
-        tc.Machine.parse('control = "linuxcnc"\nkind = "mill"\n[m_codes]\n150 = "nothing"\n200 = "nothing"\n')
-    assert (e.value.code, e.value.line) == ("machine_file", 5) and "up to M199" in e.value.message
+        tc.Machine.parse('control = "linuxcnc"\nkind = "mill"\n[m_codes]\n150 = "nothing"\n1000 = "nothing"\n')
+    assert (e.value.code, e.value.line) == ("machine_file", 5) and "up to M999" in e.value.message
     assert 200 in tc.Machine.parse('control = "fanuc"\nkind = "mill"\n[m_codes]\n200 = "nothing"\n').m_codes
 
 

@@ -51,10 +51,22 @@ void check_machine(const Machine& m) {
             } else if (code.program.find_first_of("/\\<> ") != std::string::npos || code.program.find("..") != std::string::npos) {
                 bad("m_codes", where + "'" + code.program + "' is no subroutine name");
             }
+            if (m.control == Dialect::linuxcnc && number >= 100 && number <= 199)
+                bad("m_codes", where + "LinuxCNC runs M100-M199 as user programs, never remapped (declare what they do "
+                                       "for the path: nothing)");
         }
-        if (number > m.profile.max_m_code)
+        if (!code.argspec.empty() && (code.action != MCodeAction::subprogram || m.control != Dialect::linuxcnc))
+            bad("m_codes", "M" + std::to_string(number) + " argspec: LinuxCNC's REMAP argspec is for subprogram codes");
+        for (char c : code.argspec)
+            if (!(((c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z')) && c != 'O' && c != 'o') && c != '@' && c != '>' &&
+                c != '^')
+                bad("m_codes", "M" + std::to_string(number) + " argspec: '" + std::string(1, c) +
+                                   "' is not an argspec character (letters but O, '@', '>', '^')");
+        // LinuxCNC reads M codes up to M199 in programs and remaps M200-M999.
+        const int highest = m.control == Dialect::linuxcnc ? 999 : m.profile.max_m_code;
+        if (number > highest)
             bad("m_codes", "M" + std::to_string(number) + " is beyond the M codes " + std::string(dialect_name(m.control)) +
-                               " reads (up to M" + std::to_string(m.profile.max_m_code) + ")");
+                               " reads (up to M" + std::to_string(highest) + ")");
     }
     for (int i = 0; i < 3; ++i) {
         const std::string a = kAxis[i];

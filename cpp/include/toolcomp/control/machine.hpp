@@ -61,6 +61,10 @@ struct MachineCode {
     std::string words;  // the letters it reads in its block ("P": Haas M59 P1133 sets relay 1133),
                         // taken out of the block: no other word of the block reads them
     std::string program;  // subprogram: the program it runs (LinuxCNC a sub's name, Fanuc O number)
+    // LinuxCNC's REMAP argspec of a subprogram code: the words the sub takes as its named
+    // locals (#<p>), upper case required, lower case optional; '@' passes them as #1, #2, ...
+    // in this order instead; '>' needs a feed above 0 (#<f>), '^' a spindle speed (#<s>).
+    std::string argspec;
 };
 
 // A position in machine coordinates; an axis not given is nullopt (it does not move, or

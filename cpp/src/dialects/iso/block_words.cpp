@@ -77,7 +77,11 @@ void add_m(BlockWords& bw, const Word& w, const ControlProfile& profile, const M
     if (machine)
         if (const MachineCode* code = machine->m_code(m)) {
             for (char c : code->words) taken |= letter_bit(c);
+            for (char c : code->argspec)
+                if (c >= 'a' && c <= 'z') taken |= letter_bit(static_cast<char>(c - 32));
+                else if (c >= 'A' && c <= 'Z') taken |= letter_bit(c);
             if (++bw.m_count > 4) fail(code::too_many_m_codes, "Too many m codes on line", bw.line, w.column);
+            const int number = m;
             m = standard_m_code(code->action);
             if (code->action == MCodeAction::thread_chamfer_on || code->action == MCodeAction::thread_chamfer_off) {
                 if (bw.thread_chamfer >= 0) fail(code::modal_group_conflict, "Two M codes for the thread chamfer in one block", bw.line, w.column);
@@ -87,6 +91,7 @@ void add_m(BlockWords& bw, const Word& w, const ControlProfile& profile, const M
                 if (bw.machine_call) fail(code::too_many_m_codes, "Two M codes that run subprograms in one block", bw.line, w.column);
                 bw.machine_call = code;
                 bw.machine_call_column = w.column;
+                bw.machine_call_number = number;
             }
             if (m < 0) return;  // a builder code without effect on the path, or a subprogram call
             --bw.m_count;        // counted again below
@@ -151,6 +156,7 @@ BlockWords collect_words(std::span<const Word> words, int line, const ControlPro
             bw.set(w.letter, w.value, w.column);
         }
     }
+    bw.machine_words = bw.letters & taken;
     bw.letters &= ~taken;
     return bw;
 }

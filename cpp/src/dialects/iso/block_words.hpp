@@ -43,6 +43,8 @@ struct BlockWords {
     std::int8_t thread_chamfer = -1;            // a builder code turning the thread chamfer on (1) / off (0)
     const MachineCode* machine_call = nullptr;  // a builder M code that runs a subprogram
     int machine_call_column = 0;
+    int machine_call_number = 0;
+    std::uint32_t machine_words = 0;  // the block's letters its builder codes read (out of `letters`)
 
     static constexpr std::uint32_t kAxes = letter_bit('X') | letter_bit('Y') | letter_bit('Z') | letter_bit('A') |
                                            letter_bit('B') | letter_bit('C') | letter_bit('U') | letter_bit('V') |

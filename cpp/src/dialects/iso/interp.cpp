@@ -238,6 +238,7 @@ void Interp::run_blocks() {
             bw.remove('P');
             bw.remove('L');
         }
+        if (bw.machine_call && prog_.dialect == Dialect::linuxcnc) remap_block_check(bw);
         const std::size_t moves_before = moves_;
         if (!execute(bw)) {
             sink_.finish();
@@ -250,7 +251,7 @@ void Interp::run_blocks() {
             bw.g[g_radius_comp] < 0 && bw.m[m_stop] < 0 && sub_m < 0)
             sink_.control({ControlKind::no_motion, line_, Vec3::Zero(), file_});
         if (sub_m >= 0) subprogram(sub_m, p_word, l_word, bw.m_column[m_subprogram]);
-        if (bw.machine_call) machine_subprogram(*bw.machine_call, bw.machine_call_column);
+        if (bw.machine_call) machine_subprogram(bw);
     }
     sink_.finish();
     line_ = 0;

@@ -171,7 +171,8 @@ private:
     void g50(const BlockWords& bw);  // G-code system A: G50 X Z (as G92), G50 S (spindle clamp)
     // ---- the machine (interp_machine.cpp) -----------------------------------------------
     void place_machine(const Machine& m, const ParameterValues& values);
-    void machine_subprogram(const MachineCode& c, int column);  // a builder M code that runs a program
+    void machine_subprogram(const BlockWords& bw);  // a builder M code that runs a program
+    void remap_block_check(const BlockWords& bw) const;  // LinuxCNC: what may stand beside a remapped code
     void to_tool_change_position(int column);  // M6 on a machine with a tool change position
     void check_travel(const Motion& m);         // the machine's travel limits (travel_limit)
     // mm of the machine file per program unit of axis i: a lathe's machine X is a diameter.

@@ -28,7 +28,22 @@ void Interp::to_tool_change_position(int column) {
 
 // A builder M code that runs a subprogram, after the rest of its block: LinuxCNC as
 // o<program> call (a remap to an O-word sub), Fanuc as M98 P<number>.
-void Interp::machine_subprogram(const MachineCode& c, int column) {
+// LinuxCNC runs a remapped M code (modal group 10) after the block's other M codes and
+// before its G codes and motion, then the rest of the block; toolcomp runs the sub after the
+// block, which is the same only when nothing of that rest is there.
+void Interp::remap_block_check(const BlockWords& bw) const {
+    const std::uint32_t before = (1u << g_feed_mode) | (1u << g_spindle_mode);
+    if ((bw.g_groups & ~before) != 0 || bw.has_axis() || bw.m[m_stop] >= 0)
+        fail(code::unsupported_m_code,
+             "A remapped M code with G codes, axis words or a program stop in its block (LinuxCNC runs the sub "
+             "between them) is not supported by toolcomp: put it on a line of its own",
+             bw.machine_call_column);
+}
+
+// LinuxCNC: the remap's o-call, the argspec's words as the sub's locals (interp_remap.cc).
+void Interp::machine_subprogram(const BlockWords& bw) {
+    const MachineCode& c = *bw.machine_call;
+    const int column = bw.machine_call_column;
     if (prog_.dialect == Dialect::linuxcnc) {
         Statement s;
         s.kind = Stmt::o_call;
@@ -36,7 +51,33 @@ void Interp::machine_subprogram(const MachineCode& c, int column) {
         std::string name = c.program;  // LinuxCNC folds a sub's name to lower case, as o<MySub> call
         for (char& ch : name) ch = ascii_lower(ch);
         s.label = "<" + name + ">";
+        // The words: present ones by their lower-case name (or as #1, #2, ... with '@').
+        std::string missing, unmet;
+        std::vector<std::pair<std::string, double>> named;
+        std::vector<double> positional;
+        const bool at = c.argspec.find('@') != std::string::npos;
+        for (char ch : c.argspec) {
+            if (ch == '>' || ch == '^') {
+                const double v = ch == '>' ? (st_.feed_mode == 930 ? feed_ : feed_ / scale()) : speed_;
+                if (v <= 0) unmet += ch == '>' ? "F>0," : "S>0,";
+                else named.emplace_back(ch == '>' ? "f" : "s", v);
+                continue;
+            }
+            if (ch == '@') continue;
+            const char u = static_cast<char>(ch >= 'a' ? ch - 32 : ch);
+            const bool present = (bw.machine_words & letter_bit(u)) != 0;
+            const double v = present ? bw.letter[static_cast<std::size_t>(letter_index(u))].value : 0.0;
+            if (!present && ch == u) missing += missing.empty() ? std::string(1, u) : "," + std::string(1, u);
+            if (at) positional.push_back(v);
+            else if (present) named.emplace_back(std::string(1, ascii_lower(u)), v);
+        }
+        if (!missing.empty() || !unmet.empty())
+            fail(code::remap_words, "user-defined M" + std::to_string(bw.machine_call_number) + ":" +
+                                        (missing.empty() ? "" : " missing: " + missing) + unmet,
+                 column);
         call_sub(s);
+        for (std::size_t i = 0; i < positional.size() && i < 30; ++i) params_.set(static_cast<int>(i) + 1, positional[i]);
+        for (const auto& [n, v] : named) params_.set_named(n, v);
         return;
     }
     const std::string n = c.program[0] == 'O' || c.program[0] == 'o' ? c.program.substr(1) : c.program;

@@ -1,0 +1,84 @@
+"""LinuxCNC's user M codes and REMAPs, declared in a machine file: M100-M199 do nothing to the
+path (they run a program on the machine), a remapped M code runs its o-word sub with the
+argspec's words as locals. The expected values are those rs274 gives with the same REMAP=
+lines in an INI ([RS274NGC] REMAP=M400 modalgroup=10 argspec=Pq ngc=m400, ...): M400 P1.5
+sees #<p> = 1.5 and no #<q>; M410 P10 Q20 with '@PQr' sees #1 = 10, #2 = 20, #3 = 0;
+a missing required word is "user-defined M400: missing: P"."""
+import numpy as np
+import pytest
+
+import toolcomp as tc
+
+MACHINE = """name = "mill with user codes"
+control = "linuxcnc"
+kind = "mill"
+[m_codes]
+101 = { action = "nothing", name = "air blast", words = "PQ" }
+400 = { action = "subprogram", program = "m400", argspec = "Pq" }
+410 = { action = "subprogram", program = "m410", argspec = "@PQr" }
+420 = { action = "subprogram", program = "m400", argspec = "P>" }
+"""
+M400 = "o<m400> sub\nG0 X#<p>\no<m400> if [EXISTS[#<q>]]\nG0 Y#<q>\no<m400> endif\no<m400> endsub\nM2\n"
+M410 = "o<m410> sub\nG0 X#1 Y#2 Z#3\no<m410> endsub\nM2\n"
+
+
+@pytest.fixture
+def machine(tmp_path):
+    (tmp_path / "m.toml").write_text(MACHINE)
+    (tmp_path / "m400.ngc").write_text(M400)
+    (tmp_path / "m410.ngc").write_text(M410)
+    return tmp_path
+
+
+def _run(text, where):
+    return tc.run(tc.Program.parse(text), machine=str(where / "m.toml"), search_path=[str(where)])
+
+
+def test_user_m_codes_and_remaps_with_their_words(machine):
+    res = _run("G21 G90\nM101 P1 Q2\nG0 X1\nM400 P2.5\nM400 P3 Q4\nM410 P10 Q20\nM2\n", machine)
+    assert np.round(res.nominal.end, 9).tolist() == [[1, 0, 0], [2.5, 0, 0], [3, 0, 0], [3, 4, 0], [10, 20, 0]]
+
+
+@pytest.mark.parametrize("block, message", [
+    ("M400", "user-defined M400: missing: P"),
+    ("M420 P1", "user-defined M420:F>0,"),
+    ("M420", "user-defined M420: missing: PF>0,"),
+])
+def test_the_argspec_requires_its_upper_case_words(machine, block, message):
+    with pytest.raises(tc.ProgramError) as e:
+        _run(f"G21\n{block}\nM2\n", machine)
+    assert (e.value.code, str(e.value.message), e.value.line) == ("remap_words", message, 2)
+
+
+def test_without_the_machine_the_codes_stay_errors():
+    with pytest.raises(tc.ProgramError) as e:
+        tc.run(tc.Program.parse("G21\nM101\nM2\n"))
+    assert str(e.value.message) == "Unknown m code used: M101"
+    with pytest.raises(tc.ProgramError) as e:
+        tc.run(tc.Program.parse("G21\nM400\nM2\n"))
+    assert e.value.code == "m_code_out_of_range"
+
+
+def test_a_remap_beside_motion_is_refused_explicitly(machine):
+    with pytest.raises(tc.ProgramError) as e:
+        _run("G21\nG0 X1 M400 P1\nM2\n", machine)
+    assert e.value.code == "unsupported_m_code" and "not supported by toolcomp" in str(e.value)
+
+
+def test_machine_file_rules(tmp_path):
+    for body, what in [
+        ('150 = { action = "subprogram", program = "m150" }', "M100-M199"),
+        ('400 = { action = "nothing", argspec = "P" }', "argspec"),
+        ('400 = { action = "subprogram", program = "m400", argspec = "P%" }', "argspec"),
+        ('1000 = { action = "subprogram", program = "m1000" }', "up to M999"),
+    ]:
+        (tmp_path / "bad.toml").write_text('control = "linuxcnc"\nkind = "mill"\n[m_codes]\n' + body + "\n")
+        with pytest.raises(tc.ParseError) as e:
+            tc.Machine.read(str(tmp_path / "bad.toml"))
+        assert e.value.code == "machine_file" and what in str(e.value), body
+
+
+def test_the_argspec_reads_back(machine):
+    m = tc.Machine.read(str(machine / "m.toml"))
+    m.write(str(machine / "again.toml"))
+    assert tc.Machine.read(str(machine / "again.toml")).m_codes[410].argspec == "@PQr"
