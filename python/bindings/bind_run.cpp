@@ -316,6 +316,8 @@ void bind_run(py::module_& m) {
                        "M70-M73 save, invalidate and restore the modal state, M73 until the subroutine returns (LinuxCNC)")
         .def_readwrite("tool_change_stops_spindle", &ControlProfile::tool_change_stops_spindle,
                        "M6 stops the spindle (LinuxCNC without TOOL_CHANGE_WITH_SPINDLE_ON)")
+        .def_readwrite("splines", &ControlProfile::splines,
+                       "G5, G5.1 splines and G5.2/G5.3 NURBS as LinuxCNC's machine cuts them (biarcs); False: refused")
         .def_readwrite("spindle_sync_motion", &ControlProfile::spindle_sync_motion,
                        "G33, G33.1 and the G76 threading cycle as LinuxCNC runs them; False: refused")
         .def_readwrite("restore_feed_speed_always", &ControlProfile::restore_feed_speed_always,

@@ -270,6 +270,7 @@ class ControlProfile:
     numbered_subprograms: bool
     modal_state_codes: bool
     spindle_sync_motion: bool
+    splines: bool
     restore_feed_speed_always: bool
     tool_change_stops_spindle: bool
     startup_motion: int

@@ -40,6 +40,9 @@ RS274_PROBE_SIMULATION = {"probing_g38"}
 @pytest.mark.parametrize("prog", sorted(PROGRAMS.glob("*.ngc")), ids=lambda p: p.stem)
 def test_program_matches_rs274(prog):
     tbl = _table_for(prog)
+    if prog.stem == "splines_g5_nurbs":
+        pytest.skip("rs274 prints NURBS_FEED(<points>, ...) without the curve: the gcode module is compared "
+                    "(test_oracle_precise.py)")
     rs = lcnc.nominal(prog, tbl)
     # the probes stop where rs274's canon stopped them (lcnc.parse_canon)
     ours = _toolcomp_nominal(prog, tbl, rs["probes"])

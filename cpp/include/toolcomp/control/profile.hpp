@@ -307,6 +307,9 @@ struct ControlProfile {
     // (in and back out, I the return's speed factor) and the G76 threading cycle (P I J K R Q
     // H E L), modal in the motion group (interp_spindle_sync.cpp). false: refused.
     bool spindle_sync_motion = false;
+    // LinuxCNC's G5 / G5.1 splines and G5.2 / G5.3 NURBS, as its machine cuts them: biarcs,
+    // 4 spans per control point (interp_splines.cpp). false: refused.
+    bool splines = false;
     // M6 stops the spindle: a program turns it on again after the change (LinuxCNC without
     // [EMCIO]TOOL_CHANGE_WITH_SPINDLE_ON; read back by #<_spindle_on> and M70).
     bool tool_change_stops_spindle = false;

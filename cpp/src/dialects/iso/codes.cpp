@@ -40,7 +40,9 @@ int g_group(int c, const ControlProfile& p) {
         // Real LinuxCNC codes that toolcomp does not run yet: splines and NURBS, spindle-
         // synchronised motion, probing, threading, lathe cycles, rotated planes.
         case 330: case 331: case 760: return p.spindle_sync_motion ? g_motion : kUnsupported;
-        case 50: case 51: case 52: case 53: case 171: case 181: case 191:
+        case 50: case 51: case 52: return p.splines ? g_motion : kUnsupported;
+        case 53: return p.splines ? g_nonmodal : kUnsupported;  // G5.3
+        case 171: case 181: case 191:
         case 521: case 731: case 961: case 711: case 712: case 721: case 722:
             return kUnsupported;
         default:

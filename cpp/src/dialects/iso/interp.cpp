@@ -278,6 +278,7 @@ void Interp::check_words(const BlockWords& bw, int motion_to_be) {
              "stands in a block of its own)",
              bw['C'].column);
     const bool sync = motion_to_be == 330 || motion_to_be == 331, g76 = motion_to_be == 760;  // LinuxCNC
+    const bool g5 = motion_to_be == 50, g51 = motion_to_be == 51, g52 = motion_to_be == 52;  // splines
     if ((bw.letters & kChecked) == 0 && !sync && !g76) return;  // none of the words that need a code to use them
     const int g0 = bw.g[g_nonmodal];
     if (g0 >= 700 && g0 <= 760 && g0 % 10 == 0) return;  // the lathe cycles G70-G76 read their words
@@ -297,14 +298,14 @@ void Interp::check_words(const BlockWords& bw, int motion_to_be) {
         if (!(lc == 430 || lc == 432 || lc == 440 || g76)) fail(code::unused_word, "H word with no G43 or G76 to use it", col('H'));
     }
     const bool exit_dir = bw.g[g_radius_comp] == 400 && profile_.radius.exit_direction_words;
-    if (bw.has('I') && !(arc || g87 || exit_dir || g0 == 100 || motion_to_be == 331 || g76))
+    if (bw.has('I') && !(arc || g87 || exit_dir || g0 == 100 || motion_to_be == 331 || g76 || g5 || g51))
         fail(code::unused_word, "I word with no G2, G3, G5, G5.1, G10, G33.1, G76, or G87 to use it", col('I'));
-    if (bw.has('J') && !(arc || g87 || exit_dir || g0 == 100 || g76))
+    if (bw.has('J') && !(arc || g87 || exit_dir || g0 == 100 || g76 || g5 || g51))
         fail(code::unused_word, "J word with no G2, G3, G5, G5.1, G10, G76 or G87 to use it", col('J'));
     if (bw.has('K') && !(arc || g87 || exit_dir || sync || g76)) fail(code::unused_word, "K word with no G2, G3, G33, G33.1, G76, or G87 to use it", col('K'));
     if (bw.has('L')) {
         int rc = bw.g[g_radius_comp];
-        if (!(g0 == 100 || cycle_block || rc >= 410 || bw.m[m_io] == 660 || g76))  // G41, G41.1, G42, G42.1, M66
+        if (!(g0 == 100 || cycle_block || rc >= 410 || bw.m[m_io] == 660 || g76 || g52))  // G41, G41.1, G42, G42.1, M66
             fail(code::unused_word,
                  "L word with no G10, cutter compensation, canned cycle, digital/analog input, M98 or NURBS code",
                  col('L'));
@@ -313,7 +314,7 @@ void Interp::check_words(const BlockWords& bw, int motion_to_be) {
         int m = bw.m[m_override];
         bool ok = arc || io || g0 == 40 || g0 == 100 || bw.g[g_path_control] == 640 || motion_to_be == 820 ||
                   motion_to_be == 860 || motion_to_be == 880 || motion_to_be == 890 ||
-                  (m >= 500 && m <= 530) || g76;
+                  (m >= 500 && m <= 530) || g76 || g5 || g52;
         if (!ok)
             fail(code::unused_word,
                  "P word with no G2 G3 G4 G10 G64 G5 G5.2 G76 G82 G86 G88 G89 or M50 M51 M52 M53 M62 M63 M64 "
@@ -322,7 +323,7 @@ void Interp::check_words(const BlockWords& bw, int motion_to_be) {
     }
     if (bw.has('Q')) {
         bool ok = (io && bw.m[m_io] >= 660) || g0 == 100 || bw.g[g_path_control] == 640 || motion_to_be == 730 || motion_to_be == 830 ||
-                  bw.m[m_tool_change] == 610 || g76;
+                  bw.m[m_tool_change] == 610 || g76 || g5;
         if (!ok)
             fail(code::unused_word,
                  "Q word with no G5, G10, G64, G73, G76, G83, M19, M66, M67, M68 or user M code that uses it",
@@ -400,7 +401,8 @@ bool Interp::execute(const BlockWords& bw) {
     if (motion_code >= 0 && motion_code != 800) {
         if (bare ? uses_axes_group0(g0) : data_axes && axes && !profile_.motion_beside_data_axes)
             fail(code::two_axis_codes, "Cannot use two g codes that both use axis values", bw.g_column[g_nonmodal]);
-        if (bare && !axes && motion_code != 0 && motion_code != 10 && motion_code != 20 && motion_code != 30)
+        if (bare && !axes && motion_code != 0 && motion_code != 10 && motion_code != 20 && motion_code != 30 &&
+            motion_code != 52)  // G5.2 P alone: the first control point's weight
             fail(code::axes_missing, "All axes missing with motion code", bw.g_column[g_motion]);
     }
     if (motion_code == 800 && axes) fail(code::axis_with_g80, "Cannot use axis values with g80", bw.axis_column());
@@ -605,6 +607,7 @@ bool Interp::execute(const BlockWords& bw) {
         case 700: finishing_cycle(bw); break;
         case 710: case 720: roughing_cycle(bw, g0); break;
         case 760: threading_cycle(bw); break;
+        case 53: nurbs_end(bw); break;
         case 730: pattern_cycle(bw); break;
         case 740: case 750: peck_cycle(bw, g0); break;
         default: break;
@@ -627,6 +630,8 @@ bool Interp::execute(const BlockWords& bw) {
             case 331: rigid_tap(bw); break;
             case 760: lcnc_threading(bw); break;
             case 382: case 383: case 384: case 385: probe(bw, motion_to_be); break;
+            case 50: case 51: spline(bw, motion_to_be); break;
+            case 52: nurbs_point(bw); break;
             case 900: case 920: case 940: single_cycle(bw, motion_to_be); break;
             default: cycle(bw, motion_to_be); break;
         }

@@ -224,6 +224,15 @@ private:
     void restore_on_return(const ModalSnapshot& saved, int call_line);  // M73's, at a subroutine's return
     double tolerance_ = 0, naivecam_ = 0;  // LinuxCNC G64 P and Q, as given
 
+    // ---- LinuxCNC's splines G5, G5.1, G5.2 / G5.3 (interp_splines.cpp) ---------------------
+    void spline(const BlockWords& bw, int code);  // G5, G5.1
+    void nurbs_point(const BlockWords& bw);       // G5.2
+    void nurbs_end(const BlockWords& bw);         // G5.3
+    void nurbs_feed(const std::vector<std::array<double, 3>>& points, unsigned order, int col);
+    void spline_arc(const Vec2& from, const Vec2& to, const Vec2& d);
+    std::vector<std::array<double, 3>> nurbs_points_;  // G5.2: X Y weight (program units)
+    unsigned nurbs_order_ = 3;
+
     // ---- LinuxCNC's straight probe G38.2-G38.5 (interp_probe.cpp) -------------------------
     void probe(const BlockWords& bw, int code);
     std::size_t probes_used_ = 0;             // probe moves so far (the next takes opts_.probes[this])
