@@ -7,6 +7,7 @@
 #include <charconv>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
 #include <string>
 #include <string_view>
 
@@ -63,6 +64,14 @@ inline std::string_view skip_bom(std::string_view text) {
 inline std::string shortest_number(double v) {
     char buf[32];
     return std::string(buf, std::to_chars(buf, buf + sizeof buf, v).ptr);
+}
+
+// v as C's printf writes it with `format`, one conversion of a double ("%f", "%.1f"): how
+// controls write numbers into text (LinuxCNC's DEBUG values, its M72 restore).
+inline std::string printf_number(const char* format, double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, format, v);
+    return buf;
 }
 
 constexpr bool ascii_digit(char c) { return c >= '0' && c <= '9'; }

@@ -10,22 +10,15 @@
 //   * the motion mode, offsets' values, the tool and parameters are not part of the state;
 //   * the rest of an M72 block is not run once the restore ran anything (LinuxCNC's
 //     nested blocks overwrite the block being run): toolcomp warns.
-#include <cstdio>
 
 #include "interp.hpp"
 #include "toolcomp/dialects/iso/lexer.hpp"
 #include "toolcomp/program/codes.hpp"
+#include "toolcomp/program/text.hpp"
 
 namespace toolcomp::iso {
 
 namespace {
-
-// printf's rendering, as LinuxCNC builds the restore's text with snprintf.
-std::string printed(const char* format, double v) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, format, v);
-    return buf;
-}
 
 std::string g_text(int code10) {
     return " G" + std::to_string(code10 / 10) + (code10 % 10 ? "." + std::to_string(code10 % 10) : "");
@@ -128,8 +121,8 @@ bool Interp::restore_modal(const ModalSnapshot& saved, int column) {
     const ModalSnapshot now = snapshot();
     const bool always = profile_.restore_feed_speed_always;
     std::string text;
-    if (always || saved.feed != now.feed) text += printed(" F%.1f", saved.feed);
-    if (always || saved.speed != now.speed) text += printed(" S%.0f", saved.speed);
+    if (always || saved.feed != now.feed) text += printf_number(" F%.1f", saved.feed);
+    if (always || saved.speed != now.speed) text += printf_number(" S%.0f", saved.speed);
     bool g64 = saved.tolerance != now.tolerance || saved.naivecam != now.naivecam;
     for (int slot : {3, 4, 6, 7, 8, 9, 10, 11, 13, 14, 15, 16}) {
         const int v = saved.g[static_cast<std::size_t>(slot)];
@@ -139,8 +132,8 @@ bool Interp::restore_modal(const ModalSnapshot& saved, int column) {
     }
     if (g64 && saved.g[11] == 640)
         text += saved.tolerance < 0 ? std::string(" G64")
-              : saved.naivecam < 0  ? printed(" G64 P%f", saved.tolerance)
-                                    : printed(" G64 P%f", saved.tolerance) + printed(" Q%f", saved.naivecam);
+              : saved.naivecam < 0  ? printf_number(" G64 P%f", saved.tolerance)
+                                    : printf_number(" G64 P%f", saved.tolerance) + printf_number(" Q%f", saved.naivecam);
     for (int slot : {2, 4, 5, 6, 7, 8}) {
         const int v = saved.m[static_cast<std::size_t>(slot)];
         if (v != now.m[static_cast<std::size_t>(slot)] && v >= 0) text += "M" + std::to_string(v) + "\n";

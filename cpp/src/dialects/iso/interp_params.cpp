@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <cstdio>
 
 #include "interp.hpp"
 #include "whole_numbers.hpp"
@@ -13,14 +12,6 @@
 #include "toolcomp/tools/tool_table.hpp"
 
 namespace toolcomp::iso {
-
-namespace {
-std::string number_text(double v) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%f", v);
-    return buf;
-}
-}  // namespace
 
 bool Interp::system_param(int n, double& v) const {
     const bool fanuc = params_.fanuc();
@@ -91,7 +82,7 @@ double Interp::param(double number) {
     const double r = parameter_number(number, 0);
     if (fanuc) {
         if (r == 0) return ParameterStore::kVacant;
-        if (r < 0 || r > 99999) fail(code::bad_parameter_number, "Variable number #" + number_text(r) + " out of range");
+        if (r < 0 || r > 99999) fail(code::bad_parameter_number, "Variable number #" + printf_number("%f", r) + " out of range");
     } else if (r < 1 || r > 5601) {
         fail(code::parameter_out_of_range, "Parameter number out of range");
     }
@@ -281,7 +272,7 @@ std::string Interp::substitute(const std::string& text) {
                 if (text[k] != ' ' && text[k] != '\t') name.push_back(ascii_lower(text[k]));
             const double* v = params_.named(name);
             // LinuxCNC's read-only #<_x>, #<_feed>, ... are values too
-            out += v ? number_text(*v) : predefined(name) ? number_text(get(name, {})) : "######";
+            out += v ? printf_number("%f", *v) : predefined(name) ? printf_number("%f", get(name, {})) : "######";
             i = close;
             continue;
         }
@@ -294,7 +285,7 @@ std::string Interp::substitute(const std::string& text) {
         const int n = std::stoi(text.substr(j, std::min<std::size_t>(k - j, 7)));
         double v = 0;
         if (!system_param(n, v)) v = params_.stored(n) ? params_.get(n) : 0;
-        out += number_text(v);
+        out += printf_number("%f", v);
         i = k - 1;
     }
     return out;

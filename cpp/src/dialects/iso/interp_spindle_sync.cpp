@@ -13,22 +13,12 @@
 // move's end X under G96), in mm/min. The passes follow LinuxCNC's arithmetic step by step:
 // whether a pass exists depends on an exact comparison.
 #include <cmath>
-#include <cstdio>
 
 #include "interp.hpp"
 #include "toolcomp/program/codes.hpp"
+#include "toolcomp/program/text.hpp"
 
 namespace toolcomp::iso {
-
-namespace {
-
-std::string shortest(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%g", v);
-    return buf;
-}
-
-}  // namespace
 
 // LinuxCNC's $ word: the spindle the block's spindle codes act on. toolcomp models a machine
 // with one spindle (LinuxCNC's default, [TRAJ]SPINDLES = 1): $0, and $-1 ("all") where
@@ -112,7 +102,7 @@ void Interp::lcnc_threading(const BlockWords& bw) {
         diags_.push_back({code::g76_diameter_block, Severity::warning,
                           std::string(st_.diameter ? "G7" : "G8") +
                               " in the block of G76: LinuxCNC scales I J K twice, the thread is cut at I" +
-                              shortest(i) + " J" + shortest(j) + " K" + shortest(k) + " (radius)",
+                              shortest_number(i) + " J" + shortest_number(j) + " K" + shortest_number(k) + " (radius)",
                           {line_, col, file_name()}});
     } else if (st_.diameter) {
         i /= 2, j /= 2, k /= 2;
