@@ -59,10 +59,19 @@ def test_without_the_machine_the_codes_stay_errors():
     assert e.value.code == "m_code_out_of_range"
 
 
-def test_a_remap_beside_motion_is_refused_explicitly(machine):
-    with pytest.raises(tc.ProgramError) as e:
-        _run("G21\nG0 X1 M400 P1\nM2\n", machine)
-    assert e.value.code == "unsupported_m_code" and "not supported by toolcomp" in str(e.value)
+def test_the_rest_of_the_block_runs_when_the_sub_returns(machine):
+    # LinuxCNC runs a remapped M code after the block's M codes and before its G codes: the
+    # sub's G0 X2.5 first, then the block's G1 X1 (F100 of the block already in force).
+    res = _run("G21 G90\nG1 X1 F100 M400 P2.5\nM2\n", machine)
+    assert np.round(res.nominal.end, 9).tolist() == [[2.5, 0, 0], [1, 0, 0]]
+    assert res.nominal.feed.tolist()[1] == 100.0
+    # axis words alone move in the mode read with the block (G1), not the sub's G0 (rs274 with
+    # the same REMAP: STRAIGHT_TRAVERSE(2, 0, 0) then STRAIGHT_FEED(2, 5, 0))
+    res = _run("G21 G90 F100\nG1 X0.5\nM400 P2 Y5\nM2\n", machine)
+    assert res.nominal.kind.tolist() == [1, 0, 1] and res.nominal.end[-1].tolist() == [2, 5, 0]
+    # a program end in the block ends it after the sub
+    res = _run("G21 G90\nM400 P2 M2\nG0 X9\nM2\n", machine)
+    assert res.nominal.end.tolist() == [[2, 0, 0]]
 
 
 def test_machine_file_rules(tmp_path):

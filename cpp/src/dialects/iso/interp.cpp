@@ -202,6 +202,10 @@ void Interp::run_blocks() {
         if (block.statement_count)
             if (const Statement* s = control_statement(p, block); s && !(s->kind == Stmt::m99_return && frames_.size() < 2)) {
                 control(*s, k);
+                if (ended_) {  // a remapped code's block ended the program when its sub returned
+                    sink_.finish();
+                    return;
+                }
                 continue;
             }
         const std::span<const Word> words = syntax_ ? block_words(block) : p.words(block);
@@ -238,7 +242,16 @@ void Interp::run_blocks() {
             bw.remove('P');
             bw.remove('L');
         }
-        if (bw.machine_call && prog_.dialect == Dialect::linuxcnc) remap_block_check(bw);
+        if (bw.machine_call && prog_.dialect == Dialect::linuxcnc) {
+            // LinuxCNC: the remap's sub runs after the block's M codes, the rest of the block
+            // when it returns (return_from_sub).
+            if (const int motion = execute_head(bw); motion != kBlockEnded) {
+                machine_subprogram(bw);
+                frames_.back().resume = std::make_shared<BlockWords>(bw);
+                frames_.back().resume_motion = motion;
+            }
+            continue;
+        }
         const std::size_t moves_before = moves_;
         if (!execute(bw)) {
             sink_.finish();
@@ -381,7 +394,29 @@ void Interp::system_a_codes(const BlockWords& bw) const {
         if (bw.g[r.group] == r.code) fail(r.error, r.message, bw.g_column[r.group]);
 }
 
+// Which motion the axis words feed (LinuxCNC's "motion_to_be"): the block's motion code, or
+// the modal one.
+int Interp::motion_of(const BlockWords& bw) const {
+    const int g0 = bw.g[g_nonmodal];
+    const bool axes = bw.has_axis();
+    int motion_to_be = bw.g[g_motion];
+    if (motion_to_be < 0 && axes && !axes_are_data(bw)) motion_to_be = st_.motion;
+    if (g0 == 530 && profile_.g53_rapid && axes) motion_to_be = 0;  // Fanuc: G53 at rapid, whatever the mode
+    if (profile_.bare_motion_codes && motion_to_be < 0 && !axes && (st_.motion == 20 || st_.motion == 30) &&
+        (bw.has('I') || bw.has('J') || bw.has('K')))
+        motion_to_be = st_.motion;  // "I1" alone under G2: an arc
+    return motion_to_be;
+}
+
 bool Interp::execute(const BlockWords& bw) {
+    const int motion_to_be = execute_head(bw);
+    return motion_to_be == kBlockEnded || execute_tail(bw, motion_to_be);
+}
+
+// Steps 1-9 of a block: its checks, then feed and speed, the tool, the M codes (LinuxCNC's
+// order of execution up to its user and remapped M codes). Returns the block's motion, or
+// kBlockEnded when an M72 restore ended the block.
+int Interp::execute_head(const BlockWords& bw) {
     block_tool_ = tool_;
     if (bw.thread_chamfer >= 0) thread_chamfer_on_ = bw.thread_chamfer == 1;
     const int g0 = bw.g[g_nonmodal];
@@ -395,7 +430,6 @@ bool Interp::execute(const BlockWords& bw) {
         cycle_il_set_ = false;
     }
 
-    // Which motion the axis words feed (LinuxCNC's "motion_to_be").
     const bool data_axes = axes_are_data(bw);
     const bool bare = profile_.bare_motion_codes;
     if (motion_code >= 0 && motion_code != 800) {
@@ -406,12 +440,7 @@ bool Interp::execute(const BlockWords& bw) {
             fail(code::axes_missing, "All axes missing with motion code", bw.g_column[g_motion]);
     }
     if (motion_code == 800 && axes) fail(code::axis_with_g80, "Cannot use axis values with g80", bw.axis_column());
-    int motion_to_be = motion_code;
-    if (motion_to_be < 0 && axes && !data_axes) motion_to_be = st_.motion;
-    if (g0 == 530 && profile_.g53_rapid && axes) motion_to_be = 0;  // Fanuc: G53 at rapid, whatever the mode
-    if (bare && motion_to_be < 0 && !axes && (st_.motion == 20 || st_.motion == 30) &&
-        (bw.has('I') || bw.has('J') || bw.has('K')))
-        motion_to_be = st_.motion;  // "I1" alone under G2: an arc
+    const int motion_to_be = motion_of(bw);
     if (motion_to_be == 800 && axes && !data_axes)
         fail(code::axis_without_motion, "Cannot use axis values without a g code that uses them", bw.axis_column());
     if ((motion_code == 20 || motion_code == 30) && g0 == 40)
@@ -547,12 +576,24 @@ bool Interp::execute(const BlockWords& bw) {
         // 7-9: spindle, coolant, overrides: state of the machine, not of the path (the spindle
         // direction matters to the boring cycles).
         if (int sp = bw.m[m_spindle]; sp >= 700) {
-            if (modal_state(bw)) return true;  // LinuxCNC M70-M73; after a restore: the block ends
+            if (modal_state(bw)) return kBlockEnded;  // LinuxCNC M70-M73; after a restore: the block ends
         } else if (sp >= 0) {
             spindle_ = sp == 30 ? 1 : sp == 40 ? -1 : 0;
         }
         machine_.update(bw);  // coolant and overrides (read by #<_flood>, #<_feed_override>, ...)
     }
+    return motion_to_be;
+}
+
+// Steps 10-21 of a block: dwell, the modes, G10/G28/G92 and the lathe cycles, the motion,
+// the stop. False after M2/M30.
+bool Interp::execute_tail(const BlockWords& bw, int motion_to_be) {
+    const int g0 = bw.g[g_nonmodal];
+    const int motion_code = bw.g[g_motion];
+    const bool axes = bw.has_axis();
+    const bool data_axes = axes_are_data(bw);
+    const bool bare = profile_.bare_motion_codes;
+    const bool modal = bw.modal_codes() || bw.m_codes();
     // 10: dwell
     // LinuxCNC keeps -1 for a missing P and reads any other value, negative ones too.
     if (g0 == 40 && (!bw.has('P') || (profile_.dwell_negative_p ? bw['P'].value == -1 : bw['P'].value < 0)))

@@ -80,6 +80,9 @@ struct Frame {
     std::size_t stop = 0;         // G70: the block after the contour's last
     Vec6 back = Vec6::Zero();     // G70: where the tool goes at rapid after the contour
     ModalSnapshot saved;          // LinuxCNC M70 / M73 of this call level
+    // A remap's sub: the rest of its block, run at the return, with the motion it read then.
+    std::shared_ptr<const BlockWords> resume;
+    int resume_motion = -1;
     const Program& prog() const { return *at->prog; }
 };
 
@@ -97,6 +100,11 @@ public:
 private:
     // ---- block execution (interp.cpp) --------------------------------------------------
     bool execute(const BlockWords& bw);  // false after M2/M30
+    static constexpr int kBlockEnded = -2;
+    int execute_head(const BlockWords& bw);  // its motion, or kBlockEnded
+    bool execute_tail(const BlockWords& bw, int motion_to_be);
+    int motion_of(const BlockWords& bw) const;
+    bool ended_ = false;  // the program ended in the rest of a remapped code's block
     void check_words(const BlockWords& bw, int motion_to_be);
     [[noreturn]] void fail(const char* code, const std::string& msg, int column = 0) const;
     // The file of the running block for messages: "" for the main program.
@@ -172,7 +180,6 @@ private:
     // ---- the machine (interp_machine.cpp) -----------------------------------------------
     void place_machine(const Machine& m, const ParameterValues& values);
     void machine_subprogram(const BlockWords& bw);  // a builder M code that runs a program
-    void remap_block_check(const BlockWords& bw) const;  // LinuxCNC: what may stand beside a remapped code
     void to_tool_change_position(int column);  // M6 on a machine with a tool change position
     void check_travel(const Motion& m);         // the machine's travel limits (travel_limit)
     // mm of the machine file per program unit of axis i: a lathe's machine X is a diameter.

@@ -204,11 +204,18 @@ void Interp::return_from_sub(const Statement& s) {
     const double v = has_value ? eval(s.value, s.column) : 0.0;
     const ModalSnapshot saved = frames_.back().saved;
     const int call_line = frames_.back().call_line;
+    const std::shared_ptr<const BlockWords> resume = frames_.back().resume;
+    const int resume_motion = frames_.back().resume_motion;
     frames_.pop_back();
     params_.leave();
     value_returned_ = has_value;
     value_ = v;  // a return without a value resets #<_value> to 0
     restore_on_return(saved, call_line);
+    if (resume) {  // a remapped M code's sub: the rest of its block now, at its line
+        line_ = call_line;
+        file_ = frames_.back().at->file;
+        if (!execute_tail(*resume, resume_motion)) ended_ = true;
+    }
 }
 
 void Interp::control(const Statement& s, std::size_t k) {

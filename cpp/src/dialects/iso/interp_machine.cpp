@@ -28,18 +28,6 @@ void Interp::to_tool_change_position(int column) {
 
 // A builder M code that runs a subprogram, after the rest of its block: LinuxCNC as
 // o<program> call (a remap to an O-word sub), Fanuc as M98 P<number>.
-// LinuxCNC runs a remapped M code (modal group 10) after the block's other M codes and
-// before its G codes and motion, then the rest of the block; toolcomp runs the sub after the
-// block, which is the same only when nothing of that rest is there.
-void Interp::remap_block_check(const BlockWords& bw) const {
-    const std::uint32_t before = (1u << g_feed_mode) | (1u << g_spindle_mode);
-    if ((bw.g_groups & ~before) != 0 || bw.has_axis() || bw.m[m_stop] >= 0)
-        fail(code::unsupported_m_code,
-             "A remapped M code with G codes, axis words or a program stop in its block (LinuxCNC runs the sub "
-             "between them) is not supported by toolcomp: put it on a line of its own",
-             bw.machine_call_column);
-}
-
 // LinuxCNC: the remap's o-call, the argspec's words as the sub's locals (interp_remap.cc).
 void Interp::machine_subprogram(const BlockWords& bw) {
     const MachineCode& c = *bw.machine_call;
