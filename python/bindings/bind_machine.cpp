@@ -119,6 +119,24 @@ void bind_machine(py::module_& m) {
                 mc.m_codes = codes;
             },
             "builder M codes: {number: MachineCode} (a copy: set it back after changing it)")
+        .def_property(
+            "g_codes",
+            [](const Machine& mc) {
+                std::map<double, MachineCode> out;
+                for (const auto& [c, code] : mc.g_codes) out[c / 10.0] = code;
+                return out;
+            },
+            [](Machine& mc, const std::map<double, MachineCode>& codes) {
+                std::map<int, MachineCode> by10;
+                for (const auto& [g, code] : codes) {
+                    const double v = g * 10;
+                    if (!(v >= 0 && v <= 9999) || std::fabs(v - std::round(v)) > 1e-6)
+                        throw py::value_error("a G code number is 0-999.9 with one decimal");
+                    by10[static_cast<int>(std::lround(v))] = code;
+                }
+                mc.g_codes = std::move(by10);
+            },
+            "LinuxCNC's remapped G codes: {88.6: MachineCode('subprogram', program=..., argspec=...)} (a copy)")
         .def_property("work_origin", triple_get(&Machine::work_origin),
                       triple_set("work_origin", &Machine::work_origin), "where program zero (G54) lies in machine coordinates, (x, y, z) mm")
         .def_property("g28", triple_get(&Machine::g28),

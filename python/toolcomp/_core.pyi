@@ -547,6 +547,7 @@ class Machine:
     def kind(self) -> MachineKind: ...
     profile: ControlProfile
     m_codes: Dict[int, MachineCode]
+    g_codes: Dict[float, MachineCode]
     work_origin: Tuple[float, float, float]
     g28: Tuple[float, float, float]
     g30: Tuple[float, float, float]

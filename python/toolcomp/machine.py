@@ -62,7 +62,7 @@ __all__ = ["read", "parse", "dumps", "write", "preset", "presets", "resolve"]
 _PRESETS = os.path.join(os.path.dirname(__file__), "machines")
 _CONTROLS = tuple(row["name"] for row in _core.dialect_table())
 _AXES = ("x", "y", "z")
-_TOP = {"name", "control", "kind", "units", "profile", "m_codes", "positions", "travel", "rates"}
+_TOP = {"name", "control", "kind", "units", "profile", "m_codes", "g_codes", "positions", "travel", "rates"}
 _MM_PER_INCH = 25.4
 
 
@@ -250,6 +250,22 @@ def parse(text: str, path: Optional[str] = None) -> "_core.Machine":
         bad = re.search(r"M(\d+)", str(e))
         raise src.error(f"m_codes: {e}", line=_m_code_line(src, bad.group(1)) if bad else src.line_of("m_codes")) from None
 
+    gcodes = {}  # LinuxCNC's remapped G codes: "88.6" = { program = ..., argspec = ... }
+    for key, value in _table(src, doc, "g_codes").items():
+        text = key[1:] if key[:1] in ("G", "g") else key
+        try:
+            number = float(text)
+        except ValueError:
+            raise src.error(f"g_codes: '{key}' is no G code number", "g_codes", key) from None
+        if not isinstance(value, dict) or set(value) - {"name", "program", "argspec"} or "program" not in value:
+            raise src.error(f"g_codes.{key} must be {{ program = ..., argspec = ..., name = ... }}", "g_codes", key)
+        gcodes[number] = _core.MachineCode("subprogram", str(value.get("name", "")), "", str(value["program"]),
+                                           str(value.get("argspec", "")))
+    try:
+        m.g_codes = gcodes
+    except ValueError as e:
+        raise src.error(f"g_codes: {e}", "g_codes") from None
+
     positions = _table(src, doc, "positions")
     for key, value in positions.items():
         if key in ("work_origin", "g28", "g30", "m92"):
@@ -371,6 +387,15 @@ def dumps(m: "_core.Machine") -> str:
             if code.argspec:
                 value["argspec"] = code.argspec
             lines.append(f"{number} = {{ " + ", ".join(f"{k} = {_toml_value(v)}" for k, v in value.items()) + " }")
+    if m.g_codes:
+        lines.append("\n[g_codes]")
+        for number, code in sorted(m.g_codes.items()):
+            value = {"program": code.program}
+            if code.argspec:
+                value["argspec"] = code.argspec
+            if code.name:
+                value["name"] = code.name
+            lines.append(f'"{number:g}" = {{ ' + ", ".join(f"{k} = {_toml_value(v)}" for k, v in value.items()) + " }")
     lines.append("\n[positions]")
     lines.append(f"work_origin = {_toml_value(list(m.work_origin))}")
     lines.append(f"g28 = {_toml_value(list(m.g28))}")

@@ -91,3 +91,32 @@ def test_the_argspec_reads_back(machine):
     m = tc.Machine.read(str(machine / "m.toml"))
     m.write(str(machine / "again.toml"))
     assert tc.Machine.read(str(machine / "again.toml")).m_codes[410].argspec == "@PQr"
+
+
+G886 = ("o<g886> sub\n#<pe> = EXISTS[#<p>]\n(debug, g886: x=#<x> y=#<y> z=#<z> p=#<pe> mode=#<_motion_mode>)\n"
+        "G1 X#<x> Y#<y> F10\nG1 Z#<z>\no<g886> endsub\nM2\n")
+
+
+def test_a_remapped_g_code_runs_its_sub_as_the_block_s_motion(tmp_path):
+    # rs274 with REMAP=G88.6 modalgroup=1 argspec=XYZp ngc=g886 (inch): the sub sees x=1 y=2
+    # z=-0.5 p=7 and the motion mode before the block (G0), feeds to (1, 2, 0) and (1, 2, -0.5);
+    # the next bare line feeds in the sub's G1 (STRAIGHT_FEED(3, 4, -1)): the code is not modal.
+    (tmp_path / "m.toml").write_text('control = "linuxcnc"\nkind = "mill"\n[g_codes]\n'
+                                     '"88.6" = { program = "g886", argspec = "XYZp" }\n')
+    (tmp_path / "g886.ngc").write_text(G886)
+    text = "G20 G90 G94\nG0 X0.5\nG88.6 X1 Y2 Z-0.5 P7\nX3 Y4 Z-1\nG0 Z1\nM2\n"
+    res = _run(text, tmp_path)
+    ends = (np.asarray(res.nominal.end) / 25.4).round(9).tolist()
+    assert ends == [[0.5, 0, 0], [1, 2, 0], [1, 2, -0.5], [3, 4, -1], [3, 4, 1]]
+    assert res.nominal.kind.tolist() == [0, 1, 1, 1, 0]
+    msg = [d.message for d in res.diagnostics if d.code == "message"]
+    assert msg == [" g886: x=1.000000 y=2.000000 z=-0.500000 p=1.000000 mode=0.000000"]
+    res = _run("G20 G90 G94\nG88.6 X1 Y2 Z-0.5 P7 M2\nG0 X9\nM2\n", tmp_path)  # M2 after the sub
+    assert len(res.nominal.kind) == 2
+    m = tc.Machine.read(str(tmp_path / "m.toml"))
+    assert tc.Machine.parse(m.dumps()).g_codes[88.6].argspec == "XYZp"
+
+
+def test_remapped_g_codes_are_linuxcnc_s(tmp_path):
+    with pytest.raises(tc.ParseError):
+        tc.Machine.parse('control = "fanuc"\nkind = "mill"\n[g_codes]\n"88.6" = { program = "x" }\n')

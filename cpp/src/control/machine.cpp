@@ -68,6 +68,19 @@ void check_machine(const Machine& m) {
             bad("m_codes", "M" + std::to_string(number) + " is beyond the M codes " + std::string(dialect_name(m.control)) +
                                " reads (up to M" + std::to_string(highest) + ")");
     }
+    for (const auto& [code10, code] : m.g_codes) {
+        const std::string where = "G" + std::to_string(code10 / 10) + (code10 % 10 ? "." + std::to_string(code10 % 10) : "");
+        if (m.control != Dialect::linuxcnc) bad("g_codes", where + ": remapped G codes are LinuxCNC's");
+        if (code10 < 0 || code10 > 9999) bad("g_codes", where + " is no G code number");
+        if (code.action != MCodeAction::subprogram || code.program.empty())
+            bad("g_codes", where + " runs a subprogram: its program is missing");
+        if (code.program.find_first_of("/\\<> ") != std::string::npos || code.program.find("..") != std::string::npos)
+            bad("g_codes", where + ": '" + code.program + "' is no subroutine name");
+        for (char c : code.argspec)
+            if (!(((c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z')) && c != 'O' && c != 'o') && c != '@' && c != '>' &&
+                c != '^')
+                bad("g_codes", where + " argspec: '" + std::string(1, c) + "' is not an argspec character (letters but O, '@', '>', '^')");
+    }
     for (int i = 0; i < 3; ++i) {
         const std::string a = kAxis[i];
         finite("work_origin." + a, m.work_origin[i]);

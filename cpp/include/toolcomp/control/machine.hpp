@@ -87,6 +87,9 @@ struct Machine {
     // Builder M codes by number. A code the control fixes itself (profile.fixed_m_codes:
     // program stop and end, subprogram call and return) cannot be declared (check_machine).
     std::map<int, MachineCode> m_codes;
+    // LinuxCNC's remapped G codes (REMAP=G88.6 ... ngc=...): by the code x 10 (886), each a
+    // subprogram with its argspec, run as the block's motion. Only codes LinuxCNC lacks.
+    std::map<int, MachineCode> g_codes;
 
     // Where program zero (G54, the first work offset) lies in machine coordinates: G53 moves
     // and the travel limits are measured from it. A LinuxCNC .var file or G10 still set it.
@@ -112,6 +115,10 @@ struct Machine {
     const MachineCode* m_code(int number) const {
         auto it = m_codes.find(number);
         return it == m_codes.end() ? nullptr : &it->second;
+    }
+    const MachineCode* g_code(int code10) const {
+        auto it = g_codes.find(code10);
+        return it == g_codes.end() ? nullptr : &it->second;
     }
     bool has_travel_limits() const { return travel[0].limited() || travel[1].limited() || travel[2].limited(); }
 };

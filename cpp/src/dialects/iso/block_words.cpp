@@ -37,7 +37,8 @@ int linuxcnc_g_code(const BlockWords& bw, const Word& w) {
     return static_cast<int>(code);
 }
 
-void add_g(BlockWords& bw, const Word& w, const ControlProfile& profile) {
+void add_g(BlockWords& bw, const Word& w, const ControlProfile& profile, const Machine* machine,
+           std::uint32_t& taken) {
     int code = 0;
     if (profile.linuxcnc_g_numbers) {
         code = linuxcnc_g_code(bw, w);
@@ -49,6 +50,14 @@ void add_g(BlockWords& bw, const Word& w, const ControlProfile& profile) {
         if (std::fabs(v10 - code) > 1e-6) fail(code::unknown_g_code, "Unknown g code used", bw.line, w.column);
     }
     int group = g_group(code, profile);
+    if (group == kUnknown && machine)
+        if (const MachineCode* remap = machine->g_code(code)) {  // LinuxCNC REMAP: the block's motion
+            group = g_motion;
+            bw.machine_g = remap;
+            for (char c : remap->argspec)
+                if (c >= 'a' && c <= 'z') taken |= letter_bit(static_cast<char>(c - 32));
+                else if (c >= 'A' && c <= 'Z') taken |= letter_bit(c);
+        }
     if (group == kUnknown) fail(code::unknown_g_code, "Unknown g code used", bw.line, w.column);
     if (group == kUnsupported)
         fail(code::unsupported_g_code, code_text('G', code) + " is not supported by toolcomp", bw.line, w.column);
@@ -130,7 +139,7 @@ BlockWords collect_words(std::span<const Word> words, int line, const ControlPro
     std::uint32_t taken = 0;  // letters the machine's builder codes of the block read
     for (const Word& w : words) {
         if (w.letter == 'G') {
-            add_g(bw, w, profile);
+            add_g(bw, w, profile, machine, taken);
         } else if (w.letter == 'M') {
             add_m(bw, w, profile, machine, taken);
         } else {

@@ -44,6 +44,7 @@ struct BlockWords {
     const MachineCode* machine_call = nullptr;  // a builder M code that runs a subprogram
     int machine_call_column = 0;
     int machine_call_number = 0;
+    const MachineCode* machine_g = nullptr;  // LinuxCNC: the block's motion is a remapped G code
     std::uint32_t machine_words = 0;  // the block's letters its builder codes read (out of `letters`)
 
     static constexpr std::uint32_t kAxes = letter_bit('X') | letter_bit('Y') | letter_bit('Z') | letter_bit('A') |

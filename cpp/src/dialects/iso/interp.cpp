@@ -436,7 +436,7 @@ int Interp::execute_head(const BlockWords& bw) {
         if (bare ? uses_axes_group0(g0) : data_axes && axes && !profile_.motion_beside_data_axes)
             fail(code::two_axis_codes, "Cannot use two g codes that both use axis values", bw.g_column[g_nonmodal]);
         if (bare && !axes && motion_code != 0 && motion_code != 10 && motion_code != 20 && motion_code != 30 &&
-            motion_code != 52)  // G5.2 P alone: the first control point's weight
+            motion_code != 52 && !bw.machine_g)  // G5.2 P alone: the first control point's weight; a remap: its argspec
             fail(code::axes_missing, "All axes missing with motion code", bw.g_column[g_motion]);
     }
     if (motion_code == 800 && axes) fail(code::axis_with_g80, "Cannot use axis values with g80", bw.axis_column());
@@ -674,7 +674,10 @@ bool Interp::execute_tail(const BlockWords& bw, int motion_to_be) {
             case 50: case 51: spline(bw, motion_to_be); break;
             case 52: nurbs_point(bw); break;
             case 900: case 920: case 940: single_cycle(bw, motion_to_be); break;
-            default: cycle(bw, motion_to_be); break;
+            default:
+                if (!bw.machine_g) cycle(bw, motion_to_be);
+                else if (!remapped_motion(bw)) return true;
+                break;
         }
     } else if ((motion_code == 20 || motion_code == 30) && (bw.has('I') || bw.has('J') || bw.has('K') || bw.has('R'))) {
         motion_arc(bw, motion_code);  // full circle given by its centre only

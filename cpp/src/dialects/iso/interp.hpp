@@ -180,6 +180,8 @@ private:
     // ---- the machine (interp_machine.cpp) -----------------------------------------------
     void place_machine(const Machine& m, const ParameterValues& values);
     void machine_subprogram(const BlockWords& bw);  // a builder M code that runs a program
+    void remap_call(const MachineCode& c, const BlockWords& bw, const std::string& code_name, int column);
+    bool remapped_motion(const BlockWords& bw);  // false: the block's stop waits for the sub
     void to_tool_change_position(int column);  // M6 on a machine with a tool change position
     void check_travel(const Motion& m);         // the machine's travel limits (travel_limit)
     // mm of the machine file per program unit of axis i: a lathe's machine X is a diameter.
