@@ -84,3 +84,13 @@ def test_in_diameter_mode_x_is_a_diameter():
     assert _edge(res, 1).length[0] == pytest.approx(5.0)  # the tool at radius 10, the word a 5 mm radius
     res = tc.run(tc.Program.parse("G21 G18 G7 T1 M6\nG10 L1 P1 X10\nM2\n"), tools=tools)
     assert _edge(res, 1).length[0] == pytest.approx(5.0)
+
+
+def test_g10_l0_reloads_the_table_only_without_a_tool_in_the_spindle():
+    # the run's table is the file's (a G10 L1 edit is in it): G10 L0 changes nothing; with a tool
+    # loaded LinuxCNC refuses it ("G10 L0 not allowed with loaded tool <2>", rs274)
+    res = tc.run(tc.Program.parse("G21\nG10 L1 P2 R1\nG10 L0\nM2\n"), tools=_tools())
+    assert res.tools[2].edges[0].radius == 1.0
+    with pytest.raises(tc.ProgramError) as e:
+        tc.run(tc.Program.parse("G21 T2 M6\nG10 L0\nM2\n"), tools=_tools())
+    assert (str(e.value.message), e.value.line) == ("G10 L0 not allowed with loaded tool <2>", 2)

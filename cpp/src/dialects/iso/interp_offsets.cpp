@@ -41,6 +41,11 @@ void Interp::g10(const BlockWords& bw) {
     if (!bw.has('L')) fail(code::g10_bad_l, "Line with G10 does not have L0, L1, L10, L11, L2, or L20", col);
     int l = int_value(bw['L'].value);
     if ((l == 1 || l == 10 || l == 11) && profile_.g10_tool_table) return g10_tool(bw, l);
+    if (l == 0 && profile_.g10_tool_table) {  // reload the tool table: the run's table is the file's
+        if (tool_ != 0)
+            fail(code::g10_tool_words, "G10 L0 not allowed with loaded tool <" + std::to_string(tool_) + ">", col);
+        return;
+    }
     if (l == 0 || l == 1 || l == 10 || l == 11)
         fail(code::unsupported_g10, "G10 L" + std::to_string(l) + " (tool table edit) is not supported by toolcomp", col);
     if (l != 2 && l != 20) fail(code::g10_bad_l, "Line with G10 does not have L0, L1, L10, L11, L2, or L20", col);

@@ -22,6 +22,8 @@ namespace toolcomp::iso {
 namespace {
 
 using Knots = std::vector<unsigned>;
+constexpr unsigned kMaxNurbsOrder = 16;
+constexpr std::size_t kMaxNurbsPoints = 5000;
 
 // Clamped uniform integer knots of n + 1 points of order k.
 Knots knots(unsigned n, unsigned k) {
@@ -31,7 +33,9 @@ Knots knots(unsigned n, unsigned k) {
 }
 
 // Cox-de Boor, LinuxCNC's (a closed interval at order 1, a term over an empty span dropped).
+// Zero outside [knot i, knot i + k]: not worked out there (its terms would all be 0).
 double basis(unsigned i, unsigned k, double u, const Knots& kv) {
+    if (u < kv[i] || u > kv[i + k]) return 0;
     if (k == 1) return u >= kv[i] && u <= kv[i + 1] ? 1 : 0;
     const unsigned d1 = kv[i + k - 1] - kv[i], d2 = kv[i + k] - kv[i + 1];
     if (d1 == 0 && d2 != 0) return ((kv[i + k] - u) * basis(i + 1, k - 1, u, kv)) / d2;
@@ -199,6 +203,13 @@ void Interp::nurbs_end(const BlockWords& bw) {
     if (bw.g[g_motion] >= 0 && bw.g[g_motion] != 52)
         fail(code::spline_words, "Between G5.2 and G5.3 codes, only additional G5.2 codes are allowed.", col);
     if (st_.motion != 52) fail(code::spline_words, "Cannot use G5.3 without G5.2 first", col);
+    // The basis takes 2^order steps, a curve 12 n^2 of them: bounds that no real curve reaches.
+    if (nurbs_order_ > kMaxNurbsOrder || nurbs_points_.size() > kMaxNurbsPoints)
+        fail(code::spline_words,
+             "A NURBS of order " + std::to_string(nurbs_order_) + " with " + std::to_string(nurbs_points_.size()) +
+                 " control points: toolcomp takes orders up to " + std::to_string(kMaxNurbsOrder) + " and up to " +
+                 std::to_string(kMaxNurbsPoints) + " points",
+             col);
     if (nurbs_points_.size() < nurbs_order_)
         fail(code::spline_words,
              "You must specify a number of control points at least equal to the order L = " + std::to_string(nurbs_order_),
