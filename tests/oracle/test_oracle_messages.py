@@ -20,6 +20,10 @@ PROGRAMS = {
     "debug_values": "G21\n#1=2.5\n(DEBUG, a=#1) (DEBUG, b=#1 c=#2)\n#<x>=3 (DEBUG,x=#<x>)\nM2\n",
     "case_and_blanks": "G21\n(msg,lower)\n( MSG, leading blank)\n(Msg ,no)\nM2\n",
     "on_motion_lines": "G21 G1 X1 F100 (MSG, one)\nG1 X2 (DEBUG, two) (MSG, three)\nG1 X3\nM2\n",
+    # #5599 switches (DEBUG, ...) off and on; #5061-#5070 may be set by a program
+    "debug_flag_and_probe_results": "G21\n(debug, a=#5599)\n#5599=0\n(DEBUG, hidden)\n(MSG, msg)\n#5599=1\n"
+                                    "(DEBUG, shown)\n#5070=1\n(debug, p=#5070 #5063)\nM2\n",
+    "predefined_values": "G21 G91 F150 S1200\n(debug, feed=#<_feed> rpm=#<_rpm> abs=#<_absolute> x=#<_x>)\nM2\n",
 }
 
 

@@ -39,3 +39,14 @@ def test_linuxcnc_features_not_run_are_named(text, code, column, feature):
     assert e.value.code == code and feature in str(e.value) and "not supported by toolcomp" in str(e.value)
     if column is not None:
         assert e.value.column == column
+
+
+def test_a_syntax_error_in_a_sub_is_named_not_a_missing_end(tmp_path):
+    # Read leniently, a file stops at its first syntax error: the sub whose endsub lies beyond it
+    # is refused for that error (rs274 runs the file: the body is never called; toolcomp checks
+    # every block), not with "File ended with no percent sign or program end".
+    prog = tmp_path / "u.ngc"
+    prog.write_text("G21\no100 sub\nG0 U2\no100 endsub\nG0 X1\nM2\n")
+    with pytest.raises(tc.ParseError) as e:
+        tc.run(str(prog))
+    assert (e.value.code, e.value.line) == ("bad_character", 3)

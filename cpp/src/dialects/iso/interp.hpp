@@ -137,6 +137,7 @@ private:
     void call_program(Frame::Kind kind, const WordSlot& p, const WordSlot& l, int column);
     void macro_call(std::span<const Word> words, int column);  // Fanuc G65 (the whole block)
     void push_frame(Frame f);
+    [[noreturn]] void file_ended(const Program& p);  // an o-word structure the file does not close
     // A subprogram file on the search path (parsed once), or nullptr.
     const LoadedProgram* load(const std::string& file_name);
     const LoadedProgram* fanuc_program(long number);
@@ -247,6 +248,7 @@ private:
     std::size_t probes_used_ = 0;             // probe moves so far (the next takes opts_.probes[this])
     std::array<double, 10> probe_values_{};   // #5061-#5070 after a probe
     bool probed_ = false;
+    bool debug_output_ = true;  // LinuxCNC #5599: (DEBUG, ...) shown
 
     // ---- LinuxCNC's spindle-synchronised motion (interp_spindle_sync.cpp) ------------------
     void sync_line(const BlockWords& bw);       // G33

@@ -100,6 +100,14 @@ bool Interp::declared_before(const std::string& name) const {
     return false;
 }
 
+// A structure whose end the rest of the file lacks: LinuxCNC seeks to the end of the file. A
+// file read leniently stops at its first syntax error: that error is why the end is missing.
+void Interp::file_ended(const Program& p) {
+    if (const auto& e = p.syntax_error) throw ParseError(e->code, e->message, e->pos);
+    line_ = p.last_line;
+    fail(code::o_word_structure, "File ended with no percent sign or program end");
+}
+
 void Interp::push_frame(Frame f) {
     if (frames_.size() > profile_.call_depth_limit)
         fail(code::call_depth, !profile_.call_depth_message.empty()
@@ -183,10 +191,7 @@ void Interp::call_sub(const Statement& s) {
                                    "> from line: " + std::to_string(line_));
     }
     const std::size_t sub = found->second;
-    if (where->flow.at(sub).partner == npos) {
-        line_ = where->prog->last_line;
-        fail(code::o_word_structure, "File ended with no percent sign or program end");
-    }
+    if (where->flow.at(sub).partner == npos) file_ended(*where->prog);
     // A definition the flow has not passed yet is recorded now (a forward call): the flow
     // must then never reach it.
     recorded_subs_.insert({where, sub});
@@ -224,10 +229,7 @@ void Interp::control(const Statement& s, std::size_t k) {
     if (auto e = flow.errors.find(k); e != flow.errors.end()) fail(code::o_word_structure, e->second, s.column);
     const FlowInfo::Links& links = flow.at(k);
     // A structure whose end is missing: the control skips to the end of the file looking for it.
-    auto unclosed = [&] {
-        line_ = f.prog().last_line;
-        fail(code::o_word_structure, "File ended with no percent sign or program end");
-    };
+    auto unclosed = [&] { file_ended(f.prog()); };
     auto missing = [&](const char* what) {
         fail(code::o_word_structure, "o" + s.label + " has no matching " + what, s.column);
     };

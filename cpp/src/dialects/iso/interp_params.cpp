@@ -32,6 +32,7 @@ bool Interp::system_param(int n, double& v) const {
     }
     auto axis9 = [](const Vec6& p, int j) { return j < 6 ? p[j] : 0.0; };  // U V W: none
     if (n >= 5061 && n <= 5070 && probed_) return v = probe_values_[static_cast<std::size_t>(n - 5061)], true;
+    if (n == 5599) return v = debug_output_ ? 1.0 : 0.0, true;
     if (n >= 5161 && n <= 5169) return v = axis9(g28_, n - 5161), true;
     if (n >= 5181 && n <= 5189) return v = axis9(g30_, n - 5181), true;
     // G92.2 suspends the offsets and keeps these; G92.3 takes them back.
@@ -112,6 +113,16 @@ void Interp::set_param(double number, double v, int column) {
     if (!fanuc && (n < 1 || n > 5601)) fail(code::parameter_out_of_range, "Parameter number out of range", column);
     if (!fanuc && ((n >= 5400 && n <= 5413) || (n >= 5420 && n <= 5428)))
         fail(code::read_only_parameter, "Parameter is readonly", column);
+    if (!fanuc && n >= 5061 && n <= 5070) {  // the probe's results: a program may set them (LinuxCNC)
+        if (!probed_) probe_values_.fill(0);
+        probe_values_[static_cast<std::size_t>(n - 5061)] = v;
+        probed_ = true;
+        return;
+    }
+    if (!fanuc && n == 5599) {  // LinuxCNC: (DEBUG, ...) shown (1, the start) or not (0)
+        debug_output_ = v != 0;
+        return;
+    }
     double dummy;
     if ((!fanuc && n >= 5061) || system_param(n, dummy) || !params_.stored(n))
         fail(code::read_only_parameter,
@@ -244,7 +255,7 @@ void Interp::message_comment(const Comment& c) {
     const std::string head = lower_prefix(c.text.substr(from), 6);
     if (head.rfind("msg,", 0) == 0)
         info(code::message, c.text.substr(c.text.find(',', from) + 1), c.column);
-    else if (head.rfind("debug,", 0) == 0 || head.rfind("print,", 0) == 0)
+    else if ((head.rfind("debug,", 0) == 0 && (debug_output_ || params_.fanuc())) || head.rfind("print,", 0) == 0)
         info(code::message, substitute(c.text.substr(c.text.find(',', from) + 1)), c.column);
     else if (head.rfind("abort,", 0) == 0 && profile_.abort_comment)
         // LinuxCNC 2.9 stops the program with the text, parameters substituted, before the
