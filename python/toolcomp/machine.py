@@ -374,28 +374,16 @@ def dumps(m: "_core.Machine") -> str:
     diff = _profile_diff(m.profile, _core.ControlProfile(control, kind))
     if diff:
         _write_table(lines, "profile", diff)
+    def code_line(key, code, fields):  # a code as an inline table of its fields that are set
+        value = {f: getattr(code, f) for f in fields if getattr(code, f)}
+        return f"{key} = {{ " + ", ".join(f"{k} = {_toml_value(v)}" for k, v in value.items()) + " }"
+
     if m.m_codes:
         lines.append("\n[m_codes]")
-        for number, code in sorted(m.m_codes.items()):
-            value = {"action": code.action}
-            if code.name:
-                value["name"] = code.name
-            if code.words:
-                value["words"] = code.words
-            if code.program:
-                value["program"] = code.program
-            if code.argspec:
-                value["argspec"] = code.argspec
-            lines.append(f"{number} = {{ " + ", ".join(f"{k} = {_toml_value(v)}" for k, v in value.items()) + " }")
+        lines += [code_line(n, c, ("action", "name", "words", "program", "argspec")) for n, c in sorted(m.m_codes.items())]
     if m.g_codes:
         lines.append("\n[g_codes]")
-        for number, code in sorted(m.g_codes.items()):
-            value = {"program": code.program}
-            if code.argspec:
-                value["argspec"] = code.argspec
-            if code.name:
-                value["name"] = code.name
-            lines.append(f'"{number:g}" = {{ ' + ", ".join(f"{k} = {_toml_value(v)}" for k, v in value.items()) + " }")
+        lines += [code_line(f'"{n:g}"', c, ("program", "argspec", "name")) for n, c in sorted(m.g_codes.items())]
     lines.append("\n[positions]")
     lines.append(f"work_origin = {_toml_value(list(m.work_origin))}")
     lines.append(f"g28 = {_toml_value(list(m.g28))}")

@@ -25,6 +25,12 @@ void finite(const std::string& field, double v) {
     if (!std::isfinite(v)) bad(field, "must be a finite number (got " + std::to_string(v) + ")");
 }
 const char* kAxis[3] = {"x", "y", "z"};
+// LinuxCNC's REMAP argspec: letters but O, '@', '>', '^'.
+void check_argspec(const std::string& field, const std::string& code, const std::string& argspec) {
+    for (char c : argspec)
+        if (!(((c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z')) && c != 'O' && c != 'o') && c != '@' && c != '>' && c != '^')
+            bad(field, code + " argspec: '" + std::string(1, c) + "' is not an argspec character (letters but O, '@', '>', '^')");
+}
 }  // namespace
 
 void check_machine(const Machine& m) {
@@ -57,11 +63,7 @@ void check_machine(const Machine& m) {
         }
         if (!code.argspec.empty() && (code.action != MCodeAction::subprogram || m.control != Dialect::linuxcnc))
             bad("m_codes", "M" + std::to_string(number) + " argspec: LinuxCNC's REMAP argspec is for subprogram codes");
-        for (char c : code.argspec)
-            if (!(((c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z')) && c != 'O' && c != 'o') && c != '@' && c != '>' &&
-                c != '^')
-                bad("m_codes", "M" + std::to_string(number) + " argspec: '" + std::string(1, c) +
-                                   "' is not an argspec character (letters but O, '@', '>', '^')");
+        check_argspec("m_codes", "M" + std::to_string(number), code.argspec);
         // LinuxCNC reads M codes up to M199 in programs and remaps M200-M999.
         const int highest = m.control == Dialect::linuxcnc ? 999 : m.profile.max_m_code;
         if (number > highest)
@@ -76,10 +78,7 @@ void check_machine(const Machine& m) {
             bad("g_codes", where + " runs a subprogram: its program is missing");
         if (code.program.find_first_of("/\\<> ") != std::string::npos || code.program.find("..") != std::string::npos)
             bad("g_codes", where + ": '" + code.program + "' is no subroutine name");
-        for (char c : code.argspec)
-            if (!(((c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z')) && c != 'O' && c != 'o') && c != '@' && c != '>' &&
-                c != '^')
-                bad("g_codes", where + " argspec: '" + std::string(1, c) + "' is not an argspec character (letters but O, '@', '>', '^')");
+        check_argspec("g_codes", where, code.argspec);
     }
     for (int i = 0; i < 3; ++i) {
         const std::string a = kAxis[i];

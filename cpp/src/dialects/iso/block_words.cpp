@@ -37,6 +37,14 @@ int linuxcnc_g_code(const BlockWords& bw, const Word& w) {
     return static_cast<int>(code);
 }
 
+// The letters a LinuxCNC REMAP argspec reads (either case), as letter bits.
+std::uint32_t argspec_letters(const std::string& argspec) {
+    std::uint32_t bits = 0;
+    for (char c : argspec)
+        if (ascii_alpha(c)) bits |= letter_bit(ascii_upper(c));
+    return bits;
+}
+
 void add_g(BlockWords& bw, const Word& w, const ControlProfile& profile, const Machine* machine,
            std::uint32_t& taken) {
     int code = 0;
@@ -54,9 +62,7 @@ void add_g(BlockWords& bw, const Word& w, const ControlProfile& profile, const M
         if (const MachineCode* remap = machine->g_code(code)) {  // LinuxCNC REMAP: the block's motion
             group = g_motion;
             bw.machine_g = remap;
-            for (char c : remap->argspec)
-                if (c >= 'a' && c <= 'z') taken |= letter_bit(static_cast<char>(c - 32));
-                else if (c >= 'A' && c <= 'Z') taken |= letter_bit(c);
+            taken |= argspec_letters(remap->argspec);
         }
     if (group == kUnknown) fail(code::unknown_g_code, "Unknown g code used", bw.line, w.column);
     if (group == kUnsupported)
@@ -86,9 +92,7 @@ void add_m(BlockWords& bw, const Word& w, const ControlProfile& profile, const M
     if (machine)
         if (const MachineCode* code = machine->m_code(m)) {
             for (char c : code->words) taken |= letter_bit(c);
-            for (char c : code->argspec)
-                if (c >= 'a' && c <= 'z') taken |= letter_bit(static_cast<char>(c - 32));
-                else if (c >= 'A' && c <= 'Z') taken |= letter_bit(c);
+            taken |= argspec_letters(code->argspec);
             if (++bw.m_count > 4) fail(code::too_many_m_codes, "Too many m codes on line", bw.line, w.column);
             const int number = m;
             m = standard_m_code(code->action);
