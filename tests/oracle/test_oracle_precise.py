@@ -192,7 +192,7 @@ MODULE_WITHOUT_G10_L1 = {"g10_l1_tool_table", "g10_l10_l11_tool_setting"}
 # START_SPEED_FEED_SYNCH, so it reports those moves at the F in force. Their feed (lead x
 # spindle speed) is checked against rs274's START_SPEED_FEED_SYNC instead (to its printed
 # precision); everything else against the module, to 1e-6.
-SYNC_FEEDS = {"threading_g33_g76", "threading_g76_inch"}
+SYNC_FEEDS = {"threading_g33_g76", "threading_g76_inch", "lathe_shaft_thread_inch"}
 
 
 def _feeds_from_rs274(prog, tbl, mod, ours):
