@@ -271,6 +271,7 @@ class ControlProfile:
     modal_state_codes: bool
     spindle_sync_motion: bool
     splines: bool
+    profile_cycles: bool
     restore_feed_speed_always: bool
     tool_change_stops_spindle: bool
     startup_motion: int

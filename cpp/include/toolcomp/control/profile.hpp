@@ -310,6 +310,10 @@ struct ControlProfile {
     // LinuxCNC's G5 / G5.1 splines and G5.2 / G5.3 NURBS, as its machine cuts them: biarcs,
     // 4 spans per control point (interp_splines.cpp). false: refused.
     bool splines = false;
+    // LinuxCNC's lathe profile cycles G70 (finishing), G71 / G72 (roughing) and G71.1 / G71.2
+    // / G72.1 / G72.2 on a profile in O<Q> sub, in the motion group, computed as LinuxCNC
+    // 2.9.10 computes them (interp_profile_cycles.cpp). false: refused.
+    bool profile_cycles = false;
     // M6 stops the spindle: a program turns it on again after the change (LinuxCNC without
     // [EMCIO]TOOL_CHANGE_WITH_SPINDLE_ON; read back by #<_spindle_on> and M70).
     bool tool_change_stops_spindle = false;

@@ -134,7 +134,7 @@ int BlockWords::axis_column() const {
 }
 
 BlockWords collect_words(std::span<const Word> words, int line, const ControlProfile& profile,
-                         const Machine* machine) {
+                         const Machine* machine, bool profile_block) {
     const bool slack = profile.integer_word_slack;
     BlockWords bw;
     bw.line = line;
@@ -147,6 +147,9 @@ BlockWords collect_words(std::span<const Word> words, int line, const ControlPro
         } else if (w.letter == 'M') {
             add_m(bw, w, profile, machine, taken);
         } else {
+            // LinuxCNC reads U and W only in the profile of a lathe cycle (the reader's error).
+            if ((w.letter == 'U' || w.letter == 'W') && profile.profile_cycles && !profile_block)
+                fail(code::bad_character, std::string("Bad character '") + ascii_lower(w.letter) + "' used", bw.line, w.column);
             if (bw.has(w.letter)) {
                 if (w.letter == '$')
                     fail(code::spindle_choice, "Multiple spindle choice ($) words on one line", bw.line, w.column);

@@ -77,9 +77,10 @@ struct BlockWords {
 
 // The words of a block (their values computed), read by the control's rules (the
 // profile's integer slack, G number reading, M code range). With a machine, its builder M codes are read: one that does nothing for the path leaves the block,
-// the others stand for the standard code of their action (a Haas M88 is M8).
+// the others stand for the standard code of their action (a Haas M88 is M8). `profile_block`:
+// a block of a LinuxCNC lathe cycle's profile (U and W are words there).
 BlockWords collect_words(std::span<const Word> words, int line, const ControlProfile& profile,
-                         const Machine* machine = nullptr);
+                         const Machine* machine = nullptr, bool profile_block = false);
 
 // Integer words (T, D, H, L, P, Q, M, G x 10) convert through toolcomp::int_value
 // (program/int_value.hpp; G10's P is truncated, LinuxCNC's reading).

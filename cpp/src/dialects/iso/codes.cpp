@@ -14,7 +14,8 @@ int g_group(int c, const ControlProfile& p) {
         case 920: case 921: case 922: case 923:
             return g_nonmodal;
         case 520: return p.g52_offset ? g_nonmodal : kUnsupported;
-        case 700: case 710: case 720: return p.turning_cycles ? g_nonmodal : kUnsupported;
+        case 700: case 710: case 720: return p.turning_cycles ? g_nonmodal : p.profile_cycles ? g_motion : kUnsupported;
+        case 711: case 712: case 721: case 722: return p.profile_cycles ? g_motion : kUnsupported;
         case 500: return p.g_code_system_a ? g_nonmodal : kUnknown;  // lathe: coordinates, spindle clamp
         case 382: case 383: case 384: case 385:  // probing: refused when run (see interp.cpp)
         case 800: return p.cycles_own_group ? g_cycle : g_motion;
@@ -43,7 +44,7 @@ int g_group(int c, const ControlProfile& p) {
         case 50: case 51: case 52: return p.splines ? g_motion : kUnsupported;
         case 53: return p.splines ? g_nonmodal : kUnsupported;  // G5.3
         case 171: case 181: case 191:
-        case 521: case 731: case 961: case 711: case 712: case 721: case 722:
+        case 521: case 731: case 961:
             return kUnsupported;
         default:
             return kUnknown;

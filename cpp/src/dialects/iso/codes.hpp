@@ -26,4 +26,10 @@ constexpr int kUnknown = -1;      // not a code of this control
 int g_group(int code10, const ControlProfile& profile);
 int m_group(int code10, const ControlProfile& profile);
 
+// LinuxCNC's lathe profile cycles G70, G71, G71.1, G71.2, G72, G72.1, G72.2.
+constexpr bool is_profile_cycle(int code10) {
+    return code10 == 700 || code10 == 710 || code10 == 711 || code10 == 712 || code10 == 720 || code10 == 721 ||
+           code10 == 722;
+}
+
 }  // namespace toolcomp::iso

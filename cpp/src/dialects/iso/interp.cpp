@@ -185,11 +185,7 @@ void Interp::run_blocks() {
                 f.pc = 0;
                 continue;
             }
-            line_ = p.last_line;
-            file_ = f.at->file;
-            if (const auto& e = p.syntax_error) throw ParseError(e->code, e->message, e->pos);
-            fail(code::subprogram_end_missing, f.kind == Frame::o_call ? "File ended inside a subroutine (no endsub)"
-                                                                   : "Subprogram file ended without M99");
+            end_of_file(f);
         }
         const std::size_t k = f.pc++;
         const Block& block = p.blocks()[k];
@@ -280,6 +276,16 @@ void Interp::run_blocks() {
     }
 }
 
+// A subprogram's file ends before its return: its syntax error, or the missing return.
+void Interp::end_of_file(const Frame& f) {
+    const Program& p = f.prog();
+    line_ = p.last_line;
+    file_ = f.at->file;
+    if (const auto& e = p.syntax_error) throw ParseError(e->code, e->message, e->pos);
+    fail(code::subprogram_end_missing, f.kind == Frame::o_call ? "File ended inside a subroutine (no endsub)"
+                                                           : "Subprogram file ended without M99");
+}
+
 void Interp::check_words(const BlockWords& bw, int motion_to_be) {
     constexpr std::uint32_t kChecked = letter_bit('D') | letter_bit('E') | letter_bit('H') | letter_bit('I') |
                                        letter_bit('J') | letter_bit('K') | letter_bit('L') | letter_bit('P') |
@@ -292,6 +298,8 @@ void Interp::check_words(const BlockWords& bw, int motion_to_be) {
              bw['C'].column);
     const bool sync = motion_to_be == 330 || motion_to_be == 331, g76 = motion_to_be == 760;  // LinuxCNC
     const bool g5 = motion_to_be == 50, g51 = motion_to_be == 51, g52 = motion_to_be == 52;  // splines
+    const bool g7x = profile_.profile_cycles && is_profile_cycle(motion_to_be);  // LinuxCNC G70-G72
+    const bool g70 = g7x && motion_to_be == 700, g71 = g7x && !g70;
     if ((bw.letters & kChecked) == 0 && !sync && !g76) return;  // none of the words that need a code to use them
     const int g0 = bw.g[g_nonmodal];
     if (g0 >= 700 && g0 <= 760 && g0 % 10 == 0) return;  // the lathe cycles G70-G76 read their words
@@ -301,17 +309,17 @@ void Interp::check_words(const BlockWords& bw, int motion_to_be) {
     auto col = [&](char c) { return bw[c].column; };
     if (bw.has('D') && !(profile_.d_word_alone && !profile_.t_offsets)) {
         int rc = bw.g[g_radius_comp];
-        if (!(rc == 410 || rc == 411 || rc == 420 || rc == 421 || bw.g[g_spindle_mode] == 960))
+        if (!(rc == 410 || rc == 411 || rc == 420 || rc == 421 || bw.g[g_spindle_mode] == 960 || g7x))
             fail(code::unused_word, "D word with no G41, G41.1, G42, G42.1, G71, G71.1, G71.2 or G96 to use it", col('D'));
     }
     const bool io = bw.m[m_io] >= 0;  // M62-M68 take P, Q and E
-    if (bw.has('E') && !(io && bw.m[m_io] >= 660) && !g76) fail(code::unused_word, "E word with no G70, G76, M66, M67 or M68 to use it", col('E'));
+    if (bw.has('E') && !(io && bw.m[m_io] >= 660) && !g76 && !g70) fail(code::unused_word, "E word with no G70, G76, M66, M67 or M68 to use it", col('E'));
     if (bw.has('H')) {
         int lc = bw.g[g_length_comp];
         if (!(lc == 430 || lc == 432 || lc == 440 || g76)) fail(code::unused_word, "H word with no G43 or G76 to use it", col('H'));
     }
     const bool exit_dir = bw.g[g_radius_comp] == 400 && profile_.radius.exit_direction_words;
-    if (bw.has('I') && !(arc || g87 || exit_dir || g0 == 100 || motion_to_be == 331 || g76 || g5 || g51))
+    if (bw.has('I') && !(arc || g87 || exit_dir || g0 == 100 || motion_to_be == 331 || g76 || g5 || g51 || g71))
         fail(code::unused_word, "I word with no G2, G3, G5, G5.1, G10, G33.1, G76, or G87 to use it", col('I'));
     if (bw.has('J') && !(arc || g87 || exit_dir || g0 == 100 || g76 || g5 || g51))
         fail(code::unused_word, "J word with no G2, G3, G5, G5.1, G10, G76 or G87 to use it", col('J'));
@@ -327,7 +335,7 @@ void Interp::check_words(const BlockWords& bw, int motion_to_be) {
         int m = bw.m[m_override];
         bool ok = arc || io || g0 == 40 || g0 == 100 || bw.g[g_path_control] == 640 || motion_to_be == 820 ||
                   motion_to_be == 860 || motion_to_be == 880 || motion_to_be == 890 ||
-                  (m >= 500 && m <= 530) || g76 || g5 || g52;
+                  (m >= 500 && m <= 530) || g76 || g5 || g52 || g70;
         if (!ok)
             fail(code::unused_word,
                  "P word with no G2 G3 G4 G10 G64 G5 G5.2 G76 G82 G86 G88 G89 or M50 M51 M52 M53 M62 M63 M64 "
@@ -336,14 +344,14 @@ void Interp::check_words(const BlockWords& bw, int motion_to_be) {
     }
     if (bw.has('Q')) {
         bool ok = (io && bw.m[m_io] >= 660) || g0 == 100 || bw.g[g_path_control] == 640 || motion_to_be == 730 || motion_to_be == 830 ||
-                  bw.m[m_tool_change] == 610 || g76 || g5;
+                  bw.m[m_tool_change] == 610 || g76 || g5 || g7x;
         if (!ok)
             fail(code::unused_word,
                  "Q word with no G5, G10, G64, G73, G76, G83, M19, M66, M67, M68 or user M code that uses it",
                  col('Q'));
     }
     const bool single_cycle = motion_to_be == 900 || motion_to_be == 920 || motion_to_be == 940;
-    if (bw.has('R') && !(arc || cycle_block || single_cycle || g0 == 100 || g76))
+    if (bw.has('R') && !(arc || cycle_block || single_cycle || g0 == 100 || g76 || g71))
         fail(code::unused_word, "R word with no g code that uses it", col('R'));
     const int mcol = bw.g[g_motion] >= 0 ? bw.g_column[g_motion] : bw.axis_column();
     if (sync && !bw.has('K')) fail(code::sync_motion_words, "K word missing with g33/g33.1", mcol);
@@ -662,7 +670,9 @@ bool Interp::execute_tail(const BlockWords& bw, int motion_to_be) {
     // whole circle), or axis words that are not data under a modal motion.
     const bool moves = bare ? motion_to_be >= 0 && motion_to_be != 800 && (motion_code >= 0 || !data_axes)
                             : motion_to_be >= 0 && axes && !data_axes;
-    if (moves) {
+    if (profile_.profile_cycles && is_profile_cycle(motion_to_be)) {
+        profile_cycle(bw, motion_to_be);  // with or without axis words
+    } else if (moves) {
         switch (motion_to_be) {
             case 0: case 10: motion_line(bw, motion_to_be, g0 == 530); break;
             case 20: case 30: motion_arc(bw, motion_to_be); break;

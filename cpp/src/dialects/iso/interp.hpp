@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "../../control/travel.hpp"
+#include "../../cycles/profile_cycles.hpp"
 #include "../../cycles/turning_roughing.hpp"
 #include "../idle_watch.hpp"
 #include "block_words.hpp"
@@ -132,12 +133,14 @@ private:
     std::string substitute(const std::string& text);  // DEBUG / PRINT messages: #n, #<name> values
     void message_comment(const Comment& c);           // (MSG, ...), (DEBUG, ...), (PRINT, ...)
     void call_sub(const Statement& s);  // LinuxCNC o-call
+    void call_o_sub(const std::string& label, const std::vector<double>& args, int column);
     void return_from_sub(const Statement& s);
     void subprogram(int mcode, const WordSlot& p, const WordSlot& l, int column);  // Fanuc M98 / M99
     void call_program(Frame::Kind kind, const WordSlot& p, const WordSlot& l, int column);
     void macro_call(std::span<const Word> words, int column);  // Fanuc G65 (the whole block)
     void push_frame(Frame f);
-    [[noreturn]] void file_ended(const Program& p);  // an o-word structure the file does not close
+    [[noreturn]] void file_ended(const Program& p);
+    [[noreturn]] void end_of_file(const Frame& f);  // a subprogram's file ends before its return  // an o-word structure the file does not close
     // A subprogram file on the search path (parsed once), or nullptr.
     const LoadedProgram* load(const std::string& file_name);
     const LoadedProgram* fanuc_program(long number);
@@ -263,6 +266,12 @@ private:
     void g10_tool(const BlockWords& bw, int l);  // G10 L1 / L10 / L11 (interp_tool_table.cpp)
     void polar_end(const BlockWords& bw, Vec6& end) const;  // @ ^ (interp_motion.cpp)
     void polar_checks(const BlockWords& bw) const;
+
+    // ---- LinuxCNC's lathe profile cycles G70, G71, G72 (interp_profile_cycles.cpp) ------------
+    void profile_cycle(const BlockWords& bw, int code);
+    std::vector<cycles::profile::Piece> read_profile(const BlockWords& bw, cycles::profile::Point start, int& mode);
+    void profile_piece(const BlockWords& w, int& mode, cycles::profile::Point& at,
+                       std::vector<cycles::profile::Piece>& pieces) const;
 
     // ---- canned cycles (interp_cycles.cpp) ---------------------------------------------------
     void cycle(const BlockWords& bw, int code);

@@ -167,14 +167,17 @@ void Interp::call_sub(const Statement& s) {
         if (!linuxcnc_whole(v)) fail(code::non_integer_value, "Non integer value for integer", s.column);
         computed = std::to_string(std::lround(v));
     }
-    const std::string& label = s.target >= 0 ? computed : s.label;
+    call_o_sub(s.target >= 0 ? computed : s.label, args, s.column);
+}
+
+void Interp::call_o_sub(const std::string& label, const std::vector<double>& args, int column) {
     // The sub: a file <label>.ngc on the search path (LinuxCNC looks there first), else a
     // definition in the running file, else one in the main program.
     const std::string name = label.front() == '<' ? label.substr(1, label.size() - 2) : label;
     // A subroutine name names a file in a search directory, never a path out of it.
     if (name.find_first_of("/\\") != std::string::npos || name.find("..") != std::string::npos)
         fail(code::bad_o_word, "Subroutine name o<" + name + "> cannot name a file: '/', '\\' and '..' are not allowed",
-             s.column);
+             column);
     const LoadedProgram* where = load(name + ".ngc");
     if (where && !where->flow.subs.count(label))
         fail(code::unknown_o_word, "EOF in file:" + where->prog->name + " seeking o-word: o<" + name + "> from line: 0");

@@ -25,6 +25,7 @@ inline bool is_word_letter(char u, Dialect d) {
     // Fanuc and 9/Series: U V W are words too (incremental X Y Z on lathes, extra axes on mills).
     if ((u == 'U' || u == 'V' || u == 'W') && (d == Dialect::fanuc || d == Dialect::rockwell)) return true;
     if ((u == '@' || u == '^' || u == '$') && d == Dialect::linuxcnc) return true;  // polar radius and angle, spindle
+    if ((u == 'U' || u == 'W') && d == Dialect::linuxcnc) return true;  // read in a G7x profile only (collect_words)
     switch (u) {
         case 'A': case 'B': case 'C': case 'D': case 'E': case 'F': case 'G': case 'H': case 'I':
         case 'J': case 'K': case 'L': case 'M': case 'N': case 'P': case 'Q': case 'R':
