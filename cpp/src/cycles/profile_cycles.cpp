@@ -204,7 +204,9 @@ void Rougher::run(int variant, Point at) {
         }
         bool pocket = false;
         while (p < pieces_.size() && !pocket) {
-            if (++spins_ > 50'000'000) geometry_error("the cycle does not end");
+            if (++spins_ > 50'000'000)
+                geometry_error("the cycle does not end: no level is cut from Z" + std::to_string(real(at)) +
+                               " (normal frame) and the level does not drop (LinuxCNC loops here forever)");
             x = next_level(x, at);
             if (dive(p, at, x)) {  // the profile rises from here
                 if (variant == 1) {
@@ -220,6 +222,8 @@ void Rougher::run(int variant, Point at) {
                 }
                 break;
             }
+            // At the last piece the cycle ends (LinuxCNC 2.10; 2.9 can loop here forever).
+            if (p + 1 == pieces_.size()) return;
             if (std::abs(imag(at) - x) > kTol || pieces_[p].end == at) {
                 ++p;  // this piece is done down to its end
                 continue;

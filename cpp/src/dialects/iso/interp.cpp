@@ -444,7 +444,8 @@ int Interp::execute_head(const BlockWords& bw) {
         if (bare ? uses_axes_group0(g0) : data_axes && axes && !profile_.motion_beside_data_axes)
             fail(code::two_axis_codes, "Cannot use two g codes that both use axis values", bw.g_column[g_nonmodal]);
         if (bare && !axes && motion_code != 0 && motion_code != 10 && motion_code != 20 && motion_code != 30 &&
-            motion_code != 52 && !bw.machine_g)  // G5.2 P alone: the first control point's weight; a remap: its argspec
+            motion_code != 52 && !bw.machine_g && !is_profile_cycle(motion_code))
+            // G5.2 P alone: the first control point's weight; a remap: its argspec; G7x: here
             fail(code::axes_missing, "All axes missing with motion code", bw.g_column[g_motion]);
     }
     if (motion_code == 800 && axes) fail(code::axis_with_g80, "Cannot use axis values with g80", bw.axis_column());

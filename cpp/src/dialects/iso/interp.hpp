@@ -172,6 +172,7 @@ private:
     void set_units(bool inch);
     void motion_line(const BlockWords& bw, int code, bool machine_coords);
     void motion_arc(const BlockWords& bw, int code);
+    void check_arc_ends(const Vec2& s, const Vec2& c, const Vec2& e, char a_l, char b_l) const;
     void check_feed_per_rev(int column) const;
     // `x_end`: the X (radius) where the move ends, for the spindle speed of G96.
     double feed_for(const BlockWords& bw, int code, double length, double x_end) const;

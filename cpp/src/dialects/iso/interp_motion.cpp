@@ -197,6 +197,29 @@ void Interp::motion_line(const BlockWords& bw, int code, bool machine_coords) {
     straight(code == 0 ? MotionKind::rapid : MotionKind::line, end, feed);
 }
 
+// LinuxCNC's check of a centre-format arc: both ends at a radius above the least, and on one
+// circle within the control's tolerance (a slight spiral passes).
+void Interp::check_arc_ends(const Vec2& s, const Vec2& c, const Vec2& e, char a_l, char b_l) const {
+    const double min_r = profile_.arc_min_radius[unit_index()];
+    const double r1 = (s - c).norm(), r2 = (e - c).norm();
+    auto describe = [&](const char* head) {
+        char buf[512];
+        std::snprintf(buf, sizeof buf,
+                      "%sstart=(%c%.4f,%c%.4f) center=(%c%.4f,%c%.4f) end=(%c%.4f,%c%.4f) r1=%.4f r2=%.4f", head,
+                      a_l, s.x(), b_l, s.y(), a_l, c.x(), b_l, c.y(), a_l, e.x(), b_l, e.y(), r1, r2);
+        return std::string(buf);
+    };
+    if (r1 < min_r || r2 < min_r) fail(code::arc_zero_radius, describe("Zero-radius arc: "));
+    double abs_err = std::fabs(r1 - r2);  // program units, as the control compares
+    double rel_err = abs_err / std::max(r1, r2);
+    double tol = profile_.arc_spiral_abs[unit_index()];
+    if (abs_err > profile_.arc_spiral_hard_factor * tol || (rel_err > profile_.arc_spiral_rel && abs_err > tol)) {
+        char tail[96];
+        std::snprintf(tail, sizeof tail, " abs_err=%.4g rel_err=%.4f%%", abs_err, rel_err * 100);
+        fail(code::arc_end_off_circle, describe("Radius to end of arc differs from radius to start: ") + tail);
+    }
+}
+
 void Interp::motion_arc(const BlockWords& bw, int code) {
     const PlaneAxes ax = axes(st_.plane);
     const char* plane_name = st_.plane == Plane::xy ? "xy" : st_.plane == Plane::zx ? "xz" : "yz";
@@ -244,7 +267,6 @@ void Interp::motion_arc(const BlockWords& bw, int code) {
     Vec6 end = find_end(bw);
     Vec2 s(pos_[ax.a], pos_[ax.b]), e(end[ax.a], end[ax.b]);
     Vec2 c;
-    const double min_r = profile_.arc_min_radius[unit_index()];
     const int dir = code == 30 ? 1 : -1;
     if (r_form) {
         if (s == e) fail(code::arc_same_point, "Current point same as end point of arc", bw['R'].column);
@@ -263,23 +285,7 @@ void Interp::motion_arc(const BlockWords& bw, int code) {
         };
         double ci = centre_word(a_off, ax.a), cj = centre_word(b_off, ax.b);
         c = st_.arc_absolute ? Vec2(ci, cj) : Vec2(s.x() + ci, s.y() + cj);
-        double r1 = (s - c).norm(), r2 = (e - c).norm();
-        auto describe = [&](const char* head) {
-            char buf[512];
-            std::snprintf(buf, sizeof buf,
-                          "%sstart=(%c%.4f,%c%.4f) center=(%c%.4f,%c%.4f) end=(%c%.4f,%c%.4f) r1=%.4f r2=%.4f", head,
-                          a_l, s.x(), b_l, s.y(), a_l, c.x(), b_l, c.y(), a_l, e.x(), b_l, e.y(), r1, r2);
-            return std::string(buf);
-        };
-        if (r1 < min_r || r2 < min_r) fail(code::arc_zero_radius, describe("Zero-radius arc: "));
-        double abs_err = std::fabs(r1 - r2);  // program units, as the control compares
-        double rel_err = abs_err / std::max(r1, r2);
-        double tol = profile_.arc_spiral_abs[unit_index()];
-        if (abs_err > profile_.arc_spiral_hard_factor * tol || (rel_err > profile_.arc_spiral_rel && abs_err > tol)) {
-            char tail[96];
-            std::snprintf(tail, sizeof tail, " abs_err=%.4g rel_err=%.4f%%", abs_err, rel_err * 100);
-            fail(code::arc_end_off_circle, describe("Radius to end of arc differs from radius to start: ") + tail);
-        }
+        check_arc_ends(s, c, e, a_l, b_l);
     }
 
     Vec6 centre = pos_;

@@ -25,7 +25,10 @@ std::string cycle_name(int code) { return "G" + std::to_string(code / 10) + "." 
 // Nothing else of the block acts (F, S, M, T, G41/G42, G7/G8, G90/G91 are read, not run).
 void Interp::profile_piece(const BlockWords& w, int& mode, Point& at, std::vector<Piece>& pieces) const {
     const bool inc = st_.incremental;
-    auto refuse = [&](char c, const std::string& what) { fail(code::profile_cycle_block, "G7x error: " + what, w[c].column); };
+    // LinuxCNC writes "G7x error" for U and W, "G7X error" for the others.
+    auto refuse = [&](char c, const std::string& what, char x = 'x') {
+        fail(code::profile_cycle_block, std::string("G7") + x + " error: " + what, w[c].column);
+    };
     if (w.has_polar()) fail(code::unsupported_word, "Polar coordinates in a G7x profile are not supported by toolcomp", w.axis_column());
     Point end = inc ? Point(0, 0) : at;
     if (w.has('U')) {
@@ -50,7 +53,7 @@ void Interp::profile_piece(const BlockWords& w, int& mode, Point& at, std::vecto
     if (arc) {
         Point centre(w.has('K') ? w['K'].value : 0.0, w.has('I') ? w['I'].value : 0.0);
         if (w.has('R')) {
-            if (w.has('I') || w.has('K')) refuse('R', "both R and I or K flag used for arc");
+            if (w.has('I') || w.has('K')) refuse('R', "both R and I or K flag used for arc", 'X');
             const double r = w['R'].value, chord2 = std::norm(end - at);
             if (r * r < chord2 / 4)
                 fail(code::profile_cycle_block, "G7x error: the arc's radius R is less than half the distance to its end",
@@ -65,7 +68,7 @@ void Interp::profile_piece(const BlockWords& w, int& mode, Point& at, std::vecto
         pieces.push_back({Piece::arc, at, end, centre, mode == 30});
     }
     if (straight || arc) {
-        if (w.has('A') && w.has('C')) refuse('C', "Both A and C parameters on a corner");
+        if (w.has('A') && w.has('C')) refuse('C', "Both A and C parameters on a corner", 'X');
         if (w.has('A')) pieces.push_back({Piece::fillet, end, end, end, false, w['A'].value});
         if (w.has('C')) pieces.push_back({Piece::chamfer, end, end, end, false, w['C'].value});
     }
@@ -168,6 +171,7 @@ void Interp::profile_cycle(const BlockWords& bw, int code) {
             st_.motion = 10;
         } else {
             if (feed_ <= 0) fail(code::zero_feed, "Cannot make arc with zero feed rate", col);
+            check_arc_ends(Vec2(pos_[2], pos_[0]), s.center, s.end, 'Z', 'X');  // as LinuxCNC's arcs of the cycle
             Motion m = motion_to(s.dir > 0 ? MotionKind::arc_ccw : MotionKind::arc_cw, end);
             m.center = pos_.head<3>();
             m.center[2] = s.center.x();
