@@ -84,7 +84,7 @@ TEST_CASE("syntax errors carry LinuxCNC's message, the line and the column") {
     require_error("G0 X\n", "No characters found in reading real value", 1, 5);
     require_error("G0 X1 & Y2\n", "Bad character '&' used", 1, 7);
     require_error("G0 X1 N10\n", "Bad character 'n' used", 1, 7);
-    require_error("G0 U1\n", "Bad character 'u' used", 1, 4);
+    require_error("G0 V1\n", "Bad character 'v' used", 1, 4);  // U and W: when the block runs
     require_error("G0 (open\n", "Unclosed comment found", 1, 4);
     require_error("G0 (a (b) c)\n", "Nested comment found", 1, 7);
 }

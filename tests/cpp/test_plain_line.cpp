@@ -123,8 +123,10 @@ TEST_CASE("plain lines: hand-picked readings") {
         CHECK(r.size() == 0);
         CHECK(r.word_count() == 0);
     }
-    // U, V and W are words on Fanuc and the 9/Series, not on LinuxCNC.
+    // U, V and W are words on Fanuc and the 9/Series; on LinuxCNC U and W only (read in a lathe
+    // cycle's profile, refused elsewhere when the block runs), not V.
     Program f = empty(Dialect::fanuc), l = empty(Dialect::linuxcnc);
-    CHECK(lex_plain_line("G1 U1 W-2", 1, f));
-    CHECK_FALSE(lex_plain_line("G1 U1 W-2", 1, l));
+    CHECK(lex_plain_line("G1 U1 V2 W-2", 1, f));
+    CHECK(lex_plain_line("G1 U1 W-2", 2, l));
+    CHECK_FALSE(lex_plain_line("G1 V1", 3, l));
 }

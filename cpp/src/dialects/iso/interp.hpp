@@ -271,6 +271,8 @@ private:
     // ---- LinuxCNC's lathe profile cycles G70, G71, G72 (interp_profile_cycles.cpp) ------------
     void profile_cycle(const BlockWords& bw, int code);
     std::vector<cycles::profile::Piece> read_profile(const BlockWords& bw, cycles::profile::Point start, int& mode);
+    void read_profile_blocks(std::size_t depth, int& mode, cycles::profile::Point& at,
+                             std::vector<cycles::profile::Piece>& pieces);
     void profile_piece(const BlockWords& w, int& mode, cycles::profile::Point& at,
                        std::vector<cycles::profile::Piece>& pieces) const;
 

@@ -86,6 +86,16 @@ std::vector<Piece> Interp::read_profile(const BlockWords& bw, Point start, int& 
     std::vector<Piece> pieces;
     mode = 0;
     Point at = start;
+    try {
+        read_profile_blocks(depth, mode, at, pieces);
+    } catch (const Error&) {
+        frames_.resize(depth);  // LinuxCNC reports an error of the profile at its line, not at the call
+        throw;
+    }
+    return pieces;
+}
+
+void Interp::read_profile_blocks(std::size_t depth, int& mode, Point& at, std::vector<Piece>& pieces) {
     while (frames_.size() > depth) {
         Frame& f = frames_.back();
         const Program& p = f.prog();
@@ -107,7 +117,6 @@ std::vector<Piece> Interp::read_profile(const BlockWords& bw, Point start, int& 
         if (block.statement_count) assignments(block);
         profile_piece(w, mode, at, pieces);
     }
-    return pieces;
 }
 
 // G70 Q [X Z] [D E P], G71 / G72 Q [X Z] [D I R]: a rapid to X Z (the start point), the
@@ -133,9 +142,11 @@ void Interp::profile_cycle(const BlockWords& bw, int code) {
     st_.incremental = incremental;
     straight(MotionKind::rapid, first, std::nan(""));
     int mode = 0;
-    std::vector<Piece> pieces = read_profile(bw, Point(start[2], start[0]), mode);
+    std::vector<Piece> pieces = read_profile(bw, Point(start[2], start[0]), mode);  // errors from here: at its end
     if (pieces.size() < 2) {
         st_.motion = mode;
+        line_ = bw.line;
+        file_ = frames_.back().at->file;
         info(code::profile_cycle_empty, name + ": the profile O" + std::to_string(std::lround(bw['Q'].value)) +
                                             " has no move after the first: LinuxCNC makes only the rapid to the start point",
              col);
@@ -156,6 +167,8 @@ void Interp::profile_cycle(const BlockWords& bw, int code) {
     } catch (const cycles::CycleError& e) {
         fail(e.code, e.message);
     }
+    line_ = bw.line;  // the cycle's moves are its block's
+    file_ = frames_.back().at->file;
     for (const cycles::Step& s : steps) {
         count_block(col);
         Vec6 end = pos_;
