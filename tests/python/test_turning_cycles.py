@@ -218,10 +218,11 @@ def test_lathe_cycles_run_from_a_file_read_in_pieces(tmp_path):
     np.testing.assert_array_equal(from_file.nominal.end, from_text.nominal.end)
 
 
-def test_linuxcnc_keeps_refusing_its_g71():
+def test_linuxcnc_reads_g71_as_its_own_cycle():
+    # LinuxCNC's G71 takes its profile from O<Q>: Fanuc's P (first block) is a word it refuses.
     with pytest.raises(tc.ProgramError) as e:
         tc.run(tc.Program.parse("G21 G18 G0 X10 Z2\nG71 P10 Q20 D1\nM2\n"), machine="lathe")
-    assert e.value.code == "unsupported_g_code"
+    assert e.value.code == "unused_word" and str(e.value).startswith("P word with no G2 G3 G4")
 
 
 # ---- G73 pattern repeating, G74 / G75 pecking --------------------------------------------------
