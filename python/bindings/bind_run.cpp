@@ -322,6 +322,8 @@ void bind_run(py::module_& m) {
                        "G33, G33.1 and the G76 threading cycle as LinuxCNC runs them; False: refused")
         .def_readwrite("profile_cycles", &ControlProfile::profile_cycles,
                        "LinuxCNC's lathe profile cycles G70, G71, G72 and G71.1/.2, G72.1/.2; False: refused")
+        .def_readwrite("spindle_orient", &ControlProfile::spindle_orient,
+                       "LinuxCNC's M19 R Q P: the spindle stops, oriented (no move); False: refused")
         .def_readwrite("restore_feed_speed_always", &ControlProfile::restore_feed_speed_always,
                        "M72/M73 restores set F and S even when unchanged (LinuxCNC 2.9.1 on); False: only when they differ")
         .def_readwrite("fanuc_g10", &ControlProfile::fanuc_g10,

@@ -272,6 +272,7 @@ class ControlProfile:
     spindle_sync_motion: bool
     splines: bool
     profile_cycles: bool
+    spindle_orient: bool
     restore_feed_speed_always: bool
     tool_change_stops_spindle: bool
     startup_motion: int

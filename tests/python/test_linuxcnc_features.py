@@ -40,3 +40,15 @@ def test_a_syntax_error_in_a_sub_is_named_not_a_missing_end(tmp_path):
     # U and W are words the reader takes (in a lathe cycle's profile): a sub nothing calls runs
     prog.write_text("G21\no100 sub\nG0 U2\no100 endsub\nG0 X1\nM2\n")
     assert len(tc.run(str(prog)).nominal.kind) == 1
+
+
+def test_m19_orients_a_stopped_spindle_and_moves_nothing():
+    # LinuxCNC: M19 is in M3-M5's group; the spindle stops (#<_spindle_on> 0) and turns to R.
+    res = tc.run(tc.Program.parse("G21\nS500 M3\nM19 R90 Q2 P1\n(DEBUG, #<_spindle_on>)\nG0 X1\nM2\n"))
+    assert len(res.nominal.kind) == 1
+    assert [d.message.strip() for d in res.diagnostics if d.code == "message"] == ["0.000000"]
+    profile = tc.ControlProfile("linuxcnc")
+    profile.spindle_orient = False
+    with pytest.raises(tc.ProgramError) as e:
+        tc.run(tc.Program.parse("G21\nM19 R90\nM2\n"), profile=profile)
+    assert e.value.code == "unsupported_m_code"

@@ -63,6 +63,7 @@ ControlProfile linuxcnc_profile(MachineKind kind) {
     p.spindle_sync_motion = true;
     p.splines = true;
     p.profile_cycles = true;
+    p.spindle_orient = true;
     p.tool_change_stops_spindle = true;
     p.fixed_m_codes.insert(p.fixed_m_codes.end(), {98, 99, 48, 49, 50, 51, 52, 53, 60, 61, 62, 63, 64, 65, 66, 67,
                                                    68, 70, 71, 72, 73});

@@ -314,6 +314,10 @@ struct ControlProfile {
     // / G72.1 / G72.2 on a profile in O<Q> sub, in the motion group, computed as LinuxCNC
     // 2.9.10 computes them (interp_profile_cycles.cpp). false: refused.
     bool profile_cycles = false;
+    // LinuxCNC's M19 R Q P [$]: the spindle stops and turns to angle R (P: 0 the shorter way,
+    // 1 clockwise, 2 counter-clockwise; Q: the seconds to wait), in M3-M5's group; no move.
+    // false: refused.
+    bool spindle_orient = false;
     // M6 stops the spindle: a program turns it on again after the change (LinuxCNC without
     // [EMCIO]TOOL_CHANGE_WITH_SPINDLE_ON; read back by #<_spindle_on> and M70).
     bool tool_change_stops_spindle = false;

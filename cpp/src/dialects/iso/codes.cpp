@@ -62,8 +62,8 @@ int m_group(int c, const ControlProfile& p) {
             return m_io;  // digital/analog I/O: no effect on the path (interp_machine.cpp)
         case 700: case 710: case 720: case 730:  // LinuxCNC: in M3-M5's group
             return p.modal_state_codes ? m_spindle : kUnsupported;
-        case 190:
-            return kUnsupported;
+        case 190:  // LinuxCNC: M19 spindle orient, in M3-M5's group
+            return p.spindle_orient ? m_spindle : kUnsupported;
         case 990: if (p.numbered_subprograms) return m_stop; [[fallthrough]];  // LinuxCNC: M99 in main = M2
         case 980: return p.m98_subprograms ? m_subprogram : kUnknown;
         case 8000: case 8010: return p.ttrc_check_codes ? m_checks : kUnknown;

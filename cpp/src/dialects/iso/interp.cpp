@@ -300,6 +300,7 @@ void Interp::check_words(const BlockWords& bw, int motion_to_be) {
     const bool g5 = motion_to_be == 50, g51 = motion_to_be == 51, g52 = motion_to_be == 52;  // splines
     const bool g7x = profile_.profile_cycles && is_profile_cycle(motion_to_be);  // LinuxCNC G70-G72
     const bool g70 = g7x && motion_to_be == 700, g71 = g7x && !g70;
+    const bool m19 = bw.m[m_spindle] == 190;  // LinuxCNC's spindle orient: R Q P
     if ((bw.letters & kChecked) == 0 && !sync && !g76) return;  // none of the words that need a code to use them
     const int g0 = bw.g[g_nonmodal];
     if (g0 >= 700 && g0 <= 760 && g0 % 10 == 0) return;  // the lathe cycles G70-G76 read their words
@@ -335,7 +336,7 @@ void Interp::check_words(const BlockWords& bw, int motion_to_be) {
         int m = bw.m[m_override];
         bool ok = arc || io || g0 == 40 || g0 == 100 || bw.g[g_path_control] == 640 || motion_to_be == 820 ||
                   motion_to_be == 860 || motion_to_be == 880 || motion_to_be == 890 ||
-                  (m >= 500 && m <= 530) || g76 || g5 || g52 || g70;
+                  (m >= 500 && m <= 530) || g76 || g5 || g52 || g70 || m19;
         if (!ok)
             fail(code::unused_word,
                  "P word with no G2 G3 G4 G10 G64 G5 G5.2 G76 G82 G86 G88 G89 or M50 M51 M52 M53 M62 M63 M64 "
@@ -344,15 +345,24 @@ void Interp::check_words(const BlockWords& bw, int motion_to_be) {
     }
     if (bw.has('Q')) {
         bool ok = (io && bw.m[m_io] >= 660) || g0 == 100 || bw.g[g_path_control] == 640 || motion_to_be == 730 || motion_to_be == 830 ||
-                  bw.m[m_tool_change] == 610 || g76 || g5 || g7x;
+                  bw.m[m_tool_change] == 610 || g76 || g5 || g7x || m19;
         if (!ok)
             fail(code::unused_word,
                  "Q word with no G5, G10, G64, G73, G76, G83, M19, M66, M67, M68 or user M code that uses it",
                  col('Q'));
     }
     const bool single_cycle = motion_to_be == 900 || motion_to_be == 920 || motion_to_be == 940;
-    if (bw.has('R') && !(arc || cycle_block || single_cycle || g0 == 100 || g76 || g71))
+    if (bw.has('R') && !(arc || cycle_block || single_cycle || g0 == 100 || g76 || g71 || m19))
         fail(code::unused_word, "R word with no g code that uses it", col('R'));
+    if (m19) {
+        const double p = bw['P'].value;
+        if (bw.has('P') && std::fabs(std::round(p) - p) > 0.001)
+            fail(code::arc_p_not_integer, "P value not an integer with M19 G2 or G3", col('P'));
+        if (bw.has('P') && (std::round(p) > 2 || std::round(p) < 0))
+            fail(code::spindle_orient_words, "P value must be 0,1,or 2 with M19", col('P'));
+        if (bw.has('R') && (bw['R'].value > 360.0 || bw['R'].value < 0.0))
+            fail(code::spindle_orient_words, "R value must be within 0..360 with M19", col('R'));
+    }
     const int mcol = bw.g[g_motion] >= 0 ? bw.g_column[g_motion] : bw.axis_column();
     if (sync && !bw.has('K')) fail(code::sync_motion_words, "K word missing with g33/g33.1", mcol);
     if (sync && bw.has('F')) fail(code::sync_motion_words, "F word used with a g33/g33.1", col('F'));
@@ -587,7 +597,9 @@ int Interp::execute_head(const BlockWords& bw) {
         if (int sp = bw.m[m_spindle]; sp >= 700) {
             if (modal_state(bw)) return kBlockEnded;  // LinuxCNC M70-M73; after a restore: the block ends
         } else if (sp >= 0) {
-            spindle_ = sp == 30 ? 1 : sp == 40 ? -1 : 0;
+            spindle_ = sp == 30 ? 1 : sp == 40 ? -1 : 0;  // M19: stopped, oriented
+            if (sp == 190 && bw.has('Q') && bw['Q'].value <= 0.0)
+                fail(code::spindle_orient_words, "Q word with M19 requires a value > 0", bw['Q'].column);
         }
         machine_.update(bw);  // coolant and overrides (read by #<_flood>, #<_feed_override>, ...)
     }

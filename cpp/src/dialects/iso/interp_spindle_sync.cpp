@@ -29,7 +29,7 @@ void Interp::spindle_choice(const BlockWords& bw, int motion_to_be) const {
     const int col = bw['$'].column;
     const int sp = bw.m[m_spindle], ov = bw.m[m_override];
     const bool sync = motion_to_be == 330 || motion_to_be == 331 || motion_to_be == 760;
-    if (!(sp == 30 || sp == 40 || sp == 50 || ov == 510 || sync || bw.has('S') || bw.g[g_feed_mode] >= 0 ||
+    if (!(sp == 30 || sp == 40 || sp == 50 || sp == 190 || ov == 510 || sync || bw.has('S') || bw.g[g_feed_mode] >= 0 ||
           bw.g[g_spindle_mode] >= 0))
         fail(code::spindle_choice,
              "$ (spindle selection) word with no M3, M4, M5, M19, M51, G33, G33.1, G76, G95, G96 or G97 to use it", col);
@@ -44,6 +44,7 @@ void Interp::spindle_choice(const BlockWords& bw, int motion_to_be) const {
     if (bw.has('S')) check(true, "Invalid spindle ($) number in Spindle speed command");
     if (sp == 30 || sp == 40 || sp == 50)
         check(true, "Spindle ($) number out of range in M" + std::to_string(sp / 10) + " Command");
+    if (sp == 190) check(false, "Spindle ($) number out of range in M19 Command");
     if (ov == 510 && (n < 1 || n >= kSpindles)) fail(code::spindle_choice, "Invalid spindle ($) number in M51 command", col);
     if (motion_to_be == 330) check(false, "Invalid spindle ($) number in G33 move");
     if (motion_to_be == 331) check(false, "Invalid spindle ($) number in G33.1 move");
