@@ -168,6 +168,7 @@ void bind_machine(py::module_& m) {
                 }
             },
             "axis travel ((xmin, xmax), (ymin, ymax), (zmin, zmax)) in machine coordinates, mm; +-inf: no limit")
+        .def_readwrite("spindles", &Machine::spindles, "spindles, 1 to 8 (LinuxCNC [TRAJ]SPINDLES): $0 .. $n-1")
         .def_readwrite("travel_limit_warning", &Machine::travel_limit_warning,
                        "a move beyond the travel is a warning (True) or an error that stops the run (False)")
         .def_property("rapid_rate", triple_get(&Machine::rapid_rate),

@@ -559,6 +559,7 @@ class Machine:
     travel_limit_warning: bool
     rapid_rate: Tuple[float, float, float]
     max_feed: Tuple[float, float, float]
+    spindles: int
     def check(self) -> None: ...
     # from toolcomp.machine
     @staticmethod

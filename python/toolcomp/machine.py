@@ -62,7 +62,7 @@ __all__ = ["read", "parse", "dumps", "write", "preset", "presets", "resolve"]
 _PRESETS = os.path.join(os.path.dirname(__file__), "machines")
 _CONTROLS = tuple(row["name"] for row in _core.dialect_table())
 _AXES = ("x", "y", "z")
-_TOP = {"name", "control", "kind", "units", "profile", "m_codes", "g_codes", "positions", "travel", "rates"}
+_TOP = {"name", "control", "kind", "units", "spindles", "profile", "m_codes", "g_codes", "positions", "travel", "rates"}
 _MM_PER_INCH = 25.4
 
 
@@ -220,6 +220,10 @@ def parse(text: str, path: Optional[str] = None) -> "_core.Machine":
     if not isinstance(name, str):
         raise src.error("name must be text", None, "name")
     m = _core.Machine(control, kind, name)
+    spindles = doc.get("spindles", 1)
+    if not isinstance(spindles, int) or isinstance(spindles, bool) or not 1 <= spindles <= 8:
+        raise src.error("spindles must be a whole number from 1 to 8", None, "spindles")
+    m.spindles = spindles
 
     profile = m.profile
     table = _table(src, doc, "profile")
@@ -371,6 +375,8 @@ def dumps(m: "_core.Machine") -> str:
     control, kind = m.control, m.kind.name
     lines = [f"name = {_toml_value(m.name)}", f"control = {_toml_value(control)}", f"kind = {_toml_value(kind)}",
              'units = "mm"']
+    if m.spindles != 1:
+        lines.append(f"spindles = {m.spindles}")
     diff = _profile_diff(m.profile, _core.ControlProfile(control, kind))
     if diff:
         _write_table(lines, "profile", diff)

@@ -2,6 +2,8 @@
 module in tests/programs/oracle/threading_*.ngc and the errors in tests/programs/errors/g33_*,
 g76_*, dollar_*; here the numbers worked by hand from LinuxCNC's convert_threading_cycle and
 threading_pass (the pass depths of its manual's example and of rs274 runs)."""
+import math
+
 import numpy as np
 import pytest
 
@@ -90,3 +92,62 @@ def test_dollar_zero_and_all_spindles_are_the_one_spindle():
 def test_other_dialects_have_no_dollar_word():
     with pytest.raises(tc.ParseError):
         tc.Program.parse("G21 M3 $0\nM30\n", "fanuc")
+
+
+def _two_spindles():
+    m = tc.Machine("linuxcnc", "lathe", "two spindles")
+    m.spindles = 2  # LinuxCNC [TRAJ]SPINDLES = 2
+    return m
+
+
+def test_a_machine_with_two_spindles_feeds_by_the_one_chosen():
+    # The canonical calls of rs274 with SPINDLES = 2 for this program: spindle 0 at 800 rev/min
+    # clockwise, spindle 1 at 1500 counter-clockwise, then G96 S200 D3000 on spindle 1, G95
+    # feeding by spindle 1 (SET_FEED_MODE(1, 1)), G95 again without $: by spindle 0.
+    text = """G21 G18 G90 G94
+S800 M3
+S1500 M4 $1
+G96 S200 D3000 $1
+G95 F0.2 S200 $1
+G0 X20 Z2
+G1 Z-10
+G1 X30
+G95 F0.1
+G1 Z-20
+M5 $1
+(DEBUG, rpm=#<_rpm> on=#<_spindle_on>)
+G33 Z-30 K1 $0
+M5
+(DEBUG, on=#<_spindle_on>)
+M3 $-1
+S300 $-1
+G33 Z-40 K2 $1
+M2
+"""
+    res = tc.run(tc.Program.parse(text), machine=_two_spindles())
+    css = lambda v, x: v * 1000 / (2 * math.pi * x)  # rev/min at radius x (mm) for v m/min
+    np.testing.assert_allclose(res.nominal.feed[1:], [
+        0.2 * css(200, 20),   # spindle 1 under G96, at X20
+        0.2 * css(200, 30),   # at X30
+        0.1 * 800,            # G95 without $: spindle 0, 800 rev/min
+        1 * 800,              # G33 K1 $0
+        2 * css(300, 30),     # G33 K2 $1: S300 $-1 is spindle 1's surface speed (G96 on it)
+    ], rtol=1e-12)
+    # #<_rpm> and #<_spindle_on> read spindle 0 (rs274: " rpm=800.000000 on=1.000000", then
+    # " on=0.000000": M5 without $ stops spindle 0 on LinuxCNC 2.9.0)
+    assert [d.message for d in res.diagnostics if d.code == "message"] == [" rpm=800.000000 on=1.000000",
+                                                                          " on=0.000000"]
+
+
+def test_two_spindles_and_the_dollar_limits():
+    with pytest.raises(tc.ProgramError) as e:
+        tc.run(tc.Program.parse("G21 G18\nM3 $2\nM2\n"), machine=_two_spindles())
+    assert str(e.value.message) == "Spindle ($) number out of range in M3 Command"
+    with pytest.raises(tc.ProgramError) as e:  # spindle 1 stopped: G33 on it cannot start
+        tc.run(tc.Program.parse("G21 G18\nS500 M3\nG0 X5 Z2\nG33 Z-5 K1 $1\nM2\n"), machine=_two_spindles())
+    assert str(e.value.message) == "Spindle not turning in G33"
+    m = _two_spindles()
+    assert tc.Machine.parse(m.dumps()).spindles == 2 and "spindles = 2" in m.dumps()
+    with pytest.raises(tc.ParseError, match="spindles must be a whole number from 1 to 8") as e:
+        tc.Machine.parse('control = "linuxcnc"\nspindles = 9\n')
+    assert e.value.line == 2

@@ -35,6 +35,7 @@ void check_argspec(const std::string& field, const std::string& code, const std:
 
 void check_machine(const Machine& m) {
     if (m.profile.kind != m.kind) bad("profile", "is a profile of another kind of machine (mill / lathe)");
+    if (m.spindles < 1 || m.spindles > Machine::kMaxSpindles) bad("spindles", "must be 1 to 8");
     for (const auto& [number, code] : m.m_codes) {
         if (number < 0 || number > 99999) bad("m_codes", "M" + std::to_string(number) + " is no M code number (0 to 99999)");
         if (std::find(m.profile.fixed_m_codes.begin(), m.profile.fixed_m_codes.end(), number) !=

@@ -112,6 +112,10 @@ struct Machine {
     // checked, for cycle time.
     std::array<double, 3> rapid_rate{0, 0, 0}, max_feed{0, 0, 0};
 
+    // Spindles, 1 to 8 (LinuxCNC's [TRAJ]SPINDLES): a program selects one with $0 .. $n-1.
+    int spindles = 1;
+    static constexpr int kMaxSpindles = 8;
+
     const MachineCode* m_code(int number) const {
         auto it = m_codes.find(number);
         return it == m_codes.end() ? nullptr : &it->second;

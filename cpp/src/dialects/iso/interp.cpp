@@ -578,11 +578,7 @@ int Interp::execute_head(const BlockWords& bw) {
     // motion_arc): an F word there times its own block only.
     if (bw.has('F') && !(st_.feed_mode == 930 && profile_.feed_mode_clears_feed))
         feed_ = bw['F'].value * (st_.feed_mode == 930 ? 1.0 : scale());
-    if (bw.has('S') && g0 != 500) speed_ = bw['S'].value;
-    if (int sm = bw.g[g_spindle_mode]; sm >= 0) {  // G96 (D: its speed limit) / G97
-        css_ = sm == 960;
-        if (css_) css_max_ = bw.has('D') ? std::fabs(bw['D'].value) : 0;  // no D: no limit
-    }
+    spindle_words(bw);
     // 5-6: tools
     if (bw.has('T')) select_tool(bw);
     if (modal) {
@@ -597,9 +593,7 @@ int Interp::execute_head(const BlockWords& bw) {
         if (int sp = bw.m[m_spindle]; sp >= 700) {
             if (modal_state(bw)) return kBlockEnded;  // LinuxCNC M70-M73; after a restore: the block ends
         } else if (sp >= 0) {
-            spindle_ = sp == 30 ? 1 : sp == 40 ? -1 : 0;  // M19: stopped, oriented
-            if (sp == 190 && bw.has('Q') && bw['Q'].value <= 0.0)
-                fail(code::spindle_orient_words, "Q word with M19 requires a value > 0", bw['Q'].column);
+            spindle_turn(bw, sp);
         }
         machine_.update(bw);  // coolant and overrides (read by #<_flood>, #<_feed_override>, ...)
     }

@@ -362,9 +362,21 @@ private:
     Vec6 tlo_ = Vec6::Zero();
     Vec6 g28_ = Vec6::Zero(), g30_ = Vec6::Zero();  // machine coordinates
     double feed_ = 0;   // mm/min (G94), mm/rev (G95) or 1/min (G93), as last programmed
-    double speed_ = 0;  // S, rev/min (G96: surface speed, m/min or ft/min)
-    bool css_ = false;       // G96 constant surface speed
-    double css_max_ = 0;     // G96 D: the spindle speed it may not exceed (0: none given)
+    // The spindles (LinuxCNC: up to 8, chosen with $; the machine's count), and the one G95
+    // feeds follow and G33/G76 synchronise with (LinuxCNC: $ with G93-G97, G33, G76; else 0).
+    struct Spindle {
+        double speed = 0;    // S, rev/min (G96: surface speed, m/min or ft/min)
+        bool css = false;    // G96 constant surface speed
+        double css_max = 0;  // G96 D: the spindle speed it may not exceed (0: none given)
+        int turning = 0;     // 0 stopped, 1 clockwise, -1 counter-clockwise
+    };
+    std::array<Spindle, Machine::kMaxSpindles> spindles_{};
+    int active_spindle_ = 0;
+    Spindle& spindle() { return spindles_[static_cast<std::size_t>(active_spindle_)]; }
+    const Spindle& spindle() const { return spindles_[static_cast<std::size_t>(active_spindle_)]; }
+    int spindle_count() const { return opts_.machine ? opts_.machine->spindles : 1; }
+    void spindle_words(const BlockWords& bw);  // S, G96/G97, G93-G95 with $ (interp_spindle_sync.cpp)
+    void spindle_turn(const BlockWords& bw, int code);  // M3, M4, M5, M19 with $
     double spindle_clamp_ = 0;  // G50 S (G-code system A): the highest speed under G96 (0: none)
     int tool_ = 0;      // tool in the spindle
     int block_tool_ = 0;  // and before the block being executed
@@ -379,7 +391,6 @@ private:
     int plain_motion_ = 0;       // the last G0/G1/G2/G3 mode (G80 of group 09 returns to it)
     double cycle_il_ = 0;        // initial level of the running canned cycle
     bool cycle_il_set_ = false;
-    int spindle_ = 0;            // 0 stopped, 1 clockwise, -1 counter-clockwise
     MachineSwitches machine_;    // coolant and overrides
     RadiusRequest radius_;       // cutter radius compensation carried on every move (side 0 = off)
 

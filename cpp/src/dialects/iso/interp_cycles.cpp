@@ -140,13 +140,13 @@ void Interp::cycle(const BlockWords& bw, int code) {
         straight(MotionKind::rapid, at(a, b, level), nan);
         if (level != r) straight(MotionKind::rapid, at(a, b, r), nan);
         // The control checks the spindle when the cycle itself starts, after the approach.
-        if ((code == 860 || code == 870 || code == 880 || code == 740 || code == 840) && spindle_ == 0)
+        if ((code == 860 || code == 870 || code == 880 || code == 740 || code == 840) && spindle().turning == 0)
             fail(code::spindle_not_turning, "Spindle not turning in " + std::string(code == 740 ? "G74" : code == 840 ? "G84" : gname));
         if ((code == 730 || code == 830) && cyc_.q <= 0)
             fail(code::cycle_q_zero, "Negative or zero q value used", bw.has('Q') ? bw['Q'].column : 0);
-        if (code == 840 && spindle_ < 0)
+        if (code == 840 && spindle().turning < 0)
             fail(code::spindle_direction, "Spindle turning counterclockwise in G84");
-        if (code == 740 && spindle_ > 0) fail(code::spindle_direction, "Spindle turning clockwise in G74");
+        if (code == 740 && spindle().turning > 0) fail(code::spindle_direction, "Spindle turning clockwise in G74");
         switch (code) {
             case 740:
             case 840:  // tapping: feed in, reverse the spindle, feed straight out to clearance

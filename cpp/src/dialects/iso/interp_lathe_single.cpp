@@ -25,7 +25,7 @@ double Interp::thread_feed(double x_end) const {
 
 void Interp::thread_line(const BlockWords& bw) {
     if (feed_ <= 0) fail(code::zero_feed, "G32 needs the lead F", bw.axis_column());
-    if (speed_ <= 0) fail(code::zero_spindle_speed, "G32 needs the spindle turning (S)", bw.axis_column());
+    if (spindle().speed <= 0) fail(code::zero_spindle_speed, "G32 needs the spindle turning (S)", bw.axis_column());
     if (comp_on()) fail(code::unsupported_g_code, "G32 with tool nose radius compensation on is not supported by toolcomp",
                         bw.axis_column());
     const Vec6 end = find_end(bw);
@@ -36,7 +36,7 @@ void Interp::single_cycle(const BlockWords& bw, int code) {
     const int col = bw.g[g_motion] >= 0 ? bw.g_column[g_motion] : bw.axis_column();
     const char* name = code == 900 ? "G90" : code == 920 ? "G92" : "G94";
     if (feed_ <= 0) fail(code::zero_feed, std::string(name) + " needs a feed F", col);
-    if (code == 920 ? speed_ <= 0 : st_.feed_mode == 950 && speed_ <= 0)
+    if (code == 920 ? spindle().speed <= 0 : st_.feed_mode == 950 && spindle().speed <= 0)
         fail(code::zero_spindle_speed, std::string(name) + " needs the spindle turning (S)", col);
     if (comp_on())
         fail(code::unsupported_g_code, std::string(name) + " with tool nose radius compensation on is not supported by toolcomp",

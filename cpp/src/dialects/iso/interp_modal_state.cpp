@@ -38,12 +38,12 @@ ModalSnapshot Interp::snapshot() const {
     s.g[9] = tlo_.isZero(0) ? 490 : 430;  // any offset applied: G43 (G43.1, G43.2 among them)
     s.g[10] = st_.retract_initial ? 980 : 990;
     s.g[11] = st_.path_control;
-    s.g[13] = css_ ? 960 : 970;
+    s.g[13] = spindles_[0].css ? 960 : 970;
     s.g[14] = st_.arc_absolute ? 901 : 911;
     s.g[15] = st_.diameter ? 70 : 80;
     s.g[16] = g92_on_ ? 923 : 922;
     s.m.fill(-1);
-    s.m[2] = spindle_ > 0 ? 3 : spindle_ < 0 ? 4 : 5;
+    s.m[2] = spindles_[0].turning > 0 ? 3 : spindles_[0].turning < 0 ? 4 : 5;
     s.m[4] = machine_.mist ? 7 : machine_.flood ? -1 : 9;
     s.m[5] = machine_.flood ? 8 : -1;
     // LinuxCNC 2.9.0 tests its per-spindle override array as a truth value: always true, so
@@ -52,7 +52,7 @@ ModalSnapshot Interp::snapshot() const {
     s.m[7] = machine_.adaptive_feed ? 52 : -1;
     s.m[8] = machine_.feed_hold ? 53 : -1;
     s.feed = st_.feed_mode == 930 ? feed_ : feed_ / scale();
-    s.speed = speed_;
+    s.speed = spindles_[0].speed;
     s.tolerance = tolerance_;
     s.naivecam = naivecam_;
     return s;

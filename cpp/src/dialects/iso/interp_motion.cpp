@@ -107,7 +107,7 @@ void Interp::inverse_time_rate(double feed) {
 
 // Feed per revolution needs a spindle speed (S; M5 keeps it).
 void Interp::check_feed_per_rev(int column) const {
-    if (st_.feed_mode == 950 && speed_ == 0)
+    if (st_.feed_mode == 950 && spindle().speed == 0)
         fail(code::zero_spindle_speed, "Cannot feed with zero spindle speed in feed per rev mode", column);
 }
 
@@ -131,10 +131,11 @@ double Interp::feed_for(const BlockWords& bw, int code, double length, double x_
 // G96: the spindle turns to keep the surface speed at the tool's radius, taken where the
 // move ends, no faster than D (or G50 S). At the axis without a limit: not known (inf).
 double Interp::spindle_rpm(double x_end) const {
-    if (!css_) return speed_;
+    const Spindle& s = spindle();
+    if (!s.css) return s.speed;
     const double r = std::fabs(x_end) * scale();  // mm
-    double rpm = css_rpm(speed_ * (st_.inch ? 304.8 : 1000.0), r);  // S in ft/min or m/min
-    if (css_max_ > 0) rpm = std::min(rpm, css_max_);
+    double rpm = css_rpm(s.speed * (st_.inch ? 304.8 : 1000.0), r);  // S in ft/min or m/min
+    if (s.css_max > 0) rpm = std::min(rpm, s.css_max);
     if (spindle_clamp_ > 0) rpm = std::min(rpm, spindle_clamp_);
     return rpm;
 }

@@ -187,8 +187,8 @@ bool Interp::mode_param(const std::string& name, double& v) const {
     if (name == "_remap_level") return v = 0, true;
     if (name == "_vmajor") return v = 2.9, true;  // LinuxCNC 2.9.0, as the control this profile follows
     if (name == "_vminor") return v = 0, true;
-    if (name == "_spindle_on") return flag(spindle_ != 0);
-    if (name == "_spindle_cw") return flag(spindle_ > 0);
+    if (name == "_spindle_on") return flag(spindles_[0].turning != 0);
+    if (name == "_spindle_cw") return flag(spindles_[0].turning > 0);
     if (name == "_units_per_minute") return flag(st_.feed_mode == 940);
     if (name == "_units_per_rev") return flag(st_.feed_mode == 950);
     if (name == "_inverse_time") return flag(st_.feed_mode == 930);
@@ -221,7 +221,7 @@ double Interp::get(const std::string& name, std::span<const double>) {
     if (name == "_current_tool") return tool_;
     if (name == "_selected_tool") return selected_;
     if (name == "_feed") return st_.feed_mode == 930 ? feed_ : feed_ / scale();
-    if (name == "_rpm") return speed_;
+    if (name == "_rpm") return std::fabs(spindles_[0].speed);
     if (name.size() == 2 && name[0] == '_') {
         static constexpr char kAxes[] = "xyzabc";
         for (int j = 0; j < 6; ++j)

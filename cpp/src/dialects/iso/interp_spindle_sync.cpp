@@ -35,7 +35,7 @@ void Interp::spindle_choice(const BlockWords& bw, int motion_to_be) const {
              "$ (spindle selection) word with no M3, M4, M5, M19, M51, G33, G33.1, G76, G95, G96 or G97 to use it", col);
     const double v = bw['$'].value;
     const int n = std::isfinite(v) && std::fabs(v) < 1e9 ? static_cast<int>(v) : 1000000000;
-    constexpr int kSpindles = 1;
+    const int kSpindles = spindle_count();
     auto check = [&](bool all_allowed, const std::string& message) {
         if (n >= kSpindles || n < (all_allowed ? -1 : 0)) fail(code::spindle_choice, message, col);
     };
@@ -51,6 +51,41 @@ void Interp::spindle_choice(const BlockWords& bw, int motion_to_be) const {
     if (motion_to_be == 760) check(false, "Invalid D-number in G76 cycle");
 }
 
+// S, G96/G97 and G93-G95 as LinuxCNC 2.9 takes them with $: the spindle mode and the feed
+// mode choose the spindle G95 and G33/G76 follow ($n, else spindle 0); S sets spindle $n, all
+// of them with $-1, else spindle 0.
+void Interp::spindle_words(const BlockWords& bw) {
+    const bool dollar = bw.has('$');
+    const int n = dollar ? static_cast<int>(bw['$'].value) : 0;  // in range (spindle_choice)
+    if (int sm = bw.g[g_spindle_mode]; sm >= 0) {  // G96 (D: its speed limit) / G97
+        active_spindle_ = n;
+        Spindle& s = spindle();
+        s.css = sm == 960;
+        if (s.css) s.css_max = bw.has('D') ? std::fabs(bw['D'].value) : 0;  // no D: no limit
+    }
+    if (bw.g[g_feed_mode] >= 0) active_spindle_ = n;
+    const int motion = motion_of(bw);
+    if (dollar && (motion == 330 || motion == 331 || motion == 760)) active_spindle_ = n;
+    if (bw.has('S') && bw.g[g_nonmodal] != 500) {  // (G50 S: the spindle clamp of a Fanuc lathe)
+        for (int i = 0; i < spindle_count(); ++i)
+            if (i == n || (dollar && n == -1)) spindles_[static_cast<std::size_t>(i)].speed = bw['S'].value;
+    }
+}
+
+// M3, M4, M5, M19 on spindle $n, on all of them with $-1, else on spindle 0; M19 stops all
+// and turns spindle $n (else 0) to its angle. (LinuxCNC 2.9.0; from 2.9.1 on M5 without $
+// stops all spindles.)
+void Interp::spindle_turn(const BlockWords& bw, int code) {
+    const bool dollar = bw.has('$');
+    const int n = dollar ? static_cast<int>(bw['$'].value) : 0;
+    const int turning = code == 30 ? 1 : code == 40 ? -1 : 0;
+    const bool all = code == 190 || (dollar && n == -1);
+    for (int i = 0; i < spindle_count(); ++i)
+        if (all || i == n) spindles_[static_cast<std::size_t>(i)].turning = turning;
+    if (code == 190 && bw.has('Q') && bw['Q'].value <= 0.0)
+        fail(code::spindle_orient_words, "Q word with M19 requires a value > 0", bw['Q'].column);
+}
+
 double Interp::sync_feed(double lead, double x_end) const {
     const double rpm = spindle_rpm(x_end);
     return std::isfinite(rpm) ? lead * scale() * rpm : std::nan("");
@@ -61,8 +96,9 @@ void Interp::sync_can_start(const BlockWords& bw, const char* what) const {
     const int col = bw.g[g_motion] >= 0 ? bw.g_column[g_motion] : bw.axis_column();
     // Its compensation code knows G0 and G1 only (a radius of 0 passes).
     if (comp_on() && radius_.radius > 0) fail(code::sync_motion_comp, "Bug code not g0 or g1", col);
-    if (spindle_ == 0) {
-        if (std::string(what) == "G76") fail(code::spindle_not_turning, "Chosen spindle (0) not turning in G76", col);
+    if (spindle().turning == 0) {
+        if (std::string(what) == "G76")
+            fail(code::spindle_not_turning, "Chosen spindle (" + std::to_string(active_spindle_) + ") not turning in G76", col);
         fail(code::spindle_not_turning, std::string("Spindle not turning in ") + what, col);
     }
 }

@@ -120,7 +120,7 @@ void Interp::haas_threading(const BlockWords& bw, int col) {
 
 // What either G76 needs to start: the spindle turning, no nose radius compensation.
 void Interp::thread_cycle_can_start(int col) const {
-    if (speed_ <= 0) fail(code::zero_spindle_speed, "G76 needs the spindle turning (S)", col);
+    if (spindle().speed <= 0) fail(code::zero_spindle_speed, "G76 needs the spindle turning (S)", col);
     if (comp_on()) fail(code::unsupported_g_code, "G76 with tool nose radius compensation on is not supported by toolcomp", col);
 }
 

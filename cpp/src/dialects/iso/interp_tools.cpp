@@ -93,7 +93,8 @@ void Interp::select_tool(const BlockWords& bw) {
 void Interp::change_tool(const BlockWords& bw, int mcode) {
     if (mcode == 60) {  // M6: the prepared tool goes into the spindle; no length offset yet
         if (selected_ >= 0) tool_ = selected_;
-        if (profile_.tool_change_stops_spindle) spindle_ = 0;
+        if (profile_.tool_change_stops_spindle)
+            for (Spindle& s : spindles_) s.turning = 0;
         return;
     }
     // M61 Q: tell the control which tool is in the spindle, without a change.

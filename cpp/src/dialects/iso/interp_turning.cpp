@@ -53,8 +53,9 @@ Interp::ContourMoves Interp::read_contour(std::size_t from, std::size_t to) {
     const Block* block = block_;
     const ModalState st = st_;
     const Vec6 pos = pos_;
-    const double feed = feed_, speed = speed_, css_max = css_max_;
-    const bool css = css_, arc_not_allowed = arc_not_allowed_, comp_moved = comp_moved_;
+    const double feed = feed_;
+    const Spindle saved_spindle = spindle();
+    const bool arc_not_allowed = arc_not_allowed_, comp_moved = comp_moved_;
     const RadiusRequest radius = radius_;
     const std::size_t moves = moves_;
     const int plain_motion = plain_motion_, prev_motion = prev_motion_, last_d = last_d_;
@@ -94,8 +95,8 @@ Interp::ContourMoves Interp::read_contour(std::size_t from, std::size_t to) {
     block_ = block;
     st_ = st;
     pos_ = pos;
-    feed_ = feed, speed_ = speed, css_max_ = css_max;
-    css_ = css, arc_not_allowed_ = arc_not_allowed, comp_moved_ = comp_moved;
+    feed_ = feed, spindle() = saved_spindle;
+    arc_not_allowed_ = arc_not_allowed, comp_moved_ = comp_moved;
     radius_ = radius;
     moves_ = moves;
     plain_motion_ = plain_motion, prev_motion_ = prev_motion, last_d_ = last_d;
