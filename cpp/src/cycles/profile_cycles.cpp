@@ -74,6 +74,7 @@ private:
     Point escape_;
     std::vector<Point> starts_;  // G7x.2: the top of the pocket being roughed
     std::size_t spins_ = 0;
+    std::size_t work_ = 0;  // pieces searched for a level's end: a bound on the time
 };
 
 bool Rougher::dive(std::size_t i, Point& at, double x) {
@@ -168,6 +169,7 @@ double Rougher::next_level(double x, Point at) const {
 // level gave no cut and `p` or `x` moved on instead.
 bool Rougher::cut_level(std::size_t& p, Point at, double& x) {
     for (std::size_t ip = p; ip < pieces_.size(); ++ip) {
+        if (++work_ > 2'000'000'000) geometry_error("more than 2 billion crossings of levels and pieces");
         const Crossings c = crossings(pieces_[ip], imag(at));
         if (c.empty()) continue;
         const double z = ip != p ? c.front() : c.back();

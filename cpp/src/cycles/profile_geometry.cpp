@@ -199,8 +199,12 @@ void Profile::add_distance(double distance) {
     const Piece lead = pieces.front();
     pieces.erase(pieces.begin());
     double done = 0;
+    std::size_t work = 0;  // pieces offset so far: a bound on the time a fine profile takes
     for (int round = 0; done != distance; ++round) {
         if (pieces.empty() || round > 100000) geometry_error("the profile vanishes at an offset of " + std::to_string(distance));
+        if ((work += pieces.size()) > 200'000'000)
+            geometry_error("the profile is too fine for an offset of " + std::to_string(distance) +
+                           ": more than 200 million piece offsets");
         double step = 1e9;
         for (const Piece& p : pieces) step = std::min(step, extent(p) / 2);
         step = std::min(step, std::abs(distance - done));
