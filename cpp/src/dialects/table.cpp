@@ -67,7 +67,8 @@ void interpret_sinumerik(const DialectRun& r) {
 void interpret_heidenhain(const DialectRun& r) {
     const RunOptions& o = r.options;
     heidenhain::interpret(r.program, r.tools, r.profile, r.sink, r.diagnostics, o.progress,
-                          o.progress_every ? o.progress_every : 1, search_of(o), &r.out.files, o.machine.get());
+                          o.progress_every ? o.progress_every : 1, search_of(o), &r.out.files, o.machine.get(),
+                          o.block_delete);
 }
 
 constexpr DialectRow kDialects[] = {

@@ -396,7 +396,7 @@ bool Interp::run_blocks(const Program& prog, int depth) {
                                     " blocks executed: an endless loop? (ControlProfile.block_limit)");
         if (idle_.too_long(moves_, profile_.no_motion_limit)) [[unlikely]]
             fail(code::no_progress, no_progress_text(profile_.no_motion_limit));
-        if (raw.empty()) {
+        if (raw.empty() || (blocks[pc].block_delete && block_delete_)) {
             ++pc;
             continue;
         }
@@ -594,9 +594,10 @@ void Interp::call_program(Tokens t, int depth) {
 void interpret(const Program& program, const ToolTable* tools, const ControlProfile& profile, MotionSink& sink,
                std::vector<Diagnostic>& diagnostics, const std::function<void(std::size_t)>& progress,
                std::size_t progress_every, const SearchPath& search,
-               std::vector<std::string>* files, const Machine* machine) {
+               std::vector<std::string>* files, const Machine* machine, bool block_delete) {
     Interp interp(program, tools, profile, sink, diagnostics, search);
     interp.set_machine(machine);
+    interp.skip_marked_blocks(block_delete);
     if (progress) interp.on_progress(progress, progress_every);
     run_reporting(interp, files, [](const Interp& i) { return i.files(); });
 }

@@ -29,6 +29,7 @@ public:
     // The machine the program runs on (interp_machine.cpp): its builder M codes, work origin,
     // machine datums (M91, M92) and tool change position. The run starts at its zero.
     void set_machine(const Machine* m);
+    void skip_marked_blocks(bool on) { block_delete_ = on; }  // the block skip '/'
     void run();
     const std::vector<std::string>& files() const { return files_.names(); }
     // Called with the number of blocks executed so far, every `every` blocks.
@@ -39,6 +40,7 @@ public:
 
 private:
     std::function<void(std::size_t)> progress_;
+    bool block_delete_ = false;
     std::size_t progress_every_ = 1 << 16;
     using Tokens = std::span<const Token>;
     // The block's tokens with Q parameters in words replaced by values (in `scratch` when

@@ -8,6 +8,8 @@
 #include <charconv>
 #include <cstring>
 #include <optional>
+#include <tuple>
+#include <utility>
 
 namespace toolcomp::heidenhain {
 
@@ -15,16 +17,38 @@ namespace {
 
 bool blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 
+// Addresses whose value may stand apart from them ("L Z 25.000 FMAX", "L Z + Q13", "IZ - 2.5",
+// as hand-written programs and some posts put it): the value is read across the blanks.
+bool spaced_address(std::string_view k) {
+    static constexpr std::string_view kAddresses[] = {"X",  "Y",  "Z",  "A",  "B",   "C",   "U",  "V",  "W",
+                                                      "IX", "IY", "IZ", "IA", "IB",  "IC",  "IU", "IV", "IW",
+                                                      "F",  "S",  "R",  "DR", "PR",  "PA",  "IPR", "IPA",
+                                                      "CCA", "LEN"};
+    for (std::string_view a : kAddresses)
+        if (k == a) return true;
+    return false;
+}
+
 class LineLexer {
 public:
-    LineLexer(std::string_view line, int line_no, Program& prog) : s_(line), line_(line_no), prog_(prog) {}
+    // `continued`: the line goes on with the block of the line before, which ended with '~'
+    // (a cycle definition's parameters, one a line).
+    LineLexer(std::string_view line, int line_no, Program& prog, bool continued = false)
+        : s_(line), line_(line_no), prog_(prog), continued_(continued) {}
 
     void run() {
         skip();
-        // Block number.
+        if (continued_) {
+            words();
+            return;
+        }
+        // The block skip '/' (before or after the block number), the block number.
+        bool skipped = false;
+        if (i_ < s_.size() && s_[i_] == '/') skipped = true, ++i_, skip();
         while (i_ < s_.size() && ascii_digit(s_[i_])) ++i_;
         skip();
-        prog_.begin_block(line_, false);
+        if (i_ < s_.size() && s_[i_] == '/') skipped = true, ++i_, skip();
+        prog_.begin_block(line_, skipped);
         if (i_ < s_.size() && s_[i_] == '*') {  // structure block
             prog_.add_comment({std::string(s_.substr(i_ + 1)), col()});
             return;
@@ -53,6 +77,11 @@ public:
                 return;
             }
         }
+        words();
+    }
+
+private:
+    void words() {
         while (true) {
             skip();
             if (i_ >= s_.size()) break;
@@ -72,12 +101,31 @@ public:
         }
     }
 
-private:
     int col() const { return static_cast<int>(i_) + 1; }
-    // After CALL PGM comes a file name (SUB1, PART.H, TNC:\DIR\SUB.H), not words.
+    // After CALL PGM comes a file name (SUB1, PART.H, TNC:\DIR\SUB.H), after BEGIN PGM and
+    // END PGM the program's name (letters, digits, '.', '_', '-' in any order: 0TREF,
+    // 11setup, contour-cut), not words.
     bool program_name_next() const {
         auto t = prog_.tokens(prog_.blocks().back());
-        return t.size() == 2 && t[0].is("CALL") && t[1].is("PGM") && !t[1].has_value;
+        return t.size() == 2 && (t[0].is("CALL") || t[0].is("BEGIN") || t[0].is("END")) && t[1].is("PGM") &&
+               !t[1].has_value;
+    }
+    // After a blank: a sign, a number or a Q parameter (the value of a spaced address).
+    bool value_after_blanks() const {
+        std::size_t j = i_;
+        while (j < s_.size() && blank(s_[j])) ++j;
+        if (j == i_ || j >= s_.size()) return false;
+        const char c = s_[j];
+        return c == '+' || c == '-' || ascii_digit(c) || c == '.' ||
+               ((c == 'Q' || c == 'q') && j + 1 < s_.size() && ascii_digit(s_[j + 1]));
+    }
+    bool word_after_blanks(std::string_view word) const {
+        std::size_t j = i_;
+        while (j < s_.size() && blank(s_[j])) ++j;
+        if (j == i_ || s_.size() - j < word.size()) return false;
+        for (std::size_t k = 0; k < word.size(); ++k)
+            if (ascii_upper(s_[j + k]) != word[k]) return false;
+        return j + word.size() == s_.size() || blank(s_[j + word.size()]) || s_[j + word.size()] == ';';
     }
     void program_name() {
         Token t;
@@ -114,6 +162,29 @@ private:
             t.key.push_back(ascii_upper(s_[i_]));
             ++i_;
         }
+        if (t.is("F") && word_after_blanks("MAX")) {  // F MAX: FMAX
+            skip();
+            i_ += 3;
+            t.key = "FMAX";
+            return;
+        }
+        if (t.is("FQ") && i_ < s_.size() && ascii_digit(s_[i_])) {  // FQ58: the feed in Q58
+            t.key = "F";
+            --i_;
+        }
+        // A cycle parameter of a definition's continuation line: Q200=2 (its key Q200).
+        if (continued_ && t.is("Q")) {
+            std::size_t e = i_;
+            while (e < s_.size() && ascii_digit(s_[e])) ++e;
+            std::size_t eq = e;
+            while (eq < s_.size() && blank(s_[eq])) ++eq;
+            if (e > i_ && eq < s_.size() && s_[eq] == '=') {
+                t.key.append(s_.substr(i_, e - i_));
+                i_ = eq + 1;
+                skip();
+            }
+        }
+        if (spaced_address(t.key) && value_after_blanks()) skip();
         // Digits followed by a sign belong to the address (R2+3, DR2-0.1, DR2+).
         std::size_t j = i_;
         while (j < s_.size() && ascii_digit(s_[j])) ++j;
@@ -127,6 +198,12 @@ private:
             sign = s_[i_] == '-' ? -1 : 1;
             have_sign = true;
             ++i_;
+            if (spaced_address(t.key) && !t.key.empty()) {  // "Z + Q13", "IZ - 2.5"
+                std::size_t k = i_;
+                while (k < s_.size() && blank(s_[k])) ++k;
+                if (k > i_ && k < s_.size() && (ascii_digit(s_[k]) || s_[k] == '.' || s_[k] == 'Q' || s_[k] == 'q'))
+                    i_ = k;
+            }
         }
         if (i_ + 1 < s_.size() && (s_[i_] == 'Q' || s_[i_] == 'q') && ascii_digit(s_[i_ + 1]) &&
             !t.key.empty()) {
@@ -174,7 +251,17 @@ private:
     std::size_t i_ = 0;
     int line_;
     Program& prog_;
+    bool continued_ = false;
 };
+
+// A line ending in '~' (after its comment, as the TNC writes cycle definitions) goes on in
+// the next: the line without it, and whether it continues.
+std::pair<std::string_view, bool> continuation(std::string_view line) {
+    std::size_t e = line.size();
+    while (e > 0 && blank(line[e - 1])) --e;
+    if (e == 0 || line[e - 1] != '~') return {line, false};
+    return {line.substr(0, e - 1), true};
+}
 
 bool is_blank_line(std::string_view l) {
     for (char c : l)
@@ -241,6 +328,7 @@ Program parse(std::string_view text, std::string name, bool strict) {
     std::size_t pos = 0;
     int line_no = 0;
     bool ended = false;  // END PGM seen
+    bool continued = false;  // the line before ended with '~'
     const auto find = [&](char c, std::size_t from, std::size_t to) {  // `to` when not found
         const void* p = std::memchr(text.data() + from, c, to - from);
         return p ? static_cast<std::size_t>(static_cast<const char*>(p) - text.data()) : to;
@@ -259,12 +347,14 @@ Program parse(std::string_view text, std::string name, bool strict) {
         ++line_no;
         pos = nl + 1;
         if (!is_blank_line(line)) {
+            const bool goes_on = continued;
+            std::tie(line, continued) = continuation(line);
             try {
-                LineLexer(line, line_no, prog).run();
+                LineLexer(line, line_no, prog, goes_on).run();
                 check_path_words(prog.tokens(prog.blocks().back()), line_no);
             } catch (const ParseError& e) {
                 if (strict) throw;
-                if (prog.size() && prog.blocks().back().line == line_no) prog.drop_last_block();  // if begun
+                if (prog.size() && (goes_on || prog.blocks().back().line == line_no)) prog.drop_last_block();  // if begun
                 prog.syntax_error = e.diagnostic();
                 break;
             }

@@ -28,6 +28,7 @@ namespace toolcomp::heidenhain {
 void interpret(const Program& program, const ToolTable* tools, const ControlProfile& profile, MotionSink& sink,
                std::vector<Diagnostic>& diagnostics, const std::function<void(std::size_t)>& progress = {},
                std::size_t progress_every = 1 << 16, const SearchPath& search = {},
-               std::vector<std::string>* files = nullptr, const Machine* machine = nullptr);
+               std::vector<std::string>* files = nullptr, const Machine* machine = nullptr,
+               bool block_delete = false);  // skip the blocks marked '/'
 
 }  // namespace toolcomp::heidenhain

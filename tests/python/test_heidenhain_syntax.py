@@ -1,0 +1,65 @@
+"""How real TNC programs are written (hand-written, Fusion 360, hyperMILL, NX posts): program
+names of any letters, digits, '.', '_' and '-'; blanks between an address and its value;
+F MAX; feeds in Q parameters (F Q58, FQ58); the block skip '/'; cycle definitions continued
+over lines with '~'."""
+import numpy as np
+import pytest
+
+import toolcomp as tc
+
+
+def run(text, **kw):
+    return tc.run(tc.Program.parse(text, "heidenhain"), **kw)
+
+
+def ends(res):
+    return [tuple(float(v) for v in e) for e in np.round(res.nominal.end, 6)]
+
+
+@pytest.mark.parametrize("name", ["0TREF", "11setup", "contour-cut", "W5246NS01007A1", "spot-drill", "PART-1",
+                                  "A.B_C-1"])
+def test_program_names(name):
+    res = run(f"0 BEGIN PGM {name} MM\n1 L X+1 Y+2 R0 FMAX\n2 END PGM {name} MM\n")
+    assert ends(res) == [(1, 2, 0)]
+
+
+def test_spaced_words_f_max_and_q_feeds():
+    text = """0 BEGIN PGM SPACED MM
+1 TOOL DEF 1 L+0 R+5
+2 TOOL CALL 1 Z S2000
+3 L X+0 Y+0 Z+10 R0 F MAX
+4 Q58 = 250
+5 L Z - 2.5 FQ58
+6 L X + 20 F Q58
+7 L IX - 5 Y + Q58 F 300
+8 L  Z 25.000 FMAX
+9 END PGM SPACED MM
+"""
+    res = run(text)
+    assert ends(res) == [(0, 0, 10), (0, 0, -2.5), (20, 0, -2.5), (15, 250, -2.5), (15, 250, 25)]
+    f = res.nominal.feed
+    assert np.isnan(f[0]) and list(f[1:4]) == [250, 250, 300] and np.isnan(f[4])
+
+
+def test_the_block_skip():
+    text = "0 BEGIN PGM S MM\n1 L X+10 R0 FMAX\n2 /L X+20 F100\n/3 L Y+5 F100\n4 L Z+1 F100\n5 END PGM S MM\n"
+    assert ends(run(text)) == [(10, 0, 0), (20, 0, 0), (20, 5, 0), (20, 5, 1)]
+    assert ends(run(text, block_delete=True)) == [(10, 0, 0), (10, 0, 1)]
+
+
+def test_a_cycle_definition_over_continued_lines_is_one_block():
+    text = """0 BEGIN PGM CYC MM
+1 TOOL DEF 1 L+0 R+3
+2 TOOL CALL 1 Z S2000
+3 CYCL DEF 200 DRILLING ~
+    Q200=2     ;SET-UP CLEARANCE ~
+    Q201=-15   ;DEPTH ~
+    Q206=150   ;FEED RATE FOR PLNGNG
+4 L X+10 Y+10 R0 FMAX
+5 END PGM CYC MM
+"""
+    prog = tc.Program.parse(text, "heidenhain")
+    with pytest.raises(tc.ProgramError) as e:  # the definition is read whole; the cycle is refused
+        tc.run(prog)
+    assert e.value.code == "unsupported_block" and e.value.line == 4
+
