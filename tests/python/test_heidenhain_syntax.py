@@ -63,3 +63,25 @@ def test_a_cycle_definition_over_continued_lines_is_one_block():
         tc.run(prog)
     assert e.value.code == "unsupported_block" and e.value.line == 4
 
+
+
+def test_labels_by_name():
+    text = """0 BEGIN PGM L MM
+1 L X+0 Y+0 R0 FMAX
+2 CALL LBL "CORNER"
+3 L X+5 FMAX
+4 M30
+5 LBL "CORNER"
+6 L Y+7 FMAX
+7 LBL 0
+8 END PGM L MM
+"""
+    assert ends(run(text)) == [(0, 7, 0), (5, 7, 0)]
+    with pytest.raises(tc.ProgramError) as e:
+        run(text.replace('CALL LBL "CORNER"', 'CALL LBL "EDGE"'))
+    assert (e.value.code, str(e.value.message), e.value.line) == ("label_not_found", 'LBL "EDGE" not found', 3)
+
+
+def test_sgn_in_q_formulas():
+    text = "0 BEGIN PGM Q MM\n1 Q1 = SGN -5\n2 Q2 = SGN(0) + SGN 3 * 2\n3 L X+Q1 Y+Q2 R0 FMAX\n4 END PGM Q MM\n"
+    assert ends(run(text)) == [(-1, 2, 0)]

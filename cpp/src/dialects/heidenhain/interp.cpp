@@ -371,15 +371,21 @@ bool Interp::run_blocks(const Program& prog, int depth) {
         ~Restore() { f = v; }
     } restore{file_, caller_file};
     const auto& blocks = prog.blocks();
-    std::map<int, std::size_t> labels;
+    // Labels by number (LBL 5) or by name (LBL "CONTOUR"), as the text LBL shows them.
+    auto label_name = [](const Token& k) -> std::string {
+        if (k.has_value && k.key.empty()) return std::to_string(int_value(k.value));
+        if (!k.has_value && k.key.empty() && !k.text.empty()) return '"' + k.text + '"';
+        return {};
+    };
+    std::map<std::string, std::size_t> labels;
     for (std::size_t i = 0; i < blocks.size(); ++i) {
         auto t = prog.tokens(blocks[i]);
-        if (t.size() >= 2 && t[0].is("LBL") && t[1].has_value && t[1].value != 0)
-            labels[int_value(t[1].value)] = i;
+        if (t.size() >= 2 && t[0].is("LBL") && !(t[1].has_value && t[1].value == 0) && !label_name(t[1]).empty())
+            labels[label_name(t[1])] = i;
     }
-    auto label = [&](int n, const Token& at) {
-        auto it = labels.find(n);
-        if (it == labels.end()) fail(code::label_not_found, "LBL " + std::to_string(n) + " not found", at.column);
+    auto label = [&](const std::string& name, const Token& at) {
+        auto it = labels.find(name);
+        if (it == labels.end()) fail(code::label_not_found, "LBL " + name + " not found", at.column);
         return it->second;
     };
     int q_column = 0;  // the statement being run
@@ -412,8 +418,8 @@ bool Interp::run_blocks(const Program& prog, int depth) {
             }
             continue;
         }
-        if (k0 == "CALL" && t.size() >= 3 && t[1].is("LBL") && t[2].has_value) {
-            const std::size_t target = label(int_value(t[2].value), t[2]) + 1;
+        if (k0 == "CALL" && t.size() >= 3 && t[1].is("LBL") && !label_name(t[2]).empty()) {
+            const std::size_t target = label(label_name(t[2]), t[2]) + 1;
             if (const Token* rep = find(t, "REP")) {
                 // REP m, or REP followed by the count as a separate number (REP 2/2)
                 double m = rep->has_value ? rep->value : 0;
@@ -449,7 +455,7 @@ bool Interp::run_blocks(const Program& prog, int depth) {
                 check_q(*r.assign, t[0].column);
                 q_[*r.assign] = r.value;
             }
-            pc = r.jump ? label(*r.jump, t[0]) : pc + 1;
+            pc = r.jump ? label(std::to_string(*r.jump), t[0]) : pc + 1;
             continue;
         }
         if (k0 == "CALL" && t.size() >= 2 && t[1].is("PGM")) {

@@ -168,6 +168,7 @@ private:
             return f == "LN" ? std::log(x) : std::log10(x);
         }
         if (f == "EXP") return std::exp(x);
+        if (f == "SGN") return x > 0 ? 1.0 : x < 0 ? -1.0 : 0.0;
         throw std::invalid_argument("unknown function " + f);
     }
 
