@@ -479,7 +479,9 @@ bool Interp::run_blocks(const Program& prog, int depth) {
     // A called program parsed leniently stops before its first syntax error: reached here.
     if (depth > 0 && prog.syntax_error) {
         const Diagnostic& e = *prog.syntax_error;
-        throw ParseError(e.code, e.message + " (in the called program " + prog.name + ")", e.pos);
+        SourcePos at = e.pos;
+        at.file = prog.name;  // the error's line is in the called file
+        throw ParseError(e.code, e.message + " (in the called program " + prog.name + ")", at);
     }
     return true;
 }
