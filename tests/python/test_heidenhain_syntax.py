@@ -85,3 +85,16 @@ def test_labels_by_name():
 def test_sgn_in_q_formulas():
     text = "0 BEGIN PGM Q MM\n1 Q1 = SGN -5\n2 Q2 = SGN(0) + SGN 3 * 2\n3 L X+Q1 Y+Q2 R0 FMAX\n4 END PGM Q MM\n"
     assert ends(run(text)) == [(-1, 2, 0)]
+
+
+def test_a_long_comment_wrapped_with_a_tilde():
+    # Fusion 360 wraps long comment lines with '~'; the next line is more of the comment.
+    text = """0  BEGIN PGM m8_tap_up MM
+1  ;  description: This machine has YX axis on the Table and Z axis on the~
+ Head
+2  * - a structure block that goes on~
+ over two lines
+3  L X+1 Y+2 R0 FMAX
+4  END PGM m8_tap_up MM
+"""
+    assert ends(run(text)) == [(1, 2, 0)]

@@ -32,13 +32,17 @@ bool spaced_address(std::string_view k) {
 class LineLexer {
 public:
     // `continued`: the line goes on with the block of the line before, which ended with '~'
-    // (a cycle definition's parameters, one a line).
-    LineLexer(std::string_view line, int line_no, Program& prog, bool continued = false)
-        : s_(line), line_(line_no), prog_(prog), continued_(continued) {}
+    // (a cycle definition's parameters, one a line; or a long comment wrapped: `in_comment`).
+    LineLexer(std::string_view line, int line_no, Program& prog, bool continued = false, bool in_comment = false)
+        : s_(line), line_(line_no), prog_(prog), continued_(continued), in_comment_(in_comment) {}
 
     void run() {
         skip();
         if (continued_) {
+            if (in_comment_ && !cycle_parameter_next()) {  // the rest of a wrapped comment
+                prog_.add_comment({std::string(s_.substr(i_)), col()});
+                return;
+            }
             words();
             return;
         }
@@ -102,6 +106,15 @@ private:
     }
 
     int col() const { return static_cast<int>(i_) + 1; }
+    bool cycle_parameter_next() const {  // Q200=...
+        std::size_t j = i_;
+        if (j >= s_.size() || ascii_upper(s_[j]) != 'Q') return false;
+        ++j;
+        const std::size_t digits = j;
+        while (j < s_.size() && ascii_digit(s_[j])) ++j;
+        while (j < s_.size() && blank(s_[j])) ++j;
+        return j > digits && j < s_.size() && s_[j] == '=';
+    }
     // After CALL PGM comes a file name (SUB1, PART.H, TNC:\DIR\SUB.H), after BEGIN PGM and
     // END PGM the program's name (letters, digits, '.', '_', '-' in any order: 0TREF,
     // 11setup, contour-cut), not words.
@@ -251,16 +264,23 @@ private:
     std::size_t i_ = 0;
     int line_;
     Program& prog_;
-    bool continued_ = false;
+    bool continued_ = false, in_comment_ = false;
 };
 
-// A line ending in '~' (after its comment, as the TNC writes cycle definitions) goes on in
-// the next: the line without it, and whether it continues.
-std::pair<std::string_view, bool> continuation(std::string_view line) {
+// A line ending in '~' (after its comment, as the TNC writes cycle definitions, or inside a
+// long comment it wraps) goes on in the next: the line without it, whether it continues, and
+// whether it ended inside a comment.
+struct Continuation {
+    std::string_view line;
+    bool goes_on = false, in_comment = false;
+};
+Continuation continuation(std::string_view line) {
     std::size_t e = line.size();
     while (e > 0 && blank(line[e - 1])) --e;
-    if (e == 0 || line[e - 1] != '~') return {line, false};
-    return {line.substr(0, e - 1), true};
+    if (e == 0 || line[e - 1] != '~') return {line};
+    std::size_t first = 0;  // a structure block (after its number) is all comment
+    while (first < e && (blank(line[first]) || ascii_digit(line[first]))) ++first;
+    return {line.substr(0, e - 1), true, line.find(';') < e - 1 || line[first] == '*'};
 }
 
 bool is_blank_line(std::string_view l) {
@@ -328,7 +348,7 @@ Program parse(std::string_view text, std::string name, bool strict) {
     std::size_t pos = 0;
     int line_no = 0;
     bool ended = false;  // END PGM seen
-    bool continued = false;  // the line before ended with '~'
+    Continuation before;  // the line before: did it end with '~'
     const auto find = [&](char c, std::size_t from, std::size_t to) {  // `to` when not found
         const void* p = std::memchr(text.data() + from, c, to - from);
         return p ? static_cast<std::size_t>(static_cast<const char*>(p) - text.data()) : to;
@@ -347,10 +367,12 @@ Program parse(std::string_view text, std::string name, bool strict) {
         ++line_no;
         pos = nl + 1;
         if (!is_blank_line(line)) {
-            const bool goes_on = continued;
-            std::tie(line, continued) = continuation(line);
+            const bool goes_on = before.goes_on;
+            const Continuation now = continuation(line);
+            line = now.line;
             try {
-                LineLexer(line, line_no, prog, goes_on).run();
+                LineLexer(line, line_no, prog, goes_on, before.in_comment).run();
+                before = now;
                 check_path_words(prog.tokens(prog.blocks().back()), line_no);
             } catch (const ParseError& e) {
                 if (strict) throw;
