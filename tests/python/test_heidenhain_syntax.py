@@ -98,3 +98,23 @@ def test_a_long_comment_wrapped_with_a_tilde():
 4  END PGM m8_tap_up MM
 """
     assert ends(run(text)) == [(1, 2, 0)]
+
+
+def test_the_tolerance_cycle_is_noted_and_other_cycles_are_refused_by_number():
+    text = """0  BEGIN PGM T MM
+1  TOOL DEF 23 L+0 R+4
+2  TOOL CALL 23 Z S5000
+3  L  X+49  Y-15 R0 FMAX
+4  CYCL DEF 32.0 TOLERANCE
+5  CYCL DEF 32.1 T0.05
+6  CYCL DEF 32.2 HSC-MODE:0 TA0.5
+7  L  Z+19 FMAX
+8  END PGM T MM
+"""
+    res = run(text)
+    assert ends(res) == [(49, -15, 0), (49, -15, 19)]
+    notes = [(d.code, d.line) for d in res.diagnostics]
+    assert notes == [("blending_not_modelled", 5)]
+    with pytest.raises(tc.ProgramError) as e:
+        run(text.replace("7  L  Z+19 FMAX", "7  CYCL DEF 200 DRILLING ~\n Q200=+5 ;SET-UP CLEARANCE"))
+    assert str(e.value.message) == "CYCL DEF 200 DRILLING is not supported by toolcomp yet" and e.value.line == 8

@@ -311,12 +311,30 @@ bool Interp::execute(Tokens t) {
         departure(t);
     } else if (k0 == "LN") {
         surface_line(t);
-    } else if (k0 == "CYCL")
-        fail(code::unsupported_block, std::string(k0) + (k1.empty() ? "" : " " + std::string(k1)) + " is not supported by toolcomp yet",
-             t[0].column);
-    else
+    } else if (k0 == "CYCL") {
+        cycle(t);
+    } else
         fail(code::unknown_block, "Unknown block '" + std::string(k0) + "'", t[0].column);
     return true;
+}
+
+// CYCL DEF 32 TOLERANCE (32.0, 32.1 T.., 32.2 HSC-MODE TA): a tolerance of the executed
+// path, accepted with a note; every other cycle is refused by its number.
+void Interp::cycle(Tokens t) {
+    const bool def = t.size() >= 3 && t[1].is("DEF") && t[2].key.empty() && t[2].has_value;
+    if (def && t[2].value >= 32 && t[2].value < 33) {
+        if (!tolerance_noted_)
+            diags_.push_back({code::blending_not_modelled, Severity::info,
+                              "CYCL DEF 32 TOLERANCE is a tolerance of the executed path: toolcomp returns the "
+                              "programmed path",
+                              {line_, t[0].column}});
+        tolerance_noted_ = true;
+        return;
+    }
+    std::string what = "CYCL";
+    for (std::size_t i = 1; i < t.size() && i < 4 && (t[i].key.empty() ? t[i].has_value : true); ++i)
+        what += " " + (t[i].key.empty() ? shortest_number(t[i].value) : t[i].key);
+    fail(code::unsupported_block, what + " is not supported by toolcomp yet", t[0].column);
 }
 
 Interp::Tokens Interp::resolve(Tokens t, std::vector<Token>& scratch) const {

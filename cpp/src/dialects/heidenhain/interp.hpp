@@ -43,6 +43,8 @@ private:
     bool block_delete_ = false;
     std::size_t progress_every_ = 1 << 16;
     using Tokens = std::span<const Token>;
+    bool tolerance_noted_ = false;  // CYCL DEF 32's note given
+    void cycle(Tokens t);           // CYCL DEF / CYCL CALL
     // The block's tokens with Q parameters in words replaced by values (in `scratch` when
     // there are any, else `t` itself).
     Tokens resolve(Tokens t, std::vector<Token>& scratch) const;

@@ -168,10 +168,14 @@ private:
         Token& t = prog_.new_token();  // filled in place; a failure drops the block
         t.column = col();
         while (i_ < s_.size() && (ascii_alpha(s_[i_]) || s_[i_] == '.' || s_[i_] == ':' ||
-                                  s_[i_] == '_')) {
-            // A '.' belongs to the key only between letters (CUR.TIME); "0.1" is a number.
-            if (s_[i_] == '.' && (t.key.empty() || i_ + 1 >= s_.size() || !ascii_alpha(s_[i_ + 1])))
+                                  s_[i_] == '_' || s_[i_] == '-')) {
+            // A '.' or '-' belongs to the key only between letters (CUR.TIME, HSC-MODE); "0.1" is
+            // a number, "X-5" a word with its sign.
+            if ((s_[i_] == '.' || s_[i_] == '-') &&
+                (t.key.empty() || i_ + 1 >= s_.size() || !ascii_alpha(s_[i_ + 1])))
                 break;
+            if (s_[i_] == '-' && ascii_upper(s_[i_ + 1]) == 'Q' && i_ + 2 < s_.size() && ascii_digit(s_[i_ + 2]))
+                break;  // Y-Q1: the sign of a Q parameter
             t.key.push_back(ascii_upper(s_[i_]));
             ++i_;
         }
