@@ -45,14 +45,64 @@ def test_appr_ct_with_compensation_on_is_a_connecting_element():
     assert (p.side[appr] == 1).all()
 
 
-@pytest.mark.parametrize("cc, column", [("CC X+10 Z+5", 11), ("CC IX+10 IZ+5", 12), ("CC Z+5", 6)])
-def test_a_pole_outside_the_working_plane_is_refused(cc, column):
-    # CC X.. Z.. under the Z tool axis: the TNC cuts the following C in the ZX plane (as
-    # Fusion 360 writes lead-in arcs); drawing it in XY moved the tool in Y without a word.
-    text = f"0 BEGIN PGM A MM\n1 L X+0 Y+0 Z+10 R0 FMAX\n2 {cc}\n3 C X+20 Z+5 DR+ F100\n4 END PGM A MM\n"
+def test_a_pole_in_the_zx_plane_moves_the_arc_there():
+    # Fusion 360's facing lead-in and lead-out (TOOL CALL Z): CC X.. Z.. puts the pole in the
+    # ZX plane and CP turns about it there, Y staying. From (X491, Z197) about (X483, Z197),
+    # +90 degrees counter-clockwise in (Z, X): down to (X483, Z189); the lead-out from
+    # (X-40, Z189) about (X-40, Z197): up to (X-48, Z197).
+    text = """0  BEGIN PGM face-189 MM
+1  TOOL DEF 23 L+0 R+40
+2  TOOL CALL 23 Z S5000
+3  L  X+491  Y-15 R0 FMAX
+4  L  Z+197 FMAX
+5  CC  X+483  Z+197
+6  CP IPA+90 DR+ F1000
+7  L  X+479  Z+189
+8  L  X-40
+9  CC  X-40  Z+197
+10 CP IPA+90 DR+
+11 L  X-48  Z+231 FMAX
+12 END PGM face-189 MM
+"""
+    res = tc.run(tc.Program.parse(text, dialect="heidenhain"))
+    p = res.nominal
+    arcs = np.flatnonzero(p.kind == tc.ARC_CCW)
+    np.testing.assert_allclose(p.end[arcs], [[483, -15, 189], [-48, -15, 197]], atol=1e-12)
+    np.testing.assert_allclose(p.center[arcs], [[483, -15, 197], [-40, -15, 197]], atol=1e-12)
+    np.testing.assert_allclose(p.tool_axis[arcs], [[0, 0, 1], [0, 0, 1]])  # the tool axis stays Z
+    # the first arc's points lie in the ZX plane 8 mm from the pole, on the side of +X, -Z
+    pts, seg = p.sample(0.001)
+    on_arc = pts[seg == arcs[0]]
+    np.testing.assert_allclose(on_arc[:, 1], -15, atol=1e-12)
+    np.testing.assert_allclose(np.hypot(on_arc[:, 0] - 483, on_arc[:, 2] - 197), 8, atol=1e-9)
+    assert np.all(on_arc[:, 0] >= 483 - 1e-9) and np.all(on_arc[:, 2] <= 197 + 1e-9)
+
+
+def test_a_pole_in_the_yz_plane():
+    # CC Y+14 Z-30 from (X-2, Y16, Z-30): CP IPA-90 DR- in (Y, Z) to (Y14, Z-32), X staying.
+    text = """0 BEGIN PGM A MM
+1 L X-2 Y+16 Z-30 R0 FMAX
+2 CC Y+14 Z-30
+3 CP IPA-90 DR- F1000
+4 END PGM A MM
+"""
+    p = tc.run(tc.Program.parse(text, dialect="heidenhain")).nominal
+    assert p.kind[-1] == tc.ARC_CW
+    np.testing.assert_allclose(p.end[-1], [-2, 14, -32], atol=1e-12)
+    np.testing.assert_allclose(p.center[-1], [-2, 14, -30], atol=1e-12)
+
+
+@pytest.mark.parametrize("body, code", [
+    ("2 CC Z+5\n3 C X+20 Z+5 DR+ F100", "cc_outside_plane"),        # one axis, outside the plane
+    ("2 CC X+1 Y+2 Z+3\n3 C X+2 DR+ F100", "cc_outside_plane"),     # three axes
+    ("2 L X+0 Y+0 RL F100\n3 CC X+10 Z+5\n4 C X+20 Z+5 DR+", "comp_plane"),  # RL with an arc in ZX
+    ("2 CC X+10 Z+10\n3 CP IPA+90 DR+ F100\n4 RND R1\n5 L X+30", "unsupported_block"),
+])
+def test_what_a_pole_in_another_plane_does_not_allow(body, code):
+    text = f"0 BEGIN PGM A MM\n1 TOOL DEF 1 L+0 R+2\n1 TOOL CALL 1 Z\n1 L X+0 Y+0 Z+10 R0 FMAX\n{body}\n9 END PGM A MM\n"
     with pytest.raises(tc.ProgramError) as e:
         tc.run(tc.Program.parse(text, dialect="heidenhain"))
-    assert (e.value.code, e.value.line, e.value.column) == ("cc_outside_plane", 3, column)
+    assert e.value.code == code
 
 
 def test_a_pole_in_the_plane_still_runs():

@@ -172,28 +172,68 @@ void Interp::put(Motion m) {
     pending_ = m;
 }
 
+// CC: the pole, in the plane of the two axes it names (CC X.. Y.. under TOOL CALL Z; CC X..
+// Z.. the ZX plane and CC Y.. Z.. the YZ plane, where CAM posts put lead-in and lead-out
+// arcs): the C, CP, LP and CTP blocks about it move in that plane. One axis: the working
+// plane, the other coordinate where the tool is.
 void Interp::circle_centre(Tokens t) {
-    auto ax = axes(plane_);
     static constexpr std::string_view names[3] = {"X", "Y", "Z"};
     static constexpr std::string_view inc[3] = {"IX", "IY", "IZ"};
-    Vec2 c = plane2(pos_);
-    for (const Token& k : t) {
-        // A pole in another plane (CC X.. Z.. under TOOL CALL Z, as CAM posts write lead-in
-        // arcs in the ZX plane) makes the TNC cut the following circle in that plane: refused
-        // until circles out of the working plane are read, rather than drawn in the plane.
+    bool named[3] = {false, false, false};
+    for (const Token& k : t)
+        for (int i = 0; i < 3; ++i) named[i] = named[i] || k.key == names[i] || k.key == inc[i];
+    Plane p = plane_;
+    if (named[0] + named[1] + named[2] == 2) p = !named[2] ? Plane::xy : !named[1] ? Plane::zx : Plane::yz;
+    const auto ax = axes(p);
+    for (const Token& k : t)
         if (k.key == names[ax.c] || k.key == inc[ax.c])
             fail(code::cc_outside_plane,
-                 "CC " + std::string(k.key) + ": a pole outside the working plane (" + std::string(names[ax.a]) +
-                     std::string(names[ax.b]) + ") sets circles in another plane, which toolcomp does not read yet",
+                 "CC " + std::string(k.key) + ": the pole names " +
+                     (named[0] + named[1] + named[2] == 3 ? "three axes" : "one axis outside the working plane") +
+                     "; name the two axes of the pole's plane",
                  k.column);
+    Vec2 c = in_plane(pos_, p);
+    for (const Token& k : t)
         for (int i : {ax.a, ax.b}) {
-            const double base = i == ax.a ? pos_[ax.a] : pos_[ax.b];
             double& v = i == ax.a ? c.x() : c.y();
             if (k.key == names[i] && k.has_value) v = k.value;
-            if (k.key == inc[i] && k.has_value) v = base + k.value;
+            if (k.key == inc[i] && k.has_value) v = pos_[i] + k.value;
         }
-    }
     pole_ = c;
+    pole_plane_ = p;
+}
+
+// A block about a pole outside the working plane moves in the pole's plane; the tool axis
+// stays. Radius compensation acts in the working plane only: there it is refused.
+class PolePlane {
+public:
+    PolePlane(Interp& in, std::span<const Token> t) : in_(in) {
+        if (in.pole_plane_ == in.plane_) return;
+        if (in.side_ != 0)
+            in.fail(code::comp_plane, "RL/RR with " + std::string(t[0].key) +
+                                          " about a pole outside the working plane: not supported by toolcomp",
+                    t[0].column);
+        in.working_plane_ = in.plane_;
+        in.plane_ = in.pole_plane_;
+    }
+    ~PolePlane() {
+        if (!in_.working_plane_) return;
+        in_.plane_ = *in_.working_plane_;
+        in_.working_plane_.reset();
+    }
+    PolePlane(const PolePlane&) = delete;
+    PolePlane& operator=(const PolePlane&) = delete;
+
+private:
+    Interp& in_;
+};
+
+// RND, CHF and CT join elements in the working plane: next to one in another plane they are
+// refused.
+void Interp::refuse_other_plane(Tokens t) const {
+    if (pending_ && pending_->plane != plane_)
+        fail(code::unsupported_block, std::string(t[0].key) + " next to an arc outside the working plane: not supported by toolcomp",
+             t[0].column);
 }
 
 namespace {
@@ -224,6 +264,7 @@ static void check_arc_comp(std::span<const Token> t, int side, const ControlProf
 
 void Interp::arc_about_pole(Tokens t) {
     if (!pole_) fail(code::no_circle_centre, "CIRCLE CENTER UNDEFINED", t[0].column);
+    const PolePlane in_pole_plane(*this, t);
     check_arc_comp(t, side_, profile_, line_);
     modal_words(t, 1);
     const int dir = arc_direction(t);
@@ -268,6 +309,9 @@ void Interp::arc_radius(Tokens t) {
 
 void Interp::arc_tangential(Tokens t, bool polar) {
     if (polar && !pole_) fail(code::no_circle_centre, "CIRCLE CENTER UNDEFINED", t[0].column);
+    refuse_other_plane(t);
+    std::optional<PolePlane> in_pole_plane;
+    if (polar) in_pole_plane.emplace(*this, t);
     check_arc_comp(t, side_, profile_, line_);
     modal_words(t, 1);
     if (plane_moves_ < 1 || !pending_)
@@ -308,6 +352,7 @@ Vec3 Interp::polar_end(Tokens t) const {
 
 void Interp::polar_line(Tokens t) {
     if (!pole_) fail(code::no_circle_centre, "CIRCLE CENTER UNDEFINED", t[0].column);
+    const PolePlane in_pole_plane(*this, t);
     modal_words(t, 1);
     const Vec3 end = polar_end(t);
     if (end == pos_) return;
@@ -319,6 +364,7 @@ void Interp::polar_line(Tokens t) {
 
 void Interp::polar_arc(Tokens t) {
     if (!pole_) fail(code::no_circle_centre, "CIRCLE CENTER UNDEFINED", t[0].column);
+    const PolePlane in_pole_plane(*this, t);
     check_arc_comp(t, side_, profile_, line_);
     modal_words(t, 1);
     const int dir = arc_direction(t);
@@ -411,6 +457,7 @@ void Interp::corner_feed(Tokens t) {
 }
 
 void Interp::rounding(Tokens t) {
+    refuse_other_plane(t);
     corner_feed(t);
     const auto r = number(t, "R");
     if (!r || *r <= 0) fail(code::rounding_radius, "RND needs a radius R > 0", t[0].column);
@@ -420,6 +467,7 @@ void Interp::rounding(Tokens t) {
 }
 
 void Interp::chamfer(Tokens t) {
+    refuse_other_plane(t);
     corner_feed(t);
     double n = t[0].has_value ? t[0].value : (t.size() > 1 && t[1].key.empty() && t[1].has_value ? t[1].value : 0);
     if (n <= 0) fail(code::chamfer_length, "CHF needs a length > 0", t[0].column);

@@ -158,7 +158,7 @@ Motion Interp::motion_to(MotionKind kind, const Vec3& end) const {
         m.radius.side = static_cast<std::int8_t>(-m.radius.side);
     }
     m.tool_axis = Vec3::Zero();
-    m.tool_axis[axes(plane_).c] = 1;
+    m.tool_axis[axes(working_plane_.value_or(plane_)).c] = 1;
     m.radius.corner = corner_;
     m.radius.open_corner = open_corner_;
     m.radius.lookahead = static_cast<std::int8_t>(lookahead_);

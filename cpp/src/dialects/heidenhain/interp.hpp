@@ -138,6 +138,12 @@ private:
     Vec3 pos_ = Vec3::Zero();
     std::array<double, 3> abc_{0, 0, 0};
     std::optional<Vec2> pole_;
+    Plane pole_plane_ = Plane::xy;  // the plane of the axes CC named (CC X.. Z..: ZX)
+    // While a block moves about a pole outside the working plane: the working plane (the tool
+    // axis), plane_ being the pole's for that block (PolePlane in contour.cpp).
+    std::optional<Plane> working_plane_;
+    friend class PolePlane;
+    void refuse_other_plane(Tokens t) const;  // RND / CHF / CT next to an element in another plane
     double feed_ = 0;  // mm/min
     bool rapid_ = false;
     int side_ = 0;     // 0 R0, +1 RL, -1 RR
