@@ -118,3 +118,31 @@ def test_the_tolerance_cycle_is_noted_and_other_cycles_are_refused_by_number():
     with pytest.raises(tc.ProgramError) as e:
         run(text.replace("7  L  Z+19 FMAX", "7  CYCL DEF 200 DRILLING ~\n Q200=+5 ;SET-UP CLEARANCE"))
     assert str(e.value.message) == "CYCL DEF 200 DRILLING is not supported by toolcomp yet" and e.value.line == 8
+
+
+def test_m140_retracts_along_the_tool_axis():
+    # The machine's Z travel ends at machine Z+100; program zero lies at machine (-300, -200, -400);
+    # tool 2 is 50 long. MB MAX: the spindle to machine Z+100, the tip (program) at
+    # 100 + 400 - 50 = 450. MB 30: 30 up from where the block starts, before its own move.
+    text = """0  BEGIN PGM M140 MM
+1  TOOL DEF 2 L+50 R+3.5
+2  TOOL CALL 2 Z S1247
+3  L M140 MB MAX
+4  L  X+13  Y-13.5 R0 FMAX
+5  L  Z+15 R0 FMAX
+6  L Z+5 F100 M140 MB 30
+7  L M140 MB MAX
+8  END PGM M140 MM
+"""
+    m = tc.Machine("heidenhain", "mill", "vmc")
+    m.work_origin = (-300, -200, -400)
+    m.travel = [(-600, 0), (-400, 0), (-500, 100)]
+    res = run(text, machine=m)
+    p = res.nominal
+    assert [int(l) for l in p.line] == [4, 5, 6, 7, 7, 8]
+    np.testing.assert_allclose(p.end, [[300, 200, 450], [13, -13.5, 450], [13, -13.5, 15], [13, -13.5, 45],
+                                       [13, -13.5, 5], [13, -13.5, 450]], atol=1e-12)
+    assert list(p.kind) == [tc.RAPID, tc.RAPID, tc.RAPID, tc.RAPID, tc.LINE, tc.RAPID]
+    with pytest.raises(tc.ProgramError) as e:  # no machine: no travel to retract to
+        run(text)
+    assert e.value.code == "travel_limit" and "M140 MB MAX" in str(e.value.message) and e.value.line == 4

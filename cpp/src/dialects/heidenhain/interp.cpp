@@ -124,6 +124,9 @@ void Interp::m_function(Tokens t, const Token& k) {
         case 128: m128_ = true; break;
         case 129: m128_ = false; break;
         case 2: case 30: ended_ = true; break;  // end of the program (after this block's move)
+        case 140:  // retraction along the tool axis (line(): MB)
+            if (!t[0].is("L")) fail(code::bad_word, "M140 acts in L blocks only (toolcomp)", k.column);
+            break;
         case 0: case 1: case 3: case 4: case 5: case 6: case 8: case 9: case 13: case 14:
         case 89: case 90: case 99:
             break;  // machine functions without a geometric effect on the path
@@ -211,6 +214,7 @@ void Interp::tool_call(Tokens t) {
     }
     // Without a tool number the tool in the spindle stays (S, F, the axis or deltas change):
     // its data again, and the deltas of the TOOL CALL before unless this block gives new ones.
+    axis_called_ = true;
     const bool same_tool = number_ < 0;
     if (same_tool) number_ = tool_;
     const double dl = number(t, "DL").value_or(same_tool ? call_dl_ : 0);
@@ -256,6 +260,7 @@ void Interp::tool_call(Tokens t) {
 void Interp::line(Tokens t) {
     paraxial_ = 0;
     modal_words(t, 1);
+    retract(t);
     Vec3 end = end_point(t, 1);
     machine_datum_end(t, end);
     if (paraxial_ != 0) {

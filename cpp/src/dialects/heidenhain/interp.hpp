@@ -143,7 +143,9 @@ private:
     // axis), plane_ being the pole's for that block (PolePlane in contour.cpp).
     std::optional<Plane> working_plane_;
     friend class PolePlane;
-    void refuse_other_plane(Tokens t) const;  // RND / CHF / CT next to an element in another plane
+    void refuse_other_plane(Tokens t) const;
+    void retract(Tokens t);     // M140 MB (interp_machine.cpp)
+    bool axis_called_ = false;  // a TOOL CALL gave the tool axis  // RND / CHF / CT next to an element in another plane
     double feed_ = 0;  // mm/min
     bool rapid_ = false;
     int side_ = 0;     // 0 R0, +1 RL, -1 RR

@@ -38,6 +38,38 @@ void Interp::machine_datum_end(Tokens t, Vec3& end) const {
             }
 }
 
+// M140 MB n / MB MAX: before the rest of its block, the tool retracts along the tool axis, away
+// from the workpiece, at rapid: by n, or to the end of the machine's travel (its software
+// limit switch, from the machine file's [travel]: machine coordinates of the spindle).
+void Interp::retract(Tokens t) {
+    const Token* mb = find(t, "MB");
+    bool m140 = false;
+    for (const Token& k : t) m140 = m140 || (k.is("M") && k.has_value && k.value == 140);
+    if (!mb && !m140) return;
+    if (!mb) fail(code::bad_word, "M140 needs MB (a distance or MAX)", t[0].column);
+    if (!m140) fail(code::bad_word, "MB without M140", mb->column);
+    if (!axis_called_) fail(code::tool_call, "M140 before any TOOL CALL: no tool axis to retract along", mb->column);
+    if (side_ != 0) fail(code::comp_plane, "M140 with RL/RR: not supported by toolcomp", mb->column);
+    const int c = axes(plane_).c;
+    Vec3 end = pos_;
+    if (mb->text == "MAX") {
+        const double max = machine_ ? machine_->travel[static_cast<std::size_t>(c)].max : INFINITY;
+        if (!std::isfinite(max))
+            fail(code::travel_limit,
+                 "M140 MB MAX retracts to the end of the machine's travel: give the machine (a machine file with the " +
+                     std::string(1, "XYZ"[c]) + " travel in [travel])",
+                 mb->column);
+        end[c] = std::max(pos_[c], max / unit_ - work_origin_[c] - tlo_[c]);
+    } else {
+        if (!mb->has_value || mb->value < 0) fail(code::bad_word, "M140 MB needs a distance >= 0 or MAX", mb->column);
+        end[c] += mb->value;
+    }
+    if (end == pos_) return;
+    Motion m = motion_to(MotionKind::rapid, end);
+    put(m);
+    pos_ = end;
+}
+
 // TOOL CALL of a tool on a machine with a tool change position: the axes it names go there
 // at rapid first, with the tool in the spindle (the position is the spindle's).
 void Interp::to_tool_change_position() {

@@ -23,7 +23,7 @@ bool spaced_address(std::string_view k) {
     static constexpr std::string_view kAddresses[] = {"X",  "Y",  "Z",  "A",  "B",   "C",   "U",  "V",  "W",
                                                       "IX", "IY", "IZ", "IA", "IB",  "IC",  "IU", "IV", "IW",
                                                       "F",  "S",  "R",  "DR", "PR",  "PA",  "IPR", "IPA",
-                                                      "CCA", "LEN"};
+                                                      "CCA", "LEN", "MB"};
     for (std::string_view a : kAddresses)
         if (k == a) return true;
     return false;
@@ -183,6 +183,12 @@ private:
             skip();
             i_ += 3;
             t.key = "FMAX";
+            return;
+        }
+        if (t.is("MB") && word_after_blanks("MAX")) {  // M140 MB MAX: the retraction to the travel's end
+            skip();
+            i_ += 3;
+            t.text = "MAX";
             return;
         }
         if (t.is("FQ") && i_ < s_.size() && ascii_digit(s_[i_])) {  // FQ58: the feed in Q58

@@ -72,6 +72,7 @@ std::optional<Kind> kind_of(const Token& t) {
     }
     if (k == "F" || k == "FMAX") return Kind{kFeed, 8};
     if (k == "M" || k == "LA") return Kind{kM, -1};
+    if (k == "MB") return Kind{kM, 20};  // M140 MB
     if (k == "PR" || k == "IPR") return Kind{kPolar, 9};
     if (k == "PA" || k == "IPA") return Kind{kPolar, 10};
     if (k == "DR") return Kind{kDir, 11};
@@ -109,7 +110,7 @@ void check_path_words(std::span<const Token> t, int line) {
         if (t[0].key == g.name) f = &g;
     if (!f) return;
     auto fn = [&] { return f->first == 2 && t.size() > 1 ? t[0].key + " " + t[1].key : t[0].key; };  // for messages
-    std::array<int, 20> seen{};
+    std::array<int, 21> seen{};
     for (std::size_t i = f->first; i < t.size(); ++i) {
         const Token& k = t[i];
         if (const char* why = unsupported(k.key))
