@@ -44,7 +44,8 @@ void Interp::machine_datum_end(Tokens t, Vec3& end) const {
 void Interp::retract(Tokens t) {
     const Token* mb = find(t, "MB");
     bool m140 = false;
-    for (const Token& k : t) m140 = m140 || (k.is("M") && k.has_value && k.value == 140);
+    const bool builder = machine_ && machine_->m_code(140);  // the machine's own M140 instead
+    for (const Token& k : t) m140 = m140 || (k.is("M") && k.has_value && k.value == 140 && !builder);
     if (!mb && !m140) return;
     if (!mb) fail(code::bad_word, "M140 needs MB (a distance or MAX)", t[0].column);
     if (!m140) fail(code::bad_word, "MB without M140", mb->column);
