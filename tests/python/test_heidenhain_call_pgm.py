@@ -48,17 +48,13 @@ def test_call_pgm_recursion_is_bounded(tmp_path):
     assert e.value.line == 2
 
 
-def test_an_error_in_a_called_program_names_that_file(tmp_path):
-    (tmp_path / "SUB.h").write_text("0 BEGIN PGM SUB MM\n1 FN 4: Q1 = +1 DIV +0\n2 END PGM SUB MM\n")
+@pytest.mark.parametrize("sub, error, line", [
+    ("1 FN 4: Q1 = +1 DIV +0\n2 END PGM SUB MM\n", tc.ProgramError, 2),       # when it runs
+    ("1 L X+5 R0 FMAX\n2 L X+10 ZZ+5\n3 END PGM SUB MM\n", tc.ParseError, 3),  # when it is read
+])
+def test_an_error_in_a_called_program_names_that_file(tmp_path, sub, error, line):
+    (tmp_path / "SUB.h").write_text("0 BEGIN PGM SUB MM\n" + sub)
     prog = tc.Program.parse("0 BEGIN PGM M MM\n1 CALL PGM SUB\n2 END PGM M MM\n", dialect="heidenhain")
-    with pytest.raises(tc.ProgramError) as e:
+    with pytest.raises(error) as e:
         tc.run(prog, search_path=[tmp_path])
-    assert e.value.line == 2 and pathlib.Path(e.value.file).name == "SUB.h"
-
-
-def test_a_syntax_error_in_a_called_program_names_that_file(tmp_path):
-    (tmp_path / "SUB.h").write_text("0 BEGIN PGM SUB MM\n1 L X+5 R0 FMAX\n2 L X+10 ZZ+5\n3 END PGM SUB MM\n")
-    prog = tc.Program.parse("0 BEGIN PGM M MM\n1 CALL PGM SUB\n2 END PGM M MM\n", dialect="heidenhain")
-    with pytest.raises(tc.ParseError) as e:
-        tc.run(prog, search_path=[tmp_path])
-    assert e.value.line == 3 and pathlib.Path(e.value.file).name == "SUB.h"
+    assert e.value.line == line and pathlib.Path(e.value.file).name == "SUB.h"
