@@ -146,3 +146,18 @@ def test_m140_retracts_along_the_tool_axis():
     with pytest.raises(tc.ProgramError) as e:  # no machine: no travel to retract to
         run(text)
     assert e.value.code == "travel_limit" and "M140 MB MAX" in str(e.value.message) and e.value.line == 4
+
+
+def test_conditional_jumps_to_named_labels():
+    # FN 9: IF Q1 EQU 0 GOTO LBL "SKIP": the move to X+5 is jumped over while Q1 is 0.
+    text = """0 BEGIN PGM J MM
+1 Q1 = 0
+2 L X+1 R0 FMAX
+3 FN 9: IF +Q1 EQU +0 GOTO LBL "SKIP"
+4 L X+5 FMAX
+5 LBL "SKIP"
+6 L Y+2 FMAX
+7 END PGM J MM
+"""
+    assert ends(run(text)) == [(1, 0, 0), (1, 2, 0)]
+    assert ends(run(text.replace("Q1 = 0", "Q1 = 1"))) == [(1, 0, 0), (5, 0, 0), (5, 2, 0)]

@@ -478,7 +478,7 @@ bool Interp::run_blocks(const Program& prog, int depth) {
                 check_q(*r.assign, t[0].column);
                 q_[*r.assign] = r.value;
             }
-            pc = r.jump ? label(std::to_string(*r.jump), t[0]) : pc + 1;
+            pc = r.jump ? label(*r.jump, t[0]) : pc + 1;
             continue;
         }
         if (k0 == "CALL" && t.size() >= 2 && t[1].is("PGM")) {

@@ -35,6 +35,18 @@ public:
         }
         return sign * atom_value();
     }
+    // A label: a number (5) or a name in quotes ("END"), as the interpreter keys them.
+    std::string label() {
+        skip();
+        if (i_ < s_.size() && s_[i_] == '"') {
+            const std::size_t end = s_.find('"', i_ + 1);
+            if (end == std::string_view::npos) throw std::invalid_argument("unclosed label name");
+            std::string name(s_.substr(i_, end - i_ + 1));
+            i_ = end + 1;
+            return name;
+        }
+        return std::to_string(integer());
+    }
     std::string word() {
         skip();
         std::string w;
@@ -257,7 +269,7 @@ QResult run_statement(std::string_view text, const QLookup& q) {
             static const char* ops[4] = {"EQU", "NE", "GT", "LT"};
             if (op != ops[fn - 9]) throw std::invalid_argument("FN " + std::to_string(fn) + " needs " + ops[fn - 9]);
             if (p.word() != "GOTO" || p.word() != "LBL") throw std::invalid_argument("GOTO LBL expected");
-            const int label = p.integer();
+            const std::string label = p.label();
             const bool cond = fn == 9 ? a == b : fn == 10 ? a != b : fn == 11 ? a > b : a < b;
             if (cond) r.jump = label;
             break;

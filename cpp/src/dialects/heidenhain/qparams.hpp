@@ -18,7 +18,7 @@ double evaluate_formula(std::string_view text, const QLookup& q);
 struct QResult {
     std::optional<int> assign;   // Q number to set
     double value = 0;
-    std::optional<int> jump;     // label to go to (FN 9..12 when the condition holds)
+    std::optional<std::string> jump;  // label to go to (FN 9..12 when the condition holds): 5 or "NAME"
     std::optional<int> error;    // FN 14: error number
 };
 
