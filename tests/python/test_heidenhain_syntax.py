@@ -161,3 +161,37 @@ def test_conditional_jumps_to_named_labels():
 """
     assert ends(run(text)) == [(1, 0, 0), (1, 2, 0)]
     assert ends(run(text.replace("Q1 = 0", "Q1 = 1"))) == [(1, 0, 0), (5, 0, 0), (5, 2, 0)]
+
+
+def test_fn18_sysread_reads_the_controls_data():
+    # TNC groups: ID10 NR1 units; ID20 NR1 tool, NR3 axis (2 = Z); ID50 NR1/2/5 table L, R, DR of
+    # tool IDX; ID60 NR4 the TOOL CALL's DL; ID200 NR1/NR2 the active radius and length with
+    # the oversizes (3 + 0.1 - 0.05, 50 + 0.2); ID210 NR4 scale 1; ID270 NR1 IDX3 the position.
+    text = """0 BEGIN PGM S MM
+1 TOOL CALL 2 Z S2000 DL+0.2 DR+0.1
+2 L X+10 Y+5 Z+7 R0 FMAX
+3 FN 18: SYSREAD Q1 = ID10 NR1
+4 FN 18: SYSREAD Q2 = ID20 NR1
+5 FN18: SYSREAD Q3 = ID20 NR3
+6 FN 18: SYSREAD Q4 = ID50 NR1 IDX2
+7 FN 18: SYSREAD Q5 = ID50 NR2 IDX2
+8 FN 18: SYSREAD Q6 = ID50 NR5 IDX2
+9 FN 18: SYSREAD Q7 = ID60 NR4
+10 FN 18: SYSREAD Q8 = ID200 NR1
+11 FN 18: SYSREAD Q9 = ID200 NR2
+12 FN 18: SYSREAD Q10 = ID210 NR4 IDX1
+13 FN 18: SYSREAD Q11 = ID270 NR1 IDX3 ;the tool's Z
+14 L X+Q1 Y+Q2 Z+Q3 FMAX
+15 L X+Q4 Y+Q5 Z+Q6 FMAX
+16 L X+Q7 Y+Q8 Z+Q9 FMAX
+17 L X+Q10 Y+Q11 FMAX
+18 END PGM S MM
+"""
+    tools = tc.ToolTable()
+    tools.set(tc.Tool(2, edges=[tc.CuttingEdge(radius=3.0, radius_wear=-0.05, length=[0.0, 0.0, 50.0])]))
+    res = run(text, tools=tools)
+    np.testing.assert_allclose(res.nominal.end[1:], [[0, 2, 2], [50, 3, -0.05], [0.2, 3.05, 50.2], [1, 7, 50.2]],
+                               atol=1e-12)
+    with pytest.raises(tc.ProgramError) as e:
+        run(text.replace("ID210 NR4 IDX1", "ID320 NR1 IDX0"), tools=tools)
+    assert e.value.code == "unsupported_parameter" and "ID320 NR1" in str(e.value.message)

@@ -284,6 +284,15 @@ void Interp::line(Tokens t) {
     pos_ = end;
 }
 
+namespace {
+// FN 18: (or FN18:) SYSREAD ...
+bool is_sysread(std::string_view text) {
+    std::size_t i = 2;
+    while (i < text.size() && text[i] == ' ') ++i;
+    return text.substr(i, 3) == "18:";
+}
+}  // namespace
+
 bool Interp::execute(Tokens t) {
     const std::string_view k0 = t[0].key;
     const std::string_view k1 = t.size() > 1 ? std::string_view(t[1].key) : std::string_view();
@@ -461,6 +470,11 @@ bool Interp::run_blocks(const Program& prog, int depth) {
                 returns.push_back(pc + 1);
                 pc = target;
             }
+            continue;
+        }
+        if (k0 == "FN" && is_sysread(t[0].text)) {
+            sysread(t[0]);
+            ++pc;
             continue;
         }
         if (k0 == "FN" || k0 == "Q=") {

@@ -143,9 +143,11 @@ private:
     // axis), plane_ being the pole's for that block (PolePlane in contour.cpp).
     std::optional<Plane> working_plane_;
     friend class PolePlane;
-    void refuse_other_plane(Tokens t) const;
+    void refuse_other_plane(Tokens t) const;  // RND / CHF / CT next to an element in another plane
     void retract(Tokens t);     // M140 MB (interp_machine.cpp)
-    bool axis_called_ = false;  // a TOOL CALL gave the tool axis  // RND / CHF / CT next to an element in another plane
+    bool axis_called_ = false;  // a TOOL CALL gave the tool axis
+    void sysread(const Token& statement);  // FN 18: SYSREAD (interp_sysread.cpp)
+    double system_datum(int id, int nr, int idx, int column) const;
     double feed_ = 0;  // mm/min
     bool rapid_ = false;
     int side_ = 0;     // 0 R0, +1 RL, -1 RR
