@@ -195,3 +195,30 @@ def test_fn18_sysread_reads_the_controls_data():
     with pytest.raises(tc.ProgramError) as e:
         run(text.replace("ID210 NR4 IDX1", "ID320 NR1 IDX0"), tools=tools)
     assert e.value.code == "unsupported_parameter" and "ID320 NR1" in str(e.value.message)
+
+
+def test_cycle_7_shifts_the_datum():
+    # The datum to X+50 Y+20: L X+10 Y+0 ends at (60, 20) from the preset; a pole CC X+0 Y+0 is
+    # at (50, 20); IX+5 moves the datum 5 further; X+0 Y+0 takes it back. The path stays
+    # measured from the preset; FN 18 ID270 reads the position from the shifted datum.
+    text = """0 BEGIN PGM D MM
+1 L X+0 Y+0 Z+0 R0 FMAX
+2 CYCL DEF 7.0 DATUM SHIFT
+3 CYCL DEF 7.1 X+50
+4 CYCL DEF 7.2 Y+20
+5 L X+10 Y+0 FMAX
+6 CC X+0 Y+0
+7 C X+0 Y+10 DR+ F100
+8 FN 18: SYSREAD Q1 = ID270 NR1 IDX2
+9 CYCL DEF 7.0 DATUM SHIFT
+10 CYCL DEF 7.1 IX+5
+11 L X+0 Y+Q1 FMAX
+12 CYCL DEF 7.0 DATUM SHIFT
+13 CYCL DEF 7.1 X+0
+14 CYCL DEF 7.2 Y+0
+15 L X+1 Y+1 FMAX
+16 END PGM D MM
+"""
+    res = run(text)
+    assert ends(res) == [(60, 20, 0), (50, 30, 0), (55, 30, 0), (1, 1, 0)]
+    np.testing.assert_allclose(res.nominal.center[1], [50, 20, 0])

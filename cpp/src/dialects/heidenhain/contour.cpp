@@ -196,7 +196,7 @@ void Interp::circle_centre(Tokens t) {
     for (const Token& k : t)
         for (int i : {ax.a, ax.b}) {
             double& v = i == ax.a ? c.x() : c.y();
-            if (k.key == names[i] && k.has_value) v = k.value;
+            if (k.key == names[i] && k.has_value) v = k.value + datum_shift_[i];
             if (k.key == inc[i] && k.has_value) v = pos_[i] + k.value;
         }
     pole_ = c;

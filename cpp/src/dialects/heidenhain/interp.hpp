@@ -44,6 +44,11 @@ private:
     std::size_t progress_every_ = 1 << 16;
     using Tokens = std::span<const Token>;
     bool tolerance_noted_ = false;  // CYCL DEF 32's note given
+    // CYCL DEF 7 DATUM SHIFT: where the program's datum lies from the preset (program units).
+    // Positions (the path's too) stay measured from the preset; a coordinate programmed
+    // absolutely is measured from the shifted datum.
+    Vec3 datum_shift_ = Vec3::Zero();
+    void datum_shift(Tokens t);
     void cycle(Tokens t);           // CYCL DEF / CYCL CALL
     // The block's tokens with Q parameters in words replaced by values (in `scratch` when
     // there are any, else `t` itself).

@@ -83,8 +83,8 @@ void Interp::sysread(const Token& statement) {
 }
 
 // The groups programs read: the units, the tool (its number, axis, table data, TOOL CALL
-// deltas, its active radius and length), the feed, the transformations (none are active in
-// toolcomp: rotation 0, no mirror, scale 1, datum shift 0), the travel limits of the machine
+// deltas, its active radius and length), the feed, the transformations (the datum shift of
+// cycle 7; rotation, mirror and scaling are refused, so 0, none and 1), the travel limits of the machine
 // and the current position in the active system. Lengths in program units.
 double Interp::system_datum(int id, int nr, int idx, int column) const {
     const int axis = axes(working_plane_.value_or(plane_)).c;  // 0 X, 1 Y, 2 Z
@@ -144,7 +144,7 @@ double Interp::system_datum(int id, int nr, int idx, int column) const {
             if (nr == 4) return axis_index(), 1.0;  // scaling factor of the axis
             break;
         case 220:
-            if (nr == 2) return axis_index(), 0.0;  // datum shift (cycle 7) of the axis
+            if (nr == 2) return datum_shift_[axis_index()];  // the datum shift (cycle 7)
             break;
         case 230:  // software limits of the machine (machine frame)
             if ((nr == 2 || nr == 3) && machine_) {
@@ -157,7 +157,7 @@ double Interp::system_datum(int id, int nr, int idx, int column) const {
                      column);
             break;
         case 270:  // the current position in the active coordinate system
-            if (nr == 1) return pos_[axis_index()];
+            if (nr == 1) return pos_[axis_index()] - datum_shift_[axis_index()];
             break;
         default:
             break;
