@@ -51,7 +51,7 @@ def test_a_cycle_definition_over_continued_lines_is_one_block():
     text = """0 BEGIN PGM CYC MM
 1 TOOL DEF 1 L+0 R+3
 2 TOOL CALL 1 Z S2000
-3 CYCL DEF 200 DRILLING ~
+3 CYCL DEF 205 UNIVERSAL PECKING ~
     Q200=2     ;SET-UP CLEARANCE ~
     Q201=-15   ;DEPTH ~
     Q206=150   ;FEED RATE FOR PLNGNG
@@ -116,8 +116,8 @@ def test_the_tolerance_cycle_is_noted_and_other_cycles_are_refused_by_number():
     notes = [(d.code, d.line) for d in res.diagnostics]
     assert notes == [("blending_not_modelled", 5)]
     with pytest.raises(tc.ProgramError) as e:
-        run(text.replace("7  L  Z+19 FMAX", "7  CYCL DEF 200 DRILLING ~\n Q200=+5 ;SET-UP CLEARANCE"))
-    assert str(e.value.message) == "CYCL DEF 200 DRILLING is not supported by toolcomp yet" and e.value.line == 8
+        run(text.replace("7  L  Z+19 FMAX", "7  CYCL DEF 205 UNIVERSAL PECKING ~\n Q200=+5 ;SET-UP CLEARANCE"))
+    assert str(e.value.message) == "CYCL DEF 205 UNIVERSAL PECKING is not supported by toolcomp yet" and e.value.line == 8
 
 
 def test_m140_retracts_along_the_tool_axis():
@@ -222,3 +222,68 @@ def test_cycle_7_shifts_the_datum():
     res = run(text)
     assert ends(res) == [(60, 20, 0), (50, 30, 0), (55, 30, 0), (1, 1, 0)]
     np.testing.assert_allclose(res.nominal.center[1], [50, 20, 0])
+
+
+def test_cycle_200_drilling_with_m99():
+    # Two holes: Q200=2 set-up clearance, Q201=-15 depth, Q202=6 pecks (6, 12, then 15),
+    # Q203=0 surface, Q204=50: rapid to Z2, feed to -6, out to Z2, down to -4 (2 above the last
+    # depth), feed to -12, out, down to -10, feed to -15, out to Z50 (the higher clearance).
+    text = """0  BEGIN PGM E200 MM
+1  TOOL DEF 5 L+0 R+3
+2  TOOL CALL 5 Z S2000
+3  L Z+100 R0 FMAX M3
+4  CYCL DEF 200 DRILLING ~
+    Q200=+2    ;SET-UP CLEARANCE ~
+    Q201=-15   ;DEPTH ~
+    Q206=+250  ;FEED RATE FOR PLNGNG ~
+    Q202=+6    ;PLUNGING DEPTH ~
+    Q210=+0.5  ;DWELL TIME AT TOP ~
+    Q203=+0    ;SURFACE COORDINATE ~
+    Q204=+50   ;2ND SET-UP CLEARANCE ~
+    Q211=+0.2  ;DWELL TIME AT DEPTH
+5  L X+30 Y+20 R0 FMAX M99
+6  L X+60 R0 FMAX M99
+7  L Z+100 R0 FMAX
+8  END PGM E200 MM
+"""
+    p = run(text).nominal
+    z_of_hole = [2, -6, 2, -4, -12, 2, -10, -15, 50]
+    kinds = [tc.RAPID, tc.LINE, tc.RAPID, tc.RAPID, tc.LINE, tc.RAPID, tc.RAPID, tc.LINE, tc.RAPID]
+    first = list(np.flatnonzero(p.line == 14))  # source lines: the blocks after the definition
+    assert list(p.end[first, 2]) == [100] + z_of_hole and list(p.kind[first[1:]]) == kinds
+    second = list(np.flatnonzero(p.line == 15))
+    assert list(p.end[second, 2]) == [50] + z_of_hole and np.all(p.end[second, 0] == 60)
+    assert np.all(p.feed[first[1:]][np.array(kinds) == tc.LINE] == 250)
+
+
+def test_cycle_207_taps_at_the_pitch_and_201_reams():
+    text = """0  BEGIN PGM T MM
+1  TOOL DEF 2 L+0 R+4
+2  TOOL CALL 2 Z S500
+3  L X+10 Y+10 Z+15 R0 FMAX
+4  CYCL DEF 207 RIGID TAPPING ~
+    Q200=+5    ;SET-UP CLEARANCE ~
+    Q201=-25   ;DEPTH OF THREAD ~
+    Q239=+1.25 ;THREAD PITCH ~
+    Q203=+0    ;SURFACE COORDINATE ~
+    Q204=+5    ;2ND SET-UP CLEARANCE
+5  L FMAX M99
+6  CYCL DEF 201 REAMING ~
+    Q200=+2 ;SET-UP CLEARANCE ~
+    Q201=-10 ;DEPTH ~
+    Q206=+100 ;FEED RATE FOR PLNGNG ~
+    Q211=+0 ;DWELL TIME AT DEPTH ~
+    Q208=MAX ;RETRACTION FEED RATE ~
+    Q203=-1 ;SURFACE COORDINATE ~
+    Q204=+20 ;2ND SET-UP CLEARANCE
+7  CYCL CALL
+8  END PGM T MM
+"""
+    p = run(text).nominal
+    tap = np.flatnonzero(p.line == 11)
+    assert list(p.end[tap, 2]) == [5, -25, 5] and list(p.feed[tap[1:]]) == [1.25 * 500] * 2  # 625 mm/min
+    ream = np.flatnonzero(p.line == 20)
+    assert list(p.end[ream, 2]) == [1, -11, 1, 19] and list(p.kind[ream]) == [tc.RAPID, tc.LINE, tc.RAPID, tc.RAPID]
+    with pytest.raises(tc.ProgramError) as e:
+        run(text.replace("Q201=-25", "Q201=+25"))
+    assert e.value.code == "cycle_bad_value" and e.value.line == 11

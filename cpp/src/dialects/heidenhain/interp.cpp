@@ -97,6 +97,8 @@ void Interp::modal_words(Tokens t, std::size_t from) {
             fail(code::unsupported_word, "FAUTO is not supported by toolcomp", k.column);
         } else if (k.is("M") && k.has_value) {
             m_function(t, k);
+        } else if (k.is("S") && k.has_value) {
+            speed_ = k.value;
         }
     }
 }
@@ -127,8 +129,13 @@ void Interp::m_function(Tokens t, const Token& k) {
         case 140:  // retraction along the tool axis (line(): MB)
             if (!t[0].is("L")) fail(code::bad_word, "M140 acts in L blocks only (toolcomp)", k.column);
             break;
+        case 99:  // the cycle runs at the end of the block (execute)
+            cycle_call_pending_ = true;
+            break;
+        case 89:
+            fail(code::unsupported_m_code, "M89 (the modal cycle call) is not supported by toolcomp", k.column);
         case 0: case 1: case 3: case 4: case 5: case 6: case 8: case 9: case 13: case 14:
-        case 89: case 90: case 99:
+        case 90:
             break;  // machine functions without a geometric effect on the path
         case 91: case 92:  // machine datums: the L block reads its coordinates from them
             if (!t[0].is("L"))
@@ -211,6 +218,8 @@ void Interp::tool_call(Tokens t) {
                  t[i].column);
         else if (k == "F" && t[i].has_value)
             feed_ = t[i].value * (prog_.inch ? 2.54 : 1.0);
+        else if (k == "S" && t[i].has_value)
+            speed_ = t[i].value;
     }
     // Without a tool number the tool in the spindle stays (S, F, the axis or deltas change):
     // its data again, and the deltas of the TOOL CALL before unless this block gives new ones.
@@ -299,6 +308,7 @@ bool Interp::execute(Tokens t) {
     corner_ = -1;
     open_corner_ = false;
     rapid_ = false;
+    cycle_call_pending_ = false;
     if (k0 == "BEGIN" || k0 == "BLK") return true;
     if (k0 == "END" && k1 == "PGM") return false;
     if (k0 == "TOOL" && k1 == "DEF") tool_def(t);
@@ -329,6 +339,10 @@ bool Interp::execute(Tokens t) {
         cycle(t);
     } else
         fail(code::unknown_block, "Unknown block '" + std::string(k0) + "'", t[0].column);
+    if (cycle_call_pending_) {  // M99: the cycle at the end of the block
+        cycle_call_pending_ = false;
+        call_cycle(t[0].column);
+    }
     return true;
 }
 
@@ -337,6 +351,14 @@ bool Interp::execute(Tokens t) {
 void Interp::cycle(Tokens t) {
     const bool def = t.size() >= 3 && t[1].is("DEF") && t[2].key.empty() && t[2].has_value;
     if (def && t[2].value >= 7 && t[2].value < 8) return datum_shift(t);
+    if (def && (t[2].value == 200 || t[2].value == 201 || t[2].value == 207))
+        return define_drilling(t, static_cast<int>(t[2].value));
+    if (def && t[2].value >= 9 && t[2].value < 10) return;  // DWELL TIME: no motion
+    if (t.size() >= 2 && t[1].is("CALL") && std::all_of(t.begin() + 2, t.end(), [](const Token& k) { return k.is("M"); })) {
+        modal_words(t, 2);  // CYCL CALL M3 ...
+        cycle_call_pending_ = false;
+        return call_cycle(t[0].column);
+    }
     if (def && t[2].value >= 32 && t[2].value < 33) {
         if (!tolerance_noted_)
             diags_.push_back({code::blending_not_modelled, Severity::info,
@@ -347,8 +369,8 @@ void Interp::cycle(Tokens t) {
         return;
     }
     std::string what = "CYCL";
-    for (std::size_t i = 1; i < t.size() && i < 4 && (t[i].key.empty() ? t[i].has_value : true); ++i)
-        what += " " + (t[i].key.empty() ? shortest_number(t[i].value) : t[i].key);
+    for (std::size_t i = 1; i < t.size() && (t[i].key.empty() ? t[i].has_value : !t[i].has_value && t[i].key[0] != 'Q'); ++i)
+        what += " " + (t[i].key.empty() ? shortest_number(t[i].value) : t[i].key);  // CYCL DEF 205 UNIVERSAL PECKING
     fail(code::unsupported_block, what + " is not supported by toolcomp yet", t[0].column);
 }
 

@@ -49,6 +49,17 @@ private:
     // absolutely is measured from the shifted datum.
     Vec3 datum_shift_ = Vec3::Zero();
     void datum_shift(Tokens t);
+    // The drilling cycles 200, 201, 207 (interp_drilling.cpp): CYCL DEF stores the cycle and
+    // its Q parameters, CYCL CALL and M99 run it where the tool stands.
+    struct CycleDef {
+        int number = 0;
+        std::map<int, double> q;  // Q200=... (a Q208=MAX: +inf)
+    };
+    std::optional<CycleDef> cycle_def_;
+    void define_drilling(Tokens t, int number);
+    void call_cycle(int column);
+    bool cycle_call_pending_ = false;  // M99 in this block: the cycle runs after its move
+    double speed_ = 0;                 // S, rev/min (TOOL CALL, or a block's S)
     void cycle(Tokens t);           // CYCL DEF / CYCL CALL
     // The block's tokens with Q parameters in words replaced by values (in `scratch` when
     // there are any, else `t` itself).

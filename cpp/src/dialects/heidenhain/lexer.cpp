@@ -205,6 +205,14 @@ private:
                 t.key.append(s_.substr(i_, e - i_));
                 i_ = eq + 1;
                 skip();
+                for (std::string_view w : {"FMAX", "FAUTO", "MAX"}) {  // Q208=MAX: a feed word
+                    if (s_.size() - i_ >= w.size() && s_.substr(i_, w.size()) == w &&
+                        (i_ + w.size() == s_.size() || blank(s_[i_ + w.size()]) || s_[i_ + w.size()] == ';')) {
+                        t.text = std::string(w);
+                        i_ += w.size();
+                        return;
+                    }
+                }
             }
         }
         if (spaced_address(t.key) && value_after_blanks()) skip();
