@@ -346,56 +346,6 @@ bool Interp::execute(Tokens t) {
     return true;
 }
 
-// CYCL DEF 32 TOLERANCE (32.0, 32.1 T.., 32.2 HSC-MODE TA): a tolerance of the executed
-// path, accepted with a note; every other cycle is refused by its number.
-void Interp::cycle(Tokens t) {
-    const bool def = t.size() >= 3 && t[1].is("DEF") && t[2].key.empty() && t[2].has_value;
-    if (def && t[2].value >= 7 && t[2].value < 8) return datum_shift(t);
-    if (def && (t[2].value == 200 || t[2].value == 201 || t[2].value == 207))
-        return define_drilling(t, static_cast<int>(t[2].value));
-    if (def && t[2].value >= 9 && t[2].value < 10) return;  // DWELL TIME: no motion
-    if (t.size() >= 2 && t[1].is("CALL") && std::all_of(t.begin() + 2, t.end(), [](const Token& k) { return k.is("M"); })) {
-        modal_words(t, 2);  // CYCL CALL M3 ...
-        cycle_call_pending_ = false;
-        return call_cycle(t[0].column);
-    }
-    if (def && t[2].value >= 32 && t[2].value < 33) {
-        if (!tolerance_noted_)
-            diags_.push_back({code::blending_not_modelled, Severity::info,
-                              "CYCL DEF 32 TOLERANCE is a tolerance of the executed path: toolcomp returns the "
-                              "programmed path",
-                              {line_, t[0].column}});
-        tolerance_noted_ = true;
-        return;
-    }
-    std::string what = "CYCL";
-    for (std::size_t i = 1; i < t.size() && (t[i].key.empty() ? t[i].has_value : !t[i].has_value && t[i].key[0] != 'Q'); ++i)
-        what += " " + (t[i].key.empty() ? shortest_number(t[i].value) : t[i].key);  // CYCL DEF 205 UNIVERSAL PECKING
-    fail(code::unsupported_block, what + " is not supported by toolcomp yet", t[0].column);
-}
-
-// CYCL DEF 7.0 DATUM SHIFT, then 7.1 X.. / 7.2 Y.. / 7.3 Z.. (IX.. adds to the shift in force;
-// an axis not named keeps its shift; X+0 takes it back). A row of a datum table (#n) is
-// refused: toolcomp reads no datum tables.
-void Interp::datum_shift(Tokens t) {
-    static constexpr std::string_view names[3] = {"X", "Y", "Z"};
-    static constexpr std::string_view inc[3] = {"IX", "IY", "IZ"};
-    for (std::size_t i = 3; i < t.size(); ++i) {
-        const Token& k = t[i];
-        bool axis = false;
-        for (int a = 0; a < 3; ++a) {
-            if (k.is(names[a]) && k.has_value) datum_shift_[a] = k.value, axis = true;
-            if (k.is(inc[a]) && k.has_value) datum_shift_[a] += k.value, axis = true;
-        }
-        if (axis) continue;
-        if (t[2].value == 7 && !k.has_value) continue;  // 7.0 DATUM SHIFT: the cycle's name
-        fail(code::unsupported_word,
-             std::string(k.key.empty() ? "#" : k.key) + " in CYCL DEF 7: toolcomp shifts the datum by X, Y, Z values "
-                                                         "(IX, IY, IZ); datum tables are not read",
-             k.column);
-    }
-}
-
 Interp::Tokens Interp::resolve(Tokens t, std::vector<Token>& scratch) const {
     if (std::none_of(t.begin(), t.end(), [](const Token& k) { return k.param > 0; })) return t;
     scratch.assign(t.begin(), t.end());

@@ -49,7 +49,7 @@ private:
     // absolutely is measured from the shifted datum.
     Vec3 datum_shift_ = Vec3::Zero();
     void datum_shift(Tokens t);
-    // The drilling cycles 200, 201, 207 (interp_drilling.cpp): CYCL DEF stores the cycle and
+    // The drilling cycles 200, 201, 207 (interp_cycles.cpp): CYCL DEF stores the cycle and
     // its Q parameters, CYCL CALL and M99 run it where the tool stands.
     struct CycleDef {
         int number = 0;
