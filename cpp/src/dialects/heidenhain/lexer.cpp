@@ -215,7 +215,7 @@ private:
                 }
             }
         }
-        if (spaced_address(t.key) && value_after_blanks()) skip();
+        if (value_after_blanks() && spaced_address(t.key)) skip();  // the cheap test first: a blank next
         // Digits followed by a sign belong to the address (R2+3, DR2-0.1, DR2+).
         std::size_t j = i_;
         while (j < s_.size() && ascii_digit(s_[j])) ++j;
@@ -229,11 +229,10 @@ private:
             sign = s_[i_] == '-' ? -1 : 1;
             have_sign = true;
             ++i_;
-            if (spaced_address(t.key) && !t.key.empty()) {  // "Z + Q13", "IZ - 2.5"
+            if (i_ < s_.size() && blank(s_[i_]) && spaced_address(t.key)) {  // "Z + Q13", "IZ - 2.5"
                 std::size_t k = i_;
                 while (k < s_.size() && blank(s_[k])) ++k;
-                if (k > i_ && k < s_.size() && (ascii_digit(s_[k]) || s_[k] == '.' || s_[k] == 'Q' || s_[k] == 'q'))
-                    i_ = k;
+                if (k < s_.size() && (ascii_digit(s_[k]) || s_[k] == '.' || s_[k] == 'Q' || s_[k] == 'q')) i_ = k;
             }
         }
         if (i_ + 1 < s_.size() && (s_[i_] == 'Q' || s_[i_] == 'q') && ascii_digit(s_[i_ + 1]) &&

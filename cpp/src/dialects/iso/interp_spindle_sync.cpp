@@ -64,8 +64,10 @@ void Interp::spindle_words(const BlockWords& bw) {
         if (s.css) s.css_max = bw.has('D') ? std::fabs(bw['D'].value) : 0;  // no D: no limit
     }
     if (bw.g[g_feed_mode] >= 0) active_spindle_ = n;
-    const int motion = motion_of(bw);
-    if (dollar && (motion == 330 || motion == 331 || motion == 760)) active_spindle_ = n;
+    if (dollar) {  // G33, G33.1, G76 with $ follow that spindle (the motion only looked up then)
+        const int motion = motion_of(bw);
+        if (motion == 330 || motion == 331 || motion == 760) active_spindle_ = n;
+    }
     if (bw.has('S') && bw.g[g_nonmodal] != 500) {  // (G50 S: the spindle clamp of a Fanuc lathe)
         for (int i = 0; i < spindle_count(); ++i)
             if (i == n || (dollar && n == -1)) spindles_[static_cast<std::size_t>(i)].speed = bw['S'].value;
