@@ -86,3 +86,27 @@ def test_a_self_calling_sub_stops_at_the_limit():
     with pytest.raises(tc.ProgramError) as e:
         tc.run(tc.Program.parse(text), profile=p)
     assert e.value.code == "call_depth"
+
+
+# Cycles that would make more moves than the blocks left: (dialect, program, cycle line).
+BIG_CYCLES = {
+    "linuxcnc G71, 1.2 million levels": ("linuxcnc", (
+        "G21 G18 G7 G90 F100\no100 sub\nG1 X10 Z0\nG1 X24 Z-10\no100 endsub\nG0 X30 Z2\n"
+        "G71 Q100 X24 Z2 D0 I0.00001 R0.5\nM2\n"), 7),
+    "fanuc G71 type I, 160 000 levels": ("fanuc", (
+        "G21 G18 G98\nG0 X52 Z2\nG71 U0.0001 R0.5\nG71 P10 Q20 F200\nN10 G0 X20\nG1 Z-20\nN20 X52\nM30\n"), 4),
+    "fanuc G71 type II, 160 000 levels": ("fanuc", (
+        "G21 G18 G98\nG0 X52 Z2\nG71 U0.0001 R0.5\nG71 P10 Q20 F200\nN10 G0 X20 Z0\nG1 Z-20\nN20 X52\nM30\n"), 4),
+    "fanuc G73, 100 000 passes": ("fanuc", (
+        "G21 G18 G98\nG0 X52 Z2\nG73 U3 W1 R100000\nG73 P10 Q20 F200\nN10 G0 X20 Z0\nG1 Z-20\nN20 X52\nM30\n"), 4),
+}
+
+
+@pytest.mark.parametrize("case", sorted(BIG_CYCLES))
+def test_a_cycle_beyond_the_blocks_left_stops_at_the_block_limit_before_making_its_moves(case):
+    dialect, text, line = BIG_CYCLES[case]
+    profile = tc.ControlProfile(dialect, machine="lathe")
+    profile.block_limit = 20_000
+    with pytest.raises(tc.ProgramError) as e:
+        tc.run(tc.Program.parse(text, dialect=dialect), profile=profile)
+    assert e.value.code == "block_limit" and e.value.line == line

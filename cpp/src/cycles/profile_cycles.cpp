@@ -45,7 +45,7 @@ private:
         }
     }
     void push(StepKind kind, Point end, Point centre = {}, int dir = 0) {
-        if (steps.size() >= max_) geometry_error("more than " + std::to_string(max_) + " moves");
+        if (steps.size() >= max_) throw MoveLimit{};
         at_ = to_program(end);
         steps.push_back({kind, Vec2(real(at_), imag(at_)), Vec2(real(centre), imag(centre)), dir, 0});
     }

@@ -46,7 +46,7 @@ struct Roughing {          // G71 / G72
 // The moves, in (Z, X) of the program: rapids, feeds and arcs (dir +1: G3). An arc LinuxCNC
 // would leave out (it ends where the tool stands) is left out; straight moves of no length
 // are kept, as LinuxCNC emits them. Throws CycleError with LinuxCNC's text after "G7X error: ";
-// at most `max_moves` moves.
+// beyond `max_moves` moves it throws MoveLimit.
 std::vector<Step> finish(std::vector<Piece> profile, const Finishing& f, std::size_t max_moves);
 std::vector<Step> rough(std::vector<Piece> profile, const Roughing& r, std::size_t max_moves);
 

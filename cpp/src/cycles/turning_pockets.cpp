@@ -175,6 +175,7 @@ private:
 
     void move(StepKind kind, const Vec2& to, const Piece* along = nullptr) {
         if ((to - cur_).norm() <= kEps) return;
+        if (out_.size() >= r_.max_moves) throw MoveLimit{};
         Step s{kind, world(to)};
         if (along) s.line = along->line;
         if (kind == StepKind::arc) {

@@ -108,6 +108,7 @@ std::vector<Step> rough_type1(const Contour& contour, const Roughing& r) {
         out.push_back({StepKind::feed, Vec2(end, level)});
         out.push_back({StepKind::rapid, Vec2(end - du * r.retract, level - dv * r.retract)});
         out.push_back({StepKind::rapid, Vec2(a.x(), level - dv * r.retract)});
+        if (out.size() > r.max_moves) throw MoveLimit{};
     }
     const Contour f = shifted(r.allowance);
     out.push_back({infeed, f.start, Vec2::Zero(), 0, f.pieces.front().line});
@@ -118,7 +119,7 @@ std::vector<Step> rough_type1(const Contour& contour, const Roughing& r) {
 }
 
 std::vector<Step> pattern_repeat(const Contour& contour, const Vec2& start, const Vec2& first, const Vec2& last,
-                                 int passes, bool rapid_approach, bool return_shifted) {
+                                 int passes, bool rapid_approach, bool return_shifted, std::size_t max_moves) {
     if (passes < 1)
         throw CycleError{code::cycle_bad_value, "PS0062 ILLEGAL COMMAND IN G71-G76: the number of divisions must be 1 or more"};
     std::vector<Step> out;
@@ -132,6 +133,7 @@ std::vector<Step> pattern_repeat(const Contour& contour, const Vec2& start, cons
         for (const ContourPiece& p : contour.pieces)
             out.push_back({p.dir == 0 ? StepKind::feed : StepKind::arc, p.end + s, p.center + s, p.dir, p.line});
         out.push_back({StepKind::rapid, return_shifted && j < passes ? start + shift(j + 1) : start});
+        if (out.size() > max_moves) throw MoveLimit{};
     }
     return out;
 }

@@ -46,7 +46,12 @@ struct Roughing {
     Vec2 rough_allowance = Vec2::Zero();  // more left by the levels (Haas I, K), taken by the contour pass
     bool rapid_infeed = true;       // the P block is G00: the passes start at rapid, else at feed
     std::size_t max_passes = 1000000;
+    std::size_t max_moves = SIZE_MAX;  // beyond: MoveLimit
 };
+
+// Thrown by a cycle that would make more than the moves it was allowed (the interpreter's
+// remaining block budget), before it has built them all.
+struct MoveLimit {};
 
 // A contour or parameters the control refuses: the catalogue code, the control's alarm
 // text, and the contour block it concerns (0: the cycle's block).
@@ -79,6 +84,7 @@ std::vector<Step> rough_type2(const Contour& contour, const Roughing& r);
 // contour's first point (rapid or feed), along it at feed, and at rapid back to the start
 // (return_shifted: to the start shifted as the next pass is, the last pass to the start).
 std::vector<Step> pattern_repeat(const Contour& contour, const Vec2& start, const Vec2& first, const Vec2& last,
-                                 int passes, bool rapid_approach, bool return_shifted);
+                                 int passes, bool rapid_approach, bool return_shifted,
+                                 std::size_t max_moves = SIZE_MAX);
 
 }  // namespace toolcomp::cycles

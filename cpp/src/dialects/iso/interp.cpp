@@ -136,12 +136,15 @@ void Interp::info(const char* code, const std::string& msg, int column) {
 }
 
 void Interp::count_block(int column) {
-    if (++executed_ > profile_.block_limit)
-        fail(code::block_limit, "More than " + std::to_string(profile_.block_limit) +
-                                " blocks executed, canned cycle repeats included (ControlProfile.block_limit)",
-             column);
+    if (++executed_ > profile_.block_limit) block_limit_exceeded(column);
     if (idle_.too_long(moves_, profile_.no_motion_limit)) [[unlikely]]
         fail(code::no_progress, no_progress_text(profile_.no_motion_limit), column);
+}
+
+void Interp::block_limit_exceeded(int column) const {
+    fail(code::block_limit, "More than " + std::to_string(profile_.block_limit) +
+                                " blocks executed, canned cycle repeats included (ControlProfile.block_limit)",
+         column);
 }
 
 void Interp::run() {

@@ -6,6 +6,7 @@
 // units (X Y Z; converted when G20/G21 changes them) and degrees (A B C), with
 // machine = program + G92 + G5x + tool length offset. Moves leave in millimetres.
 #include <Eigen/Core>
+#include <algorithm>
 #include <array>
 #include <deque>
 #include <map>
@@ -115,6 +116,9 @@ private:
     // its first): beyond ControlProfile::block_limit the run stops with "block_limit"
     // instead of running (and collecting moves) for hours.
     void count_block(int column = 0);
+    [[noreturn]] void block_limit_exceeded(int column) const;
+    // The blocks still allowed: what a cycle may make before it is stopped (cycles::MoveLimit).
+    std::size_t block_budget() const { return profile_.block_limit - std::min(executed_, profile_.block_limit); }
 
     // ---- programs that compute (interp_flow.cpp) ----------------------------------------
     // Runs one block's control statement (O-word, Fanuc GOTO/WHILE/END); block index k.

@@ -153,7 +153,9 @@ void Interp::profile_cycle(const BlockWords& bw, int code) {
         return;
     }
     auto word = [&](char c, double otherwise) { return bw.has(c) ? bw[c].value : otherwise; };
-    const std::size_t max_moves = 50'000'000;
+    // At most the blocks still allowed, and 50 million moves (2.4 GB).
+    constexpr std::size_t kMaxMoves = 50'000'000;
+    const std::size_t max_moves = std::min(kMaxMoves, block_budget());
     std::vector<cycles::Step> steps;
     try {
         if (code == 700) {
@@ -164,6 +166,11 @@ void Interp::profile_cycle(const BlockWords& bw, int code) {
             steps = cycles::profile::rough(std::move(pieces), {code % 10, code / 10 == 72, word('D', 0), depth, word('R', 0.5)},
                                            max_moves);
         }
+    } catch (const cycles::MoveLimit&) {
+        line_ = bw.line;
+        file_ = frames_.back().at->file;
+        if (max_moves < kMaxMoves) block_limit_exceeded(col);
+        fail(code::profile_cycle_geometry, "G7X error: more than " + std::to_string(kMaxMoves) + " moves");
     } catch (const cycles::CycleError& e) {
         fail(e.code, e.message);
     }

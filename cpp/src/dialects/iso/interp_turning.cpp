@@ -148,6 +148,7 @@ void Interp::roughing_cycle(const BlockWords& bw, int code) {
     r.start = turning_uv(pos_.head<3>(), g71);
     r.depth = depth;
     r.retract = escape;
+    r.max_moves = block_budget();
     const double du = word(bw, 'U') / 2, dw = word(bw, 'W');  // U: a diameter
     r.allowance = g71 ? Vec2(dw, du) : Vec2(du, dw);
     const double ri = word(bw, 'I'), rk = word(bw, 'K');  // Haas: rough allowances (I a radius)
@@ -156,6 +157,8 @@ void Interp::roughing_cycle(const BlockWords& bw, int code) {
     std::vector<cycles::Step> steps;
     try {
         steps = type2 ? cycles::rough_type2(contour, r) : cycles::rough_type1(contour, r);
+    } catch (const cycles::MoveLimit&) {
+        block_limit_exceeded(col);
     } catch (const cycles::CycleError& e) {
         if (e.line) line_ = e.line;
         fail(e.code, e.message, e.line ? 0 : col);
@@ -198,7 +201,9 @@ void Interp::pattern_cycle(const BlockWords& bw) {
     std::vector<cycles::Step> steps;
     try {
         steps = cycles::pattern_repeat(contour, turning_uv(pos_.head<3>(), true), last + relief, last, pattern.divisions, rapid,
-                                       profile_.pattern_return_shifted);
+                                       profile_.pattern_return_shifted, block_budget());
+    } catch (const cycles::MoveLimit&) {
+        block_limit_exceeded(col);
     } catch (const cycles::CycleError& e) {
         fail(e.code, e.message, col);
     }
