@@ -350,6 +350,9 @@ void bind_run(py::module_& m) {
                        "the escape of a G71/G72 pass when the cycle gives no R, mm (Fanuc parameter 5133, Haas setting 73)")
         .def_readwrite("pattern_return_shifted", &ControlProfile::pattern_return_shifted,
                        "G73: after each pass the tool goes back to the start shifted as the next pass (Haas)")
+        .def_readwrite("m89_modal_cycle_call", &ControlProfile::m89_modal_cycle_call,
+                       "Heidenhain M89 calls the cycle after every positioning block until M99 / CYCL CALL / CYCL DEF "
+                       "(false: a free M function)")
         .def_readwrite("thread_chamfer", &ControlProfile::thread_chamfer,
                        "the pull-out chamfer at the end of G92 and one-block G76 threads, in leads (Haas setting 95; 0: none)")
         .def_readwrite("thread_chamfer_angle", &ControlProfile::thread_chamfer_angle,

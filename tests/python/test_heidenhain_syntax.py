@@ -51,10 +51,10 @@ def test_a_cycle_definition_over_continued_lines_is_one_block():
     text = """0 BEGIN PGM CYC MM
 1 TOOL DEF 1 L+0 R+3
 2 TOOL CALL 1 Z S2000
-3 CYCL DEF 205 UNIVERSAL PECKING ~
-    Q200=2     ;SET-UP CLEARANCE ~
-    Q201=-15   ;DEPTH ~
-    Q206=150   ;FEED RATE FOR PLNGNG
+3 CYCL DEF 251 RECTANGULAR POCKET ~
+    Q215=0     ;MACHINING OPERATION ~
+    Q218=80    ;FIRST SIDE LENGTH ~
+    Q219=60    ;2ND SIDE LENGTH
 4 L X+10 Y+10 R0 FMAX
 5 END PGM CYC MM
 """
@@ -62,6 +62,7 @@ def test_a_cycle_definition_over_continued_lines_is_one_block():
     with pytest.raises(tc.ProgramError) as e:  # the definition is read whole; the cycle is refused
         tc.run(prog)
     assert e.value.code == "unsupported_block" and e.value.line == 4
+    assert "CYCL DEF 251 RECTANGULAR POCKET" in e.value.message
 
 
 
@@ -116,8 +117,8 @@ def test_the_tolerance_cycle_is_noted_and_other_cycles_are_refused_by_number():
     notes = [(d.code, d.line) for d in res.diagnostics]
     assert notes == [("blending_not_modelled", 5)]
     with pytest.raises(tc.ProgramError) as e:
-        run(text.replace("7  L  Z+19 FMAX", "7  CYCL DEF 205 UNIVERSAL PECKING ~\n Q200=+5 ;SET-UP CLEARANCE"))
-    assert str(e.value.message) == "CYCL DEF 205 UNIVERSAL PECKING is not supported by toolcomp yet" and e.value.line == 8
+        run(text.replace("7  L  Z+19 FMAX", "7  CYCL DEF 252 CIRCULAR POCKET ~\n Q215=+0 ;MACHINING OPERATION"))
+    assert str(e.value.message) == "CYCL DEF 252 CIRCULAR POCKET is not supported by toolcomp yet" and e.value.line == 8
 
 
 def test_m140_retracts_along_the_tool_axis():

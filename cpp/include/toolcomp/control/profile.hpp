@@ -381,6 +381,10 @@ struct ControlProfile {
     // next pass is (Haas: "a rapid departure move ... to the Start position plus the offset
     // for the second roughing pass"). false: back to the start point itself.
     bool pattern_return_shifted = false;
+    // Heidenhain M89: the modal cycle call (iTNC MP7440 bit 0 = 0), the cycle runs after its
+    // block and every positioning block until M99, CYCL CALL or a new CYCL DEF. false: M89 is
+    // a free M function without effect on the path.
+    bool m89_modal_cycle_call = true;
     double thread_chamfer = 0;
     double thread_chamfer_angle = 45;
     double thread_finish_allowance = 0;

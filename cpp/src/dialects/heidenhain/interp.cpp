@@ -129,11 +129,15 @@ void Interp::m_function(Tokens t, const Token& k) {
         case 140:  // retraction along the tool axis (line(): MB)
             if (!t[0].is("L")) fail(code::bad_word, "M140 acts in L blocks only (toolcomp)", k.column);
             break;
-        case 99:  // the cycle runs at the end of the block (execute)
+        case 99:  // the cycle runs at the end of the block (execute); M89 ends
             cycle_call_pending_ = true;
+            modal_call_ = false;
             break;
-        case 89:
-            fail(code::unsupported_m_code, "M89 (the modal cycle call) is not supported by toolcomp", k.column);
+        case 89:  // the modal cycle call: this block and every positioning block after it
+            if (profile_.m89_modal_cycle_call) cycle_call_pending_ = modal_call_ = true;
+            break;
+        case 126: shortest_rotary_ = true; break;
+        case 127: shortest_rotary_ = false; break;
         case 0: case 1: case 3: case 4: case 5: case 6: case 8: case 9: case 13: case 14:
         case 90:
             break;  // machine functions without a geometric effect on the path
@@ -280,11 +284,11 @@ void Interp::line(Tokens t) {
         if (moving != 1) fail(code::paraxial_not_single_axis, "R+/R- needs a move along a single axis", t[0].column);
         end += paraxial_ * radius_ * d.normalized();
     }
-    for (std::size_t i = 1; i < t.size(); ++i) {
-        if (t[i].is("A") && t[i].has_value) abc_[0] = t[i].value;
-        if (t[i].is("B") && t[i].has_value) abc_[1] = t[i].value;
-        if (t[i].is("C") && t[i].has_value) abc_[2] = t[i].value;
-    }
+    static constexpr std::string_view rotary[3] = {"A", "B", "C"};
+    for (std::size_t i = 1; i < t.size(); ++i)
+        for (int r = 0; r < 3; ++r)
+            if (t[i].is(rotary[r]) && t[i].has_value)  // M126: the shorter way, the axis counting its turns
+                abc_[r] = shortest_rotary_ ? abc_[r] + std::remainder(t[i].value - abc_[r], 360.0) : t[i].value;
     if (end == pos_) return;
     if (!rapid_ && feed_ <= 0) fail(code::no_feed, "No feed rate programmed");
     if (plane2(end) != plane2(pos_)) ++plane_moves_;
@@ -337,9 +341,16 @@ bool Interp::execute(Tokens t) {
         surface_line(t);
     } else if (k0 == "CYCL") {
         cycle(t);
+    } else if (k0 == "PATTERN" && k1 == "DEF") {
+        pattern_def(t);
+    } else if (k0 == "PLANE") {
+        plane_function(t);
+    } else if (k0 == "FUNCTION") {
+        function_block(t);
     } else
         fail(code::unknown_block, "Unknown block '" + std::string(k0) + "'", t[0].column);
-    if (cycle_call_pending_) {  // M99: the cycle at the end of the block
+    const bool positioning = k0 == "L" || k0 == "LP" || k0 == "C" || k0 == "CP" || k0 == "CR" || k0 == "CT" || k0 == "CTP";
+    if (cycle_call_pending_ || (modal_call_ && positioning)) {  // M99 / M89: the cycle at the end of the block
         cycle_call_pending_ = false;
         call_cycle(t[0].column);
     }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "../idle_watch.hpp"
+#include "../../cycles/tnc_drilling.hpp"
 #include "toolcomp/program/source_files.hpp"
 #include "toolcomp/compensation/approach.hpp"
 #include "toolcomp/geometry/element.hpp"
@@ -49,16 +50,43 @@ private:
     // absolutely is measured from the shifted datum.
     Vec3 datum_shift_ = Vec3::Zero();
     void datum_shift(Tokens t);
-    // The drilling cycles 200, 201, 207 (interp_cycles.cpp): CYCL DEF stores the cycle and
-    // its Q parameters, CYCL CALL and M99 run it where the tool stands.
+    // The machining cycles (interp_cycles.cpp): CYCL DEF stores the cycle and its Q
+    // parameters (the old cycles 1 and 17: their numbered lines' values, by line), CYCL CALL,
+    // M99 and M89 run it where the tool stands, CYCL CALL POS / PAT and the pattern cycles
+    // 220 / 221 elsewhere (interp_patterns.cpp).
     struct CycleDef {
         int number = 0;
-        std::map<int, double> q;  // Q200=... (a Q208=MAX: +inf)
+        std::map<int, double> q;  // Q200=... (a Q208=MAX: +inf); old cycles: line -> value
     };
     std::optional<CycleDef> cycle_def_;
-    void define_drilling(Tokens t, int number);
-    void call_cycle(int column);
-    bool cycle_call_pending_ = false;  // M99 in this block: the cycle runs after its move
+    void define_machining(Tokens t, int number);
+    void define_old_cycle(Tokens t);
+    void working_plane(Tokens t);  // CYCL DEF 19
+    void plane_function(Tokens t);  // PLANE ...
+    void untilted_plane();          // Q120-Q122 = 0
+    void function_block(Tokens t);  // FUNCTION TCPM / FUNCTION RESET TCPM
+    void cycle_call(Tokens t);      // CYCL CALL [POS | PAT]
+    // Runs the cycle where the tool stands, its surface shifted by `surface_shift` along the
+    // tool axis; `end_height`: where it ends instead of its own end (a pattern's traverse height).
+    void call_cycle(int column, double surface_shift = 0, std::optional<double> end_height = std::nullopt);
+    void axis_move(double to, double feed);         // along the tool axis, mm/min (+inf: FMAX)
+    void plane_move(const Vec2& to, double feed);   // in the working plane, R0
+    void bore_milling(const cycles::tnc::BoreMilling& b, std::optional<double> end_height);
+    const CycleDef& machining_cycle(int column, const std::string& caller) const;  // a 2xx cycle defined
+    double call_feed(Tokens t, std::size_t from);  // F / FMAX (and M) of CYCL CALL POS / PAT
+    void call_at_position(Tokens t);
+    void call_pattern(Tokens t);
+    void pattern_def(Tokens t);
+    void pattern_item(const Token& head, Tokens values);
+    void pattern_cycle(Tokens t, int number);  // CYCL DEF 220 / 221
+    struct PatternPoint {
+        Vec2 at;       // in the working plane, from the preset
+        double z = 0;  // shifts the cycle's surface
+    };
+    std::vector<PatternPoint> pattern_;  // PATTERN DEF
+    bool cycle_call_pending_ = false;  // M99 / M89 in this block: the cycle runs after its move
+    bool modal_call_ = false;          // M89: after every positioning block, until M99 / CYCL CALL / CYCL DEF
+    bool shortest_rotary_ = false;     // M126: rotary axes take the shorter way
     double speed_ = 0;                 // S, rev/min (TOOL CALL, or a block's S)
     void cycle(Tokens t);           // CYCL DEF / CYCL CALL
     // The block's tokens with Q parameters in words replaced by values (in `scratch` when

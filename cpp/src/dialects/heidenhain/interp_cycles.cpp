@@ -1,14 +1,17 @@
-// The TNC's cycles (CYCL DEF, CYCL CALL): 7 DATUM SHIFT, 9 DWELL, 32 TOLERANCE, and the
-// drilling cycles 200 DRILLING, 201 REAMING and 207 RIGID TAPPING: CYCL DEF stores a drilling
-// cycle with its Q parameters (which are Q parameters of the program from then on), CYCL
-// CALL and M99 (at the end of its block) run it where the tool stands. Along the tool axis,
-// from the surface S = Q203 (from the datum): the set-up clearance S + Q200, the depth S +
-// Q201 (negative: into the workpiece), the 2nd set-up clearance S + Q204; the cycle ends at
-// the higher of the two clearances.
+// The TNC's cycles (CYCL DEF, CYCL CALL): 7 DATUM SHIFT, 9 DWELL, 19 WORKING PLANE
+// (interp_plane.cpp), 32 TOLERANCE, the old 1 PECKING and 17 RIGID TAPPING, the drilling cycles 200, 201, 203,
+// 205, 207 and 208 BORE MILLING. CYCL DEF stores a machining cycle with its Q parameters
+// (which are Q parameters of the program from then on); CYCL CALL, M99 (at the end of its
+// block) and M89 (after every positioning block until cancelled) run it where the tool
+// stands; CYCL CALL POS, CYCL CALL PAT and the pattern cycles 220 / 221 run it elsewhere
+// (interp_patterns.cpp). The moves along the tool axis are cycles/tnc_drilling.cpp's.
 #include <cmath>
 #include <string>
 
+#include "../../cycles/tnc_drilling.hpp"
+#include "../../cycles/turning_roughing.hpp"  // CycleError
 #include "interp.hpp"
+#include "toolcomp/geometry/arc.hpp"
 #include "toolcomp/program/codes.hpp"
 #include "toolcomp/program/text.hpp"
 
@@ -16,29 +19,20 @@ namespace toolcomp::heidenhain {
 
 namespace {
 
-// The parameters each cycle needs, in the order the TNC writes them.
-const std::vector<int>& needed(int cycle) {
-    static const std::vector<int> k200{200, 201, 206, 202, 203, 204}, k201{200, 201, 206, 203, 204},
-        k207{200, 201, 239, 203, 204};
-    return cycle == 200 ? k200 : cycle == 201 ? k201 : k207;
-}
+bool in(const Token& k, double from, double to) { return k.key.empty() && k.has_value && k.value >= from && k.value < to; }
+
+// The numbered line of an old cycle's definition: 1.3 -> 3 (0 for 1.0, the cycle's name).
+int sub_number(double v) { return static_cast<int>(std::lround((v - std::floor(v)) * 10)); }
 
 }  // namespace
 
-// CYCL DEF 32 TOLERANCE (32.0, 32.1 T.., 32.2 HSC-MODE TA): a tolerance of the executed
-// path, accepted with a note; every other cycle is refused by its number.
 void Interp::cycle(Tokens t) {
-    const bool def = t.size() >= 3 && t[1].is("DEF") && t[2].key.empty() && t[2].has_value;
-    if (def && t[2].value >= 7 && t[2].value < 8) return datum_shift(t);
-    if (def && (t[2].value == 200 || t[2].value == 201 || t[2].value == 207))
-        return define_drilling(t, static_cast<int>(t[2].value));
-    if (def && t[2].value >= 9 && t[2].value < 10) return;  // DWELL TIME: no motion
-    if (t.size() >= 2 && t[1].is("CALL") && std::all_of(t.begin() + 2, t.end(), [](const Token& k) { return k.is("M"); })) {
-        modal_words(t, 2);  // CYCL CALL M3 ...
-        cycle_call_pending_ = false;
-        return call_cycle(t[0].column);
-    }
-    if (def && t[2].value >= 32 && t[2].value < 33) {
+    const bool def = t.size() >= 3 && t[1].is("DEF");
+    if (t.size() >= 2 && t[1].is("CALL")) return cycle_call(t);
+    if (def && in(t[2], 7, 8)) return datum_shift(t);
+    if (def && in(t[2], 9, 10)) return;  // DWELL TIME: no motion
+    if (def && in(t[2], 19, 20)) return working_plane(t);
+    if (def && in(t[2], 32, 33)) {
         if (!tolerance_noted_)
             diags_.push_back({code::blending_not_modelled, Severity::info,
                               "CYCL DEF 32 TOLERANCE is a tolerance of the executed path: toolcomp returns the "
@@ -47,10 +41,29 @@ void Interp::cycle(Tokens t) {
         tolerance_noted_ = true;
         return;
     }
+    if (def && (in(t[2], 1, 2) || in(t[2], 17, 18))) return define_old_cycle(t);
+    if (def && t[2].key.empty() && t[2].has_value) {
+        const double n = t[2].value;
+        if (cycles::tnc::is_drilling(static_cast<int>(n)) || n == 208) return define_machining(t, static_cast<int>(n));
+        if (n == 220 || n == 221) return pattern_cycle(t, static_cast<int>(n));
+    }
     std::string what = "CYCL";
     for (std::size_t i = 1; i < t.size() && (t[i].key.empty() ? t[i].has_value : !t[i].has_value && t[i].key[0] != 'Q'); ++i)
-        what += " " + (t[i].key.empty() ? shortest_number(t[i].value) : t[i].key);  // CYCL DEF 205 UNIVERSAL PECKING
+        what += " " + (t[i].key.empty() ? shortest_number(t[i].value) : t[i].key);  // CYCL DEF 251 RECTANGULAR POCKET
     fail(code::unsupported_block, what + " is not supported by toolcomp yet", t[0].column);
+}
+
+// CYCL CALL [M..], CYCL CALL POS X.. Y.. Z.. [F|FMAX] [M..], CYCL CALL PAT [F|FMAX] [M..]: a
+// call ends a modal call (M89).
+void Interp::cycle_call(Tokens t) {
+    modal_call_ = false;
+    if (t.size() >= 3 && t[2].is("POS")) return call_at_position(t);
+    if (t.size() >= 3 && t[2].is("PAT")) return call_pattern(t);
+    for (std::size_t i = 2; i < t.size(); ++i)
+        if (!t[i].is("M")) fail(code::bad_word, t[i].key + " is not read in CYCL CALL blocks", t[i].column);
+    modal_words(t, 2);  // CYCL CALL M3 ...
+    cycle_call_pending_ = false;
+    call_cycle(t[0].column);
 }
 
 // CYCL DEF 7.0 DATUM SHIFT, then 7.1 X.. / 7.2 Y.. / 7.3 Z.. (IX.. adds to the shift in force;
@@ -75,7 +88,8 @@ void Interp::datum_shift(Tokens t) {
     }
 }
 
-void Interp::define_drilling(Tokens t, int number) {
+// A machining cycle: its Q parameters (Q208=MAX / FMAX: +inf), the ones it needs checked.
+void Interp::define_machining(Tokens t, int number) {
     CycleDef def;
     def.number = number;
     for (std::size_t i = 3; i < t.size(); ++i) {
@@ -86,66 +100,123 @@ void Interp::define_drilling(Tokens t, int number) {
         else if (k.text == "MAX" || k.text == "FMAX") def.q[n] = INFINITY;
         else fail(code::unsupported_word, "Q" + std::to_string(n) + "=" + k.text + " is not supported by toolcomp", k.column);
     }
-    for (int n : needed(number))
+    for (int n : cycles::tnc::required_q(number))
         if (!def.q.count(n))
             fail(code::cycle_q_missing, "CYCL DEF " + std::to_string(number) + ": Q" + std::to_string(n) + " missing",
                  t[2].column);
     for (const auto& [n, v] : def.q)
         if (std::isfinite(v)) q_[n] = v;  // the cycle's parameters are the program's Q parameters too
     cycle_def_ = std::move(def);
+    modal_call_ = false;  // a new machining cycle ends M89
 }
 
-void Interp::call_cycle(int column) {
+// CYCL DEF 1.0 PECKING / 17.0 RIGID TAPPING starts the definition; its numbered lines (1.1
+// SET UP 2, 1.2 DEPTH -15, ...: the value is the line's number, whatever the dialog's word)
+// complete it.
+void Interp::define_old_cycle(Tokens t) {
+    const int number = static_cast<int>(t[2].value), sub = sub_number(t[2].value);
+    const int last = number == 1 ? 5 : 3;
+    if (sub == 0) {
+        cycle_def_ = CycleDef{number, {}};
+        modal_call_ = false;
+        return;
+    }
+    if (!cycle_def_ || cycle_def_->number != number || sub > last)
+        fail(code::unsupported_block, "CYCL DEF " + shortest_number(t[2].value) + " without CYCL DEF " +
+                                          std::to_string(number) + ".0 before it",
+             t[2].column);
+    const Token* value = nullptr;
+    for (std::size_t i = 3; i < t.size(); ++i)
+        if (t[i].has_value) value = &t[i];
+    if (!value) fail(code::cycle_q_missing, "CYCL DEF " + shortest_number(t[2].value) + " needs a value", t[2].column);
+    cycle_def_->q[sub] = value->value;
+}
+
+void Interp::call_cycle(int column, double surface_shift, std::optional<double> end_height) {
     if (!cycle_def_) fail(code::unsupported_block, "CYCL CALL without a cycle defined (CYCL DEF)", column);
     const CycleDef& d = *cycle_def_;
-    auto q = [&](int n) { return d.q.at(n); };
     const std::string name = "CYCL DEF " + std::to_string(d.number);
     if (side_ != 0) fail(code::comp_canned_cycle, name + " called with RL/RR: the cycle needs R0", column);
     const int c = axes(plane_).c;
-    const double depth = q(201);
-    if (depth == 0) return;  // the TNC does not run the cycle
-    if (depth > 0)
-        fail(code::cycle_bad_value,
-             name + ": the depth Q201 is positive: the TNC stops (or, with displayDepthErr off, drills from below the "
-                    "surface); toolcomp refuses it",
-             column);
-    const double unit_feed = prog_.inch ? 2.54 : 1.0;  // mm/min per program feed unit
-    const double surface = q(203) + datum_shift_[c], clear = surface + q(200), bottom = surface + depth;
-    const double end_height = surface + std::max(q(200), q(204));
-    auto move = [&](double z, double feed) {  // along the tool axis
-        Vec3 e = pos_;
-        e[c] = z;
-        if (e == pos_) return;
-        Motion m = motion_to(std::isfinite(feed) ? MotionKind::line : MotionKind::rapid, e);
-        m.feed = std::isfinite(feed) ? feed : std::nan("");
+    cycles::tnc::Setting s;
+    s.from = pos_[c];
+    s.feed_unit = prog_.inch ? 2.54 : 1.0;  // mm/min per program feed unit
+    s.unit = unit_;
+    s.speed = speed_;
+    std::vector<cycles::tnc::AxialMove> moves;
+    try {
+        if (d.number == 1 || d.number == 17) {
+            for (int n = 1; n <= (d.number == 1 ? 5 : 3); ++n)
+                if (!d.q.count(n))
+                    fail(code::cycle_q_missing, name + "." + std::to_string(n) + " missing", column);
+            moves = d.number == 1 ? cycles::tnc::pecking_1(d.q, s) : cycles::tnc::tapping_17(d.q, s);
+        } else {
+            const double depth = d.q.at(201);
+            if (depth == 0) return;  // the TNC does not run the cycle
+            if (depth > 0)
+                fail(code::cycle_bad_value,
+                     name + ": the depth Q201 is positive: the TNC stops (or, with displayDepthErr off, drills from "
+                            "below the surface); toolcomp refuses it",
+                     column);
+            s.surface = d.q.at(203) + datum_shift_[c] + surface_shift;
+            if (d.number == 208) return bore_milling(cycles::tnc::bore_milling(d.q, s, radius_), end_height);
+            moves = cycles::tnc::drilling(d.number, d.q, s);
+            if (end_height) moves.back().to = *end_height;
+        }
+    } catch (const cycles::CycleError& e) {
+        fail(e.code, e.message, column);
+    }
+    for (const auto& m : moves) axis_move(m.to, m.feed);
+}
+
+// A move along the tool axis at `feed` mm/min (+inf: FMAX); none where the tool is.
+void Interp::axis_move(double to, double feed) {
+    Vec3 e = pos_;
+    e[axes(plane_).c] = to;
+    if (e == pos_) return;
+    Motion m = motion_to(std::isfinite(feed) ? MotionKind::line : MotionKind::rapid, e);
+    m.feed = std::isfinite(feed) ? feed : std::nan("");
+    put(m);
+    pos_ = e;
+}
+
+// 208: down to the set-up clearance; a half circle out to the helix's start (at angle 0 from
+// the centre, the helix's sense); the helix to the depth; a full circle there; back to the
+// centre; out to the end height at FMAX.
+void Interp::bore_milling(const cycles::tnc::BoreMilling& b, std::optional<double> end_height) {
+    const int c = axes(plane_).c;
+    axis_move(b.top, INFINITY);
+    if (b.radius == 0) {
+        axis_move(b.bottom, b.feed);
+    } else {
+        const Vec2 centre = plane2(pos_);
+        const MotionKind sense = b.dir > 0 ? MotionKind::arc_ccw : MotionKind::arc_cw;
+        auto arc = [&](const Vec2& to, const Vec2& about, double height, std::int32_t turns) {
+            Vec3 e = with_plane(pos_, to);
+            e[c] = height;
+            Motion m = motion_to(sense, e);
+            m.feed = b.feed;
+            m.center = with_plane(pos_, about);
+            m.turns = turns;
+            put(m);
+            pos_ = e;
+        };
+        const Vec2 start = centre + Vec2(b.radius, 0);
+        arc(start, centre + Vec2(b.radius / 2, 0), b.top, 0);
+        // The helix: whole turns, and what is left of the last one.
+        const double whole = std::floor(b.turns + 1e-9), rest = b.turns - whole;
+        const double angle = b.dir * 2 * kPi * (rest < 1e-9 ? 0 : rest);
+        const auto turns = static_cast<std::int32_t>(rest < 1e-9 ? whole - 1 : whole);
+        const Vec2 end = centre + b.radius * Vec2(std::cos(angle), std::sin(angle));
+        arc(end, centre, b.bottom, std::max(turns, 0));
+        arc(end, centre, b.bottom, 0);  // the full circle at the depth
+        Vec3 e = with_plane(pos_, centre);
+        Motion m = motion_to(MotionKind::line, e);
+        m.feed = b.feed;
         put(m);
         pos_ = e;
-    };
-    move(clear, INFINITY);
-    if (d.number == 200) {
-        if (!(q(202) > 0)) fail(code::cycle_bad_value, name + ": the plunging depth Q202 must be above 0", column);
-        const double feed = q(206) * unit_feed;
-        double at = surface;
-        for (std::size_t n = 0;; ++n) {
-            if (n > 1000000) fail(code::cycle_bad_value, name + ": more than a million pecks", column);
-            at = std::max(at - q(202), bottom);
-            move(at, feed);
-            if (at == bottom) break;
-            move(clear, INFINITY);               // chips out
-            move(at + q(200), INFINITY);         // back down, the set-up clearance above the last depth
-        }
-    } else if (d.number == 201) {
-        move(bottom, q(206) * unit_feed);
-        const double back = d.q.count(208) ? q(208) : 0;
-        move(clear, back == 0 ? q(206) * unit_feed : back * unit_feed);
-    } else {  // 207: in and out synchronised with the spindle, a pitch a revolution
-        if (speed_ <= 0) fail(code::zero_spindle_speed, name + " needs the spindle speed S", column);
-        const double feed = std::fabs(q(239)) * speed_;
-        if (!(feed > 0)) fail(code::cycle_bad_value, name + ": the thread pitch Q239 must not be 0", column);
-        move(bottom, feed);
-        move(clear, feed);
     }
-    move(std::max(end_height, pos_[c]), INFINITY);
+    axis_move(end_height.value_or(b.end), INFINITY);
 }
 
 }  // namespace toolcomp::heidenhain

@@ -97,6 +97,14 @@ private:
                 quoted();
                 continue;
             }
+            if (s_[i_] == '(' || s_[i_] == ')') {  // PATTERN DEF: POS1 ( X+25 Y+33.5 Z+0 )
+                Token t;
+                t.key = std::string(1, s_[i_]);
+                t.column = col();
+                prog_.add_token(std::move(t));
+                ++i_;
+                continue;
+            }
             if (program_name_next()) {
                 program_name();
                 continue;
