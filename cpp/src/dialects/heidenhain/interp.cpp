@@ -373,9 +373,12 @@ Interp::Tokens Interp::resolve(Tokens t, std::vector<Token>& scratch) const {
 // ...), which toolcomp does not model: reading one is refused rather than read as 0.
 double Interp::q_value(int n, int column) const {
     check_q(n, column);
-    if (n >= 100 && n <= 199)
-        fail(code::q_system, "Q" + std::to_string(n) + " is set by the control (Q100 to Q199): not modelled by toolcomp",
+    if (n >= 100 && n <= 199) {
+        if (const auto set = control_q_.find(n); set != control_q_.end()) return set->second;
+        fail(code::q_system, "Q" + std::to_string(n) + " is set by the control (Q100 to Q199): not modelled by toolcomp" +
+                                 (n >= 120 && n <= 122 ? " before CYCL DEF 19 or PLANE sets it" : ""),
              column);
+    }
     auto it = q_.find(n);
     return it == q_.end() ? 0.0 : it->second;
 }

@@ -210,6 +210,7 @@ private:
     bool warned_normal_ = false;
     bool ended_ = false;               // M2 / M30
     std::map<int, double> q_;          // Q parameters (unset read as 0)
+    std::map<int, double> control_q_;  // Q100-Q199 the control has set (Q120-Q122: the untilted plane)
     int paraxial_ = 0;  // R+ (+1) / R- (-1) in the current L block
     std::optional<Motion> pending_;
     double pending_round_ = 0, pending_chamfer_ = 0;  // RND / CHF between pending_ and the next

@@ -22,7 +22,7 @@ std::string tilt(const std::string& what, const Token& k) {
 }  // namespace
 
 void Interp::untilted_plane() {
-    for (int n : {120, 121, 122}) q_[n] = 0;
+    for (int n : {120, 121, 122}) control_q_[n] = 0;
 }
 
 // CYCL DEF 19.0 WORKING PLANE, 19.1 A.. B.. C.. [F..|FMAX] [MB..]
