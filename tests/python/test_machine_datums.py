@@ -191,3 +191,11 @@ def test_sinumerik_lathe_travel_is_a_diameter():
         tc.run(tc.Program.parse(ok.replace("X290", "X310"), dialect="sinumerik"), machine=m)
     assert (e.value.code, e.value.line) == ("travel_limit", 1)
     assert "X 310.0000 mm" in e.value.message
+
+
+def test_without_a_machine_m91_and_m92_are_measured_from_the_preset():
+    # The plain machine: its zero and the M92 datum at the preset. The spindle at Z+0 puts the
+    # tip of the 100 mm tool at Z-100; M92 X+10 at X+10.
+    res = tc.run(tc.Program.parse(KLARTEXT.replace("6 L Z-1", "6 L Z+0").replace("7 L X-50 Y-10", "7 L X+10 Y-10"),
+                                  dialect="heidenhain"))
+    np.testing.assert_allclose(res.nominal.end[2:4], [[10, 20, -100], [10, -10, -100]])
