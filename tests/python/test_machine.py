@@ -96,8 +96,8 @@ def test_sinumerik_and_heidenhain_take_builder_codes_too():
     res = tc.run(tc.Program.parse("T1 M206\nD1 G0 Z10\nM30\n", dialect="sinumerik"), tools=t, machine=m)
     assert res.nominal.tool[-1] == 1 and res.nominal.tool_offset[-1, 2] == 50
     h = tc.Machine("heidenhain", "mill", "dmu")
-    h.m_codes = {126: tc.MachineCode("nothing")}  # a code the TNC itself does not run in toolcomp
-    text = "0 BEGIN PGM A MM\n1 L X+10 R0 FMAX M126\n2 END PGM A MM\n"
+    h.m_codes = {25: tc.MachineCode("nothing")}  # a code the TNC itself does not run in toolcomp
+    text = "0 BEGIN PGM A MM\n1 L X+10 R0 FMAX M25\n2 END PGM A MM\n"
     with pytest.raises(tc.Error):
         tc.run(tc.Program.parse(text, dialect="heidenhain"))
     assert tc.run(tc.Program.parse(text, dialect="heidenhain"), machine=h).ok

@@ -48,6 +48,7 @@ void Interp::approach_words(Tokens t, ApproachKind kind, bool polar) {
 
 void Interp::approach(Tokens t) {
     if (t.size() < 2) fail(code::approach_kind, "APPR needs LT, LN, CT or LCT", t[0].column);
+    refuse_scaled("APPR", t[0].column);
     bool polar = false;
     ApproachKind kind;
     try {
@@ -267,6 +268,7 @@ void Interp::emit_connecting_approach(const Motion& first) {
 // departure is a connecting element computed on the contour and compensated.
 void Interp::departure(Tokens t) {
     if (t.size() < 2) fail(code::departure_kind, "DEP needs LT, LN, CT or LCT", t[0].column);
+    refuse_scaled("DEP", t[0].column);
     bool polar = false;
     ApproachKind kind;
     try {

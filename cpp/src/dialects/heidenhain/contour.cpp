@@ -196,7 +196,7 @@ void Interp::circle_centre(Tokens t) {
     for (const Token& k : t)
         for (int i : {ax.a, ax.b}) {
             double& v = i == ax.a ? c.x() : c.y();
-            if (k.key == names[i] && k.has_value) v = k.value + datum_shift_[i];
+            if (k.key == names[i] && k.has_value) v = k.value;
             if (k.key == inc[i] && k.has_value) v = pos_[i] + k.value;
         }
     pole_ = c;
@@ -402,6 +402,7 @@ void Interp::check_surface_line(Tokens raw) const {
 // LN X Y Z NX NY NZ [TX TY TZ]: a line to the datum point PT computed by CAM, with the surface
 // normal N; the tool is displaced along N by the deltas of the tool called (3D compensation).
 void Interp::surface_line(Tokens t) {
+    refuse_scaled("LN", t[0].column);
     static const char* order[9] = {"X", "Y", "Z", "NX", "NY", "NZ", "TX", "TY", "TZ"};
     std::size_t i = 1;
     double v[9] = {0};

@@ -49,7 +49,7 @@ Vec3 Interp::end_point(Tokens t, std::size_t from) const {
     static constexpr std::string_view inc[3] = {"IX", "IY", "IZ"};
     for (std::size_t i = from; i < t.size(); ++i) {
         for (int a = 0; a < 3; ++a) {
-            if (t[i].is(names[a]) && t[i].has_value) e[a] = t[i].value + datum_shift_[a];
+            if (t[i].is(names[a]) && t[i].has_value) e[a] = t[i].value;
             if (t[i].is(inc[a]) && t[i].has_value) e[a] = pos_[a] + t[i].value;
         }
     }
@@ -173,6 +173,9 @@ Motion Interp::motion_to(MotionKind kind, const Vec3& end) const {
     }
     m.tool_axis = Vec3::Zero();
     m.tool_axis[axes(working_plane_.value_or(plane_)).c] = 1;
+    if (m.is_arc() && !frame().conformal_in(m.plane))
+        fail(code::scaling_refused, "An arc under axis-specific scaling (CYCL DEF 26) with different factors in its plane "
+                                    "would be an ellipse: the TNC refuses it");
     m.radius.corner = corner_;
     m.radius.open_corner = open_corner_;
     m.radius.lookahead = static_cast<std::int8_t>(lookahead_);
@@ -224,6 +227,9 @@ void Interp::tool_call(Tokens t) {
             feed_ = t[i].value * (prog_.inch ? 2.54 : 1.0);
         else if (k == "S" && t[i].has_value)
             speed_ = t[i].value;
+        else if (!((k == "DL" || k == "DR" || k == "DR2") && t[i].has_value))
+            fail(code::bad_word, (k.empty() ? std::string("A number") : std::string(k)) + " is not read in TOOL CALL blocks",
+                 t[i].column);
     }
     // Without a tool number the tool in the spindle stays (S, F, the axis or deltas change):
     // its data again, and the deltas of the TOOL CALL before unless this block gives new ones.
@@ -282,6 +288,7 @@ void Interp::line(Tokens t) {
         int moving = 0;
         for (int i = 0; i < 3; ++i) moving += std::fabs(d[i]) > 0;
         if (moving != 1) fail(code::paraxial_not_single_axis, "R+/R- needs a move along a single axis", t[0].column);
+        refuse_scaled("R+/R-", t[0].column);
         end += paraxial_ * radius_ * d.normalized();
     }
     static constexpr std::string_view rotary[3] = {"A", "B", "C"};
@@ -327,8 +334,13 @@ bool Interp::execute(Tokens t) {
     else if (k0 == "CP") polar_arc(t);
     else if (k0 == "RND") rounding(t);
     else if (k0 == "CHF") chamfer(t);
-    else if (k0 == "M" || k0 == "F" || k0 == "S")  // a block of machine functions only
+    else if (k0 == "M" || k0 == "F" || k0 == "S") {  // a block of machine functions only
+        for (const Token& k : t)
+            if (!(k.is("M") || k.is("F") || k.is("S") || k.is("FMAX")) || (!k.has_value && !k.is("FMAX")))
+                fail(code::bad_word, (k.key.empty() ? std::string("A number") : k.key) + " is not read in a block of M functions",
+                     k.column);
         modal_words(t, 0);
+    }
     else if (k0 == "STOP") {
         modal_words(t, 1);
         settle_pending();

@@ -12,6 +12,7 @@
 
 #include "../idle_watch.hpp"
 #include "../../cycles/tnc_drilling.hpp"
+#include "frame.hpp"
 #include "toolcomp/program/source_files.hpp"
 #include "toolcomp/compensation/approach.hpp"
 #include "toolcomp/geometry/element.hpp"
@@ -45,11 +46,20 @@ private:
     std::size_t progress_every_ = 1 << 16;
     using Tokens = std::span<const Token>;
     bool tolerance_noted_ = false;  // CYCL DEF 32's note given
-    // CYCL DEF 7 DATUM SHIFT: where the program's datum lies from the preset (program units).
-    // Positions (the path's too) stay measured from the preset; a coordinate programmed
-    // absolutely is measured from the shifted datum.
-    Vec3 datum_shift_ = Vec3::Zero();
+    // The coordinate transformations (CYCL DEF 7, 8, 10, 11, 26; interp_transform.cpp): the
+    // interpreter works in program coordinates (pos_, the pole, cycle surfaces), sink_ hands
+    // the moves on from the preset.
+    Transformations transforms_;
     void datum_shift(Tokens t);
+    void mirror_image(Tokens t);
+    void rotation(Tokens t);
+    void scaling(Tokens t);
+    void axis_scaling(Tokens t);
+    void datum_setting(Tokens t);  // CYCL DEF 247
+    void transform(const Transformations& next, int column);  // takes effect from here
+    // Refuses `what` (its geometry holds the tool radius) under scaling: "scaling_refused".
+    void refuse_scaled(const char* what, int column) const;
+    const Frame& frame() const { return sink_.frame(); }
     // The machining cycles (interp_cycles.cpp): CYCL DEF stores the cycle and its Q
     // parameters (the old cycles 1 and 17: their numbered lines' values, by line), CYCL CALL,
     // M99 and M89 run it where the tool stands, CYCL CALL POS / PAT and the pattern cycles
@@ -171,7 +181,7 @@ private:
     IdleWatch idle_;            // blocks in a row without a move
     const ToolTable* tools_;
     const ControlProfile& profile_;
-    MotionSink& sink_;
+    FrameSink sink_;
     std::vector<Diagnostic>& diags_;
 
     int line_ = 0;

@@ -1,6 +1,7 @@
-// The TNC's cycles (CYCL DEF, CYCL CALL): 7 DATUM SHIFT, 9 DWELL, 19 WORKING PLANE
-// (interp_plane.cpp), 32 TOLERANCE, the old 1 PECKING and 17 RIGID TAPPING, the drilling cycles 200, 201, 203,
-// 205, 207 and 208 BORE MILLING. CYCL DEF stores a machining cycle with its Q parameters
+// The TNC's cycles (CYCL DEF, CYCL CALL): the transformations 7, 8, 10, 11, 26, 247
+// (interp_transform.cpp), 9 DWELL, 19 WORKING PLANE (interp_plane.cpp), 32 TOLERANCE, the old
+// 1 PECKING and 17 RIGID TAPPING, the drilling cycles 200, 201, 203, 205, 207 and 208 BORE
+// MILLING. CYCL DEF stores a machining cycle with its Q parameters
 // (which are Q parameters of the program from then on); CYCL CALL, M99 (at the end of its
 // block) and M89 (after every positioning block until cancelled) run it where the tool
 // stands; CYCL CALL POS, CYCL CALL PAT and the pattern cycles 220 / 221 run it elsewhere
@@ -30,6 +31,10 @@ void Interp::cycle(Tokens t) {
     const bool def = t.size() >= 3 && t[1].is("DEF");
     if (t.size() >= 2 && t[1].is("CALL")) return cycle_call(t);
     if (def && in(t[2], 7, 8)) return datum_shift(t);
+    if (def && in(t[2], 8, 9)) return mirror_image(t);
+    if (def && in(t[2], 10, 11)) return rotation(t);
+    if (def && in(t[2], 11, 12)) return scaling(t);
+    if (def && in(t[2], 26, 27)) return axis_scaling(t);
     if (def && in(t[2], 9, 10)) return;  // DWELL TIME: no motion
     if (def && in(t[2], 19, 20)) return working_plane(t);
     if (def && in(t[2], 32, 33)) {
@@ -46,6 +51,7 @@ void Interp::cycle(Tokens t) {
         const double n = t[2].value;
         if (cycles::tnc::is_drilling(static_cast<int>(n)) || n == 208) return define_machining(t, static_cast<int>(n));
         if (n == 220 || n == 221) return pattern_cycle(t, static_cast<int>(n));
+        if (n == 247) return datum_setting(t);
     }
     std::string what = "CYCL";
     for (std::size_t i = 1; i < t.size() && (t[i].key.empty() ? t[i].has_value : !t[i].has_value && t[i].key[0] != 'Q'); ++i)
@@ -64,28 +70,6 @@ void Interp::cycle_call(Tokens t) {
     modal_words(t, 2);  // CYCL CALL M3 ...
     cycle_call_pending_ = false;
     call_cycle(t[0].column);
-}
-
-// CYCL DEF 7.0 DATUM SHIFT, then 7.1 X.. / 7.2 Y.. / 7.3 Z.. (IX.. adds to the shift in force;
-// an axis not named keeps its shift; X+0 takes it back). A row of a datum table (#n) is
-// refused: toolcomp reads no datum tables.
-void Interp::datum_shift(Tokens t) {
-    static constexpr std::string_view names[3] = {"X", "Y", "Z"};
-    static constexpr std::string_view inc[3] = {"IX", "IY", "IZ"};
-    for (std::size_t i = 3; i < t.size(); ++i) {
-        const Token& k = t[i];
-        bool axis = false;
-        for (int a = 0; a < 3; ++a) {
-            if (k.is(names[a]) && k.has_value) datum_shift_[a] = k.value, axis = true;
-            if (k.is(inc[a]) && k.has_value) datum_shift_[a] += k.value, axis = true;
-        }
-        if (axis) continue;
-        if (t[2].value == 7 && !k.has_value) continue;  // 7.0 DATUM SHIFT: the cycle's name
-        fail(code::unsupported_word,
-             std::string(k.key.empty() ? "#" : k.key) + " in CYCL DEF 7: toolcomp shifts the datum by X, Y, Z values "
-                                                         "(IX, IY, IZ); datum tables are not read",
-             k.column);
-    }
 }
 
 // A machining cycle: its Q parameters (Q208=MAX / FMAX: +inf), the ones it needs checked.
@@ -158,7 +142,8 @@ void Interp::call_cycle(int column, double surface_shift, std::optional<double> 
                      name + ": the depth Q201 is positive: the TNC stops (or, with displayDepthErr off, drills from "
                             "below the surface); toolcomp refuses it",
                      column);
-            s.surface = d.q.at(203) + datum_shift_[c] + surface_shift;
+            s.surface = d.q.at(203) + surface_shift;
+            if (d.number == 208) refuse_scaled("CYCL DEF 208", column);
             if (d.number == 208) return bore_milling(cycles::tnc::bore_milling(d.q, s, radius_), end_height);
             moves = cycles::tnc::drilling(d.number, d.q, s);
             if (end_height) moves.back().to = *end_height;

@@ -30,12 +30,14 @@ void Interp::machine_datum_end(Tokens t, Vec3& end) const {
         }
     if (!datum) return;
     static constexpr std::string_view names[3] = {"X", "Y", "Z"};
+    Vec3 at = frame().point(end);  // from the preset: machine datums are not transformed
     for (std::size_t i = 1; i < t.size(); ++i)
         for (int a = 0; a < 3; ++a)
             if (t[i].is(names[a]) && t[i].has_value) {
                 const double from = datum == 92 && machine_ ? machine_->m92[static_cast<std::size_t>(a)] / unit_ : 0.0;
-                end[a] = t[i].value + from - work_origin_[a] - tlo_[a];
+                at[a] = t[i].value + from - work_origin_[a] - tlo_[a];
             }
+    end = frame().to_program(at);
 }
 
 // M140 MB n / MB MAX: before the rest of its block, the tool retracts along the tool axis, away
@@ -52,7 +54,7 @@ void Interp::retract(Tokens t) {
     if (!axis_called_) fail(code::tool_call, "M140 before any TOOL CALL: no tool axis to retract along", mb->column);
     if (side_ != 0) fail(code::comp_plane, "M140 with RL/RR: not supported by toolcomp", mb->column);
     const int c = axes(plane_).c;
-    Vec3 end = pos_;
+    Vec3 end = frame().point(pos_);  // from the preset: the retraction is the machine's
     if (mb->text == "MAX") {
         const double max = machine_ ? machine_->travel[static_cast<std::size_t>(c)].max : INFINITY;
         if (!std::isfinite(max))
@@ -60,11 +62,12 @@ void Interp::retract(Tokens t) {
                  "M140 MB MAX retracts to the end of the machine's travel: give the machine (a machine file with the " +
                      std::string(1, "XYZ"[c]) + " travel in [travel])",
                  mb->column);
-        end[c] = std::max(pos_[c], max / unit_ - work_origin_[c] - tlo_[c]);
+        end[c] = std::max(end[c], max / unit_ - work_origin_[c] - tlo_[c]);
     } else {
         if (!mb->has_value || mb->value < 0) fail(code::bad_word, "M140 MB needs a distance >= 0 or MAX", mb->column);
         end[c] += mb->value;
     }
+    end = frame().to_program(end);
     if (end == pos_) return;
     Motion m = motion_to(MotionKind::rapid, end);
     put(m);
@@ -75,10 +78,11 @@ void Interp::retract(Tokens t) {
 // at rapid first, with the tool in the spindle (the position is the spindle's).
 void Interp::to_tool_change_position() {
     if (!machine_) return;
-    Vec3 end = pos_;
+    Vec3 end = frame().point(pos_);  // from the preset
     for (int i = 0; i < 3; ++i)
         if (const auto& v = machine_->tool_change[static_cast<std::size_t>(i)])
             end[i] = *v / unit_ - work_origin_[i] - tlo_[i];
+    end = frame().to_program(end);
     if (end == pos_) return;
     if (side_ != 0) fail(code::comp_tool_change, "TOOL CALL with radius compensation RL/RR active: cancel it with R0 first");
     settle_pending();

@@ -73,8 +73,8 @@ void Interp::call_at_position(Tokens t) {
             fail(code::missing_value, "CYCL CALL POS needs " + std::string(kAxis[a]), t[2].column);
     const double feed = call_feed(t, 3);
     const Vec3 target = end_point(t, 3);
-    const double shift = target[ax.c] - datum_shift_[ax.c];
-    const double surface = d.q.at(203) + datum_shift_[ax.c] + shift;
+    const double shift = target[ax.c];
+    const double surface = d.q.at(203) + shift;
     if (pos_[ax.c] <= surface) axis_move(surface + d.q.at(204), INFINITY);
     plane_move(plane2(target), feed);
     call_cycle(t[0].column, shift);
@@ -132,7 +132,6 @@ void Interp::pattern_item(const Token& head, Tokens v) {
                  head.column);
         return static_cast<int>(n);
     };
-    const Vec2 shift(datum_shift_[ax.a], datum_shift_[ax.b]);
     const double z = get(kAxis[ax.c], 0.0);
     auto add = [&](const Vec2& p) {
         if (pattern_.size() >= kMaxPatternPoints) fail(code::cycle_bad_value, "PATTERN DEF: more than 100000 points", head.column);
@@ -144,11 +143,11 @@ void Interp::pattern_item(const Token& head, Tokens v) {
         for (int i = 0; i < 2; ++i) {
             const int a = i == 0 ? ax.a : ax.b;
             if (const auto inc = number(v, kIncAxis[a])) p[i] = before[i] + *inc;
-            else p[i] = get(kAxis[a]) + shift[i];
+            else p[i] = get(kAxis[a]);
         }
         return add(p);
     }
-    const Vec2 start = Vec2(get(kAxis[ax.a]), get(kAxis[ax.b])) + shift;
+    const Vec2 start(get(kAxis[ax.a]), get(kAxis[ax.b]));
     if (kind == "ROW") {
         const int n = count("NUM");
         for (int i = 0; i < n; ++i) add(start + rotated({i * get("D"), 0}, get("ROT", 0.0)));
@@ -176,7 +175,7 @@ void Interp::call_pattern(Tokens t) {
     if (pattern_.empty()) fail(code::unsupported_block, "CYCL CALL PAT without a PATTERN DEF", t[0].column);
     const double feed = call_feed(t, 3);
     const int c = axes(plane_).c;
-    const double safe = std::max(pos_[c], d.q.at(203) + datum_shift_[c] + pattern_.front().z + d.q.at(204));
+    const double safe = std::max(pos_[c], d.q.at(203) + pattern_.front().z + d.q.at(204));
     const std::vector<PatternPoint> points = pattern_;
     for (const PatternPoint& p : points) {
         if (pos_[c] < safe) axis_move(safe, INFINITY);
@@ -210,7 +209,6 @@ void Interp::pattern_cycle(Tokens t, int number) {
              t[0].column);
     if (q.at(301) != 0 && q.at(301) != 1) fail(code::cycle_bad_value, name + ": Q301 is 0 or 1", t[0].column);
     const PlaneAxes ax = axes(plane_);
-    const Vec2 shift(datum_shift_[ax.a], datum_shift_[ax.b]);
     auto count = [&](int n) {
         if (q.at(n) < 1 || q.at(n) != std::floor(q.at(n)) || q.at(n) > static_cast<double>(kMaxPatternPoints))
             fail(code::cycle_bad_value, name + ": Q" + std::to_string(n) + " is a number of points, 1 or more", t[0].column);
@@ -225,13 +223,13 @@ void Interp::pattern_cycle(Tokens t, int number) {
             if (sweep == 0) fail(code::cycle_bad_value, name + ": the stopping angle Q246 equals the starting angle Q245", t[0].column);
             step = std::fabs(std::fabs(sweep) - 360) < 1e-9 ? sweep / n : n == 1 ? 0 : sweep / (n - 1);
         }
-        const Vec2 centre = Vec2(q.at(216), q.at(217)) + shift;
+        const Vec2 centre(q.at(216), q.at(217));
         for (int i = 0; i < n; ++i) points.push_back(centre + rotated({q.at(244) / 2, 0}, q.at(245) + i * step));
     } else {
         const int nx = count(242), ny = count(243);
         if (static_cast<double>(nx) * ny > static_cast<double>(kMaxPatternPoints))
             fail(code::cycle_bad_value, name + ": more than 100000 points", t[0].column);
-        const Vec2 start = Vec2(q.at(225), q.at(226)) + shift;
+        const Vec2 start(q.at(225), q.at(226));
         for (int j = 0; j < ny; ++j)
             for (int k = 0; k < nx; ++k) {
                 const int i = j % 2 == 0 ? k : nx - 1 - k;
@@ -240,7 +238,7 @@ void Interp::pattern_cycle(Tokens t, int number) {
     }
     const CycleDef saved = d;
     for (int n : {200, 203, 204}) d.q[n] = q.at(n);
-    const double surface = q.at(203) + datum_shift_[ax.c];
+    const double surface = q.at(203);
     const double height = surface + (q.at(301) == 1 ? q.at(204) : q.at(200));
     if (pos_[ax.c] < surface + q.at(204)) axis_move(surface + q.at(204), INFINITY);
     for (const Vec2& p : points) {

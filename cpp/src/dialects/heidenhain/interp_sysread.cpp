@@ -139,12 +139,16 @@ double Interp::system_datum(int id, int nr, int idx, int column) const {
             if (nr == 2 && idx == 0) return tlo_[axis];
             break;
         case 210:
-            if (nr == 2) return 0;                  // rotation (cycle 10)
-            if (nr == 3) return 0;                  // mirrored axes
-            if (nr == 4) return axis_index(), 1.0;  // scaling factor of the axis
+            if (nr == 2) return transforms_.rotation;  // rotation (cycle 10)
+            if (nr == 3) {                             // mirrored axes: bits 0-2 X, Y, Z
+                int bits = 0;
+                for (int i = 0; i < 3; ++i) bits |= transforms_.mirror[static_cast<std::size_t>(i)] ? 1 << i : 0;
+                return bits;
+            }
+            if (nr == 4) return transforms_.scale * transforms_.axis_scale[axis_index()];  // scaling of the axis
             break;
         case 220:
-            if (nr == 2) return datum_shift_[axis_index()];  // the datum shift (cycle 7)
+            if (nr == 2) return transforms_.shift[axis_index()];  // the datum shift (cycle 7)
             break;
         case 230:  // software limits of the machine (machine frame)
             if ((nr == 2 || nr == 3) && machine_) {
@@ -157,7 +161,7 @@ double Interp::system_datum(int id, int nr, int idx, int column) const {
                      column);
             break;
         case 270:  // the current position in the active coordinate system
-            if (nr == 1) return pos_[axis_index()] - datum_shift_[axis_index()];
+            if (nr == 1) return pos_[axis_index()];
             break;
         default:
             break;

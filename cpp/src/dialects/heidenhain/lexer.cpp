@@ -97,6 +97,18 @@ private:
                 quoted();
                 continue;
             }
+            if (s_[i_] == '#' && i_ + 1 < s_.size() && ascii_digit(s_[i_ + 1])) {  // CYCL DEF 7.1 #5: a table row
+                Token t;
+                t.key = "#";
+                t.column = col();
+                std::size_t end = ++i_;
+                while (end < s_.size() && ascii_digit(s_[end])) ++end;
+                t.value = std::stod(std::string(s_.substr(i_, end - i_)));
+                t.has_value = true;
+                i_ = end;
+                prog_.add_token(std::move(t));
+                continue;
+            }
             if (s_[i_] == '(' || s_[i_] == ')') {  // PATTERN DEF: POS1 ( X+25 Y+33.5 Z+0 )
                 Token t;
                 t.key = std::string(1, s_[i_]);
