@@ -137,6 +137,9 @@ void bind_machine(py::module_& m) {
                 mc.g_codes = std::move(by10);
             },
             "LinuxCNC's remapped G codes: {88.6: MachineCode('subprogram', program=..., argspec=...)} (a copy)")
+        .def_readwrite("cycles", &Machine::cycles,
+                       "Heidenhain builder cycles: {392: MachineCode('nothing', 'ATC')}: accepted, their Q parameters "
+                       "set, no motion (a copy)")
         .def_property("work_origin", triple_get(&Machine::work_origin),
                       triple_set("work_origin", &Machine::work_origin), "where program zero (G54) lies in machine coordinates, (x, y, z) mm")
         .def_property("g28", triple_get(&Machine::g28),

@@ -550,6 +550,7 @@ class Machine:
     profile: ControlProfile
     m_codes: Dict[int, MachineCode]
     g_codes: Dict[float, MachineCode]
+    cycles: Dict[int, MachineCode]
     work_origin: Tuple[float, float, float]
     g28: Tuple[float, float, float]
     g30: Tuple[float, float, float]

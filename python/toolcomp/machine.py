@@ -62,7 +62,8 @@ __all__ = ["read", "parse", "dumps", "write", "preset", "presets", "resolve"]
 _PRESETS = os.path.join(os.path.dirname(__file__), "machines")
 _CONTROLS = tuple(row["name"] for row in _core.dialect_table())
 _AXES = ("x", "y", "z")
-_TOP = {"name", "control", "kind", "units", "spindles", "profile", "m_codes", "g_codes", "positions", "travel", "rates"}
+_TOP = {"name", "control", "kind", "units", "spindles", "profile", "m_codes", "g_codes", "cycles", "positions", "travel",
+        "rates"}
 _MM_PER_INCH = 25.4
 
 
@@ -270,6 +271,20 @@ def parse(text: str, path: Optional[str] = None) -> "_core.Machine":
     except ValueError as e:
         raise src.error(f"g_codes: {e}", "g_codes") from None
 
+    cycles = {}  # Heidenhain builder cycles: 392 = { action = "nothing", name = "ATC" }
+    for key, value in _table(src, doc, "cycles").items():
+        if not key.isdigit():
+            raise src.error(f"cycles: '{key}' is no cycle number", "cycles", key)
+        if isinstance(value, str):
+            value = {"action": value}
+        if not isinstance(value, dict) or set(value) - {"action", "name"} or "action" not in value:
+            raise src.error(f"cycles.{key} must be an action or {{ action = ..., name = ... }}", "cycles", key)
+        try:
+            cycles[int(key)] = _core.MachineCode(value["action"], str(value.get("name", "")))
+        except ValueError as e:
+            raise src.error(f"cycles.{key}: {e}", "cycles", key) from None
+    m.cycles = cycles
+
     positions = _table(src, doc, "positions")
     for key, value in positions.items():
         if key in ("work_origin", "g28", "g30", "m92"):
@@ -390,6 +405,9 @@ def dumps(m: "_core.Machine") -> str:
     if m.g_codes:
         lines.append("\n[g_codes]")
         lines += [code_line(f'"{n:g}"', c, ("program", "argspec", "name")) for n, c in sorted(m.g_codes.items())]
+    if m.cycles:
+        lines.append("\n[cycles]")
+        lines += [code_line(n, c, ("action", "name")) for n, c in sorted(m.cycles.items())]
     lines.append("\n[positions]")
     lines.append(f"work_origin = {_toml_value(list(m.work_origin))}")
     lines.append(f"g28 = {_toml_value(list(m.g28))}")

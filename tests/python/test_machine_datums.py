@@ -199,3 +199,30 @@ def test_without_a_machine_m91_and_m92_are_measured_from_the_preset():
     res = tc.run(tc.Program.parse(KLARTEXT.replace("6 L Z-1", "6 L Z+0").replace("7 L X-50 Y-10", "7 L X+10 Y-10"),
                                   dialect="heidenhain"))
     np.testing.assert_allclose(res.nominal.end[2:4], [[10, 20, -100], [10, -10, -100]])
+
+
+def test_builder_cycles_declared_in_the_machine_file_run_without_moving():
+    # DMG's CYCL DEF 392 ATC (a dynamics setting): refused on the plain TNC, accepted where
+    # the machine declares it; its Q parameters become the program's.
+    text = ("0 BEGIN PGM A MM\n1 CYCL DEF 392 ATC ~\n    Q240=+1 ;MODE ~\n    Q241=+2 ;LEVEL\n"
+            "2 L X+Q241 Y+0 Z+0 R0 FMAX\n3 END PGM A MM\n")
+    with pytest.raises(tc.ProgramError) as e:
+        tc.run(tc.Program.parse(text, dialect="heidenhain"))
+    assert e.value.code == "unsupported_block" and "CYCL DEF 392 ATC" in e.value.message
+    m = tc.Machine.parse('control = "heidenhain"\nkind = "mill"\n[cycles]\n392 = { action = "nothing", name = "ATC" }\n')
+    assert m.cycles[392].name == "ATC"
+    res = tc.run(tc.Program.parse(text, dialect="heidenhain"), machine=m)
+    np.testing.assert_allclose(res.nominal.end, [[2, 0, 0]])
+    again = tc.Machine.parse(m.dumps())
+    assert again.cycles[392].name == "ATC"
+
+
+@pytest.mark.parametrize("text, what", [
+    ('control = "fanuc"\nkind = "mill"\n[cycles]\n392 = "nothing"\n', "Heidenhain"),
+    ('control = "heidenhain"\nkind = "mill"\n[cycles]\n200 = "nothing"\n', "TNC itself"),
+    ('control = "heidenhain"\nkind = "mill"\n[cycles]\n392 = "coolant_on"\n', "nothing"),
+])
+def test_builder_cycles_that_a_machine_file_cannot_declare(text, what):
+    with pytest.raises(tc.ParseError) as e:
+        tc.Machine.parse(text)
+    assert e.value.code == "machine_file" and what in e.value.message

@@ -81,6 +81,16 @@ void check_machine(const Machine& m) {
             bad("g_codes", where + ": '" + code.program + "' is no subroutine name");
         check_argspec("g_codes", where, code.argspec);
     }
+    for (const auto& [number, code] : m.cycles) {
+        const std::string where = "CYCL DEF " + std::to_string(number);
+        if (m.control != Dialect::heidenhain) bad("cycles", where + ": builder cycles are the Heidenhain's");
+        if (number < 1 || number > 9999) bad("cycles", where + " is no cycle number");
+        if (code.action != MCodeAction::nothing)
+            bad("cycles", where + ": a builder cycle is declared with the action nothing (it does not move the tool)");
+        static constexpr int kRun[] = {1, 7, 8, 9, 10, 11, 17, 19, 26, 32, 200, 201, 203, 205, 207, 208, 220, 221, 247};
+        if (std::find(std::begin(kRun), std::end(kRun), number) != std::end(kRun))
+            bad("cycles", where + " is a cycle of the TNC itself");
+    }
     for (int i = 0; i < 3; ++i) {
         const std::string a = kAxis[i];
         finite("work_origin." + a, m.work_origin[i]);

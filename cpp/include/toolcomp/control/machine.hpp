@@ -90,6 +90,9 @@ struct Machine {
     // LinuxCNC's remapped G codes (REMAP=G88.6 ... ngc=...): by the code x 10 (886), each a
     // subprogram with its argspec, run as the block's motion. Only codes LinuxCNC lacks.
     std::map<int, MachineCode> g_codes;
+    // Heidenhain builder cycles (DMG's CYCL DEF 392 ATC, ...) by number: action nothing, the
+    // definition's Q parameters are the program's, nothing moves.
+    std::map<int, MachineCode> cycles;
 
     // Where program zero (G54, the first work offset) lies in machine coordinates: G53 moves
     // and the travel limits are measured from it. A LinuxCNC .var file or G10 still set it.
@@ -123,6 +126,10 @@ struct Machine {
     const MachineCode* g_code(int code10) const {
         auto it = g_codes.find(code10);
         return it == g_codes.end() ? nullptr : &it->second;
+    }
+    const MachineCode* cycle(int number) const {
+        auto it = cycles.find(number);
+        return it == cycles.end() ? nullptr : &it->second;
     }
     bool has_travel_limits() const { return travel[0].limited() || travel[1].limited() || travel[2].limited(); }
 };

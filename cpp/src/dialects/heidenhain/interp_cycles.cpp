@@ -49,6 +49,7 @@ void Interp::cycle(Tokens t) {
     if (def && (in(t[2], 1, 2) || in(t[2], 17, 18))) return define_old_cycle(t);
     if (def && t[2].key.empty() && t[2].has_value) {
         const double n = t[2].value;
+        if (machine_ && n == std::floor(n) && machine_->cycle(static_cast<int>(n))) return builder_cycle(t);
         if (cycles::tnc::is_drilling(static_cast<int>(n)) || n == 208) return define_machining(t, static_cast<int>(n));
         if (n == 220 || n == 221) return pattern_cycle(t, static_cast<int>(n));
         if (n == 247) return datum_setting(t);
@@ -70,6 +71,17 @@ void Interp::cycle_call(Tokens t) {
     modal_words(t, 2);  // CYCL CALL M3 ...
     cycle_call_pending_ = false;
     call_cycle(t[0].column);
+}
+
+// A builder cycle of the machine (CYCL DEF 392 ATC on DMG machines): its Q parameters are the
+// program's; it does not move the tool.
+void Interp::builder_cycle(Tokens t) {
+    for (std::size_t i = 3; i < t.size(); ++i) {
+        const Token& k = t[i];
+        if (k.key.size() >= 2 && k.key[0] == 'Q' && k.key.find_first_not_of("0123456789", 1) == std::string::npos &&
+            k.has_value)
+            q_[std::stoi(k.key.substr(1))] = k.value;
+    }
 }
 
 // A machining cycle: its Q parameters (Q208=MAX / FMAX: +inf), the ones it needs checked.
