@@ -226,3 +226,17 @@ def test_builder_cycles_that_a_machine_file_cannot_declare(text, what):
     with pytest.raises(tc.ParseError) as e:
         tc.Machine.parse(text)
     assert e.value.code == "machine_file" and what in e.value.message
+
+
+def test_sysread_240_reads_the_machine_position_an_m91_block_programs():
+    # Program Z+5 with the 100 mm tool, the preset at machine Z-400: the spindle at machine
+    # Z 5 - 400 + 100 = -295; X 10 - 300 = -290 under a datum shift of X+10 (program X0).
+    text = ("0 BEGIN PGM S MM\n1 TOOL DEF 1 L+100 R+5\n2 TOOL CALL 1 Z S3000\n3 CYCL DEF 7.0 DATUM SHIFT\n"
+            "4 CYCL DEF 7.1 X+10\n5 L X+0 Y+0 Z+5 R0 FMAX\n6 FN 18: SYSREAD Q1 = ID240 NR1 IDX3\n"
+            "7 FN 18: SYSREAD Q2 = ID240 NR1 IDX1\n8 L X+Q2 Z+Q1 R0 FMAX M91\n9 L X+Q2 Y+Q1 R0 FMAX\n"
+            "10 END PGM S MM\n")
+    res = tc.run(tc.Program.parse(text, dialect="heidenhain"), machine=_tnc())
+    assert len(res.nominal) == 2  # the M91 block (line 9) stays where it is
+    assert 9 not in res.nominal.line
+    # The values themselves, as program coordinates: X -290 (+10 shift), Y -295.
+    np.testing.assert_allclose(res.nominal.end[-1], [-280, -295, 5])

@@ -83,9 +83,10 @@ void Interp::sysread(const Token& statement) {
 }
 
 // The groups programs read: the units, the tool (its number, axis, table data, TOOL CALL
-// deltas, its active radius and length), the feed, the transformations (the datum shift of
-// cycle 7; rotation, mirror and scaling are refused, so 0, none and 1), the travel limits of the machine
-// and the current position in the active system. Lengths in program units.
+// deltas, its active radius and length), the feed, the transformations (cycles 7, 8, 10, 11,
+// 26), the travel limits of the machine, the current position in the active system (ID270)
+// and in the machine's (ID240: the spindle's, as an M91 block programs it, so that L Z+Q1 M91
+// after FN 18 ... ID240 NR1 IDX3 stays where it is). Lengths in program units.
 double Interp::system_datum(int id, int nr, int idx, int column) const {
     const int axis = axes(working_plane_.value_or(plane_)).c;  // 0 X, 1 Y, 2 Z
     auto refused = [&]() -> double {
@@ -159,6 +160,9 @@ double Interp::system_datum(int id, int nr, int idx, int column) const {
             if (nr == 2 || nr == 3)
                 fail(code::travel_limit, "FN 18: SYSREAD ID230 reads the machine's travel: give the machine (a machine file with [travel])",
                      column);
+            break;
+        case 240:  // the nominal position in the machine (REF) system
+            if (nr == 1) return frame().point(pos_)[axis_index()] + work_origin_[axis_index()] + tlo_[axis_index()];
             break;
         case 270:  // the current position in the active coordinate system
             if (nr == 1) return pos_[axis_index()];
