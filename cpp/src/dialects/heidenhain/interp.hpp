@@ -71,7 +71,8 @@ private:
     std::optional<CycleDef> cycle_def_;
     void define_machining(Tokens t, int number);
     void define_old_cycle(Tokens t);
-    void builder_cycle(Tokens t);  // a cycle the machine file declares (Machine::cycles)
+    void builder_cycle(Tokens t);
+    std::map<int, double> cycle_parameters(Tokens t) const;  // Q200=... of a definition  // a cycle the machine file declares (Machine::cycles)
     void working_plane(Tokens t);  // CYCL DEF 19
     void plane_function(Tokens t);  // PLANE ...
     void untilted_plane();          // Q120-Q122 = 0

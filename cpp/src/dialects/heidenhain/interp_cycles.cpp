@@ -76,26 +76,37 @@ void Interp::cycle_call(Tokens t) {
 // A builder cycle of the machine (CYCL DEF 392 ATC on DMG machines): its Q parameters are the
 // program's; it does not move the tool.
 void Interp::builder_cycle(Tokens t) {
-    for (std::size_t i = 3; i < t.size(); ++i) {
-        const Token& k = t[i];
-        if (k.key.size() >= 2 && k.key[0] == 'Q' && k.key.find_first_not_of("0123456789", 1) == std::string::npos &&
-            k.has_value)
-            q_[std::stoi(k.key.substr(1))] = k.value;
-    }
+    for (const auto& [n, v] : cycle_parameters(t))
+        if (std::isfinite(v)) q_[n] = v;
 }
 
-// A machining cycle: its Q parameters (Q208=MAX / FMAX: +inf), the ones it needs checked.
+// The Q parameters of a cycle's definition (Q200=+2 ...; Q208=MAX or FMAX: +inf), by number.
+// The words of the cycle's name pass (DRILLING, BOHREN, ...); a value outside a Q parameter,
+// or a keyword toolcomp does not read (FAUTO, PREDEF), is refused.
+std::map<int, double> Interp::cycle_parameters(Tokens t) const {
+    std::map<int, double> q;
+    for (std::size_t i = 3; i < t.size(); ++i) {
+        const Token& k = t[i];
+        const bool parameter = k.key.size() >= 2 && k.key[0] == 'Q' && k.key.find_first_not_of("0123456789", 1) == std::string::npos;
+        if (!parameter) {
+            if (k.has_value || k.key.empty())
+                fail(code::bad_word, (k.key.empty() ? std::string("A number") : k.key) + " is not read in a cycle definition",
+                     k.column);
+            continue;
+        }
+        const int n = std::stoi(k.key.substr(1));
+        if (k.has_value) q[n] = k.value;
+        else if (k.text == "MAX" || k.text == "FMAX") q[n] = INFINITY;
+        else fail(code::unsupported_word, "Q" + std::to_string(n) + "=" + k.text + " is not supported by toolcomp", k.column);
+    }
+    return q;
+}
+
+// A machining cycle: its Q parameters, the ones it needs checked.
 void Interp::define_machining(Tokens t, int number) {
     CycleDef def;
     def.number = number;
-    for (std::size_t i = 3; i < t.size(); ++i) {
-        const Token& k = t[i];
-        if (k.key.size() < 2 || k.key[0] != 'Q' || k.key.find_first_not_of("0123456789", 1) != std::string::npos) continue;
-        const int n = std::stoi(k.key.substr(1));
-        if (k.has_value) def.q[n] = k.value;
-        else if (k.text == "MAX" || k.text == "FMAX") def.q[n] = INFINITY;
-        else fail(code::unsupported_word, "Q" + std::to_string(n) + "=" + k.text + " is not supported by toolcomp", k.column);
-    }
+    def.q = cycle_parameters(t);
     for (int n : cycles::tnc::required_q(number))
         if (!def.q.count(n))
             fail(code::cycle_q_missing, "CYCL DEF " + std::to_string(number) + ": Q" + std::to_string(n) + " missing",

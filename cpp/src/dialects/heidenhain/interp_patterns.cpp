@@ -192,13 +192,9 @@ void Interp::pattern_cycle(Tokens t, int number) {
     static const std::vector<int> k220{216, 217, 244, 245, 246, 247, 241, 200, 203, 204, 301},
         k221{225, 226, 237, 238, 242, 243, 224, 200, 203, 204, 301};
     const std::string name = "CYCL DEF " + std::to_string(number);
-    std::map<int, double> q;
-    for (std::size_t i = 3; i < t.size(); ++i) {
-        const Token& k = t[i];
-        if (k.key.size() < 2 || k.key[0] != 'Q' || k.key.find_first_not_of("0123456789", 1) != std::string::npos) continue;
-        if (!k.has_value) fail(code::unsupported_word, k.key + "=" + k.text + " is not read in " + name, k.column);
-        q[std::stoi(k.key.substr(1))] = k.value;
-    }
+    const std::map<int, double> q = cycle_parameters(t);
+    for (const auto& [n, v] : q)
+        if (!std::isfinite(v)) fail(code::unsupported_word, name + ": Q" + std::to_string(n) + " takes a number", t[2].column);
     for (int n : number == 220 ? k220 : k221)
         if (!q.count(n)) fail(code::cycle_q_missing, name + ": Q" + std::to_string(n) + " missing", t[2].column);
     for (const auto& [n, v] : q) q_[n] = v;
