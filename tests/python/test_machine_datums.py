@@ -46,8 +46,9 @@ def _tnc(**fields):
 def test_m91_and_m92_positions_are_the_spindles_from_the_machine_datums():
     res = tc.run(tc.Program.parse(KLARTEXT, dialect="heidenhain"), machine=_tnc())
     assert res.ok
-    # The run starts at the machine's zero: program (300, 200, 400).
-    np.testing.assert_allclose(res.nominal.start[0], [300, 200, 400])
+    # The run starts with the spindle at the machine's zero, program (300, 200, 400); TOOL CALL
+    # 1 keeps the spindle there, so the tip of the 100 mm tool starts at program Z 300.
+    np.testing.assert_allclose(res.nominal.start[0], [300, 200, 300])
     # (Block n is line n + 1 of the file.)
     np.testing.assert_allclose(res.nominal.end, [
         [300, 200, 5],

@@ -272,8 +272,12 @@ void Interp::tool_call(Tokens t) {
     radius_ = number_ == 0 ? 0 : radius + dr;
     sum_dr_ = number_ == 0 ? 0 : dr + dr_tab;
     sum_dr2_ = number_ == 0 ? 0 : dr2 + dr2_tab;
+    const Vec3 before = tlo_;
     tlo_.setZero();
     tlo_[axes(plane_).c] = number_ == 0 ? 0 : length + dl;
+    // On a machine the spindle stays where it stands: the tip's coordinate changes by the
+    // difference of the lengths (without one the tip keeps its coordinate: doc/heidenhain.md).
+    if (machine_) pos_ = frame().to_program(frame().point(pos_) + before - tlo_);
 }
 
 void Interp::line(Tokens t) {
