@@ -123,10 +123,7 @@ fuzz: bootstrap build/.fuzz-apt-stamp
 # the Python run: test_notebooks.py (Jupyter kernels and matplotlib under ASan take minutes
 # and add no engine coverage the other tests lack).
 SAN_DIR      := build/sanitize
-# The Ctrl-C test of iter_run gets no SIGINT in the sanitizer suite's process (it passes alone
-# there, and in `make test`): deselected here until understood.
-SAN_PY_SKIP  := --ignore=tests/python/test_notebooks.py \
-                --deselect tests/python/test_iter_run.py::test_ctrl_c_while_a_chunk_is_made_interrupts_the_wait
+SAN_PY_SKIP  := --ignore=tests/python/test_notebooks.py
 # libstdc++ is preloaded too: python does not link it, and ASan's __cxa_throw interceptor
 # must find it when ASan starts.
 SAN_PRELOAD   = $(shell g++ -print-file-name=libasan.so) $(shell g++ -print-file-name=libstdc++.so.6)

@@ -376,3 +376,19 @@ def test_m126_turns_a_rotary_axis_the_shorter_way():
     text = program("L C+350 X+1 R0 FMAX", "L C+10 X+2 R0 FMAX M126", "L C+350 X+3 FMAX M127", "L C+10 X+4 FMAX")
     c = [float(v) for v in run(text).nominal.abc[:, 2]]
     assert c[-4:] == [350, 370, 350, 10]
+
+
+@pytest.mark.parametrize("cycle, marker", [
+    (CYCLE_200.replace("Q202=+5 ", "Q202=+0.001 ").replace("Q201=-5 ", "Q201=-100 ") + "\n%LINE CYCL CALL",
+     "CYCL CALL"),
+    (CYCLE_200 + "\n%LINE " + POLAR.replace("Q241=+4", "Q241=+5000"), "CYCL DEF 220"),
+])
+def test_cycle_moves_count_against_the_block_limit(cycle, marker):
+    # 100 000 pecks, or 5000 holes: stopped at the limit of 2000 blocks, at the calling block.
+    profile = tc.ControlProfile("heidenhain")
+    profile.block_limit = 2000
+    first, second = cycle.split("\n%LINE ")
+    text = program("L X+0 Y+0 Z+50 R0 FMAX", first, second)
+    with pytest.raises(tc.ProgramError) as e:
+        run(text, profile=profile)
+    assert e.value.code == "block_limit" and e.value.line == line_of(text, marker)

@@ -36,8 +36,9 @@ double retraction_feed(const QValues& q, double plunge, const Setting& s, double
 
 class Moves {
 public:
-    explicit Moves(int cycle) : cycle_(cycle) {}
+    Moves(int cycle, std::size_t max_moves) : cycle_(cycle), max_(max_moves) {}
     void to(double z, double feed) {
+        if (out.size() >= max_) throw MoveLimit{};
         if (out.size() > 4 * kMaxPecks) refuse(cycle_, "more than a million pecks");
         out.push_back({z, feed});
     }
@@ -45,11 +46,12 @@ public:
 
 private:
     int cycle_;
+    std::size_t max_;
 };
 
 // The plunges of 203 and 205: Q202 first, each next one smaller by Q212 but not below Q205,
 // the last one what remains; the depths reached (below the start `top`, down to `bottom`).
-std::vector<double> plunge_depths(int cycle, const QValues& q, double top, double bottom) {
+std::vector<double> plunge_depths(int cycle, const QValues& q, double top, double bottom, std::size_t max_moves) {
     const double first = q.at(202), decrement = get(q, 212, 0), minimum = get(q, 205, 0);
     if (!(first > 0)) refuse(cycle, "the plunging depth Q202 must be above 0");
     if (decrement < 0 || minimum < 0) refuse(cycle, "the decrement Q212 and the minimum plunging depth Q205 must be 0 or more");
@@ -57,6 +59,7 @@ std::vector<double> plunge_depths(int cycle, const QValues& q, double top, doubl
     double at = top;
     for (std::size_t k = 0; at > bottom; ++k) {
         if (k >= kMaxPecks) refuse(cycle, "more than a million pecks");
+        if (k >= max_moves) throw MoveLimit{};
         double plunge = first - static_cast<double>(k) * decrement;
         if (minimum > 0) plunge = std::max(plunge, minimum);
         if (!(plunge > 0))
@@ -72,7 +75,7 @@ std::vector<AxialMove> drilling_200(const QValues& q, const Setting& s) {
     const double clear = s.surface + q.at(200), bottom = s.surface + q.at(201);
     const double feed = q.at(206) * s.feed_unit;
     if (!(q.at(202) > 0)) refuse(200, "the plunging depth Q202 must be above 0");
-    Moves m(200);
+    Moves m(200, s.max_moves);
     m.to(clear, kRapid);
     double at = s.surface;
     for (;;) {
@@ -99,8 +102,8 @@ std::vector<AxialMove> universal_drilling_203(const QValues& q, const Setting& s
     const double breaks = q.at(213), lift = get(q, 256, 0.2);
     if (breaks < 0 || breaks != std::floor(breaks)) refuse(203, "the number of chip breaks Q213 must be a whole number, 0 or more");
     if (lift < 0) refuse(203, "the chip breaking distance Q256 must be 0 or more");
-    const std::vector<double> depths = plunge_depths(203, q, s.surface, bottom);
-    Moves m(203);
+    const std::vector<double> depths = plunge_depths(203, q, s.surface, bottom, s.max_moves);
+    Moves m(203, s.max_moves);
     m.to(clear, kRapid);
     double done = 0;
     for (std::size_t i = 0; i < depths.size(); ++i) {
@@ -133,14 +136,14 @@ std::vector<AxialMove> universal_pecking_205(const QValues& q, const Setting& s)
     if (get(q, 395, 0) != 0) refuse(205, "the depth reference Q395=1 (to the tool's cylindrical part) is not supported by toolcomp");
     const double top = s.surface - pilot;
     if (top <= bottom) refuse(205, "the deepened starting point Q379 is not above the depth");
-    Moves m(205);
+    Moves m(205, s.max_moves);
     m.to(clear, kRapid);
     if (pilot > 0) {
         const auto f = q.find(253);
         if (f == q.end()) refuse(205, "Q379 needs the pre-positioning feed Q253");
         m.to(top + q.at(200), std::isfinite(f->second) ? f->second * s.feed_unit : kRapid);
     }
-    const std::vector<double> depths = plunge_depths(205, q, top, bottom);
+    const std::vector<double> depths = plunge_depths(205, q, top, bottom, s.max_moves);
     const std::size_t returns = depths.size() - 1;
     double at = top;
     for (std::size_t i = 0; i < depths.size(); ++i) {
@@ -214,7 +217,7 @@ std::vector<AxialMove> pecking_1(const QValues& lines, const Setting& s) {
     const double surface = s.from - setup, bottom = surface + depth;
     const double mm = -depth * s.unit;
     const double t = (mm <= 30 ? 0.6 : std::min(mm / 50, 7.0)) / s.unit;
-    Moves m(1);
+    Moves m(1, s.max_moves);
     double at = surface;
     for (;;) {
         at = std::max(at - peck, bottom);

@@ -7,6 +7,7 @@
 // refused by the interpreter): the surface S (Q203, shifted), the set-up clearance S + Q200,
 // the bottom S + Q201, the 2nd set-up clearance S + Q204. A 2xx cycle starts with a rapid to
 // S + Q200 and ends at S + max(Q200, Q204). Feeds are returned in mm/min, +inf for FMAX.
+#include <cstdint>
 #include <map>
 #include <vector>
 
@@ -26,6 +27,7 @@ struct Setting {
     double feed_unit = 1;  // mm/min per program feed unit (2.54 in INCH programs)
     double unit = 1;       // mm per program unit
     double speed = 0;      // spindle speed, rev/min (tapping)
+    std::size_t max_moves = SIZE_MAX;  // beyond: MoveLimit (turning_roughing.hpp)
 };
 
 // The Q parameters a cycle's definition must give (the ones the TNC writes that have no

@@ -454,9 +454,7 @@ bool Interp::run_blocks(const Program& prog, int depth) {
         auto raw = prog.tokens(blocks[pc]);
         line_ = blocks[pc].line;
         if (progress_ && (executed_ + 1) % progress_every_ == 0) progress_(executed_ + 1);
-        if (++executed_ > profile_.block_limit)
-            fail(code::block_limit, "More than " + std::to_string(profile_.block_limit) +
-                                    " blocks executed: an endless loop? (ControlProfile.block_limit)");
+        if (++executed_ > profile_.block_limit) block_limit_exceeded(0);
         if (idle_.too_long(moves_, profile_.no_motion_limit)) [[unlikely]]
             fail(code::no_progress, no_progress_text(profile_.no_motion_limit));
         if (raw.empty() || (blocks[pc].block_delete && block_delete_)) {

@@ -81,6 +81,10 @@ private:
     // Runs the cycle where the tool stands, its surface shifted by `surface_shift` along the
     // tool axis; `end_height`: where it ends instead of its own end (a pattern's traverse height).
     void call_cycle(int column, double surface_shift = 0, std::optional<double> end_height = std::nullopt);
+    // A cycle's moves count as blocks (ControlProfile::block_limit), as ISO canned cycles'
+    // repeats do: `moves` more, or the run stops with block_limit.
+    void count_moves(std::size_t moves, int column);
+    [[noreturn]] void block_limit_exceeded(int column) const;
     void axis_move(double to, double feed);         // along the tool axis, mm/min (+inf: FMAX)
     void plane_move(const Vec2& to, double feed);   // in the working plane, R0
     void bore_milling(const cycles::tnc::BoreMilling& b, std::optional<double> end_height);

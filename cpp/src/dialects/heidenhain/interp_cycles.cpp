@@ -150,6 +150,7 @@ void Interp::call_cycle(int column, double surface_shift, std::optional<double> 
     s.feed_unit = prog_.inch ? 2.54 : 1.0;  // mm/min per program feed unit
     s.unit = unit_;
     s.speed = speed_;
+    s.max_moves = profile_.block_limit - std::min(executed_, profile_.block_limit);
     std::vector<cycles::tnc::AxialMove> moves;
     try {
         if (d.number == 1 || d.number == 17) {
@@ -166,15 +167,32 @@ void Interp::call_cycle(int column, double surface_shift, std::optional<double> 
                             "below the surface); toolcomp refuses it",
                      column);
             s.surface = d.q.at(203) + surface_shift;
-            if (d.number == 208) refuse_scaled("CYCL DEF 208", column);
-            if (d.number == 208) return bore_milling(cycles::tnc::bore_milling(d.q, s, radius_), end_height);
+            if (d.number == 208) {
+                refuse_scaled("CYCL DEF 208", column);
+                count_moves(6, column);
+                return bore_milling(cycles::tnc::bore_milling(d.q, s, radius_), end_height);
+            }
             moves = cycles::tnc::drilling(d.number, d.q, s);
             if (end_height) moves.back().to = *end_height;
         }
+    } catch (const cycles::MoveLimit&) {
+        block_limit_exceeded(column);
     } catch (const cycles::CycleError& e) {
         fail(e.code, e.message, column);
     }
+    count_moves(moves.size(), column);
     for (const auto& m : moves) axis_move(m.to, m.feed);
+}
+
+void Interp::count_moves(std::size_t moves, int column) {
+    executed_ += moves;
+    if (executed_ > profile_.block_limit) block_limit_exceeded(column);
+}
+
+void Interp::block_limit_exceeded(int column) const {
+    fail(code::block_limit, "More than " + std::to_string(profile_.block_limit) +
+                                " blocks executed, cycle moves included: an endless loop? (ControlProfile.block_limit)",
+         column);
 }
 
 // A move along the tool axis at `feed` mm/min (+inf: FMAX); none where the tool is.
