@@ -350,6 +350,8 @@ void bind_run(py::module_& m) {
                        "the escape of a G71/G72 pass when the cycle gives no R, mm (Fanuc parameter 5133, Haas setting 73)")
         .def_readwrite("pattern_return_shifted", &ControlProfile::pattern_return_shifted,
                        "G73: after each pass the tool goes back to the start shifted as the next pass (Haas)")
+        .def_readwrite("cutting_edge_default", &ControlProfile::cutting_edge_default,
+                       "Sinumerik MD20270: the edge M6 selects (n; 0 none; -1 the D number programmed before M6)")
         .def_readwrite("m89_modal_cycle_call", &ControlProfile::m89_modal_cycle_call,
                        "Heidenhain M89 calls the cycle after every positioning block until M99 / CYCL CALL / CYCL DEF "
                        "(false: a free M function)")

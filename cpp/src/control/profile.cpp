@@ -270,6 +270,8 @@ void check_profile(const ControlProfile& p) {
     if (r.lookahead > 1000) bad("radius.lookahead", "at most 1000", r.lookahead);
     if (p.call_depth_limit > kMaxCallDepthLimit)
         bad("call_depth_limit", "at most " + std::to_string(kMaxCallDepthLimit), static_cast<double>(p.call_depth_limit));
+    if (p.cutting_edge_default < -1 || p.cutting_edge_default > 32000)
+        bad("cutting_edge_default", "-1 (the D before the change), 0 (none) or an edge 1-32000", p.cutting_edge_default);
     at_least("turning_escape", p.turning_escape, 0);
     at_least("thread_chamfer", p.thread_chamfer, 0);
     at_least("thread_finish_allowance", p.thread_finish_allowance, 0);

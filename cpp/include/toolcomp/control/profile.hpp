@@ -385,6 +385,9 @@ struct ControlProfile {
     // block and every positioning block until M99, CYCL CALL or a new CYCL DEF. false: M89 is
     // a free M function without effect on the path.
     bool m89_modal_cycle_call = true;
+    // Sinumerik MD20270 $MC_CUTTING_EDGE_DEFAULT: the edge a tool change (M6) selects: n, 0
+    // none (no offset until a D), -1 the D number programmed before the change.
+    int cutting_edge_default = 1;
     double thread_chamfer = 0;
     double thread_chamfer_angle = 45;
     double thread_finish_allowance = 0;

@@ -280,7 +280,23 @@ void Interp::jump(const Token& t) {
     c.pc = *target;
 }
 
+// ShopMill / ShopTurn step programs: each step calls a Siemens cycle (F_HEAD, F_DRILL, F_CON,
+// E_HEAD, E_POCKET, ...) with packed parameters, computing the tool path inside it.
+bool Interp::shopturn_step(const std::string& name) {
+    return name.size() > 2 && (name[0] == 'F' || name[0] == 'E') && name[1] == '_' &&
+           std::all_of(name.begin() + 2, name.end(), [](char ch) { return (ch >= 'A' && ch <= 'Z') || ch == '_'; });
+}
+
+void Interp::refuse_shopturn(const std::string& name, int column) const {
+    fail(code::shopturn_program,
+         "ShopMill/ShopTurn step program (" + name +
+             "): its steps call Siemens cycles whose tool paths are computed inside them, not given by the program "
+             "text; toolcomp cannot reproduce them (post the part as plain G code)",
+         column);
+}
+
 void Interp::call(const std::string& name, int passes, int column) {
+    if (name == "F_HEAD" || name == "E_HEAD") refuse_shopturn(name, column);
     if (static_cast<int>(stack_.size()) >= opts_.max_call_depth)
         fail(code::call_depth, "Subprogram nesting deeper than " + std::to_string(opts_.max_call_depth) + " program levels",
              column);
@@ -309,6 +325,7 @@ void Interp::call(const std::string& name, int passes, int column) {
             found = entry.path.string();
             break;
         }
+        if (found.empty() && shopturn_step(name)) refuse_shopturn(name, column);
         if (found.empty())
             fail(code::alarm_14011, "14011 Program " + name + " not existing or will be edited" +
                               (opts_.search.dirs.empty() ? " (no search path given)" : " (not on the search path)"),

@@ -155,6 +155,10 @@ private:
     bool control(std::span<const Token> t, std::uint8_t kind);  // true when the block was a control statement
     void jump(const Token& t);
     void call(const std::string& name, int passes, int column);
+    void no_path_call(const Token& x);  // CYCLE832, WORKPIECE, CYCLE800 without a swivel
+    bool blending_noted_ = false;
+    static bool shopturn_step(const std::string& name);  // F_HEAD, E_DRILL, ...
+    [[noreturn]] void refuse_shopturn(const std::string& name, int column) const;
     bool ret();  // end of the current program level; false at the end of the main program
     [[noreturn]] void fail(const std::string& code, const std::string& msg, int column = 0) const;
     void info(const char* code, const std::string& msg, int column = 0);

@@ -19,12 +19,17 @@ namespace {
 constexpr std::string_view kKeywords[] = {
     "NORM", "KONT", "CDON", "CDOF", "CDOF2", "CUT2D", "DIAMON", "DIAMOF", "DIAM90", "TRANS", "ATRANS", "ROT",
     "AROT", "SCALE", "ASCALE", "MIRROR", "AMIRROR", "SUPA", "TCOABS", "RET", "STOPRE", "TRAFOOF",
-    "CIP", "CT"};
+    "CIP", "CT",
+    // No effect on the programmed path: feed profiles, jerk and feed-forward, path reference,
+    // the compressor off; the compressor on smooths within a tolerance (a note, as G64).
+    "FNORM", "FLIN", "FCUB", "BRISK", "SOFT", "BRISKA", "SOFTA", "FFWON", "FFWOF", "UPATH", "SPATH", "COMPOF",
+    "COMPON", "COMPCURV", "COMPCAD"};
 constexpr std::string_view kUnsupported[] = {
     "KONTC", "KONTT", "CUT2DF", "CUT3DC", "CUT3DF", "CUT3DFS", "CUT3DFF", "CUT3DCC", "CUT3DCCD", "TRAORI", "TRACYL",
     "TRANSMIT", "TCOFR", "TCOFRZ", "TCOFRY", "TCOFRX", "ASPLINE", "BSPLINE", "CSPLINE", "POLY", "OFFN_AX", "ORIC", "ORID", "CYCLE81",
-    "CYCLE82", "CYCLE83", "POCKET3", "POCKET4", "SLOT1", "SLOT2", "CYCLE800", "CYCLE832", "MCALL", "EXTERN",
-    "G110", "G111", "G112", "BRISK", "SOFT", "FFWON", "FFWOF"};
+    "CYCLE82", "CYCLE83", "CYCLE84", "CYCLE85", "CYCLE86", "CYCLE87", "CYCLE88", "CYCLE89", "CYCLE90", "HOLES1", "HOLES2",
+    "CYCLE801", "POCKET3", "POCKET4", "SLOT1", "SLOT2", "MCALL", "EXTERN", "G110", "G111", "G112", "ORIWKS", "ORIMKS",
+    "ORIAXES", "ORIVECT", "ORIEULER", "ORIRPY", "TRACON", "CTRANS", "CROT", "CSCALE", "CMIRROR"};
 
 template <std::size_t N>
 constexpr bool all_longer_than_one(const std::string_view (&names)[N]) {
@@ -54,6 +59,43 @@ bool listed(const std::string_view (&names)[N], std::string_view k) {
 bool is_keyword(std::string_view k) { return listed(kKeywords, k); }
 bool is_unsupported(std::string_view k) { return listed(kUnsupported, k); }
 }  // namespace
+
+// Calls that set up the control without a path of their own: CYCLE832 (high speed settings:
+// a tolerance of the executed path), WORKPIECE (the blank for the display), CYCLE800 with no
+// swivel (A, B, C 0, or no parameters: the plane stays as it is).
+void Interp::no_path_call(const Token& x) {
+    if (x.is("CYCLE832")) {
+        if (!blending_noted_)
+            info(code::blending_not_modelled,
+                 "CYCLE832 smooths the executed path within its tolerance: toolcomp returns the programmed path", x.column);
+        blending_noted_ = true;
+        return;
+    }
+    if (x.is("WORKPIECE")) return info(code::no_path_effect, "WORKPIECE(...) sets the blank for the display: no motion", x.column);
+    // CYCLE800(FR, TC, ST, MODE, X0, Y0, Z0, A, B, C, X1, Y1, Z1, DIR, ...)
+    std::vector<std::string> args;
+    std::string arg;
+    int depth = 0;
+    bool quoted = false;
+    const std::string inner = x.text.size() >= 2 ? x.text.substr(1, x.text.size() - 2) : std::string();
+    for (char ch : inner) {
+        if (ch == '"') quoted = !quoted;
+        if (!quoted && (ch == '(' || ch == '[')) ++depth;
+        if (!quoted && (ch == ')' || ch == ']')) --depth;
+        if (!quoted && depth == 0 && ch == ',') args.push_back(std::exchange(arg, {}));
+        else arg.push_back(ch);
+    }
+    if (!inner.empty()) args.push_back(arg);
+    for (std::size_t i : {7, 8, 9}) {
+        if (i >= args.size() || args[i].find_first_not_of(" \t") == std::string::npos) continue;
+        const double angle = eval_text(args[i], x.column);
+        if (angle != 0)
+            fail(code::unsupported_word, "CYCLE800 with a swivel (" + std::string(1, "ABC"[i - 7]) + " = " +
+                                             shortest_number(angle) + "): tilted planes are not supported by toolcomp yet",
+                 x.column);
+    }
+    info(code::no_path_effect, "CYCLE800 without a swivel: the plane stays unrotated (the retraction of the machine's swivel data is not modelled)", x.column);
+}
 
 void Interp::block(std::span<const Token> t) {
     Context& c = stack_.back();
@@ -90,6 +132,10 @@ void Interp::block(std::span<const Token> t) {
             std::string m = x.text;
             if (m.size() >= 2 && m.front() == '"' && m.back() == '"') m = m.substr(1, m.size() - 2);
             info(code::message, m, x.column);
+            continue;
+        }
+        if (x.is("CYCLE832") || x.is("WORKPIECE") || x.is("CYCLE800")) {
+            no_path_call(x);
             continue;
         }
         if (x.is("SETAL")) {
@@ -153,6 +199,11 @@ void Interp::block(std::span<const Token> t) {
             continue;
         }
         if (is_keyword(k)) {
+            if ((k == "COMPON" || k == "COMPCURV" || k == "COMPCAD") && !blending_noted_) {
+                info(code::blending_not_modelled,
+                     k + " smooths the executed path within a tolerance: toolcomp returns the programmed path", x.column);
+                blending_noted_ = true;
+            }
             b.keywords.emplace_back(k, x.column);
             continue;
         }

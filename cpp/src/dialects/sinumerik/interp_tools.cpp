@@ -60,12 +60,16 @@ void Interp::to_tool_change_position() {
 void Interp::change_tool() {
     to_tool_change_position();
     tool_ = selected_;
+    const int d_before = d_;
     d_ = 0;
     active_.reset();
-    if (tool_ != 0) {
+    // The edge the new tool takes: MD20270 $MC_CUTTING_EDGE_DEFAULT (n, 0 none, -1 the D
+    // number before the change: "T1 D1" then "M6" selects D1 of T1 either way).
+    const int d = profile_.cutting_edge_default < 0 ? d_before : profile_.cutting_edge_default;
+    if (tool_ != 0 && d > 0) {
         auto it = edges_.lower_bound({tool_, 0});
-        const bool has_d1 = edges_.count({tool_, 1}) || (tools_ && tools_->contains(tool_) && tools_->at(tool_).has_edge(1));
-        if (has_d1 || (it != edges_.end() && it->first.first == tool_)) select_edge(1, 0);
+        const bool has_d = edges_.count({tool_, d}) || (tools_ && tools_->contains(tool_) && tools_->at(tool_).has_edge(d));
+        if (has_d || (d == 1 && it != edges_.end() && it->first.first == tool_)) select_edge(d, 0);
     }
     update_tool_offset();
 }
@@ -77,7 +81,12 @@ void Interp::select_edge(int d, int column) {
         update_tool_offset();
         return;
     }
-    if (tool_ == 0) fail(code::alarm_17180, "17180 Illegal D number: D" + std::to_string(d) + " without an active tool", column);
+    if (tool_ == 0) {  // no tool in the spindle yet (T1 D1 before M6): no offset; the number is kept
+        d_ = d;
+        active_.reset();
+        update_tool_offset();
+        return;
+    }
     if (auto it = edges_.find({tool_, d}); it != edges_.end()) {
         active_ = it->second;
     } else if (auto e = table_edge(tool_, d)) {

@@ -319,7 +319,11 @@ private:
         for (std::size_t k = letters; k < name.size(); ++k) digits_only &= is_digit(name[k]);
         // One letter glued to its number and the next word ("G1X10Y20") splits too.
         const bool glued = letters == 1 && name.size() > 1;
-        if (!keyword && letters > 0 && (digits_only || glued || (letters == name.size() && i_ < s_.size() && number_follows()))) {
+        // Only an address takes a value so: a longer name ending in digits (PART12, L_39) is a
+        // name, a subprogram's (the 840D's program names begin with two letters or a '_').
+        const bool address = letters == 1 || is_address(std::string_view(name).substr(0, letters));
+        if (!keyword && letters > 0 && address &&
+            (digits_only || glued || (letters == name.size() && i_ < s_.size() && number_follows()))) {
             std::size_t p = start + letters;
             if (letters == name.size()) p = i_;
             double v = 0;

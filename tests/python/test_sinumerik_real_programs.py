@@ -1,0 +1,88 @@
+"""What real 840D programs carry besides the path: subprogram names ending in digits, keywords
+that set up the control without a path of their own, ShopMill/ShopTurn step programs (refused
+with their own code), and T.. D.. before M6 (MD20270 $MC_CUTTING_EDGE_DEFAULT)."""
+import numpy as np
+import pytest
+
+import toolcomp as tc
+
+
+def run(text, **kw):
+    return tc.run(tc.Program.parse(text, "sinumerik"), **kw)
+
+
+def tools():
+    t = tc.ToolTable()
+    for n, length in [(1, 50.0), (2, 80.0)]:
+        t.set(tc.Tool(n, edges=[tc.CuttingEdge(radius=3.0, length=[0.0, 0.0, length])]))
+    return t
+
+
+@pytest.mark.parametrize("call", ["PART12", "L_39", "PART12()", "L_39 P2"])
+def test_subprogram_names_ending_in_digits_are_calls(tmp_path, call):
+    name = call.split()[0].rstrip("()")
+    (tmp_path / f"{name}.SPF").write_text("G91 G1 X10 F100\nG90\nM17\n")
+    res = run(f"G0 X0 Y0\n{call}\nM30\n", search_path=[tmp_path])
+    passes = 2 if "P2" in call else 1
+    assert res.nominal.end[-1, 0] == 10 * passes
+
+
+def test_a_name_ending_in_digits_that_is_nowhere_is_a_missing_program():
+    with pytest.raises(tc.ProgramError) as e:
+        run("G0 X0\nPART12\nM30\n")
+    assert e.value.code == "14011" and "PART12" in e.value.message
+
+
+@pytest.mark.parametrize("block", ["F_HEAD(1,101,0,\"\",\"\",0,1,0,1,\"\",0)", "E_HEAD(1,\"\",0)", "F_DRILL(1,2)"])
+def test_shopturn_and_shopmill_step_programs_are_refused_with_their_own_code(block):
+    with pytest.raises(tc.ProgramError) as e:
+        run(f"G0 X0\n{block}\nM30\n")
+    assert e.value.code == "shopturn_program" and e.value.line == 2 and "ShopMill/ShopTurn" in e.value.message
+
+
+def test_a_subprogram_of_that_shape_on_the_search_path_is_still_called(tmp_path):
+    (tmp_path / "F_PART.SPF").write_text("G1 X7 F100\nM17\n")
+    assert run("G0 X0\nF_PART\nM30\n", search_path=[tmp_path]).nominal.end[-1, 0] == 7
+
+
+@pytest.mark.parametrize("word", ["FNORM", "FLIN", "FCUB", "BRISK", "SOFT", "FFWON", "FFWOF", "UPATH", "SPATH", "COMPOF"])
+def test_control_settings_without_a_path_are_taken(word):
+    res = run(f"G0 X0 Y0\n{word} G1 X10 F100\nM30\n")
+    assert res.nominal.end[-1, 0] == 10 and not res.diagnostics
+
+
+@pytest.mark.parametrize("block, code", [
+    ("COMPCAD", "blending_not_modelled"),
+    ("CYCLE832(0.01,112001)", "blending_not_modelled"),
+    ("WORKPIECE(,\"\",,\"BOX\",112,0,-50,-80,-50,-50,50,50)", "no_path_effect"),
+    ("CYCLE800()", "no_path_effect"),
+    ("CYCLE800(1,\"TABLE\",200000,57,0,0,0,0,0,0,0,0,0,-1,100,1)", "no_path_effect"),
+])
+def test_setup_calls_without_a_path_are_noted(block, code):
+    res = run(f"G0 X0 Y0\n{block}\nG1 X10 F100\nM30\n")
+    assert res.nominal.end[-1, 0] == 10 and [d.code for d in res.diagnostics] == [code]
+
+
+@pytest.mark.parametrize("block, word", [
+    ("CYCLE800(1,\"TABLE\",200000,57,0,0,0,0,30,0,0,0,0,-1,100,1)", "CYCLE800 with a swivel (B = 30)"),
+    ("BSPLINE", "BSPLINE"), ("TRAORI", "TRAORI"), ("ORIWKS", "ORIWKS"), ("CYCLE81(10,0,2,-5)", "CYCLE81"),
+    ("HOLES1(0,0,0,0,10,5)", "HOLES1"),
+])
+def test_keywords_toolcomp_does_not_run_are_refused_by_name_never_as_missing_programs(block, word):
+    with pytest.raises(tc.ProgramError) as e:
+        run(f"G0 X0\n{block}\nM30\n")
+    assert e.value.code == "unsupported_word" and word in e.value.message
+
+
+def test_t_and_d_before_m6_select_the_new_tools_edge_at_the_change():
+    # D1 in the T block refers to the tool in the spindle (none yet); M6 selects the edge
+    # MD20270 names: 1 (the default) -> T1 D1, 50 mm.
+    res = run("G0 X0 Y0\nT1 D1\nM6\nG0 Z10\nT2 D1\nM6\nG0 Z20\nM30\n", tools=tools())
+    assert list(res.nominal.tool_offset[:, 2]) == [0, 50, 80]
+    profile = tc.ControlProfile("sinumerik")
+    profile.cutting_edge_default = 0  # no edge after M6 until a D
+    res = run("G0 X0 Y0\nT1 D1\nM6\nG0 Z10\nD1\nG0 Z20\nM30\n", tools=tools(), profile=profile)
+    assert list(res.nominal.tool_offset[:, 2]) == [0, 0, 50]
+    with pytest.raises(ValueError):
+        profile.cutting_edge_default = -2
+        run("M30\n", profile=profile)
