@@ -86,3 +86,42 @@ def test_t_and_d_before_m6_select_the_new_tools_edge_at_the_change():
     with pytest.raises(ValueError):
         profile.cutting_edge_default = -2
         run("M30\n", profile=profile)
+
+
+def xs(text):
+    return [round(float(x), 6) for x in run(text).nominal.end[:, 0]]
+
+
+def test_repeat_a_section_up_to_endlabel():
+    # The 840D manual's example: the section from BEGIN to ENDLABEL runs once in the flow and
+    # three times more at REPEAT BEGIN P=3; the block between ENDLABEL and REPEAT once only.
+    text = "G0 X0\nR10=0\nBEGIN: R10=R10+1\nG1 X=R10 F100\nENDLABEL:\nG1 X100\nREPEAT BEGIN P=3\nM30\n"
+    assert xs(text) == [0, 1, 100, 2, 3, 4]
+
+
+def test_repeat_from_a_label_to_the_block_before_and_between_two_labels():
+    assert xs("G0 X0\nR1=0\nSTA: R1=R1+1\nG1 X=R1 F100\nREPEAT STA\nM30\n") == [0, 1, 2]  # P omitted: once
+    text = "G0 X0\nR1=0\nSTA: R1=R1+1\nG1 X=R1 F100\nSTO: G1 X=-R1\nG1 X50\nREPEAT STA STO P=2\nM30\n"
+    assert xs(text) == [0, 1, -1, 50, 2, -2, 3, -3]
+
+
+def test_repeatb_repeats_one_block():
+    assert xs("G0 X0\nMARK: G91 G1 X1 F100\nG90\nREPEATB MARK P=2\nG90 G1 X0\nM30\n") == [0, 1, 2, 3, 0]
+
+
+@pytest.mark.parametrize("text, code", [
+    ("REPEAT NOWHERE P=2\nM30\n", "14080"),
+    ("MARK: G0 X1\nREPEATB MARK P=0\nM30\n", "14770"),
+    ("MARK: G0 X1\nREPEATB MARK OTHER\nM30\n", "syntax_error"),
+])
+def test_repeat_errors(text, code):
+    with pytest.raises(tc.ProgramError) as e:
+        run(text)
+    assert e.value.code == code
+
+
+def test_a_syntax_error_in_a_called_file_names_that_file(tmp_path):
+    (tmp_path / "BAD.SPF").write_text("G1 X10 F100\nFOO 1 2 (\nM17\n")
+    with pytest.raises(tc.ParseError) as e:
+        run("G0 X0\nBAD\nM30\n", search_path=[tmp_path])
+    assert e.value.line == 2 and e.value.file == str(tmp_path / "BAD.SPF")

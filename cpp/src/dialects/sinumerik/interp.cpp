@@ -81,6 +81,7 @@ const ProgramInfo& Interp::info_of(const Program& p) {
         auto t = statements(all);
         if (t.empty()) continue;
         Ctl k = ctl_of(t[0].key);
+        if (t[0].key == "REPEATB" || (k == ctl_repeat && t.size() > 1)) k = ctl_section;  // not a REPEAT/UNTIL loop
         if (k == ctl_if) {
             bool jump = false;
             for (const Token& x : t) jump |= x.key.rfind("GOTO", 0) == 0;
@@ -171,10 +172,19 @@ void Interp::run() {
 bool Interp::step() {
     Context& c = stack_.back();
     const auto& blocks = c.prog->blocks();
+    while (!c.sections.empty() && c.pc == c.sections.back().end + 1) {  // the end of a repeated section
+        auto& s = c.sections.back();
+        if (s.left-- > 0) {
+            c.pc = s.start;
+            break;
+        }
+        c.pc = s.back;
+        c.sections.pop_back();
+    }
     if (c.pc >= blocks.size()) {
-        if (c.prog->syntax_error && stack_.size() > 1) {
+        if (c.prog->syntax_error && stack_.size() > 1) {  // at the end of a called file: that file's line
             const auto& e = *c.prog->syntax_error;
-            throw ParseError(e.code, e.message, e.pos);
+            throw ParseError(e.code, e.message, {e.pos.line, e.pos.column, c.prog->name});
         }
         return ret();
     }
@@ -221,6 +231,7 @@ bool Interp::control(std::span<const Token> t, std::uint8_t kind) {
             return true;
         case ctl_else: c.pc = partner + 1; return true;  // the IF branch ran: skip the ELSE branch
         case ctl_endif: case ctl_repeat: case ctl_loop: return true;
+        case ctl_section: section_repeat(t); return true;
         case ctl_while:
             if (!truth(t[0])) c.pc = partner + 1;
             return true;
@@ -245,6 +256,61 @@ bool Interp::control(std::span<const Token> t, std::uint8_t kind) {
         }
         default: return false;
     }
+}
+
+// REPEATB label P=n: the block with the label (looked for towards the start first, then
+// towards the end); REPEAT label P=n: from the label (before this block) up to the block
+// before this one, or up to an ENDLABEL: between them; REPEAT label1 label2 P=n: from label1
+// through label2. n times more (P omitted: once), then on after this block.
+void Interp::section_repeat(std::span<const Token> t) {
+    Context& c = stack_.back();
+    const std::size_t here = c.pc - 1;
+    std::vector<const Token*> names;
+    long passes = 1;
+    for (std::size_t i = 1; i < t.size(); ++i) {
+        if (t[i].key == "P" && (t[i].has_value || t[i].expr >= 0)) {
+            const double p = value_of(t[i]);
+            if (!(p >= 1 && p <= 9999) || p != std::floor(p))
+                fail(code::alarm_14770, "14770 Number of passes P out of range 1..9999", t[i].column);
+            passes = std::lround(p);
+        } else if (!t[i].key.empty() && !t[i].has_value && t[i].expr < 0 && t[i].key != "P") {
+            names.push_back(&t[i]);
+        } else {
+            fail(code::syntax_error, "12080 Syntax error: " + t[0].key + " takes labels and P=", t[i].column);
+        }
+    }
+    const bool single = t[0].key == "REPEATB";
+    if (names.empty() || names.size() > (single ? 1u : 2u))
+        fail(code::syntax_error, "12080 Syntax error: " + t[0].key + (single ? " needs one label" : " needs one or two labels"),
+             t[0].column);
+    const std::size_t n = c.prog->blocks().size();
+    auto labelled = [&](std::size_t i, const std::string& name) {
+        for (const Token& x : c.prog->tokens(c.prog->blocks()[i]))
+            if (x.key == ":" && x.text == name) return true;
+        return false;
+    };
+    auto find = [&](const Token& name, bool forward_too) {
+        for (std::size_t i = here; i-- > 0;)
+            if (labelled(i, name.key)) return i;
+        if (forward_too)
+            for (std::size_t i = here + 1; i < n; ++i)
+                if (labelled(i, name.key)) return i;
+        fail(code::alarm_14080, "14080 Jump destination " + name.key + " not found", name.column);
+    };
+    std::size_t start = find(*names[0], single), end = start;
+    if (names.size() == 2) {
+        end = find(*names[1], true);
+        if (end < start) fail(code::alarm_14080, "14080 " + names[1]->key + " lies before " + names[0]->key, names[1]->column);
+    } else if (!single) {
+        end = here - 1;
+        for (std::size_t i = start; i < here; ++i)
+            if (labelled(i, "ENDLABEL")) {
+                end = i;
+                break;
+            }
+    }
+    c.sections.push_back({start, end, here + 1, passes - 1});
+    c.pc = start;
 }
 
 void Interp::jump(const Token& t) {
@@ -332,7 +398,11 @@ void Interp::call(const std::string& name, int passes, int column) {
                  column);
         CalledText f = read_called(opts_.search, found, cr_ends_line(Dialect::sinumerik));
         if (!f.ok()) fail(f.code, "Program " + name + ": " + f.message, column);
-        loaded_.push_back(parse(f.text, found, false));
+        try {
+            loaded_.push_back(parse(f.text, found, false));
+        } catch (const ParseError& e) {  // a syntax error in the called file: its line there
+            throw ParseError(e.code(), e.what(), {e.line(), e.column(), found});
+        }
         p = &loaded_.back();
         loaded_by_name_[name] = p;
     }

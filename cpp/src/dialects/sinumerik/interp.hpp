@@ -47,7 +47,8 @@ struct ProgramInfo {
 };
 
 enum Ctl : std::uint8_t { ctl_none, ctl_if, ctl_else, ctl_endif, ctl_while, ctl_endwhile, ctl_for, ctl_endfor,
-                          ctl_repeat, ctl_until, ctl_loop, ctl_endloop, ctl_jump };
+                          ctl_repeat, ctl_until, ctl_loop, ctl_endloop, ctl_jump,
+                          ctl_section };  // REPEAT label [label] P=n, REPEATB label P=n
 
 struct Variable {
     std::vector<double> v;
@@ -146,6 +147,13 @@ private:
         int file = 0;  // Path::files index of prog
         // PROC ... SAVE: the caller's modal G functions and frame, restored at the return.
         std::optional<std::pair<Modal, Frame>> saved;
+        // Program sections being repeated (REPEAT / REPEATB): blocks [start, end], `left` more
+        // times, then on at `back`.
+        struct Section {
+            std::size_t start, end, back;
+            long left;
+        };
+        std::vector<Section> sections;
     };
 
     // ---- execution (interp.cpp) ----------------------------------------------------------
@@ -154,6 +162,7 @@ private:
     void block(std::span<const Token> t);
     bool control(std::span<const Token> t, std::uint8_t kind);  // true when the block was a control statement
     void jump(const Token& t);
+    void section_repeat(std::span<const Token> t);  // REPEAT label [label] P=n, REPEATB label P=n
     void call(const std::string& name, int passes, int column);
     void no_path_call(const Token& x);  // CYCLE832, WORKPIECE, CYCLE800 without a swivel
     bool blending_noted_ = false;
