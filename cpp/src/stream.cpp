@@ -101,10 +101,7 @@ void PathStream::deliver(Path&& p) {
 
 bool PathStream::wait_for(std::chrono::milliseconds timeout) {
     std::unique_lock<std::mutex> lk(mu_);
-    // A deadline on the system clock (pthread_cond_timedwait): the steady clock's wait
-    // (pthread_cond_clockwait) was seen to sleep through its timeout under AddressSanitizer,
-    // and a slice a wall-clock jump stretches or shortens is harmless here.
-    return cv_.wait_until(lk, std::chrono::system_clock::now() + timeout, [this] { return !ready_.empty() || finished_; });
+    return cv_.wait_for(lk, timeout, [this] { return !ready_.empty() || finished_; });
 }
 
 std::optional<Path> PathStream::next() {
