@@ -65,6 +65,7 @@ def test_setup_calls_without_a_path_are_noted(block, code):
 
 @pytest.mark.parametrize("block, word", [
     ("CYCLE800(1,\"TABLE\",200000,57,0,0,0,0,30,0,0,0,0,-1,100,1)", "CYCLE800 with a swivel (B = 30)"),
+    ("CYCLE800(0,\"\",0,57,0,0,0,45,0,0,0,0,0,1)", "CYCLE800 with a swivel (A = 45)"),
     ("BSPLINE", "BSPLINE"), ("TRAORI", "TRAORI"), ("ORIWKS", "ORIWKS"), ("CYCLE81(10,0,2,-5)", "CYCLE81"),
     ("HOLES1(0,0,0,0,10,5)", "HOLES1"),
 ])
@@ -125,3 +126,51 @@ def test_a_syntax_error_in_a_called_file_names_that_file(tmp_path):
     with pytest.raises(tc.ParseError) as e:
         run("G0 X0\nBAD\nM30\n", search_path=[tmp_path])
     assert e.value.line == 2 and e.value.file == str(tmp_path / "BAD.SPF")
+
+
+MYSUB = """PROC MYSUB(REAL XP, INT N, VAR REAL OUT, BOOL FLAG) SAVE DISPLOF
+DEF REAL KK
+KK=XP*2
+G1 X=KK Y=N F100
+OUT=OUT+XP
+IF FLAG
+  G1 Z=-1
+ENDIF
+M17
+"""
+
+
+def run_proc(tmp_path, main):
+    (tmp_path / "MYSUB.SPF").write_text(MYSUB)
+    return run(main, search_path=[tmp_path])
+
+
+def test_proc_parameters_by_value_and_by_reference(tmp_path):
+    # XP 1.5 -> X 3; N 2.6 -> INT 3 (rounded); OUT is R5 itself: 10 + 1.5; FLAG 1: Z-1.
+    res = run_proc(tmp_path, "G0 X0 Y0 Z0\nR5=10\nMYSUB(1.5, 2.6, R5, 1)\nG1 X=R5\nM30\n")
+    np.testing.assert_allclose(res.nominal.end, [[0, 0, 0], [3, 3, 0], [3, 3, -1], [11.5, 3, -1]])
+
+
+def test_omitted_value_parameters_are_zero_and_var_reaches_user_variables(tmp_path):
+    res = run_proc(tmp_path, "DEF REAL TOT=3\nDEF REAL AA[3]\nG0 X0 Y0 Z0\nAA[2]=1\nMYSUB(1.5, , TOT)\nMYSUB(1, 2, AA[2])\n"
+                             "G1 X=TOT Y=AA[2]\nM30\n")
+    np.testing.assert_allclose(res.nominal.end, [[0, 0, 0], [3, 0, 0], [2, 2, 0], [4.5, 2, 0]])
+
+
+@pytest.mark.parametrize("call, code", [
+    ("MYSUB(1.5, 2)", "14010"),            # VAR without its argument
+    ("MYSUB(1.5, 2, 7)", "12320"),         # a constant for VAR
+    ("MYSUB(1.5, 2, R1, 0, 9)", "12340"),  # five arguments for four parameters
+    ("MYSUB(1.5, 2, II)", "12330"),        # an INT for VAR REAL
+])
+def test_proc_argument_alarms(tmp_path, call, code):
+    with pytest.raises(tc.ProgramError) as e:
+        run_proc(tmp_path, f"DEF INT II\nG0 X0\n{call}\nM30\n")
+    assert e.value.code == code and e.value.line == 3
+
+
+def test_proc_parameters_of_other_types_are_refused_by_name(tmp_path):
+    (tmp_path / "AXSUB.SPF").write_text("PROC AXSUB(AXIS _AX, REAL V)\nM17\n")
+    with pytest.raises(tc.ProgramError) as e:
+        run("G0 X0\nAXSUB(X, 1)\nM30\n", search_path=[tmp_path])
+    assert e.value.code == "unsupported_word" and "AXIS _AX" in e.value.message

@@ -80,6 +80,8 @@ const ProgramInfo& Interp::info_of(const Program& p) {
         }
         auto t = statements(all);
         if (t.empty()) continue;
+        if (t[0].key == "PROC" && t.size() > 1 && t[1].key == "PROCARGS")
+            info->formals = parse_formals(t[1].text, blocks[i].line, t[1].column);
         Ctl k = ctl_of(t[0].key);
         if (t[0].key == "REPEATB" || (k == ctl_repeat && t.size() > 1)) k = ctl_section;  // not a REPEAT/UNTIL loop
         if (k == ctl_if) {
@@ -361,7 +363,7 @@ void Interp::refuse_shopturn(const std::string& name, int column) const {
          column);
 }
 
-void Interp::call(const std::string& name, int passes, int column) {
+void Interp::call(const std::string& name, int passes, int column, const std::string& args) {
     if (name == "F_HEAD" || name == "E_HEAD") refuse_shopturn(name, column);
     if (static_cast<int>(stack_.size()) >= opts_.max_call_depth)
         fail(code::call_depth, "Subprogram nesting deeper than " + std::to_string(opts_.max_call_depth) + " program levels",
@@ -406,7 +408,9 @@ void Interp::call(const std::string& name, int passes, int column) {
         p = &loaded_.back();
         loaded_by_name_[name] = p;
     }
-    stack_.push_back(Context{p, &info_of(*p), 0, {}, false, 0, 0, files_.index(p->name)});
+    const ProgramInfo& callee = info_of(*p);
+    std::map<std::string, Variable> locals = bind_arguments(name, callee, args, column);
+    stack_.push_back(Context{p, &callee, 0, std::move(locals), false, 0, 0, files_.index(p->name)});
     stack_.back().passes_left = passes - 1;
     stack_.back().call_line = line_;
 }

@@ -39,7 +39,18 @@ struct Frame {
 };
 
 // A program's control structures and jump targets, found once per program.
+// A formal parameter of PROC name(REAL A, VAR INT B, ...).
+struct Formal {
+    std::string name;
+    bool by_reference = false;  // VAR
+    bool integer = false;       // INT or BOOL
+    bool boolean = false;
+};
+
+std::vector<Formal> parse_formals(const std::string& text, int line, int column);  // interp_proc.cpp
+
 struct ProgramInfo {
+    std::vector<Formal> formals;                // PROC name(...)'s parameters
     std::map<std::string, std::size_t> labels;  // label -> block index
     std::map<long, std::size_t> numbers;        // N number -> first block index
     std::vector<std::size_t> partner;           // IF->ELSE/ENDIF, ELSE->ENDIF, WHILE<->ENDWHILE, ...
@@ -53,6 +64,10 @@ enum Ctl : std::uint8_t { ctl_none, ctl_if, ctl_else, ctl_endif, ctl_while, ctl_
 struct Variable {
     std::vector<double> v;
     bool integer = false;
+    // A VAR parameter: the caller's variable (its element `ref_at`) or R parameter `r_index`.
+    Variable* ref = nullptr;
+    std::size_t ref_at = 0;
+    int r_index = -1;
     std::size_t cols = 0;  // two-dimensional [rows, cols]; 0 for scalars and one dimension
     // Row-major position of the indices, or nullopt when they do not fit the declaration.
     std::optional<std::size_t> at(std::span<const double> idx) const;
@@ -163,7 +178,12 @@ private:
     bool control(std::span<const Token> t, std::uint8_t kind);  // true when the block was a control statement
     void jump(const Token& t);
     void section_repeat(std::span<const Token> t);  // REPEAT label [label] P=n, REPEATB label P=n
-    void call(const std::string& name, int passes, int column);
+    void call(const std::string& name, int passes, int column, const std::string& args = {});
+    // PROC parameters (interp_proc.cpp): the callee's locals from the call's arguments, read
+    // in the caller's context: values, or references (VAR) to the caller's variables.
+    std::map<std::string, Variable> bind_arguments(const std::string& name, const ProgramInfo& callee,
+                                                   const std::string& args, int column);
+    Variable reference_to(const std::string& actual, const Formal& f, const std::string& name, int column);
     void no_path_call(const Token& x);  // CYCLE832, WORKPIECE, CYCLE800 without a swivel
     bool blending_noted_ = false;
     static bool shopturn_step(const std::string& name);  // F_HEAD, E_DRILL, ...

@@ -77,7 +77,7 @@ void Interp::no_path_call(const Token& x) {
     std::string arg;
     int depth = 0;
     bool quoted = false;
-    const std::string inner = x.text.size() >= 2 ? x.text.substr(1, x.text.size() - 2) : std::string();
+    const std::string& inner = x.text;  // the arguments, without the parentheses
     for (char ch : inner) {
         if (ch == '"') quoted = !quoted;
         if (!quoted && (ch == '(' || ch == '[')) ++depth;
@@ -116,7 +116,7 @@ void Interp::block(std::span<const Token> t) {
     BlockData b;
     std::string taken;  // letters the machine's builder codes of the block read
     bool words = false;
-    std::string call_name;
+    std::string call_name, call_args;
     int call_column = 0;
     for (const Token& x : t) {
         const std::string& k = x.key;
@@ -209,9 +209,11 @@ void Interp::block(std::span<const Token> t) {
         }
         if (k.rfind("GOTO", 0) == 0 || x.is("IF") || x.is("FOR") || x.is("WHILE"))
             fail(code::syntax_error, k + " must begin its block", x.column);
-        // Anything else names a subprogram (found on the search path, or an error there).
+        // Anything else names a subprogram (found on the search path, or an error there), with
+        // its arguments if it has them: NAME(1, , R5).
         if (!call_name.empty()) fail(code::alarm_12010, "12010 Two subprogram calls in one block", x.column);
         call_name = k;
+        call_args = x.text != k ? x.text : std::string();
         call_column = x.column;
     }
     for (char c : taken) b[c].set = false;
@@ -233,7 +235,7 @@ void Interp::block(std::span<const Token> t) {
             passes = int_value(b['P'].v);
             if (passes < 1 || passes > 9999) fail(code::alarm_14770, "14770 Number of passes P out of range 1..9999", b['P'].column);
         }
-        call(call_name, passes, call_column);
+        call(call_name, passes, call_column, call_args);
     }
 }
 

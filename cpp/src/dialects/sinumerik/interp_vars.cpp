@@ -62,6 +62,10 @@ double Interp::get(const std::string& name, std::span<const double> idx) {
         return r_[static_cast<std::size_t>(n)];
     }
     if (Variable* v = find_variable(name)) {
+        if (v->r_index >= 0 || v->ref) {  // a VAR parameter: the caller's variable
+            if (!idx.empty()) fail(code::alarm_17020, "17020 Illegal array index of " + name);
+            return v->r_index >= 0 ? r_[static_cast<std::size_t>(v->r_index)] : v->ref->v[v->ref_at];
+        }
         const auto flat = v->at(idx);
         if (!flat) fail(code::alarm_17020, "17020 Illegal array index of " + name);
         return v->v[*flat];
@@ -110,6 +114,12 @@ void Interp::set_variable(const std::string& name, std::span<const double> idx, 
         return;
     }
     if (Variable* var = find_variable(name)) {
+        if (var->r_index >= 0 || var->ref) {  // a VAR parameter: the caller's variable
+            if (!idx.empty()) fail(code::alarm_17020, "17020 Illegal array index of " + name, column);
+            if (var->r_index >= 0) r_[static_cast<std::size_t>(var->r_index)] = v;
+            else var->ref->v[var->ref_at] = var->ref->integer ? std::round(v) : v;
+            return;
+        }
         const auto flat = var->at(idx);
         if (!flat) fail(code::alarm_17020, "17020 Illegal array index of " + name, column);
         var->v[*flat] = var->integer ? std::round(v) : v;

@@ -253,14 +253,8 @@ private:
             t.text = ident();
             if (t.text.empty()) error("Subprogram name expected after PROC");
             skip();
-            if (i_ < s_.size() && s_[i_] == '(') {
-                std::string args = parenthesised();
-                if (args.find_first_not_of(" \t") != std::string::npos) {
-                    i_ = start;
-                    throw ParseError(code::unsupported_word, "Subprograms with parameters (PROC name(...)) are not supported by toolcomp",
-                                     {line_, column});
-                }
-            }
+            std::string args;  // the formal parameters, read when the program is called
+            if (i_ < s_.size() && s_[i_] == '(') args = parenthesised();
             // Attributes after PROC: SAVE (the caller's modal G functions and frame come back at
             // the return: param 1); DISPLOF and the like do nothing to the path.
             while (i_ < s_.size() && s_[i_] != ';') {
@@ -271,6 +265,13 @@ private:
                 }
             }
             prog_.add_token(std::move(t));
+            if (args.find_first_not_of(" \t") != std::string::npos) {
+                Token a;
+                a.key = "PROCARGS";
+                a.text = std::move(args);
+                a.column = column;
+                prog_.add_token(std::move(a));
+            }
             return;
         }
         skip();

@@ -1,0 +1,154 @@
+// Subprograms with parameters: PROC name(REAL A, INT N, BOOL B, VAR REAL OUT, ...). A value
+// parameter takes the value of its argument (INT rounds, BOOL is the value != 0; an omitted
+// argument is 0); a VAR parameter is the caller's variable itself (a user variable, one of its
+// elements, or an R parameter): a change is the caller's at once. Alarms as the 840D raises
+// them: 12340 more arguments than parameters, 14010 a VAR parameter without its argument,
+// 12320 a VAR argument that is not a variable, 12330 one of another type.
+#include <cmath>
+
+#include "interp.hpp"
+#include "toolcomp/program/codes.hpp"
+#include "toolcomp/program/int_value.hpp"
+#include "toolcomp/program/text.hpp"
+
+namespace toolcomp::sinumerik {
+
+namespace {
+
+// Splits "a, ,b[1,2]" at the commas outside brackets, parentheses and quotes.
+std::vector<std::string> split_arguments(const std::string& text) {
+    std::vector<std::string> out;
+    std::string cur;
+    int depth = 0;
+    bool quoted = false;
+    for (char ch : text) {
+        if (ch == '"') quoted = !quoted;
+        if (!quoted && (ch == '(' || ch == '[')) ++depth;
+        if (!quoted && (ch == ')' || ch == ']')) --depth;
+        if (!quoted && depth == 0 && ch == ',') out.push_back(std::exchange(cur, {}));
+        else cur.push_back(ch);
+    }
+    out.push_back(cur);
+    return out;
+}
+
+std::string trimmed(const std::string& s) {
+    const auto b = s.find_first_not_of(" \t");
+    if (b == std::string::npos) return {};
+    return s.substr(b, s.find_last_not_of(" \t") - b + 1);
+}
+
+bool identifier(const std::string& s) {
+    if (s.empty() || !(ascii_alpha(s[0]) || s[0] == '_')) return false;
+    for (char ch : s)
+        if (!(ascii_alpha(ch) || ascii_digit(ch) || ch == '_')) return false;
+    return true;
+}
+
+}  // namespace
+
+// PROC's parameter list: [VAR] REAL|INT|BOOL name, ... (other types refused by name).
+std::vector<Formal> parse_formals(const std::string& text, int line, int column) {
+    std::vector<Formal> out;
+    for (const std::string& raw : split_arguments(text)) {
+        std::string s = trimmed(raw);
+        Formal f;
+        if (s.rfind("VAR ", 0) == 0 || s.rfind("VAR\t", 0) == 0) f.by_reference = true, s = trimmed(s.substr(4));
+        const auto blank = s.find_first_of(" \t");
+        const std::string type = blank == std::string::npos ? s : s.substr(0, blank);
+        const std::string name = blank == std::string::npos ? std::string() : trimmed(s.substr(blank));
+        if (type != "REAL" && type != "INT" && type != "BOOL")
+            throw ProgramError(code::unsupported_word,
+                               "PROC parameter '" + trimmed(raw) + "': toolcomp takes REAL, INT and BOOL parameters (VAR too)",
+                               {line, column, {}});
+        if (!identifier(name))
+            throw ProgramError(code::unsupported_word,
+                               "PROC parameter '" + trimmed(raw) + "': toolcomp takes single variables (no arrays)",
+                               {line, column, {}});
+        f.name = name;
+        f.integer = type != "REAL";
+        f.boolean = type == "BOOL";
+        out.push_back(std::move(f));
+    }
+    return out;
+}
+
+std::map<std::string, Variable> Interp::bind_arguments(const std::string& name, const ProgramInfo& callee,
+                                                       const std::string& args, int column) {
+    std::map<std::string, Variable> locals;
+    std::vector<std::string> actual = trimmed(args).empty() ? std::vector<std::string>{} : split_arguments(args);
+    if (actual.size() > callee.formals.size())
+        fail(code::alarm_12340, "12340 Number of parameters too high: " + name + " takes " +
+                                    std::to_string(callee.formals.size()),
+             column);
+    for (std::size_t i = 0; i < callee.formals.size(); ++i) {
+        const Formal& f = callee.formals[i];
+        const std::string a = i < actual.size() ? trimmed(actual[i]) : std::string();
+        if (f.by_reference) {
+            if (a.empty())
+                fail(code::alarm_14010, "14010 Invalid default parameter in subprogram call: VAR " + f.name + " of " + name +
+                                            " needs its argument",
+                     column);
+            locals.emplace(f.name, reference_to(a, f, name, column));
+            continue;
+        }
+        Variable v;
+        v.integer = f.integer;
+        double x = a.empty() ? 0.0 : eval_text(a, column);
+        if (f.boolean) x = x != 0;
+        else if (f.integer) x = std::round(x);
+        v.v.assign(1, x);
+        locals.emplace(f.name, std::move(v));
+    }
+    return locals;
+}
+
+// A VAR argument: R5, R[expr], NAME or NAME[i] / NAME[i,j] of the caller (its own VAR
+// parameters followed to what they stand for).
+Variable Interp::reference_to(const std::string& actual, const Formal& f, const std::string& name, int column) {
+    std::string var = actual, index;
+    if (const auto open = actual.find('['); open != std::string::npos && actual.back() == ']') {
+        var = trimmed(actual.substr(0, open));
+        index = actual.substr(open + 1, actual.size() - open - 2);
+    }
+    auto not_a_variable = [&]() {
+        fail(code::alarm_12320, "12320 Parameter " + f.name + " of " + name + " is not a variable: " + actual, column);
+    };
+    if (!identifier(var)) not_a_variable();
+    std::vector<double> idx;
+    if (!index.empty())
+        for (const std::string& part : split_arguments(index)) idx.push_back(eval_text(part, column));
+    Variable ref;
+    ref.integer = f.integer;
+    ref.v.assign(1, 0.0);
+    const bool r_param = var == "R" ? idx.size() == 1
+                                    : var[0] == 'R' && var.size() > 1 && var.find_first_not_of("0123456789", 1) == std::string::npos &&
+                                          idx.empty();
+    if (r_param) {
+        if (f.integer) fail(code::alarm_12330, "12330 Type of parameter " + f.name + " of " + name + " incorrect: " + actual + " is REAL", column);
+        const int n = var == "R" ? int_value(idx[0]) : std::stoi(var.substr(1));
+        if (n < 0 || n >= static_cast<int>(r_.size())) fail(code::alarm_17020, "17020 Illegal array index: " + actual, column);
+        ref.r_index = n;
+        return ref;
+    }
+    Variable* target = find_variable(var);
+    if (!target) not_a_variable();
+    if (target->r_index >= 0 || target->ref) {  // the caller's own VAR parameter
+        if (!idx.empty()) not_a_variable();
+        ref.r_index = target->r_index;
+        ref.ref = target->ref;
+        ref.ref_at = target->ref_at;
+        if (target->integer != f.integer)
+            fail(code::alarm_12330, "12330 Type of parameter " + f.name + " of " + name + " incorrect: " + actual, column);
+        return ref;
+    }
+    const auto flat = target->at(idx);
+    if (!flat) fail(code::alarm_17020, "17020 Illegal array index of " + var, column);
+    if (target->integer != f.integer)
+        fail(code::alarm_12330, "12330 Type of parameter " + f.name + " of " + name + " incorrect: " + actual, column);
+    ref.ref = target;
+    ref.ref_at = *flat;
+    return ref;
+}
+
+}  // namespace toolcomp::sinumerik
