@@ -174,3 +174,30 @@ def test_proc_parameters_of_other_types_are_refused_by_name(tmp_path):
     with pytest.raises(tc.ProgramError) as e:
         run("G0 X0\nAXSUB(X, 1)\nM30\n", search_path=[tmp_path])
     assert e.value.code == "unsupported_word" and "AXIS _AX" in e.value.message
+
+
+@pytest.mark.parametrize("expr, value", [
+    ("'B0101' B_AND 'B0011'", 1), ("'B0101' B_OR 'B0011'", 7), ("'B0101' B_XOR 'B0011'", 6), ("'H1F'", 31),
+    ("'hff' B_AND 'B1111'", 15), ("B_NOT 'B0'", -1), ("'HFFFFFFFF'", -1),
+])
+def test_binary_and_hexadecimal_constants_with_bit_operations(expr, value):
+    # 840D INT: 32-bit two's complement ('HFFFFFFFF' and B_NOT 0 are -1).
+    assert xs(f"R1={expr}\nG1 X=R1 F100\nM30\n") == [value]
+
+
+@pytest.mark.parametrize("expr", ["'B0102'", "'B" + "1" * 33 + "'", "'HG'", "'Q01'"])
+def test_bad_constants_are_syntax_errors(expr):
+    with pytest.raises(tc.ParseError) as e:
+        run(f"R1={expr}\nM30\n")
+    assert e.value.code == "syntax_error"
+
+
+def test_define_as_macros_replace_their_names_in_the_lines_after_them():
+    text = ("DEFINE DEPTH AS 5 ; the depth\nDEFINE DOWN AS G1 Z=-DEPTH\nG0 X0 Y0 Z0\nDOWN F100\n"
+            "G1 X=DEPTH ; DEPTH in a comment stays\nMSG(\"DEPTH\")\nM30\n")
+    res = run(text)
+    np.testing.assert_allclose(res.nominal.end, [[0, 0, 0], [0, 0, -5], [5, 0, -5]])
+    assert [d.message for d in res.diagnostics] == ["DEPTH"]  # nor in a string
+    with pytest.raises(tc.ParseError) as e:
+        run("DEFINE A1 AS 5\nDEFINE A1 AS 6\nM30\n")
+    assert "12270" in e.value.message

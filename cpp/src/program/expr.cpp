@@ -126,6 +126,27 @@ private:
     void primary(int depth) {
         char c = t_[p_];
         double v;
+        if (c == '\'' && s_.family == family_sinumerik) {  // 'B0101' binary, 'H1F' hexadecimal (840D)
+            const std::size_t end = t_.find('\'', p_ + 1);
+            if (end == std::string_view::npos || end < p_ + 3) error("Constant 'B...' or 'H...' expected");
+            const char base = ascii_upper(t_[p_ + 1]);
+            const std::string_view digits = t_.substr(p_ + 2, end - p_ - 2);
+            if (base != 'B' && base != 'H') error("Constant 'B...' or 'H...' expected");
+            if (digits.size() > (base == 'B' ? 32u : 8u))
+                error(base == 'B' ? "Binary constant longer than 32 bits" : "Hexadecimal constant longer than 8 digits");
+            std::uint64_t n = 0;
+            for (char d : digits) {
+                const int x = base == 'B' ? (d == '0' || d == '1' ? d - '0' : -1)
+                              : ascii_digit(d)         ? d - '0'
+                              : ascii_upper(d) >= 'A' && ascii_upper(d) <= 'F' ? ascii_upper(d) - 'A' + 10
+                                                                             : -1;
+                if (x < 0) error(std::string("Bad digit '") + d + "' in a constant");
+                n = n * (base == 'B' ? 2 : 16) + static_cast<std::uint64_t>(x);
+            }
+            p_ = end + 1;
+            e_.code.push_back(Instr{Op::number, 0, Fn::sin, 0, static_cast<double>(static_cast<std::int32_t>(static_cast<std::uint32_t>(n)))});
+            return;
+        }
         if (ascii_digit(c) || c == '.') {
             if (!read_number(t_, p_, v, s_.ex_exponent)) error("Bad number");
             e_.code.push_back(Instr{Op::number, 0, Fn::sin, 0, v});

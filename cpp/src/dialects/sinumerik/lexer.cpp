@@ -446,6 +446,76 @@ bool is_address(std::string_view n) {
     return false;
 }
 
+namespace {
+
+bool word_char(char c) { return ascii_alpha(c) || ascii_digit(c) || c == '_' || c == '$'; }
+
+// DEFINE name AS text: a macro of the program; its name replaced by its text in the lines
+// after it (whole words, outside strings and comments). The line itself is no block.
+class Macros {
+public:
+    // True when `l` defines a macro (taken); throws ParseError for a bad definition.
+    bool define(std::string_view l, int line) {
+        std::size_t i = l.find_first_not_of(" \t");
+        if (i == std::string_view::npos || l.size() - i < 7) return false;
+        for (std::size_t k = 0; k < 6; ++k)
+            if (ascii_upper(l[i + k]) != "DEFINE"[k]) return false;
+        if (l[i + 6] != ' ' && l[i + 6] != '\t') return false;
+        i = l.find_first_not_of(" \t", i + 6);
+        std::size_t e = i;
+        while (e < l.size() && word_char(l[e])) ++e;
+        std::string name;
+        for (std::size_t k = i; k < e; ++k) name.push_back(ascii_upper(l[k]));
+        std::size_t as = l.find_first_not_of(" \t", e);
+        if (name.empty() || as == std::string_view::npos || l.size() - as < 2 || ascii_upper(l[as]) != 'A' ||
+            ascii_upper(l[as + 1]) != 'S' || (as + 2 < l.size() && l[as + 2] != ' ' && l[as + 2] != '\t'))
+            throw ParseError(code::syntax_error, "12080 Syntax error: DEFINE name AS text", {line, static_cast<int>(i) + 1, {}});
+        std::string_view body = l.substr(std::min(l.size(), as + 2));
+        if (const auto c = body.find(';'); c != std::string_view::npos) body = body.substr(0, c);
+        const auto b = body.find_first_not_of(" \t");
+        body = b == std::string_view::npos ? std::string_view() : body.substr(b, body.find_last_not_of(" \t") - b + 1);
+        for (const auto& [n, t] : list_)
+            if (n == name)
+                throw ParseError(code::syntax_error, "12270 Macro name " + name + " already defined", {line, static_cast<int>(i) + 1, {}});
+        list_.emplace_back(std::move(name), expand(body));  // macros in its text: theirs (defined before)
+        return true;
+    }
+    bool empty() const { return list_.empty(); }
+    // `l` with the macros' names replaced by their text.
+    std::string expand(std::string_view l) const {
+        std::string out;
+        bool quoted = false;
+        for (std::size_t i = 0; i < l.size();) {
+            const char c = l[i];
+            if (!quoted && c == ';') {
+                out.append(l.substr(i));
+                break;
+            }
+            if (c == '"') quoted = !quoted;
+            if (quoted || !word_char(c) || (i > 0 && word_char(l[i - 1]))) {
+                out.push_back(c);
+                ++i;
+                continue;
+            }
+            std::size_t e = i;
+            std::string word;
+            while (e < l.size() && word_char(l[e])) word.push_back(ascii_upper(l[e++]));
+            const std::string* text = nullptr;
+            for (const auto& [n, t] : list_)
+                if (n == word) text = &t;
+            if (text) out += *text;
+            else out.append(l.substr(i, e - i));
+            i = e;
+        }
+        return out;
+    }
+
+private:
+    std::vector<std::pair<std::string, std::string>> list_;
+};
+
+}  // namespace
+
 Program parse(std::string_view text, std::string name, bool strict) {
     Program prog;
     prog.name = std::move(name);
@@ -457,6 +527,7 @@ Program parse(std::string_view text, std::string name, bool strict) {
     prog.reserve(text.size() / 24 + 1, 0, text.size() / 4 + 16);
     std::size_t pos = 0;
     int line = 0;
+    Macros macros;
     while (pos <= text.size()) {
         std::size_t end = pos;
         while (end < text.size() && text[end] != '\n' && text[end] != '\r') ++end;
@@ -469,7 +540,14 @@ Program parse(std::string_view text, std::string name, bool strict) {
             break;
         }
         const std::size_t before = prog.size();
+        std::string expanded;
         try {
+            if (macros.define(l, line)) {
+                if (end >= text.size()) break;
+                pos = end + ((text[end] == '\r' && end + 1 < text.size() && text[end + 1] == '\n') ? 2 : 1);
+                continue;
+            }
+            if (!macros.empty()) l = expanded = macros.expand(l);
             LineLexer(l, line, prog).run();
         } catch (const ParseError& e) {
             if (prog.size() > before) prog.drop_last_block();
