@@ -137,6 +137,8 @@ void bind_machine(py::module_& m) {
                 mc.g_codes = std::move(by10);
             },
             "LinuxCNC's remapped G codes: {88.6: MachineCode('subprogram', program=..., argspec=...)} (a copy)")
+        .def_readwrite("machine_data", &Machine::machine_data,
+                       "Sinumerik machine and setting data programs read: {'$MN_SCALING_VALUE_INCH': 25.4} (a copy)")
         .def_readwrite("cycles", &Machine::cycles,
                        "Heidenhain builder cycles: {392: MachineCode('nothing', 'ATC')}: accepted, their Q parameters "
                        "set, no motion (a copy)")

@@ -551,6 +551,7 @@ class Machine:
     m_codes: Dict[int, MachineCode]
     g_codes: Dict[float, MachineCode]
     cycles: Dict[int, MachineCode]
+    machine_data: Dict[str, float]
     work_origin: Tuple[float, float, float]
     g28: Tuple[float, float, float]
     g30: Tuple[float, float, float]

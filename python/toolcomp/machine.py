@@ -62,8 +62,8 @@ __all__ = ["read", "parse", "dumps", "write", "preset", "presets", "resolve"]
 _PRESETS = os.path.join(os.path.dirname(__file__), "machines")
 _CONTROLS = tuple(row["name"] for row in _core.dialect_table())
 _AXES = ("x", "y", "z")
-_TOP = {"name", "control", "kind", "units", "spindles", "profile", "m_codes", "g_codes", "cycles", "positions", "travel",
-        "rates"}
+_TOP = {"name", "control", "kind", "units", "spindles", "profile", "m_codes", "g_codes", "cycles", "machine_data",
+        "positions", "travel", "rates"}
 _MM_PER_INCH = 25.4
 
 
@@ -285,6 +285,13 @@ def parse(text: str, path: Optional[str] = None) -> "_core.Machine":
             raise src.error(f"cycles.{key}: {e}", "cycles", key) from None
     m.cycles = cycles
 
+    data = {}  # Sinumerik machine and setting data: "$MN_SCALING_VALUE_INCH" = 25.4
+    for key, value in _table(src, doc, "machine_data").items():
+        if isinstance(value, bool) or not isinstance(value, (int, float)):
+            raise src.error(f"machine_data.{key} must be a number", "machine_data", key)
+        data[key] = float(value)
+    m.machine_data = data
+
     positions = _table(src, doc, "positions")
     for key, value in positions.items():
         if key in ("work_origin", "g28", "g30", "m92"):
@@ -405,6 +412,9 @@ def dumps(m: "_core.Machine") -> str:
     if m.g_codes:
         lines.append("\n[g_codes]")
         lines += [code_line(f'"{n:g}"', c, ("program", "argspec", "name")) for n, c in sorted(m.g_codes.items())]
+    if m.machine_data:
+        lines.append("\n[machine_data]")
+        lines += [f"{_toml_value(n)} = {_toml_value(v)}" for n, v in sorted(m.machine_data.items())]
     if m.cycles:
         lines.append("\n[cycles]")
         lines += [code_line(n, c, ("action", "name")) for n, c in sorted(m.cycles.items())]

@@ -201,3 +201,36 @@ def test_define_as_macros_replace_their_names_in_the_lines_after_them():
     with pytest.raises(tc.ParseError) as e:
         run("DEFINE A1 AS 5\nDEFINE A1 AS 6\nM30\n")
     assert "12270" in e.value.message
+
+
+def test_machine_data_read_from_the_machine_file_or_the_plain_840d():
+    # Read: the plain 840D's inch scaling 25.4, metric system 1; a builder's datum from the
+    # machine file; unknown: 12550 naming the machine file.
+    text = "IF $MN_SCALING_SYSTEM_IS_METRIC == 1\nG1 X=$MN_SCALING_VALUE_INCH F100\nENDIF\nM30\n"
+    assert xs(text) == [25.4]
+    with pytest.raises(tc.ProgramError) as e:
+        run("G1 X=$MC_MY_FLAG F100\nM30\n")
+    assert e.value.code == "12550" and "[machine_data]" in e.value.message
+    m = tc.Machine.parse('control = "sinumerik"\nkind = "mill"\n[machine_data]\n"$MC_MY_FLAG" = 7\n')
+    assert run("G1 X=$MC_MY_FLAG F100\nM30\n", machine=m).nominal.end[-1, 0] == 7
+    assert tc.Machine.parse(m.dumps()).machine_data == {"$MC_MY_FLAG": 7.0}
+
+
+def test_machine_data_writes_are_not_made_and_setting_data_writes_are():
+    # The 840D: "4075 machine data not changed due to missing permission level", the program
+    # goes on with the old value; setting data are written.
+    res = run("$MN_SCALING_VALUE_INCH=3\n$SC_THREAD_START_ANGLE=45\n"
+              "G1 X=$SC_THREAD_START_ANGLE Y=$MN_SCALING_VALUE_INCH F100\nM30\n")
+    np.testing.assert_allclose(res.nominal.end, [[45, 25.4, 0]])
+    assert [(d.code, d.line) for d in res.diagnostics] == [("4075", 1)]
+
+
+@pytest.mark.parametrize("text, what", [
+    ('control = "fanuc"\nkind = "mill"\n[machine_data]\n"$MC_A" = 1\n', "Sinumerik"),
+    ('control = "sinumerik"\nkind = "mill"\n[machine_data]\n"MC_A" = 1\n', "no machine or setting data name"),
+    ('control = "sinumerik"\nkind = "mill"\n[machine_data]\n"$MC_A" = "x"\n', "must be a number"),
+])
+def test_machine_data_a_machine_file_cannot_declare(text, what):
+    with pytest.raises(tc.ParseError) as e:
+        tc.Machine.parse(text)
+    assert e.value.code == "machine_file" and what in e.value.message

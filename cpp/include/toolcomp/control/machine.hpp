@@ -93,6 +93,9 @@ struct Machine {
     // Heidenhain builder cycles (DMG's CYCL DEF 392 ATC, ...) by number: action nothing, the
     // definition's Q parameters are the program's, nothing moves.
     std::map<int, MachineCode> cycles;
+    // Sinumerik machine and setting data a program reads ($MN_..., $MC_..., $MA_..., $SN_...,
+    // $SC_..., $SA_...: the name as the program writes it, upper case, without an index).
+    std::map<std::string, double> machine_data;
 
     // Where program zero (G54, the first work offset) lies in machine coordinates: G53 moves
     // and the travel limits are measured from it. A LinuxCNC .var file or G10 still set it.

@@ -199,6 +199,9 @@ private:
     void define(std::span<const Token> t);
     void assign(const Token& t);
     Variable* find_variable(const std::string& name);
+    static bool machine_data_name(const std::string& name);  // $MN_, $MC_, $MA_, $SN_, $SC_, $SA_
+    std::optional<double> machine_datum(const std::string& name, std::span<const double> idx);
+    std::map<std::string, double> setting_data_;  // $S.._ written by the program
     void set_variable(const std::string& name, std::span<const double> idx, double v, int column);
     void value_call(const Token& t);  // GETTCOR / SETTCOR / LENTOAX
     std::vector<std::string> split_args(const std::string& text) const;

@@ -96,6 +96,7 @@ double Interp::get(const std::string& name, std::span<const double> idx) {
         if (n == 25) return h.offset2;
         fail(code::alarm_12550, "12550 " + name + " cannot be read as a number");
     }
+    if (const auto md = machine_datum(name, idx)) return *md;
     if (name == "$P_TOOLNO" && idx.empty()) return tool_;
     if (name == "$P_TOOL" && idx.empty()) return d_;
     fail(code::alarm_12550, "12550 Name " + name + " not defined");
@@ -137,6 +138,17 @@ void Interp::set_variable(const std::string& name, std::span<const double> idx, 
         }
         return;
     }
+    if (machine_data_name(name)) {
+        if (name[1] == 'S') {  // setting data: written, read back from here on
+            if (!idx.empty()) fail(code::unsupported_word, name + "[...]: indexed setting data are not supported by toolcomp", column);
+            setting_data_[name] = v;
+            return;
+        }
+        diags_.push_back({code::alarm_4075, Severity::warning,
+                          "4075 Machine data " + name + " not changed due to missing permission level (the program goes on)",
+                          {line_, column}});
+        return;
+    }
     if (int n = numbered(name, "$TC_CARR")) {
         if (idx.size() != 1) fail(code::alarm_17020, "17020 " + name + " needs the index [m]", column);
         try {
@@ -147,6 +159,28 @@ void Interp::set_variable(const std::string& name, std::span<const double> idx, 
         return;
     }
     fail(code::alarm_12550, "12550 Name " + name + " not defined", column);
+}
+
+bool Interp::machine_data_name(const std::string& name) {
+    return name.size() > 4 && name[0] == '$' && (name[1] == 'M' || name[1] == 'S') &&
+           (name[2] == 'N' || name[2] == 'C' || name[2] == 'A') && name[3] == '_';
+}
+
+// $MN_ / $MC_ / $MA_ machine data and $SN_ / $SC_ / $SA_ setting data: the setting data the
+// program wrote, the machine file's [machine_data], or the plain 840D's values of the few
+// programs read most (inch scaling 25.4, metric system, 1000 increments a mm, the edge M6
+// selects); any other is 12550 naming the machine file.
+std::optional<double> Interp::machine_datum(const std::string& name, std::span<const double> idx) {
+    if (!machine_data_name(name)) return std::nullopt;
+    if (!idx.empty()) fail(code::unsupported_word, name + "[...]: indexed machine and setting data are not supported by toolcomp");
+    if (auto it = setting_data_.find(name); it != setting_data_.end()) return it->second;
+    if (opts_.machine)
+        if (auto it = opts_.machine->machine_data.find(name); it != opts_.machine->machine_data.end()) return it->second;
+    if (name == "$MN_SCALING_VALUE_INCH") return kMmPerInch;
+    if (name == "$MN_SCALING_SYSTEM_IS_METRIC") return 1;
+    if (name == "$MN_INT_INCR_PER_MM") return 1000;
+    if (name == "$MC_CUTTING_EDGE_DEFAULT") return profile_.cutting_edge_default;
+    fail(code::alarm_12550, "12550 Name " + name + " not defined: give its value in the machine file's [machine_data]");
 }
 
 void Interp::define(std::span<const Token> t) {
