@@ -234,3 +234,11 @@ def test_machine_data_a_machine_file_cannot_declare(text, what):
     with pytest.raises(tc.ParseError) as e:
         tc.Machine.parse(text)
     assert e.value.code == "machine_file" and what in e.value.message
+
+
+@pytest.mark.parametrize("call", ['CALL "/_N_WKS_DIR/_N_PART_WPD/_N_SUBX_SPF"', 'CALL "SUBX"', "PCALL SUBX",
+                                  'EXTCALL "SUBX"', 'CALL "../../elsewhere/subx.spf"'])
+def test_call_by_path_finds_the_program_on_the_search_path(tmp_path, call):
+    # The NC file system's name _N_SUBX_SPF is SUBX.SPF; only the search path is looked in.
+    (tmp_path / "SUBX.SPF").write_text("G1 Y5 F100\nM17\n")
+    assert run(f"G0 X0 Y0\n{call}\nM30\n", search_path=[tmp_path]).nominal.end[-1, 1] == 5

@@ -134,6 +134,13 @@ void Interp::block(std::span<const Token> t) {
             info(code::message, m, x.column);
             continue;
         }
+        if (x.is("CALL")) {  // CALL / PCALL / EXTCALL "path": the program the lexer named
+            if (!call_name.empty()) fail(code::alarm_12010, "12010 Two subprogram calls in one block", x.column);
+            words = true;
+            call_name = x.text;
+            call_column = x.column;
+            continue;
+        }
         if (x.is("CYCLE832") || x.is("WORKPIECE") || x.is("CYCLE800")) {
             no_path_call(x);
             continue;

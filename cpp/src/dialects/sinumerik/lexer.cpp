@@ -170,6 +170,30 @@ private:
             prog_.add_token(std::move(t));
             return;
         }
+        if (name == "CALL" || name == "PCALL" || name == "EXTCALL") {  // CALL "/_N_WKS_DIR/_N_PART_WPD/_N_SUB_SPF"
+            skip();
+            std::string target;
+            if (i_ < s_.size() && s_[i_] == '"') {
+                target = quoted();
+                target = target.substr(1, target.size() - 2);
+            } else if (i_ < s_.size() && ident_start(s_[i_])) {
+                target = ident();
+            }
+            if (target.empty()) error("A program name or path expected after " + name);
+            // The program's name: the path's last part, without the NC file system's _N_ and
+            // _SPF / _MPF (_N_SUB_SPF is SUB.SPF).
+            if (const auto slash = target.find_last_of("/\\"); slash != std::string::npos) target.erase(0, slash + 1);
+            target = to_upper_ascii(target);
+            if (target.rfind("_N_", 0) == 0) target.erase(0, 3);
+            for (std::string_view ext : {"_SPF", "_MPF"})
+                if (target.size() > ext.size() && target.compare(target.size() - ext.size(), ext.size(), ext) == 0)
+                    target.erase(target.size() - ext.size());
+            if (target.empty()) error("A program name or path expected after " + name);
+            t.key = "CALL";
+            t.text = std::move(target);
+            prog_.add_token(std::move(t));
+            return;
+        }
         if (jump_keyword(name)) {
             t.key = name;
             skip();
