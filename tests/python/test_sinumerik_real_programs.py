@@ -66,7 +66,7 @@ def test_setup_calls_without_a_path_are_noted(block, code):
 @pytest.mark.parametrize("block, word", [
     ("CYCLE800(1,\"TABLE\",200000,57,0,0,0,0,30,0,0,0,0,-1,100,1)", "CYCLE800 with a swivel (B = 30)"),
     ("CYCLE800(0,\"\",0,57,0,0,0,45,0,0,0,0,0,1)", "CYCLE800 with a swivel (A = 45)"),
-    ("BSPLINE", "BSPLINE"), ("TRAORI", "TRAORI"), ("ORIWKS", "ORIWKS"), ("CYCLE81(10,0,2,-5)", "CYCLE81"),
+    ("BSPLINE", "BSPLINE"), ("TRAORI", "TRAORI"), ("ORIWKS", "ORIWKS"), ("CYCLE83(10,0,2,-5)", "CYCLE83"),
     ("HOLES1(0,0,0,0,10,5)", "HOLES1"),
 ])
 def test_keywords_toolcomp_does_not_run_are_refused_by_name_never_as_missing_programs(block, word):
@@ -242,3 +242,47 @@ def test_call_by_path_finds_the_program_on_the_search_path(tmp_path, call):
     # The NC file system's name _N_SUBX_SPF is SUBX.SPF; only the search path is looked in.
     (tmp_path / "SUBX.SPF").write_text("G1 Y5 F100\nM17\n")
     assert run(f"G0 X0 Y0\n{call}\nM30\n", search_path=[tmp_path]).nominal.end[-1, 1] == 5
+
+
+def moves(res):
+    p = res.nominal
+    return [(int(k), tuple(round(float(v), 6) for v in e), None if k == tc.RAPID else float(f))
+            for k, e, f in zip(p.kind, p.end, p.feed)]
+
+
+R_, L_ = tc.RAPID, tc.LINE
+
+
+def test_mcall_cycle82_after_every_positioning_block_until_mcall_alone():
+    # The SW6 cycle: G0 to RFP + SDIS = 2, G1 to DP = -12 at the caller's F150, dwell, G0 to
+    # RTP = 10; N70 after MCALL alone moves without a cycle.
+    res = run("N10 G17 G90 G54 G0 X0 Y0 Z50\nN20 F150 S1200 M3\nN30 MCALL CYCLE82(10, 0, 2, -12, , 0.5)\n"
+              "N40 X10 Y10\nN50 X30\nN60 MCALL\nN70 X50 Y50\nM30\n")
+    hole = lambda x, y: [(R_, (x, y, 2), None), (L_, (x, y, -12), 150.0), (R_, (x, y, 10), None)]
+    assert moves(res) == ([(R_, (0, 0, 50), None), (R_, (10, 10, 50), None)] + hole(10, 10) + [(R_, (30, 10, 10), None)]
+                          + hole(30, 10) + [(R_, (50, 50, 10), None)])
+
+
+def test_cycle81_with_the_depth_relative_to_the_reference_plane():
+    # DPR 12 below RFP 0 (RTP above it): DP = 0 - 12; in G18 the tool axis is Y.
+    assert moves(run("G0 X0 Y0 Z50 F100\nCYCLE81(10,0,2,,12)\nM30\n"))[1:] == [
+        (R_, (0, 0, 2), None), (L_, (0, 0, -12), 100.0), (R_, (0, 0, 10), None)]
+    assert moves(run("G18 G0 X0 Y50 Z0 F100\nCYCLE81(10,0,2,-5)\nM30\n"))[1:] == [
+        (R_, (0, 2, 0), None), (L_, (0, -5, 0), 100.0), (R_, (0, 10, 0), None)]
+
+
+@pytest.mark.parametrize("call, code", [
+    ("CYCLE81(10,0,2,5)", "61101"),       # the depth on the retraction side
+    ("CYCLE81(0,0,2,,5)", "61101"),       # DPR with RTP = RFP
+    ("MCALL MYSUB(1)", "unsupported_word"),
+    ("CYCLE81(10,0,2,-5,0,1)", "unsupported_word"),  # GMODE 1
+    ("CYCLE81(10,0,2,-5,0,0,0,10,4)", "12340"),
+])
+def test_drilling_cycle_errors(call, code):
+    with pytest.raises(tc.ProgramError) as e:
+        run(f"G0 X0 Y0 Z50 F100\n{call}\nM30\n")
+    assert e.value.code == code
+
+
+def test_a_drilling_cycle_with_no_depth_makes_no_move():
+    assert len(run("G0 X0 Y0 Z50 F100\nCYCLE81(10,0,2,0)\nM30\n").nominal) == 1

@@ -185,6 +185,16 @@ private:
                                                    const std::string& args, int column);
     Variable reference_to(const std::string& actual, const Formal& f, const std::string& name, int column);
     void no_path_call(const Token& x);  // CYCLE832, WORKPIECE, CYCLE800 without a swivel
+    // Drilling cycles (interp_drilling.cpp): CYCLE81, CYCLE82, directly or with MCALL.
+    static bool drilling_cycle_name(const std::string& name);
+    std::vector<double> cycle_arguments(const std::string& name, const std::string& text, int column);
+    void drilling_cycle(const std::string& name, const std::vector<double>& args, int column);
+    void axis_move(int axis, double to, MotionKind kind);
+    struct ModalCall {
+        std::string name;
+        std::vector<double> args;
+    };
+    std::optional<ModalCall> modal_call_;  // MCALL CYCLE8x(...)
     bool blending_noted_ = false;
     static bool shopturn_step(const std::string& name);  // F_HEAD, E_DRILL, ...
     [[noreturn]] void refuse_shopturn(const std::string& name, int column) const;

@@ -4,6 +4,7 @@
 // compensation modes, frames, motion, program stop and end, subprogram call.
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "interp.hpp"
 #include "toolcomp/program/codes.hpp"
@@ -26,9 +27,9 @@ constexpr std::string_view kKeywords[] = {
     "COMPON", "COMPCURV", "COMPCAD"};
 constexpr std::string_view kUnsupported[] = {
     "KONTC", "KONTT", "CUT2DF", "CUT3DC", "CUT3DF", "CUT3DFS", "CUT3DFF", "CUT3DCC", "CUT3DCCD", "TRAORI", "TRACYL",
-    "TRANSMIT", "TCOFR", "TCOFRZ", "TCOFRY", "TCOFRX", "ASPLINE", "BSPLINE", "CSPLINE", "POLY", "OFFN_AX", "ORIC", "ORID", "CYCLE81",
-    "CYCLE82", "CYCLE83", "CYCLE84", "CYCLE85", "CYCLE86", "CYCLE87", "CYCLE88", "CYCLE89", "CYCLE90", "HOLES1", "HOLES2",
-    "CYCLE801", "POCKET3", "POCKET4", "SLOT1", "SLOT2", "MCALL", "EXTERN", "G110", "G111", "G112", "ORIWKS", "ORIMKS",
+    "TRANSMIT", "TCOFR", "TCOFRZ", "TCOFRY", "TCOFRX", "ASPLINE", "BSPLINE", "CSPLINE", "POLY", "OFFN_AX", "ORIC", "ORID",
+    "CYCLE83", "CYCLE84", "CYCLE85", "CYCLE86", "CYCLE87", "CYCLE88", "CYCLE89", "CYCLE90", "HOLES1", "HOLES2",
+    "CYCLE801", "POCKET3", "POCKET4", "SLOT1", "SLOT2", "EXTERN", "G110", "G111", "G112", "ORIWKS", "ORIMKS",
     "ORIAXES", "ORIVECT", "ORIEULER", "ORIRPY", "TRACON", "CTRANS", "CROT", "CSCALE", "CMIRROR"};
 
 template <std::size_t N>
@@ -118,6 +119,8 @@ void Interp::block(std::span<const Token> t) {
     bool words = false;
     std::string call_name, call_args;
     int call_column = 0;
+    bool mcall = false;  // MCALL in this block: the cycle after it is called modally
+    std::optional<std::pair<std::string, std::vector<double>>> drill;  // CYCLE81/82 called here
     for (const Token& x : t) {
         const std::string& k = x.key;
         if (x.is("=")) {
@@ -134,6 +137,19 @@ void Interp::block(std::span<const Token> t) {
             info(code::message, m, x.column);
             continue;
         }
+        if (x.is("MCALL")) {
+            mcall = true;
+            words = true;
+            continue;
+        }
+        if (drilling_cycle_name(k)) {
+            if (drill) fail(code::alarm_12010, "12010 Two subprogram calls in one block", x.column);
+            drill.emplace(k, cycle_arguments(k, x.text != k ? x.text : std::string(), x.column));
+            words = true;
+            continue;
+        }
+        if (mcall && (is_unsupported(k) || !is_keyword(k)) && !x.has_value && x.expr < 0 && k.size() > 1)
+            fail(code::unsupported_word, "MCALL " + k + ": toolcomp calls CYCLE81 and CYCLE82 modally", x.column);
         if (x.is("CALL")) {  // CALL / PCALL / EXTCALL "path": the program the lexer named
             if (!call_name.empty()) fail(code::alarm_12010, "12010 Two subprogram calls in one block", x.column);
             words = true;
@@ -228,7 +244,15 @@ void Interp::block(std::span<const Token> t) {
         fail(code::unused_word, "P (the passes of a subprogram call) without a call in the block", b['P'].column);
     const std::size_t moves_before = moves_;
     const bool comp_before = st_.side != 0;
+    if (mcall && !drill) modal_call_.reset();  // MCALL alone ends the modal call
     execute(b, t[0].column);
+    if (drill && mcall) {
+        modal_call_ = ModalCall{drill->first, drill->second};
+    } else if (drill) {
+        drilling_cycle(drill->first, drill->second, t[0].column);
+    } else if (modal_call_ && (b.has('X') || b.has('Y') || b.has('Z')) && moves_ > moves_before) {
+        drilling_cycle(modal_call_->name, modal_call_->args, t[0].column);  // after the block's move
+    }
     // A block that moved nothing while TRC stays on (not the one that selects it, a stop or a
     // call): one of the "empty blocks" the control counts (alarm 10762).
     bool stop = false;
