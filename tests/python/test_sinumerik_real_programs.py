@@ -67,7 +67,7 @@ def test_setup_calls_without_a_path_are_noted(block, code):
     ("CYCLE800(1,\"TABLE\",200000,57,0,0,0,0,30,0,0,0,0,-1,100,1)", "CYCLE800 with a swivel (B = 30)"),
     ("CYCLE800(0,\"\",0,57,0,0,0,45,0,0,0,0,0,1)", "CYCLE800 with a swivel (A = 45)"),
     ("BSPLINE", "BSPLINE"), ("TRAORI", "TRAORI"), ("ORIWKS", "ORIWKS"), ("CYCLE83(10,0,2,-5)", "CYCLE83"),
-    ("HOLES1(0,0,0,0,10,5)", "HOLES1"),
+    ("CYCLE801(0,0,0,10,10,2,2)", "CYCLE801"),
 ])
 def test_keywords_toolcomp_does_not_run_are_refused_by_name_never_as_missing_programs(block, word):
     with pytest.raises(tc.ProgramError) as e:
@@ -286,3 +286,28 @@ def test_drilling_cycle_errors(call, code):
 
 def test_a_drilling_cycle_with_no_depth_makes_no_move():
     assert len(run("G0 X0 Y0 Z50 F100\nCYCLE81(10,0,2,0)\nM30\n").nominal) == 1
+
+
+def test_holes1_runs_the_modal_cycle_along_a_row():
+    # HOLES1(0,0,0,10,15,3): holes at X10, X25, X40 on Y0 (nearer end first), each: G0 there at
+    # the tool's height, then CYCLE81(10,0,2,-5).
+    res = run("G0 X0 Y0 Z50 F100\nMCALL CYCLE81(10,0,2,-5)\nHOLES1(0,0,0,10,15,3)\nMCALL\nM30\n")
+    at = [(x, y) for k, (x, y, z), f in moves(res) if k == L_]
+    assert at == [(10, 0), (25, 0), (40, 0)]
+    # From the far end when it is nearer the workpiece zero: HOLES1(60,0,180,10,15,3).
+    res = run("G0 X0 Y0 Z50 F100\nMCALL CYCLE81(10,0,2,-5)\nHOLES1(60,0,180,10,15,3)\nM30\n")
+    assert [x for k, (x, y, z), f in moves(res) if k == L_] == [20, 35, 50]
+
+
+def test_holes2_runs_the_modal_cycle_on_a_circle():
+    res = run("G0 X0 Y0 Z50 F100\nMCALL CYCLE81(10,0,2,-5)\nHOLES2(50,50,20,0,0,4)\nMCALL\nM30\n")
+    assert [(x, y) for k, (x, y, z), f in moves(res) if k == L_] == [(70, 50), (50, 70), (30, 50), (50, 30)]
+
+
+def test_a_pattern_without_a_modal_call_only_positions_with_a_warning():
+    res = run("G0 X0 Y0 Z50 F100\nHOLES1(0,0,0,10,15,2)\nM30\n")
+    assert [e for k, e, f in moves(res)] == [(0, 0, 50), (10, 0, 50), (25, 0, 50)]
+    assert [d.code for d in res.diagnostics] == ["62100"]
+    with pytest.raises(tc.ProgramError) as e:
+        run("G0 X0 Y0 Z50 F100\nHOLES1(0,0,0,10,15,0)\nM30\n")
+    assert e.value.code == "61103"

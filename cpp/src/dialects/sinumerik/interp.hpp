@@ -190,6 +190,7 @@ private:
     std::vector<double> cycle_arguments(const std::string& name, const std::string& text, int column);
     void drilling_cycle(const std::string& name, const std::vector<double>& args, int column);
     void axis_move(int axis, double to, MotionKind kind);
+    void hole_pattern(const std::string& name, const std::string& args, int column);  // HOLES1, HOLES2
     struct ModalCall {
         std::string name;
         std::vector<double> args;

@@ -28,7 +28,7 @@ constexpr std::string_view kKeywords[] = {
 constexpr std::string_view kUnsupported[] = {
     "KONTC", "KONTT", "CUT2DF", "CUT3DC", "CUT3DF", "CUT3DFS", "CUT3DFF", "CUT3DCC", "CUT3DCCD", "TRAORI", "TRACYL",
     "TRANSMIT", "TCOFR", "TCOFRZ", "TCOFRY", "TCOFRX", "ASPLINE", "BSPLINE", "CSPLINE", "POLY", "OFFN_AX", "ORIC", "ORID",
-    "CYCLE83", "CYCLE84", "CYCLE85", "CYCLE86", "CYCLE87", "CYCLE88", "CYCLE89", "CYCLE90", "HOLES1", "HOLES2",
+    "CYCLE83", "CYCLE84", "CYCLE85", "CYCLE86", "CYCLE87", "CYCLE88", "CYCLE89", "CYCLE90",
     "CYCLE801", "POCKET3", "POCKET4", "SLOT1", "SLOT2", "EXTERN", "G110", "G111", "G112", "ORIWKS", "ORIMKS",
     "ORIAXES", "ORIVECT", "ORIEULER", "ORIRPY", "TRACON", "CTRANS", "CROT", "CSCALE", "CMIRROR"};
 
@@ -121,6 +121,7 @@ void Interp::block(std::span<const Token> t) {
     int call_column = 0;
     bool mcall = false;  // MCALL in this block: the cycle after it is called modally
     std::optional<std::pair<std::string, std::vector<double>>> drill;  // CYCLE81/82 called here
+    std::optional<std::pair<std::string, std::string>> pattern;        // HOLES1/2 called here
     for (const Token& x : t) {
         const std::string& k = x.key;
         if (x.is("=")) {
@@ -139,6 +140,12 @@ void Interp::block(std::span<const Token> t) {
         }
         if (x.is("MCALL")) {
             mcall = true;
+            words = true;
+            continue;
+        }
+        if (k == "HOLES1" || k == "HOLES2") {
+            if (pattern || drill) fail(code::alarm_12010, "12010 Two subprogram calls in one block", x.column);
+            pattern.emplace(k, x.text != k ? x.text : std::string());
             words = true;
             continue;
         }
@@ -250,6 +257,8 @@ void Interp::block(std::span<const Token> t) {
         modal_call_ = ModalCall{drill->first, drill->second};
     } else if (drill) {
         drilling_cycle(drill->first, drill->second, t[0].column);
+    } else if (pattern) {
+        hole_pattern(pattern->first, pattern->second, t[0].column);
     } else if (modal_call_ && (b.has('X') || b.has('Y') || b.has('Z')) && moves_ > moves_before) {
         drilling_cycle(modal_call_->name, modal_call_->args, t[0].column);  // after the block's move
     }

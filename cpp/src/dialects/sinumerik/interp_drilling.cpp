@@ -3,6 +3,7 @@
 // axis, until MCALL alone). Their moves, as the SW6 cycles make them, along the applicate of
 // the active plane: G0 to the safety plane RFP + SDIS (towards the retraction side), G1 to the
 // depth at the caller's feed, (CYCLE82: the dwell DTB), G0 to the retraction plane RTP.
+#include <algorithm>
 #include <cmath>
 
 #include "interp.hpp"
@@ -51,6 +52,49 @@ void Interp::drilling_cycle(const std::string& name, const std::vector<double>& 
     axis_move(axis, (rfp + d * sdis) * u, MotionKind::rapid);
     axis_move(axis, dp * u, MotionKind::line);
     axis_move(axis, rtp * u, MotionKind::rapid);
+}
+
+// HOLES1(SPCA, SPCO, STA1, FDIS, DBH, NUM): NUM holes on a line from (SPCA, SPCO) at the
+// angle STA1, the first FDIS from it, DBH apart, run from the end nearer the workpiece zero;
+// HOLES2(CPA, CPO, RAD, STA1, INDA, NUM): NUM holes on the circle about (CPA, CPO), from STA1
+// INDA apart (0: evenly on the full circle). At each hole a G0 in the plane, then the cycle
+// MCALL made modal (without one: warning 62100, the positions only).
+void Interp::hole_pattern(const std::string& name, const std::string& text, int column) {
+    std::vector<double> a;
+    if (text.find_first_not_of(" \t") != std::string::npos)
+        for (const std::string& s : split_args(text)) a.push_back(s.empty() ? 0.0 : eval_text(s, column));
+    if (a.size() > 6) fail(code::alarm_12340, "12340 Number of parameters too high: " + name + " takes 6", column);
+    a.resize(6, 0.0);
+    const double num = std::fabs(a[5]);
+    if (num != std::floor(num) || num > 100000) fail(code::cycle_bad_value, name + ": NUM is a number of holes", column);
+    const int n = static_cast<int>(num);
+    if (n == 0) fail(code::alarm_61103, "61103 Number of holes is zero", column);
+    const double deg = kPi / 180;
+    std::vector<Vec2> holes;
+    if (name == "HOLES1") {
+        const Vec2 dir(std::cos(a[2] * deg), std::sin(a[2] * deg));
+        for (int i = 0; i < n; ++i) holes.push_back(Vec2(a[0], a[1]) + (a[3] + i * a[4]) * dir);
+        if (holes.front().norm() > holes.back().norm()) std::reverse(holes.begin(), holes.end());
+    } else {
+        const double step = a[4] == 0 ? 360.0 / n : a[4];
+        for (int i = 0; i < n; ++i)
+            holes.push_back(Vec2(a[0], a[1]) + a[2] * Vec2(std::cos((a[3] + i * step) * deg), std::sin((a[3] + i * step) * deg)));
+    }
+    if (!modal_call_)
+        diags_.push_back({code::alarm_62100, Severity::warning, "62100 No drilling cycle active (" + name + " without MCALL)",
+                          {line_, column}});
+    const PlaneAxes ax = axes(st_.plane);
+    for (const Vec2& h : holes) {
+        Vec3 e = program_pos();
+        e[ax.a] = h.x() * unit();
+        e[ax.b] = h.y() * unit();
+        const Vec3 out = frame_.apply(e) + zero_shift_;
+        Motion m = motion_(MotionKind::rapid, out);
+        pos_ = out;
+        ++moves_;
+        sink_.push(m);
+        if (modal_call_) drilling_cycle(modal_call_->name, modal_call_->args, column);
+    }
 }
 
 // A move of the tool axis alone to `to` (program coordinates, mm), the others where they are.
