@@ -311,3 +311,11 @@ def test_a_pattern_without_a_modal_call_only_positions_with_a_warning():
     with pytest.raises(tc.ProgramError) as e:
         run("G0 X0 Y0 Z50 F100\nHOLES1(0,0,0,10,15,0)\nM30\n")
     assert e.value.code == "61103"
+
+
+def test_macros_of_macros_cannot_grow_without_bound():
+    text = "DEFINE A0 AS XXXXXXXXXX\n" + "".join(f"DEFINE A{i} AS " + " ".join([f"A{i - 1}"] * 10) + "\n"
+                                            for i in range(1, 8)) + "A7\nM30\n"
+    with pytest.raises(tc.ParseError) as e:
+        run(text)
+    assert "longer than 65536 characters" in e.value.message

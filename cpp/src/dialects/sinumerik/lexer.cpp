@@ -501,12 +501,14 @@ public:
         for (const auto& [n, t] : list_)
             if (n == name)
                 throw ParseError(code::syntax_error, "12270 Macro name " + name + " already defined", {line, static_cast<int>(i) + 1, {}});
-        list_.emplace_back(std::move(name), expand(body));  // macros in its text: theirs (defined before)
+        list_.emplace_back(std::move(name), expand(body, line));  // macros in its text: theirs (defined before)
         return true;
     }
     bool empty() const { return list_.empty(); }
-    // `l` with the macros' names replaced by their text.
-    std::string expand(std::string_view l) const {
+    // `l` with the macros' names replaced by their text (at most kMaxExpanded characters: macros
+    // of macros would otherwise grow without bound).
+    static constexpr std::size_t kMaxExpanded = 1 << 16;
+    std::string expand(std::string_view l, int line = 0) const {
         std::string out;
         bool quoted = false;
         for (std::size_t i = 0; i < l.size();) {
@@ -529,6 +531,10 @@ public:
                 if (n == word) text = &t;
             if (text) out += *text;
             else out.append(l.substr(i, e - i));
+            if (out.size() > kMaxExpanded)
+                throw ParseError(code::syntax_error, "12080 Syntax error: a line with its macros is longer than " +
+                                                         std::to_string(kMaxExpanded) + " characters",
+                                 {line, static_cast<int>(i) + 1, {}});
             i = e;
         }
         return out;
@@ -571,7 +577,7 @@ Program parse(std::string_view text, std::string name, bool strict) {
                 pos = end + ((text[end] == '\r' && end + 1 < text.size() && text[end + 1] == '\n') ? 2 : 1);
                 continue;
             }
-            if (!macros.empty()) l = expanded = macros.expand(l);
+            if (!macros.empty()) l = expanded = macros.expand(l, line);
             LineLexer(l, line, prog).run();
         } catch (const ParseError& e) {
             if (prog.size() > before) prog.drop_last_block();
