@@ -81,10 +81,12 @@ void check_machine(const Machine& m) {
             bad("g_codes", where + ": '" + code.program + "' is no subroutine name");
         check_argspec("g_codes", where, code.argspec);
     }
-    for (const auto& [name, value] : m.machine_data) {
+    for (const auto& datum : m.machine_data) {
+        const std::string& name = datum.first;
+        const double value = datum.second;
         if (m.control != Dialect::sinumerik) bad("machine_data", name + ": machine data are the Sinumerik's");
         static constexpr std::string_view kPrefixes[] = {"$MN_", "$MC_", "$MA_", "$SN_", "$SC_", "$SA_"};
-        if (std::none_of(std::begin(kPrefixes), std::end(kPrefixes), [&](std::string_view p) { return name.rfind(p, 0) == 0; }) ||
+        if (std::none_of(std::begin(kPrefixes), std::end(kPrefixes), [&name](std::string_view p) { return name.rfind(p, 0) == 0; }) ||
             name.size() < 5 || name.find_first_not_of("$ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") != std::string::npos)
             bad("machine_data", "'" + name + "' is no machine or setting data name ($MN_, $MC_, $MA_, $SN_, $SC_, $SA_ and upper case)");
         if (!std::isfinite(value)) bad("machine_data", name + " must be a finite number");

@@ -75,7 +75,8 @@ const ProgramInfo& Interp::info_of(const Program& p) {
     for (std::size_t i = 0; i < blocks.size(); ++i) {
         auto all = p.tokens(blocks[i]);
         for (const Token& t : all) {
-            if (t.key == "N" && t.text.empty()) info->numbers.emplace(static_cast<long>(t.value), i);  // block number
+            if (t.key == "N" && t.text.empty() && std::fabs(t.value) < 1e15)  // block number (N=1EX308 is none)
+                info->numbers.emplace(static_cast<long>(t.value), i);
             if (t.key == ":") info->labels.emplace(t.text, i);
         }
         auto t = statements(all);
