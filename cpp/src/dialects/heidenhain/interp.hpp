@@ -85,6 +85,7 @@ private:
     // repeats do: `moves` more, or the run stops with block_limit.
     void count_moves(std::size_t moves, int column);
     [[noreturn]] void block_limit_exceeded(int column) const;
+    void straight_to(const Vec3& e, double feed);   // mm/min (+inf: FMAX), R0
     void axis_move(double to, double feed);         // along the tool axis, mm/min (+inf: FMAX)
     void plane_move(const Vec2& to, double feed);   // in the working plane, R0
     void bore_milling(const cycles::tnc::BoreMilling& b, std::optional<double> end_height);

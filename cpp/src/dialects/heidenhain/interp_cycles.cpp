@@ -195,15 +195,19 @@ void Interp::block_limit_exceeded(int column) const {
          column);
 }
 
-// A move along the tool axis at `feed` mm/min (+inf: FMAX); none where the tool is.
-void Interp::axis_move(double to, double feed) {
-    Vec3 e = pos_;
-    e[axes(plane_).c] = to;
+// A straight move of a cycle to `e` at `feed` mm/min (+inf: FMAX); none where the tool is.
+void Interp::straight_to(const Vec3& e, double feed) {
     if (e == pos_) return;
     Motion m = motion_to(std::isfinite(feed) ? MotionKind::line : MotionKind::rapid, e);
     m.feed = std::isfinite(feed) ? feed : std::nan("");
     put(m);
     pos_ = e;
+}
+
+void Interp::axis_move(double to, double feed) {
+    Vec3 e = pos_;
+    e[axes(plane_).c] = to;
+    straight_to(e, feed);
 }
 
 // 208: down to the set-up clearance; a half circle out to the helix's start (at angle 0 from
@@ -236,11 +240,7 @@ void Interp::bore_milling(const cycles::tnc::BoreMilling& b, std::optional<doubl
         const Vec2 end = centre + b.radius * Vec2(std::cos(angle), std::sin(angle));
         arc(end, centre, b.bottom, std::max(turns, 0));
         arc(end, centre, b.bottom, 0);  // the full circle at the depth
-        Vec3 e = with_plane(pos_, centre);
-        Motion m = motion_to(MotionKind::line, e);
-        m.feed = b.feed;
-        put(m);
-        pos_ = e;
+        plane_move(centre, b.feed);
     }
     axis_move(end_height.value_or(b.end), INFINITY);
 }

@@ -23,6 +23,18 @@ Vec2 rotated(const Vec2& v, double degrees) {
     return {v.x() * std::cos(a) - v.y() * std::sin(a), v.x() * std::sin(a) + v.y() * std::cos(a)};
 }
 
+// A grid of nx x ny points `step` apart from `start`, turned by `degrees` about it, line by
+// line, each line back the way the one before came (PATTERN DEF PAT and cycle 221).
+std::vector<Vec2> meander(const Vec2& start, const Vec2& step, int nx, int ny, double degrees) {
+    std::vector<Vec2> out;
+    for (int j = 0; j < ny; ++j)
+        for (int k = 0; k < nx; ++k) {
+            const int i = j % 2 == 0 ? k : nx - 1 - k;
+            out.push_back(start + rotated({i * step.x(), j * step.y()}, degrees));
+        }
+    return out;
+}
+
 }  // namespace
 
 // The feed of the moves to a cycle's position (CYCL CALL POS / PAT): F, or FMAX; without
@@ -45,14 +57,7 @@ double Interp::call_feed(Tokens t, std::size_t from) {
 }
 
 // A move in the working plane to `to` at `feed` mm/min (+inf: FMAX), R0.
-void Interp::plane_move(const Vec2& to, double feed) {
-    const Vec3 e = with_plane(pos_, to);
-    if (e == pos_) return;
-    Motion m = motion_to(std::isfinite(feed) ? MotionKind::line : MotionKind::rapid, e);
-    m.feed = std::isfinite(feed) ? feed : std::nan("");
-    put(m);
-    pos_ = e;
-}
+void Interp::plane_move(const Vec2& to, double feed) { straight_to(with_plane(pos_, to), feed); }
 
 const Interp::CycleDef& Interp::machining_cycle(int column, const std::string& caller) const {
     if (!cycle_def_) fail(code::unsupported_block, caller + " without a cycle defined (CYCL DEF)", column);
@@ -156,11 +161,9 @@ void Interp::pattern_item(const Token& head, Tokens v) {
             fail(code::unsupported_word, "PATTERN DEF PAT with ROTX / ROTY (a sheared grid) is not supported by toolcomp yet",
                  head.column);
         const int nx = count("NUMX"), ny = count("NUMY");
-        for (int j = 0; j < ny; ++j)
-            for (int k = 0; k < nx; ++k) {
-                const int i = j % 2 == 0 ? k : nx - 1 - k;
-                add(start + rotated({i * get("DX"), j * get("DY")}, get("ROT", 0.0)));
-            }
+        if (static_cast<double>(nx) * ny + static_cast<double>(pattern_.size()) > static_cast<double>(kMaxPatternPoints))
+            fail(code::cycle_bad_value, "PATTERN DEF: more than 100000 points", head.column);
+        for (const Vec2& p : meander(start, {get("DX"), get("DY")}, nx, ny, get("ROT", 0.0))) add(p);
     } else {  // CIRC: NUM points evenly on the full circle; PITCHCIRC: STEP apart
         const int n = count("NUM");
         const double step = kind == "CIRC" ? 360.0 / n : get("STEP");
@@ -225,12 +228,7 @@ void Interp::pattern_cycle(Tokens t, int number) {
         const int nx = count(242), ny = count(243);
         if (static_cast<double>(nx) * ny > static_cast<double>(kMaxPatternPoints))
             fail(code::cycle_bad_value, name + ": more than 100000 points", t[0].column);
-        const Vec2 start(q.at(225), q.at(226));
-        for (int j = 0; j < ny; ++j)
-            for (int k = 0; k < nx; ++k) {
-                const int i = j % 2 == 0 ? k : nx - 1 - k;
-                points.push_back(start + rotated({i * q.at(237), j * q.at(238)}, q.at(224)));
-            }
+        points = meander({q.at(225), q.at(226)}, {q.at(237), q.at(238)}, nx, ny, q.at(224));
     }
     const CycleDef saved = d;
     for (int n : {200, 203, 204}) d.q[n] = q.at(n);

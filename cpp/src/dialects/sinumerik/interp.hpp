@@ -47,8 +47,6 @@ struct Formal {
     bool boolean = false;
 };
 
-std::vector<Formal> parse_formals(const std::string& text, int line, int column);  // interp_proc.cpp
-
 struct ProgramInfo {
     std::vector<Formal> formals;                // PROC name(...)'s parameters
     std::map<std::string, std::size_t> labels;  // label -> block index
@@ -184,9 +182,12 @@ private:
     std::map<std::string, Variable> bind_arguments(const std::string& name, const ProgramInfo& callee,
                                                    const std::string& args, int column);
     Variable reference_to(const std::string& actual, const Formal& f, const std::string& name, int column);
+    static std::vector<Formal> parse_formals(const std::string& text, int line, int column);
     void no_path_call(const Token& x);  // CYCLE832, WORKPIECE, CYCLE800 without a swivel
     // Drilling cycles (interp_drilling.cpp): CYCLE81, CYCLE82, directly or with MCALL.
     static bool drilling_cycle_name(const std::string& name);
+    // A call's arguments evaluated where it is called (an empty one 0); more than `most`: 12340.
+    std::vector<double> evaluate_arguments(const std::string& name, const std::string& text, std::size_t most, int column);
     std::vector<double> cycle_arguments(const std::string& name, const std::string& text, int column);
     void drilling_cycle(const std::string& name, const std::vector<double>& args, int column);
     void axis_move(int axis, double to, MotionKind kind);
@@ -215,7 +216,8 @@ private:
     std::map<std::string, double> setting_data_;  // $S.._ written by the program
     void set_variable(const std::string& name, std::span<const double> idx, double v, int column);
     void value_call(const Token& t);  // GETTCOR / SETTCOR / LENTOAX
-    std::vector<std::string> split_args(const std::string& text) const;
+    // The arguments of a call: split at the commas outside brackets and quotes, each trimmed.
+    static std::vector<std::string> split_args(const std::string& text);
 
     // ---- tools (interp_tools.cpp) -----------------------------------------------------------
     void select_tool(const BlockData& b);

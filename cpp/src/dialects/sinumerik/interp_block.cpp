@@ -74,21 +74,9 @@ void Interp::no_path_call(const Token& x) {
     }
     if (x.is("WORKPIECE")) return info(code::no_path_effect, "WORKPIECE(...) sets the blank for the display: no motion", x.column);
     // CYCLE800(FR, TC, ST, MODE, X0, Y0, Z0, A, B, C, X1, Y1, Z1, DIR, ...)
-    std::vector<std::string> args;
-    std::string arg;
-    int depth = 0;
-    bool quoted = false;
-    const std::string& inner = x.text;  // the arguments, without the parentheses
-    for (char ch : inner) {
-        if (ch == '"') quoted = !quoted;
-        if (!quoted && (ch == '(' || ch == '[')) ++depth;
-        if (!quoted && (ch == ')' || ch == ']')) --depth;
-        if (!quoted && depth == 0 && ch == ',') args.push_back(std::exchange(arg, {}));
-        else arg.push_back(ch);
-    }
-    if (!inner.empty()) args.push_back(arg);
+    const std::vector<std::string> args = split_args(x.text);  // x.text: the arguments, without the parentheses
     for (std::size_t i : {7, 8, 9}) {
-        if (i >= args.size() || args[i].find_first_not_of(" \t") == std::string::npos) continue;
+        if (i >= args.size() || args[i].empty()) continue;
         const double angle = eval_text(args[i], x.column);
         if (angle != 0)
             fail(code::unsupported_word, "CYCLE800 with a swivel (" + std::string(1, "ABC"[i - 7]) + " = " +

@@ -17,7 +17,11 @@ bool Interp::drilling_cycle_name(const std::string& name) { return name == "CYCL
 // The arguments, evaluated where the cycle is called (MCALL: once, at the MCALL block); an
 // empty one is 0, as for any omitted parameter.
 std::vector<double> Interp::cycle_arguments(const std::string& name, const std::string& text, int column) {
-    const std::size_t most = name == "CYCLE81" ? 8 : 9;  // 840D sl: + GMODE, DMODE, AMODE
+    return evaluate_arguments(name, text, name == "CYCLE81" ? 8 : 9, column);  // 840D sl: + GMODE, DMODE, AMODE
+}
+
+std::vector<double> Interp::evaluate_arguments(const std::string& name, const std::string& text, std::size_t most,
+                                                int column) {
     std::vector<double> out;
     if (text.find_first_not_of(" \t") == std::string::npos) return out;
     for (const std::string& a : split_args(text)) out.push_back(a.empty() ? 0.0 : eval_text(a, column));
@@ -60,10 +64,7 @@ void Interp::drilling_cycle(const std::string& name, const std::vector<double>& 
 // INDA apart (0: evenly on the full circle). At each hole a G0 in the plane, then the cycle
 // MCALL made modal (without one: warning 62100, the positions only).
 void Interp::hole_pattern(const std::string& name, const std::string& text, int column) {
-    std::vector<double> a;
-    if (text.find_first_not_of(" \t") != std::string::npos)
-        for (const std::string& s : split_args(text)) a.push_back(s.empty() ? 0.0 : eval_text(s, column));
-    if (a.size() > 6) fail(code::alarm_12340, "12340 Number of parameters too high: " + name + " takes 6", column);
+    std::vector<double> a = evaluate_arguments(name, text, 6, column);
     a.resize(6, 0.0);
     const double num = std::fabs(a[5]);
     if (num != std::floor(num) || num > 100000) fail(code::cycle_bad_value, name + ": NUM is a number of holes", column);

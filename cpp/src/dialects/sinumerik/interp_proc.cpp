@@ -15,23 +15,6 @@ namespace toolcomp::sinumerik {
 
 namespace {
 
-// Splits "a, ,b[1,2]" at the commas outside brackets, parentheses and quotes.
-std::vector<std::string> split_arguments(const std::string& text) {
-    std::vector<std::string> out;
-    std::string cur;
-    int depth = 0;
-    bool quoted = false;
-    for (char ch : text) {
-        if (ch == '"') quoted = !quoted;
-        if (!quoted && (ch == '(' || ch == '[')) ++depth;
-        if (!quoted && (ch == ')' || ch == ']')) --depth;
-        if (!quoted && depth == 0 && ch == ',') out.push_back(std::exchange(cur, {}));
-        else cur.push_back(ch);
-    }
-    out.push_back(cur);
-    return out;
-}
-
 std::string trimmed(const std::string& s) {
     const auto b = s.find_first_not_of(" \t");
     if (b == std::string::npos) return {};
@@ -48,10 +31,10 @@ bool identifier(const std::string& s) {
 }  // namespace
 
 // PROC's parameter list: [VAR] REAL|INT|BOOL name, ... (other types refused by name).
-std::vector<Formal> parse_formals(const std::string& text, int line, int column) {
+std::vector<Formal> Interp::parse_formals(const std::string& text, int line, int column) {
     std::vector<Formal> out;
-    for (const std::string& raw : split_arguments(text)) {
-        std::string s = trimmed(raw);
+    for (const std::string& raw : split_args(text)) {
+        std::string s = raw;
         Formal f;
         if (s.rfind("VAR ", 0) == 0 || s.rfind("VAR\t", 0) == 0) f.by_reference = true, s = trimmed(s.substr(4));
         const auto blank = s.find_first_of(" \t");
@@ -59,11 +42,11 @@ std::vector<Formal> parse_formals(const std::string& text, int line, int column)
         const std::string name = blank == std::string::npos ? std::string() : trimmed(s.substr(blank));
         if (type != "REAL" && type != "INT" && type != "BOOL")
             throw ProgramError(code::unsupported_word,
-                               "PROC parameter '" + trimmed(raw) + "': toolcomp takes REAL, INT and BOOL parameters (VAR too)",
+                               "PROC parameter '" + raw + "': toolcomp takes REAL, INT and BOOL parameters (VAR too)",
                                {line, column, {}});
         if (!identifier(name))
             throw ProgramError(code::unsupported_word,
-                               "PROC parameter '" + trimmed(raw) + "': toolcomp takes single variables (no arrays)",
+                               "PROC parameter '" + raw + "': toolcomp takes single variables (no arrays)",
                                {line, column, {}});
         f.name = name;
         f.integer = type != "REAL";
@@ -76,14 +59,14 @@ std::vector<Formal> parse_formals(const std::string& text, int line, int column)
 std::map<std::string, Variable> Interp::bind_arguments(const std::string& name, const ProgramInfo& callee,
                                                        const std::string& args, int column) {
     std::map<std::string, Variable> locals;
-    std::vector<std::string> actual = trimmed(args).empty() ? std::vector<std::string>{} : split_arguments(args);
+    std::vector<std::string> actual = trimmed(args).empty() ? std::vector<std::string>{} : split_args(args);
     if (actual.size() > callee.formals.size())
         fail(code::alarm_12340, "12340 Number of parameters too high: " + name + " takes " +
                                     std::to_string(callee.formals.size()),
              column);
     for (std::size_t i = 0; i < callee.formals.size(); ++i) {
         const Formal& f = callee.formals[i];
-        const std::string a = i < actual.size() ? trimmed(actual[i]) : std::string();
+        const std::string a = i < actual.size() ? actual[i] : std::string();
         if (f.by_reference) {
             if (a.empty())
                 fail(code::alarm_14010, "14010 Invalid default parameter in subprogram call: VAR " + f.name + " of " + name +
@@ -117,7 +100,7 @@ Variable Interp::reference_to(const std::string& actual, const Formal& f, const 
     if (!identifier(var)) not_a_variable();
     std::vector<double> idx;
     if (!index.empty())
-        for (const std::string& part : split_arguments(index)) idx.push_back(eval_text(part, column));
+        for (const std::string& part : split_args(index)) idx.push_back(eval_text(part, column));
     Variable ref;
     ref.integer = f.integer;
     ref.v.assign(1, 0.0);

@@ -238,7 +238,7 @@ void Interp::assign(const Token& t) {
     set_variable(name, idx, eval(t.expr, t.column), t.column);
 }
 
-std::vector<std::string> Interp::split_args(const std::string& text) const {
+std::vector<std::string> Interp::split_args(const std::string& text) {
     std::vector<std::string> out(1);
     int depth = 0;
     bool quote = false;
