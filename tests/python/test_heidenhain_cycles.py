@@ -392,3 +392,15 @@ def test_cycle_moves_count_against_the_block_limit(cycle, marker):
     with pytest.raises(tc.ProgramError) as e:
         run(text, profile=profile)
     assert e.value.code == "block_limit" and e.value.line == line_of(text, marker)
+
+
+def test_an_inch_program_drills_in_inches_with_feeds_in_tenths_of_an_inch():
+    # BEGIN PGM ... INCH: Q values in inches (the path in mm), Q206=+50 is 5 in/min = 127 mm/min.
+    # From Z+2: 0.1 above the surface, pecks of 0.25 to -0.25 and -0.5, back to 0.1 above -0.25.
+    text = ("0 BEGIN PGM I INCH\n1 TOOL DEF 1 L+0 R+0.125\n2 TOOL CALL 1 Z S2000\n3 L X+0 Y+0 Z+2 R0 FMAX\n"
+            + CYCLE_200.replace("Q200=+2 ", "Q200=+0.1 ").replace("Q201=-5 ", "Q201=-0.5 ").replace("Q206=+250", "Q206=+50")
+            .replace("Q202=+5 ", "Q202=+0.25 ").replace("Q204=+20 ", "Q204=+1 ").replace("CYCL DEF", "4 CYCL DEF")
+            + "\n5 L X+1 Y+0.5 R0 FMAX M99\n6 END PGM I INCH\n")
+    moves = axis_moves(run(text).nominal, line_of(text, "M99"))
+    assert moves == [(R, 50.8, None), (R, 2.54, None), (F, -6.35, 127.0), (R, 2.54, None), (R, -3.81, None),
+                     (F, -12.7, 127.0), (R, 25.4, None)]
