@@ -66,8 +66,8 @@ def test_setup_calls_without_a_path_are_noted(block, code):
 @pytest.mark.parametrize("block, word", [
     ("CYCLE800(1,\"TABLE\",200000,57,0,0,0,0,30,0,0,0,0,-1,100,1)", "CYCLE800 with a swivel (B = 30)"),
     ("CYCLE800(0,\"\",0,57,0,0,0,45,0,0,0,0,0,1)", "CYCLE800 with a swivel (A = 45)"),
-    ("BSPLINE", "BSPLINE"), ("TRAORI", "TRAORI"), ("ORIWKS", "ORIWKS"), ("CYCLE83(10,0,2,-5)", "CYCLE83"),
-    ("CYCLE801(0,0,0,10,10,2,2)", "CYCLE801"),
+    ("BSPLINE", "BSPLINE"), ("TRAORI", "TRAORI"), ("ORIWKS", "ORIWKS"), ("CYCLE90(10,0,2,-5)", "CYCLE90"),
+    ("POCKET3(10,0,2,-5)", "POCKET3"),
 ])
 def test_keywords_toolcomp_does_not_run_are_refused_by_name_never_as_missing_programs(block, word):
     with pytest.raises(tc.ProgramError) as e:

@@ -184,14 +184,14 @@ private:
     Variable reference_to(const std::string& actual, const Formal& f, const std::string& name, int column);
     static std::vector<Formal> parse_formals(const std::string& text, int line, int column);
     void no_path_call(const Token& x);  // CYCLE832, WORKPIECE, CYCLE800 without a swivel
-    // Drilling cycles (interp_drilling.cpp): CYCLE81, CYCLE82, directly or with MCALL.
+    // Drilling cycles (interp_drilling.cpp): CYCLE81-CYCLE89, CYCLE840, directly or with MCALL.
     static bool drilling_cycle_name(const std::string& name);
     // A call's arguments evaluated where it is called (an empty one 0); more than `most`: 12340.
     std::vector<double> evaluate_arguments(const std::string& name, const std::string& text, std::size_t most, int column);
     std::vector<double> cycle_arguments(const std::string& name, const std::string& text, int column);
     void drilling_cycle(const std::string& name, const std::vector<double>& args, int column);
-    void axis_move(int axis, double to, MotionKind kind);
-    void hole_pattern(const std::string& name, const std::string& args, int column);  // HOLES1, HOLES2
+    void hole_pattern(const std::string& name, const std::string& args, int column);  // HOLES1, HOLES2, CYCLE801
+    std::vector<Vec2> grid_holes(const std::vector<double>& args, int num1, int num2, int column);
     struct ModalCall {
         std::string name;
         std::vector<double> args;

@@ -28,8 +28,7 @@ constexpr std::string_view kKeywords[] = {
 constexpr std::string_view kUnsupported[] = {
     "KONTC", "KONTT", "CUT2DF", "CUT3DC", "CUT3DF", "CUT3DFS", "CUT3DFF", "CUT3DCC", "CUT3DCCD", "TRAORI", "TRACYL",
     "TRANSMIT", "TCOFR", "TCOFRZ", "TCOFRY", "TCOFRX", "ASPLINE", "BSPLINE", "CSPLINE", "POLY", "OFFN_AX", "ORIC", "ORID",
-    "CYCLE83", "CYCLE84", "CYCLE85", "CYCLE86", "CYCLE87", "CYCLE88", "CYCLE89", "CYCLE90",
-    "CYCLE801", "POCKET3", "POCKET4", "SLOT1", "SLOT2", "EXTERN", "G110", "G111", "G112", "ORIWKS", "ORIMKS",
+    "CYCLE90", "POCKET3", "POCKET4", "SLOT1", "SLOT2", "EXTERN", "G110", "G111", "G112", "ORIWKS", "ORIMKS",
     "ORIAXES", "ORIVECT", "ORIEULER", "ORIRPY", "TRACON", "CTRANS", "CROT", "CSCALE", "CMIRROR"};
 
 template <std::size_t N>
@@ -108,8 +107,8 @@ void Interp::block(std::span<const Token> t) {
     std::string call_name, call_args;
     int call_column = 0;
     bool mcall = false;  // MCALL in this block: the cycle after it is called modally
-    std::optional<std::pair<std::string, std::vector<double>>> drill;  // CYCLE81/82 called here
-    std::optional<std::pair<std::string, std::string>> pattern;        // HOLES1/2 called here
+    std::optional<std::pair<std::string, std::vector<double>>> drill;  // CYCLE8x called here
+    std::optional<std::pair<std::string, std::string>> pattern;        // HOLES1/2, CYCLE801 called here
     for (const Token& x : t) {
         const std::string& k = x.key;
         if (x.is("=")) {
@@ -131,7 +130,7 @@ void Interp::block(std::span<const Token> t) {
             words = true;
             continue;
         }
-        if (k == "HOLES1" || k == "HOLES2") {
+        if (k == "HOLES1" || k == "HOLES2" || k == "CYCLE801") {
             if (pattern || drill) fail(code::alarm_12010, "12010 Two subprogram calls in one block", x.column);
             pattern.emplace(k, x.text != k ? x.text : std::string());
             words = true;
@@ -144,7 +143,7 @@ void Interp::block(std::span<const Token> t) {
             continue;
         }
         if (mcall && (is_unsupported(k) || !is_keyword(k)) && !x.has_value && x.expr < 0 && k.size() > 1)
-            fail(code::unsupported_word, "MCALL " + k + ": toolcomp calls CYCLE81 and CYCLE82 modally", x.column);
+            fail(code::unsupported_word, "MCALL " + k + ": toolcomp calls the drilling cycles CYCLE81-CYCLE89 and CYCLE840 modally", x.column);
         if (x.is("CALL")) {  // CALL / PCALL / EXTCALL "path": the program the lexer named
             if (!call_name.empty()) fail(code::alarm_12010, "12010 Two subprogram calls in one block", x.column);
             words = true;

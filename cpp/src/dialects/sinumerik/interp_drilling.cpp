@@ -1,23 +1,24 @@
-// The 840D's drilling cycles CYCLE81 (drilling, centring) and CYCLE82 (with a dwell at the
-// depth), called directly or modally with MCALL (after every following block that moves an
-// axis, until MCALL alone). Their moves, as the SW6 cycles make them, along the applicate of
-// the active plane: G0 to the safety plane RFP + SDIS (towards the retraction side), G1 to the
-// depth at the caller's feed, (CYCLE82: the dwell DTB), G0 to the retraction plane RTP.
+// The 840D's drilling cycles (CYCLE81-CYCLE89, CYCLE840; their moves in
+// cycles/siemens_drilling.hpp), called directly or modally with MCALL (after every following
+// block that moves an axis, until MCALL alone), and the position patterns HOLES1, HOLES2 and
+// CYCLE801 that run the modal one at each position.
 #include <algorithm>
 #include <cmath>
 
+#include "../../cycles/siemens_drilling.hpp"
+#include "../../cycles/turning_roughing.hpp"  // CycleError, MoveLimit
 #include "interp.hpp"
 #include "toolcomp/program/codes.hpp"
 #include "toolcomp/program/text.hpp"
 
 namespace toolcomp::sinumerik {
 
-bool Interp::drilling_cycle_name(const std::string& name) { return name == "CYCLE81" || name == "CYCLE82"; }
+bool Interp::drilling_cycle_name(const std::string& name) { return cycles::siemens::is_drilling_cycle(name); }
 
 // The arguments, evaluated where the cycle is called (MCALL: once, at the MCALL block); an
 // empty one is 0, as for any omitted parameter.
 std::vector<double> Interp::cycle_arguments(const std::string& name, const std::string& text, int column) {
-    return evaluate_arguments(name, text, name == "CYCLE81" ? 8 : 9, column);  // 840D sl: + GMODE, DMODE, AMODE
+    return evaluate_arguments(name, text, cycles::siemens::parameter_count(name), column);
 }
 
 std::vector<double> Interp::evaluate_arguments(const std::string& name, const std::string& text, std::size_t most,
@@ -30,32 +31,62 @@ std::vector<double> Interp::evaluate_arguments(const std::string& name, const st
     return out;
 }
 
+// The cycle's moves (cycles/siemens_drilling.hpp) from where the tool stands: its drilling
+// axis, the hole's centre in the other two.
 void Interp::drilling_cycle(const std::string& name, const std::vector<double>& args, int column) {
-    auto arg = [&](std::size_t i) { return i < args.size() ? args[i] : 0.0; };
-    const std::size_t modes = name == "CYCLE81" ? 5 : 6;  // GMODE, DMODE, AMODE follow
-    if (arg(modes) != 0)
-        fail(code::unsupported_word, name + " with GMODE " + shortest_number(arg(modes)) + " is not supported by toolcomp", column);
-    if (arg(modes + 2) != 0 && arg(modes + 2) != 10)
-        fail(code::unsupported_word, name + " with AMODE " + shortest_number(arg(modes + 2)) +
-                                         " is not supported by toolcomp (0 or 10: depth from DP / DPR, dwell in seconds)",
-             column);
     if (st_.side != 0) fail(code::alarm_10750, "10750 " + name + " with tool radius compensation (G41/G42) active", column);
-    const double rtp = arg(0), rfp = arg(1), sdis = std::fabs(arg(2)), dpr = std::fabs(arg(4));
-    double dp = arg(3);
-    auto sign = [](double v) { return static_cast<double>((v > 0) - (v < 0)); };
-    if (dpr != 0) {
-        if (rtp == rfp) fail(code::alarm_61101, "61101 Reference plane defined incorrectly", column);
-        dp = rfp - sign(rtp - rfp) * dpr;
-    }
-    if (rfp == dp) return;  // no depth: the cycle makes no move
-    const double d = sign(rfp - dp);
-    if (rtp != rfp && sign(rtp - rfp) != d) fail(code::alarm_61101, "61101 Reference plane defined incorrectly", column);
-    if (!(feed_ > 0)) fail(code::alarm_10860, "10860 No feedrate programmed", column);
-    const int axis = axes(st_.plane).c;
+    const PlaneAxes ax = axes(st_.plane);
+    const int along = cycles::siemens::drilling_axis(name, args);
+    const int axis = along == 1 ? ax.a : along == 2 ? ax.b : ax.c;
+    const int lift_a = along == 1 ? ax.b : along == 2 ? ax.c : ax.a;  // the plane across the drilling axis
+    const int lift_b = along == 1 ? ax.c : along == 2 ? ax.a : ax.b;
     const double u = unit();
-    axis_move(axis, (rfp + d * sdis) * u, MotionKind::rapid);
-    axis_move(axis, dp * u, MotionKind::line);
-    axis_move(axis, rtp * u, MotionKind::rapid);
+    const Vec3 centre = program_pos();
+    cycles::siemens::Setting s;
+    s.feed = feed_;
+    s.unit = u;
+    s.from = centre[axis] / u;
+    s.speed = speed_;
+    s.feed_unit = st_.inch_feed ? kMmPerInch : 1.0;
+    s.max_moves = profile_.block_limit - std::min(executed_, profile_.block_limit);
+    std::vector<cycles::siemens::Step> steps;
+    try {
+        steps = cycles::siemens::drilling(name, args, s);
+    } catch (const cycles::MoveLimit&) {
+        fail(code::block_limit, "More than " + std::to_string(profile_.block_limit) +
+                                    " blocks executed, cycle moves included: an endless loop? (ControlProfile.block_limit)",
+             column);
+    } catch (const cycles::CycleError& e) {
+        fail(e.code, e.message, column);
+    }
+    if (name == "CYCLE83" && !steps.empty() && !(std::fabs(args.size() > 10 ? args[10] : 0.0) > 0.001))
+        diags_.push_back({code::cycle_feed_factor, Severity::warning,
+                          "CYCLE83 without a feed factor FRF (or FRF <= 0.001): its first stroke runs at 0.001 x F, as "
+                          "the 840D's cycle does",
+                          {line_, column}});
+    for (const cycles::siemens::Step& st : steps)
+        if (st.how != cycles::siemens::Feed::rapid && !(st.feed > 0))
+            fail(code::alarm_10860, "10860 No feedrate programmed", column);
+    executed_ += steps.size();
+    const double caller_feed = feed_;
+    for (const cycles::siemens::Step& st : steps) {
+        Vec3 e = centre;
+        e[axis] = st.to * u;
+        e[lift_a] += st.a * u;
+        e[lift_b] += st.b * u;
+        const Vec3 out = frame_.apply(e) + zero_shift_;
+        Motion m = motion_(st.how == cycles::siemens::Feed::rapid ? MotionKind::rapid : MotionKind::line, out);
+        if (st.how == cycles::siemens::Feed::programmed) {
+            feed_ = st.feed;
+            m.feed = feed_rate(out);
+            feed_ = caller_feed;
+        } else if (st.how == cycles::siemens::Feed::per_minute) {
+            m.feed = st.feed;
+        }
+        pos_ = out;
+        ++moves_;
+        sink_.push(m);
+    }
 }
 
 // HOLES1(SPCA, SPCO, STA1, FDIS, DBH, NUM): NUM holes on a line from (SPCA, SPCO) at the
@@ -64,22 +95,30 @@ void Interp::drilling_cycle(const std::string& name, const std::vector<double>& 
 // INDA apart (0: evenly on the full circle). At each hole a G0 in the plane, then the cycle
 // MCALL made modal (without one: warning 62100, the positions only).
 void Interp::hole_pattern(const std::string& name, const std::string& text, int column) {
-    std::vector<double> a = evaluate_arguments(name, text, 6, column);
-    a.resize(6, 0.0);
-    const double num = std::fabs(a[5]);
-    if (num != std::floor(num) || num > 100000) fail(code::cycle_bad_value, name + ": NUM is a number of holes", column);
-    const int n = static_cast<int>(num);
-    if (n == 0) fail(code::alarm_61103, "61103 Number of holes is zero", column);
+    const bool grid = name == "CYCLE801";
+    std::vector<double> a = evaluate_arguments(name, text, grid ? 7 : 6, column);
+    a.resize(7, 0.0);
+    auto count = [&](double v) {
+        const double n = std::fabs(v);
+        if (n != std::floor(n) || n > 100000) fail(code::cycle_bad_value, name + ": a number of holes is a whole number", column);
+        return static_cast<int>(n);
+    };
     const double deg = kPi / 180;
     std::vector<Vec2> holes;
-    if (name == "HOLES1") {
-        const Vec2 dir(std::cos(a[2] * deg), std::sin(a[2] * deg));
-        for (int i = 0; i < n; ++i) holes.push_back(Vec2(a[0], a[1]) + (a[3] + i * a[4]) * dir);
-        if (holes.front().norm() > holes.back().norm()) std::reverse(holes.begin(), holes.end());
+    if (grid) {
+        holes = grid_holes(a, count(a[5]), count(a[6]), column);
     } else {
-        const double step = a[4] == 0 ? 360.0 / n : a[4];
-        for (int i = 0; i < n; ++i)
-            holes.push_back(Vec2(a[0], a[1]) + a[2] * Vec2(std::cos((a[3] + i * step) * deg), std::sin((a[3] + i * step) * deg)));
+        const int n = count(a[5]);
+        if (n == 0) fail(code::alarm_61103, "61103 Number of holes is zero", column);
+        if (name == "HOLES1") {
+            const Vec2 dir(std::cos(a[2] * deg), std::sin(a[2] * deg));
+            for (int i = 0; i < n; ++i) holes.push_back(Vec2(a[0], a[1]) + (a[3] + i * a[4]) * dir);
+            if (holes.front().norm() > holes.back().norm()) std::reverse(holes.begin(), holes.end());
+        } else {
+            const double step = a[4] == 0 ? 360.0 / n : a[4];
+            for (int i = 0; i < n; ++i)
+                holes.push_back(Vec2(a[0], a[1]) + a[2] * Vec2(std::cos((a[3] + i * step) * deg), std::sin((a[3] + i * step) * deg)));
+        }
     }
     if (!modal_call_)
         diags_.push_back({code::alarm_62100, Severity::warning, "62100 No drilling cycle active (" + name + " without MCALL)",
@@ -98,15 +137,39 @@ void Interp::hole_pattern(const std::string& name, const std::string& text, int 
     }
 }
 
-// A move of the tool axis alone to `to` (program coordinates, mm), the others where they are.
-void Interp::axis_move(int axis, double to, MotionKind kind) {
-    Vec3 e = program_pos();
-    e[axis] = to;
-    const Vec3 out = frame_.apply(e) + zero_shift_;
-    Motion m = motion_(kind, out);
-    pos_ = out;
-    ++moves_;
-    sink_.push(m);
+// CYCLE801(_SPCA, _SPCO, _STA, _DIS1, _DIS2, _NUM1, _NUM2): a grid of _NUM1 columns _DIS1
+// apart along the abscissa turned by _STA about (_SPCA, _SPCO), and _NUM2 lines _DIS2 apart.
+// Run line by line along the smaller spacing, turning back at each line's end (meander), from
+// the corner nearer the tool: a line starts at the low end where the tool stands at or before
+// the grid's middle, as the 840D's cycle compares them. A count of 0: warning 62105, taken as 1.
+std::vector<Vec2> Interp::grid_holes(const std::vector<double>& a, int num1, int num2, int column) {
+    if (num1 == 0 || num2 == 0) {
+        diags_.push_back({code::alarm_62105, Severity::warning, "62105 Number of columns or lines is zero", {line_, column}});
+        num1 = std::max(num1, 1);
+        num2 = std::max(num2, 1);
+    }
+    const double dis1 = std::fabs(a[3]), dis2 = std::fabs(a[4]), rad = a[2] * kPi / 180;
+    const Vec2 origin(a[0], a[1]), ex(std::cos(rad), std::sin(rad)), ey(-std::sin(rad), std::cos(rad));
+    const PlaneAxes ax = axes(st_.plane);
+    const Vec3 here = program_pos();
+    const Vec2 tool = Vec2(here[ax.a] / unit(), here[ax.b] / unit()) - origin;
+    const Vec2 t(tool.dot(ex), tool.dot(ey));  // the tool in the grid's own axes
+    const bool rows = dis1 <= dis2;            // inner runs along the abscissa
+    const int inner = rows ? num1 : num2, outer = rows ? num2 : num1;
+    const double din = rows ? dis1 : dis2, dout = rows ? dis2 : dis1;
+    const double tin = rows ? t.x() : t.y(), tout = rows ? t.y() : t.x();
+    const bool out_up = (outer - 1) * dout / 2 >= tout, in_up = (inner - 1) * din / 2 >= tin;
+    std::vector<Vec2> holes;
+    for (int j = 0; j < outer; ++j) {
+        const double v = (out_up ? j : outer - 1 - j) * dout;
+        for (int i = 0; i < inner; ++i) {
+            const bool up = (j % 2 == 0) == in_up;
+            const double w = (up ? i : inner - 1 - i) * din;
+            const Vec2 g = rows ? Vec2(w, v) : Vec2(v, w);
+            holes.push_back(origin + g.x() * ex + g.y() * ey);
+        }
+    }
+    return holes;
 }
 
 }  // namespace toolcomp::sinumerik
