@@ -157,6 +157,19 @@ def test_omitted_value_parameters_are_zero_and_var_reaches_user_variables(tmp_pa
     np.testing.assert_allclose(res.nominal.end, [[0, 0, 0], [3, 0, 0], [2, 2, 0], [4.5, 2, 0]])
 
 
+def test_p_subpar_tells_a_given_parameter_from_an_omitted_one(tmp_path):
+    # A cycle's idiom: an omitted DEPTH (0) takes 5, a DEPTH given as 0 stays 0.
+    (tmp_path / "PECK.SPF").write_text("PROC PECK(REAL TOP, REAL DEPTH) SAVE\nIF NOT $P_SUBPAR[2]\nDEPTH=5\nENDIF\n"
+                                       "G1 Z=TOP-DEPTH\nM17\n")
+    res = run("G0 X0 Y0 Z10 F100\nPECK(2)\nPECK(2, 0)\nPECK(2, 1)\nM30\n", search_path=[tmp_path])
+    assert [float(z) for z in res.nominal.end[1:, 2]] == [-3.0, 2.0, 1.0]
+    for bad in ["R1=$P_SUBPAR[3]", "R1=$P_SUBPAR[0]"]:
+        (tmp_path / "BAD.SPF").write_text(f"PROC BAD(REAL A, REAL B)\n{bad}\nM17\n")
+        with pytest.raises(tc.ProgramError) as e:
+            run("G0 X0\nBAD(1)\nM30\n", search_path=[tmp_path])
+        assert e.value.code == "17020"
+
+
 @pytest.mark.parametrize("call, code", [
     ("MYSUB(1.5, 2)", "14010"),            # VAR without its argument
     ("MYSUB(1.5, 2, 7)", "12320"),         # a constant for VAR

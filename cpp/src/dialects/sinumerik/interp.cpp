@@ -414,6 +414,10 @@ void Interp::call(const std::string& name, int passes, int column, const std::st
     stack_.push_back(Context{p, &callee, 0, std::move(locals), false, 0, 0, files_.index(p->name)});
     stack_.back().passes_left = passes - 1;
     stack_.back().call_line = line_;
+    std::vector<std::string> given = args.find_first_not_of(" \t") == std::string::npos ? std::vector<std::string>{}
+                                                                                        : split_args(args);
+    for (std::size_t i = 0; i < callee.formals.size(); ++i)
+        stack_.back().subpar.push_back(i < given.size() && !given[i].empty());
 }
 
 bool Interp::ret() {

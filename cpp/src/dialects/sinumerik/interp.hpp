@@ -158,6 +158,7 @@ private:
         int passes_left = 0;           // L.. P n: further passes
         int call_line = 0;
         int file = 0;  // Path::files index of prog
+        std::vector<bool> subpar;  // $P_SUBPAR[n]: the call gave parameter n (1-based here at n - 1)
         // PROC ... SAVE: the caller's modal G functions and frame, restored at the return.
         std::optional<std::pair<Modal, Frame>> saved;
         // Program sections being repeated (REPEAT / REPEATB): blocks [start, end], `left` more

@@ -97,6 +97,14 @@ double Interp::get(const std::string& name, std::span<const double> idx) {
         fail(code::alarm_12550, "12550 " + name + " cannot be read as a number");
     }
     if (const auto md = machine_datum(name, idx)) return *md;
+    if (name == "$P_SUBPAR") {  // was parameter n of this PROC given in the call?
+        const std::vector<bool>& given = stack_.back().subpar;
+        const int n = idx.size() == 1 ? as_index(idx[0]) : 0;
+        if (n < 1 || n > static_cast<int>(given.size()))
+            fail(code::alarm_17020, "17020 Illegal array index of $P_SUBPAR: the subprogram has " +
+                                        std::to_string(given.size()) + " parameters");
+        return given[static_cast<std::size_t>(n - 1)];
+    }
     if (name == "$P_TOOLNO" && idx.empty()) return tool_;
     if (name == "$P_TOOL" && idx.empty()) return d_;
     fail(code::alarm_12550, "12550 Name " + name + " not defined");
