@@ -428,10 +428,12 @@ bool Interp::ret() {
     }
     Context& c = stack_.back();
     if (c.saved) {  // PROC ... SAVE: the caller's G functions and frame again
-        if (st_.side != 0 && c.saved->first.side == 0)  // G40 again: the compensation ends here
+        if (st_.side != 0 && c.saved->modal.side == 0)  // G40 again: the compensation ends here
             sink_.control({ControlKind::radius_off, line_, Vec3::Zero(), file()});
-        st_ = c.saved->first;
-        frame_ = c.saved->second;
+        const int settable = st_.settable;
+        st_ = c.saved->modal;
+        set_programmable(c.saved->frame, c.saved->components);
+        if (st_.settable != settable) select_settable(st_.settable);  // the G function again, its frame
     }
     if (c.passes_left > 0) {
         --c.passes_left;

@@ -20,23 +20,9 @@
 #include "../idle_watch.hpp"
 #include "toolcomp/program/source_files.hpp"
 #include "toolcomp/dialects/sinumerik/interpreter.hpp"
+#include "frame_value.hpp"
 
 namespace toolcomp::sinumerik {
-
-using Mat3 = Eigen::Matrix3d;
-
-struct Frame {
-    Mat3 a = Mat3::Identity();
-    Vec3 t = Vec3::Zero();
-    Mat3 inv = Mat3::Identity().inverse();  // a.inverse(), kept with `a` for each block's invert()
-    Vec3 apply(const Vec3& p) const { return a * p + t; }
-    Vec3 invert(const Vec3& q) const { return inv * (q - t); }
-    // a ROT, SCALE or MIRROR after the frame so far (the only way `a` changes)
-    void then(const Mat3& m) {
-        a = a * m;
-        inv = a.inverse();
-    }
-};
 
 // A program's control structures and jump targets, found once per program.
 // A formal parameter of PROC name(REAL A, VAR INT B, ...).
@@ -136,6 +122,7 @@ struct Modal {
     int gouge = -1;          // CDON / CDOF (GougeReaction)
     double disc = -1;        // DISC
     double offn = 0;         // OFFN, mm
+    int settable = 0;        // the settable frame: 0 G500 (at power-on), 1-4 G54-G57, 5-99 G505-G599
 };
 
 class Interp : public expr::Env {
@@ -160,7 +147,12 @@ private:
         int file = 0;  // Path::files index of prog
         std::vector<bool> subpar;  // $P_SUBPAR[n]: the call gave parameter n (1-based here at n - 1)
         // PROC ... SAVE: the caller's modal G functions and frame, restored at the return.
-        std::optional<std::pair<Modal, Frame>> saved;
+        struct Saved {
+            Modal modal;
+            Frame frame;
+            std::optional<FrameValue> components;
+        };
+        std::optional<Saved> saved;
         // Program sections being repeated (REPEAT / REPEATB): blocks [start, end], `left` more
         // times, then on at `back`.
         struct Section {
@@ -235,9 +227,20 @@ private:
     // ---- geometry (interp_motion.cpp) -------------------------------------------------------
     void execute(BlockData& b, int first_column);
     double unit() const { return st_.inch ? kMmPerInch : 1.0; }
-    Vec3 program_pos() const { return frame_.invert(pos_ - zero_shift_); }
+    Vec3 program_pos() const { return actual_.invert(pos_ - zero_shift_); }
     Vec3 end_point(const BlockData& b, bool machine) const;
     void frame_statement(const BlockData& b, const std::string& which, int column);
+    // Frames (interp_frames.cpp): the chain basic : settable : programmable, frame variables.
+    void set_programmable(const Frame& f, std::optional<FrameValue> components);
+    void select_settable(int n);
+    void refresh_frames();
+    void frame_assign(const Token& t);
+    FrameValue frame_expression(const std::string& text, int column);
+    FrameValue frame_function(const std::string& name, const std::string& args, int column);
+    FrameValue& frame_variable(const std::string& name, std::span<const double> idx, std::size_t whole, bool write, int column);
+    std::optional<double> frame_component(const std::string& name, std::span<const double> idx);
+    bool set_frame_component(const std::string& name, std::span<const double> idx, double v, int column);
+    void programmable_offset(const BlockData& b, int g, int column);  // G58, G59
     void move(MotionKind kind, const Vec3& end, const BlockData& b);
     void arc(const BlockData& b, const Vec3& end_prog);
     Motion motion_(MotionKind kind, const Vec3& end) const;
@@ -266,7 +269,13 @@ private:
     Modal st_;
     Vec3 pos_ = Vec3::Zero();
     std::array<double, 3> abc_{0, 0, 0};
-    Frame frame_;
+    Frame frame_;                          // the programmable frame
+    std::optional<FrameValue> pframe_ = FrameValue{};  // its components (none: a chain that shears)
+    std::map<int, FrameValue> uifr_;       // $P_UIFR[n]: the settable frames' data
+    FrameValue iframe_, bframe_;           // the active settable frame, the basic frame
+    FrameValue actframe_scratch_;          // $P_ACTFRAME as read
+    bool settable_neutral_ = true;         // iframe_ and bframe_ both neutral
+    Frame actual_;                         // basic : settable : programmable, what maps the moves
     Vec3 zero_shift_ = Vec3::Zero();  // type P toolholder: table rotation
     // The machine's work origin (Machine::work_origin) in output coordinates (mm, a lathe's X
     // a radius): output = machine coordinates of the tool tip less it. Zero without a machine.

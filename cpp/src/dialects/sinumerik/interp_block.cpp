@@ -97,7 +97,7 @@ void Interp::block(std::span<const Token> t) {
     if (t[0].is("PROC")) {
         if (c.pc != 1 && c.executable_seen)
             fail(code::alarm_14500, "14500 Illegal DEF or PROC instruction in the program", t[0].column);
-        if (t[0].param == 1 && stack_.size() > 1) c.saved.emplace(st_, frame_);  // PROC ... SAVE
+        if (t[0].param == 1 && stack_.size() > 1) c.saved = Context::Saved{st_, frame_, pframe_};  // PROC ... SAVE
         return;
     }
     c.executable_seen = true;
@@ -113,6 +113,10 @@ void Interp::block(std::span<const Token> t) {
         const std::string& k = x.key;
         if (x.is("=")) {
             assign(x);
+            continue;
+        }
+        if (x.is("FRAME=")) {
+            frame_assign(x);
             continue;
         }
         if (x.is("GETTCOR") || x.is("SETTCOR") || x.is("LENTOAX")) {

@@ -74,7 +74,7 @@ void Interp::drilling_cycle(const std::string& name, const std::vector<double>& 
         e[axis] = st.to * u;
         e[lift_a] += st.a * u;
         e[lift_b] += st.b * u;
-        const Vec3 out = frame_.apply(e) + zero_shift_;
+        const Vec3 out = actual_.apply(e) + zero_shift_;
         Motion m = motion_(st.how == cycles::siemens::Feed::rapid ? MotionKind::rapid : MotionKind::line, out);
         if (st.how == cycles::siemens::Feed::programmed) {
             feed_ = st.feed;
@@ -128,7 +128,7 @@ void Interp::hole_pattern(const std::string& name, const std::string& text, int 
         Vec3 e = program_pos();
         e[ax.a] = h.x() * unit();
         e[ax.b] = h.y() * unit();
-        const Vec3 out = frame_.apply(e) + zero_shift_;
+        const Vec3 out = actual_.apply(e) + zero_shift_;
         Motion m = motion_(MotionKind::rapid, out);
         pos_ = out;
         ++moves_;

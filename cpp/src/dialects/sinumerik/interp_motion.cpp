@@ -17,22 +17,12 @@ namespace {
 constexpr char kAxes[3] = {'X', 'Y', 'Z'};
 constexpr char kCentre[3] = {'I', 'J', 'K'};
 
-Mat3 rotation(int axis, double deg) {
-    const double a = deg * kPi / 180, c = std::cos(a), s = std::sin(a);
-    Mat3 r = Mat3::Identity();
-    const int i = (axis + 1) % 3, j = (axis + 2) % 3;  // x: (y, z), y: (z, x), z: (x, y)
-    r(i, i) = c;
-    r(i, j) = -s;
-    r(j, i) = s;
-    r(j, j) = c;
-    return r;
-}
 int plane_normal_axis(Plane p) { return p == Plane::xy ? 2 : p == Plane::zx ? 1 : 0; }
 }  // namespace
 
 bool Interp::mirrored() const {
     const PlaneAxes ax = axes(st_.plane);
-    const double det = frame_.a(ax.a, ax.a) * frame_.a(ax.b, ax.b) - frame_.a(ax.a, ax.b) * frame_.a(ax.b, ax.a);
+    const double det = actual_.a(ax.a, ax.a) * actual_.a(ax.b, ax.b) - actual_.a(ax.a, ax.b) * actual_.a(ax.b, ax.a);
     return det < 0;
 }
 
@@ -116,19 +106,25 @@ void Interp::frame_statement(const BlockData& b, const std::string& which, int c
             fail(code::unsupported_word, which + " on the rotary axis " + std::string(1, a) + " is not supported by toolcomp",
                  b[a].column);
     Frame f = additive ? frame_ : Frame{};
+    FrameValue c;  // the statement's frame in components: TRANS the coarse part, ATRANS the fine
     if (base == "TRANS") {
         Vec3 v = Vec3::Zero();
         for (int i = 0; i < 3; ++i)
             if (b[kAxes[i]].set) v[i] = b[kAxes[i]].v * unit();
         f.t += f.a * v;
+        (additive ? c.fi : c.tr) = v;
     } else if (base == "ROT") {
         Mat3 r = Mat3::Identity();
         if (b.rpl.set) {
             if (b.has('X') || b.has('Y') || b.has('Z')) fail(code::syntax_error, "ROT with RPL= and axis angles", column);
             r = rotation(plane_normal_axis(st_.plane), b.rpl.v);
+            c.rt[plane_normal_axis(st_.plane)] = b.rpl.v;
         } else {
             for (int i : {2, 1, 0})  // Z, then Y, then X (RPY angles, MD10600 = 1)
-                if (b[kAxes[i]].set) r = r * rotation(i, b[kAxes[i]].v);
+                if (b[kAxes[i]].set) {
+                    r = r * rotation(i, b[kAxes[i]].v);
+                    c.rt[i] = b[kAxes[i]].v;
+                }
         }
         f.then(r);
     } else if (base == "SCALE") {
@@ -137,15 +133,19 @@ void Interp::frame_statement(const BlockData& b, const std::string& which, int c
             if (b[kAxes[i]].set) {
                 if (b[kAxes[i]].v == 0) fail(code::scale_zero, "SCALE with a factor of zero", b[kAxes[i]].column);
                 s(i, i) = b[kAxes[i]].v;
+                c.sc[i] = b[kAxes[i]].v;
             }
         f.then(s);
     } else if (base == "MIRROR") {
         Mat3 m = Mat3::Identity();
         for (int i = 0; i < 3; ++i)
-            if (b[kAxes[i]].set) m(i, i) = -1;
+            if (b[kAxes[i]].set) {
+                m(i, i) = -1;
+                c.mi[i] = 1;
+            }
         f.then(m);
     }
-    frame_ = f;
+    set_programmable(f, !additive ? std::optional<FrameValue>(c) : pframe_ ? chain(*pframe_, c) : std::nullopt);
 }
 
 void Interp::execute(BlockData& b, int first_column) {
@@ -166,7 +166,7 @@ void Interp::execute(BlockData& b, int first_column) {
             case 450: case 451: setg(corner, g, column); break;
             case 90: case 91: setg(dist, g, column); break;
             case 70: case 71: case 700: case 710: setg(units, g, column); break;
-            case 4: case 9: case 53: case 153: case 25: case 26: setg(nonmodal, g, column); break;
+            case 4: case 9: case 53: case 153: case 25: case 26: case 58: case 59: setg(nonmodal, g, column); break;
             case 500: case 54: case 55: case 56: case 57: setg(workoffset, g, column); break;
             case 94: case 95: case 96: case 97: setg(feedmode, g, column); break;
             case 60: case 64: case 601: case 602: case 603: break;
@@ -288,9 +288,15 @@ void Interp::execute(BlockData& b, int first_column) {
         st_.side = side;
     }
     // ---- frames and work offsets ---------------------------------------------------------------
-    // G54..G57, G505..G599, G500: the settable frames carry no values here (see interpreter.hpp).
+    // G500, G54..G57, G505..G599: the settable frame of that number ($P_UIFR[n], neutral until
+    // the program writes it: see interpreter.hpp).
+    if (workoffset >= 0) select_settable(workoffset == 500 ? 0 : workoffset < 500 ? workoffset - 53 : workoffset - 500);
     const bool axes = b.has('X') || b.has('Y') || b.has('Z');
-    if (!frame_word.empty()) {
+    if (nonmodal == 58 || nonmodal == 59) {
+        if (!frame_word.empty() || motion >= 0)
+            fail(code::alarm_12190, "12190 G" + std::to_string(nonmodal) + " must be programmed in a block of its own", first_column);
+        programmable_offset(b, nonmodal, first_column);
+    } else if (!frame_word.empty()) {
         if (motion >= 0) fail(code::alarm_12190, "12190 " + frame_word + " must be programmed in a block of its own", frame_column);
         frame_statement(b, frame_word, frame_column);
     } else if (b.rpl.set) {
@@ -301,7 +307,7 @@ void Interp::execute(BlockData& b, int first_column) {
     if (cip) st_.motion = 5;
     if (ct) st_.motion = 6;
     const bool rotary = b.has('A') || b.has('B') || b.has('C');
-    const bool data_axes = !frame_word.empty() || nonmodal == 25 || nonmodal == 26;
+    const bool data_axes = !frame_word.empty() || nonmodal == 25 || nonmodal == 26 || nonmodal == 58 || nonmodal == 59;
     const bool arc_words = b.has('I') || b.has('J') || b.has('K') || b.cr.set || b.ar.set || b.i1.set || b.j1.set ||
                            b.k1.set || b.turn.set;
     if (arc_words && st_.motion < 2)
@@ -326,12 +332,12 @@ void Interp::execute(BlockData& b, int first_column) {
             arc(b, e);
         } else {
             Vec3 e = end_point(b, machine);
-            Vec3 out = machine ? Vec3(e - work_origin_) : frame_.apply(e) + zero_shift_;
+            Vec3 out = machine ? Vec3(e - work_origin_) : actual_.apply(e) + zero_shift_;
             abc_ = abc;
             if (st_.motion == 1 && !(feed_ > 0)) fail(code::alarm_10860, "10860 No feedrate programmed", first_column);
             Motion m = motion_(st_.motion == 0 ? MotionKind::rapid : MotionKind::line, out);
             if (machine) m.radius = RadiusRequest{};
-            const Vec2 d = in_plane((machine ? frame_.invert(out - zero_shift_) : e) - program_pos(), st_.plane);
+            const Vec2 d = in_plane((machine ? actual_.invert(out - zero_shift_) : e) - program_pos(), st_.plane);
             if (d.norm() > 1e-12) last_tangent_ = d.normalized();
             pos_ = out;
             ++moves_;
@@ -485,7 +491,7 @@ void Interp::arc(const BlockData& b, const Vec3& end_prog) {
     c3[ax.a] = c.x();
     c3[ax.b] = c.y();
     const int n = plane_normal_axis(st_.plane);
-    const Mat3& A = frame_.a;
+    const Mat3& A = actual_.a;
     const double sa = std::hypot(A(ax.a, ax.a), A(ax.b, ax.a)), sb = std::hypot(A(ax.a, ax.b), A(ax.b, ax.b));
     if (std::fabs(A(n, ax.a)) > 1e-12 || std::fabs(A(n, ax.b)) > 1e-12 || std::fabs(A(ax.a, n)) > 1e-12 ||
         std::fabs(A(ax.b, n)) > 1e-12)
@@ -498,7 +504,7 @@ void Interp::arc(const BlockData& b, const Vec3& end_prog) {
     if (st_.side != 0 && std::fabs(e3[n] - s3[n]) > 1e-9) {
         Vec3 normal = Vec3::Zero();
         normal[n] = 1;
-        if (tool_axis_.cross(frame_.a * normal).norm() > 1e-9)
+        if (tool_axis_.cross(actual_.a * normal).norm() > 1e-9)
             fail(code::alarm_10760, "10760 Helical axis is not parallel to the tool orientation", first);
     }
     int turns = 0;
@@ -507,8 +513,8 @@ void Interp::arc(const BlockData& b, const Vec3& end_prog) {
             fail(code::alarm_14040, "14040 TURN= must be a whole number of turns (0..999999)", b.turn.column);
         turns = int_value(b.turn.v);
     }
-    const Vec3 out_end = frame_.apply(e3) + zero_shift_;
-    const Vec3 out_c = frame_.apply(c3) + zero_shift_;
+    const Vec3 out_end = actual_.apply(e3) + zero_shift_;
+    const Vec3 out_c = actual_.apply(c3) + zero_shift_;
     const int out_dir = mirrored() ? -dir : dir;
     Motion m = motion_(out_dir > 0 ? MotionKind::arc_ccw : MotionKind::arc_cw, out_end);
     m.center = out_c;

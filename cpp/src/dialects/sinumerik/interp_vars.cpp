@@ -97,6 +97,7 @@ double Interp::get(const std::string& name, std::span<const double> idx) {
         fail(code::alarm_12550, "12550 " + name + " cannot be read as a number");
     }
     if (const auto md = machine_datum(name, idx)) return *md;
+    if (const auto c = frame_component(name, idx)) return *c;
     if (name == "$P_SUBPAR") {  // was parameter n of this PROC given in the call?
         const std::vector<bool>& given = stack_.back().subpar;
         const int n = idx.size() == 1 ? as_index(idx[0]) : 0;
@@ -134,6 +135,7 @@ void Interp::set_variable(const std::string& name, std::span<const double> idx, 
         var->v[*flat] = var->integer ? std::round(v) : v;
         return;
     }
+    if (set_frame_component(name, idx, v, column)) return;
     if (int n = numbered(name, "$TC_DP")) {
         if (idx.size() != 2) fail(code::alarm_17020, "17020 " + name + " needs the indices [t, d]", column);
         int t = as_index(idx[0]), d = as_index(idx[1]);

@@ -1,4 +1,5 @@
 #include "toolcomp/dialects/sinumerik/lexer.hpp"
+#include "frame_value.hpp"
 #include "toolcomp/program/codes.hpp"
 #include "toolcomp/program/text.hpp"
 
@@ -91,7 +92,9 @@ private:
     }
     std::int32_t expression() {
         try {
-            return prog_.add_expression(expr::parse(s_, i_, expr::sinumerik_syntax()));
+            expr::Expr e = expr::parse(s_, i_, expr::sinumerik_syntax());
+            rewrite_frame_components(e);
+            return prog_.add_expression(std::move(e));
         } catch (const expr::SyntaxError& e) {
             i_ = e.offset;
             error(e.what());
@@ -441,6 +444,12 @@ private:
         }
         t.key = "=";
         t.param = target;
+        if (whole_frame(prog_.expression(target))) {  // $P_UIFR[1] = CTRANS(X, 10) : CROT(Z, 30)
+            t.key = "FRAME=";
+            t.text = frame_text();
+            prog_.add_token(std::move(t));
+            return;
+        }
         if (i_ < s_.size() && s_[i_] == '"') {  // text data ($TC_CARR23[1]="P")
             t.text = quoted();
             prog_.add_token(std::move(t));
@@ -449,6 +458,35 @@ private:
         t.expr = expression();
         t.param = target;
         prog_.add_token(std::move(t));
+    }
+
+    static bool whole_frame(const expr::Expr& target) {
+        const expr::Instr& v = target.code.back();
+        return v.op == expr::Op::variable && frame_indices(target.names[v.name]) == v.argc;
+    }
+    // A frame expression's text: terms (a frame function's call, a frame variable with its
+    // indices) joined by ':'; the interpreter reads it when the block runs.
+    std::string frame_text() {
+        std::string out;
+        for (;;) {
+            skip();
+            const std::size_t b = i_;
+            if (i_ >= s_.size() || !ident_start(s_[i_])) error("A frame (CTRANS(...), $P_UIFR[n], ...) expected");
+            ident();
+            skip();
+            if (i_ < s_.size() && s_[i_] == '[') {
+                while (i_ < s_.size() && s_[i_] != ']') ++i_;
+                if (i_ >= s_.size()) error("']' expected");
+                ++i_;
+            } else if (i_ < s_.size() && s_[i_] == '(') {
+                parenthesised();
+            }
+            out += std::string(s_.substr(b, i_ - b));
+            skip();
+            if (i_ >= s_.size() || s_[i_] != ':') return out;
+            out += ':';
+            ++i_;
+        }
     }
 
     std::string_view s_;

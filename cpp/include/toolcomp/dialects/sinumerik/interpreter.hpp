@@ -2,10 +2,11 @@
 // The Sinumerik 840D interpreter: runs .mpf/.spf blocks (R parameters, DEF variables,
 // control structures, subprograms, frames, tool data) and emits the Motion stream.
 //
-// Output coordinates: millimetres in the coordinate system of the settable frame (G54 ...):
-// the programmable frame (TRANS, ROT, SCALE, MIRROR and their additive forms) is applied,
-// settable frames are taken as zero (their values are machine data toolcomp does not have),
-// the way the ISO interpreters report program coordinates before work offsets. The table
+// Output coordinates: millimetres in the coordinate system of the settable frames as the
+// machine's data has them (toolcomp does not have those values: they are taken as neutral,
+// the way the ISO interpreters report program coordinates before work offsets). What the
+// program itself writes into them ($P_UIFR, $P_IFRAME, $P_BFRAME) and the programmable frame
+// (TRANS, ROT, SCALE, MIRROR, their additive forms, G58/G59, $P_PFRAME) are applied. The table
 // zero-point shift of a type P toolholder (TCARR + TCOABS) is part of the output.
 #include <functional>
 #include <map>
