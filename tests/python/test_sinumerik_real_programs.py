@@ -229,6 +229,23 @@ def test_machine_data_read_from_the_machine_file_or_the_plain_840d():
     assert tc.Machine.parse(m.dumps()).machine_data == {"$MC_MY_FLAG": 7.0}
 
 
+def test_indexed_machine_data_by_axis_name_or_number():
+    # An axis index is written as the machine file keys it: "$MA_AX_VELO_LIMIT[X]"; a numeric
+    # index from an expression reads the same key as the number written out.
+    m = tc.Machine.parse('control = "sinumerik"\nkind = "mill"\n[machine_data]\n"$MA_POS_LIMIT_PLUS[Z]" = 5\n'
+                         '"$MN_USER_DATA_INT[3]" = 7\n"$MA_POS_LIMIT_MINUS[1,X]" = -40\n')
+    res = run("DEF INT N=3\nG1 X=$MN_USER_DATA_INT[N] Y=$MA_POS_LIMIT_MINUS[1, X] Z=$MA_POS_LIMIT_PLUS[Z] F100\n"
+              "$SA_WORKAREA_PLUS[Y]=12\nG1 Y=$SA_WORKAREA_PLUS[Y]\nM30\n", machine=m)
+    np.testing.assert_allclose(res.nominal.end, [[7, -40, 5], [7, 12, 5]])
+    with pytest.raises(tc.ProgramError) as e:
+        run("G1 X=$MA_POS_LIMIT_PLUS[Y] F100\nM30\n", machine=m)
+    assert e.value.code == "12550" and "$MA_POS_LIMIT_PLUS[Y]" in e.value.message
+    assert tc.Machine.parse(m.dumps()).machine_data == m.machine_data
+    with pytest.raises(tc.ParseError) as e:
+        tc.Machine.parse('control = "sinumerik"\nkind = "mill"\n[machine_data]\n"$MA_A[x]" = 1\n')
+    assert e.value.code == "machine_file" and "an index as [3], [X] or [1,Z]" in e.value.message
+
+
 def test_machine_data_writes_are_not_made_and_setting_data_writes_are():
     # The 840D: "4075 machine data not changed due to missing permission level", the program
     # goes on with the old value; setting data are written.

@@ -86,9 +86,16 @@ void check_machine(const Machine& m) {
         const double value = datum.second;
         if (m.control != Dialect::sinumerik) bad("machine_data", name + ": machine data are the Sinumerik's");
         static constexpr std::string_view kPrefixes[] = {"$MN_", "$MC_", "$MA_", "$SN_", "$SC_", "$SA_"};
-        if (std::none_of(std::begin(kPrefixes), std::end(kPrefixes), [&name](std::string_view p) { return name.rfind(p, 0) == 0; }) ||
-            name.size() < 5 || name.find_first_not_of("$ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") != std::string::npos)
-            bad("machine_data", "'" + name + "' is no machine or setting data name ($MN_, $MC_, $MA_, $SN_, $SC_, $SA_ and upper case)");
+        // an index after the name: "[3]", "[X]", "[1,Z]" (whole numbers or axis names)
+        const std::size_t open = name.find('[');
+        const std::string base = name.substr(0, open);
+        const bool index_ok = open == std::string::npos ||
+                              (name.back() == ']' && name.size() > open + 2 &&
+                               name.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789,-", open + 1) == name.size() - 1);
+        if (std::none_of(std::begin(kPrefixes), std::end(kPrefixes), [&base](std::string_view p) { return base.rfind(p, 0) == 0; }) ||
+            base.size() < 5 || base.find_first_not_of("$ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_") != std::string::npos || !index_ok)
+            bad("machine_data", "'" + name + "' is no machine or setting data name ($MN_, $MC_, $MA_, $SN_, $SC_, $SA_ and upper "
+                                             "case, an index as [3], [X] or [1,Z])");
         if (!std::isfinite(value)) bad("machine_data", name + " must be a finite number");
     }
     for (const auto& [number, code] : m.cycles) {

@@ -205,6 +205,7 @@ private:
     void assign(const Token& t);
     Variable* find_variable(const std::string& name);
     static bool machine_data_name(const std::string& name);  // $MN_, $MC_, $MA_, $SN_, $SC_, $SA_
+    std::string machine_data_key(const std::string& name, std::span<const double> idx);
     std::optional<double> machine_datum(const std::string& name, std::span<const double> idx);
     std::map<std::string, double> setting_data_;  // $S.._ written by the program
     void set_variable(const std::string& name, std::span<const double> idx, double v, int column);

@@ -149,13 +149,13 @@ void Interp::set_variable(const std::string& name, std::span<const double> idx, 
         return;
     }
     if (machine_data_name(name)) {
+        const std::string key = machine_data_key(name, idx);
         if (name[1] == 'S') {  // setting data: written, read back from here on
-            if (!idx.empty()) fail(code::unsupported_word, name + "[...]: indexed setting data are not supported by toolcomp", column);
-            setting_data_[name] = v;
+            setting_data_[key] = v;
             return;
         }
         diags_.push_back({code::alarm_4075, Severity::warning,
-                          "4075 Machine data " + name + " not changed due to missing permission level (the program goes on)",
+                          "4075 Machine data " + key + " not changed due to missing permission level (the program goes on)",
                           {line_, column}});
         return;
     }
@@ -180,9 +180,22 @@ bool Interp::machine_data_name(const std::string& name) {
 // program wrote, the machine file's [machine_data], or the plain 840D's values of the few
 // programs read most (inch scaling 25.4, metric system, 1000 increments a mm, the edge M6
 // selects); any other is 12550 naming the machine file.
-std::optional<double> Interp::machine_datum(const std::string& name, std::span<const double> idx) {
-    if (!machine_data_name(name)) return std::nullopt;
-    if (!idx.empty()) fail(code::unsupported_word, name + "[...]: indexed machine and setting data are not supported by toolcomp");
+// An indexed datum's name as the machine file writes it: "$MA_AX_VELO_LIMIT[X]" (an axis
+// index comes merged into the name from the lexer), "$MN_USER_DATA_INT[3]", "$MA_X[1,Z]".
+std::string Interp::machine_data_key(const std::string& name, std::span<const double> idx) {
+    if (idx.empty()) return name;
+    std::string key = name.find('[') == std::string::npos ? name + "[" : name.substr(0, name.size() - 1) + ",";
+    for (std::size_t i = 0; i < idx.size(); ++i) {
+        if (idx[i] != std::floor(idx[i]) || std::fabs(idx[i]) > 1e9)
+            fail(code::alarm_17020, "17020 Illegal array index of " + name + ": " + shortest_number(idx[i]));
+        key += (i ? "," : "") + std::to_string(static_cast<long>(idx[i]));
+    }
+    return key + "]";
+}
+
+std::optional<double> Interp::machine_datum(const std::string& base, std::span<const double> idx) {
+    if (!machine_data_name(base)) return std::nullopt;
+    const std::string name = machine_data_key(base, idx);
     if (auto it = setting_data_.find(name); it != setting_data_.end()) return it->second;
     if (opts_.machine)
         if (auto it = opts_.machine->machine_data.find(name); it != opts_.machine->machine_data.end()) return it->second;

@@ -18,6 +18,45 @@ bool jump_keyword(std::string_view k) { return k == "GOTOF" || k == "GOTOB" || k
 // Calls whose result may be assigned ("R1=GETTCOR(...)").
 bool value_call(std::string_view k) { return k == "GETTCOR" || k == "SETTCOR" || k == "LENTOAX"; }
 
+// A channel's axis or spindle name as a machine datum's index: X, Y, Z, A, B, C, U, V, W (with
+// digits: X1, the machine axes), AX1, SP1, S1.
+bool axis_name(std::string_view n) {
+    std::size_t letters = n.size() >= 2 && (n.substr(0, 2) == "AX" || n.substr(0, 2) == "SP") ? 2
+                          : !n.empty() && std::string_view("XYZABCUVWS").find(n[0]) != std::string_view::npos ? 1 : 0;
+    if (letters == 0 || (n[0] == 'S' && letters == 1 && n.size() == 1)) return false;
+    for (std::size_t i = letters; i < n.size(); ++i)
+        if (!is_digit(n[i])) return false;
+    return letters == 1 || n.size() > 2;
+}
+
+// $MA_AX_VELO_LIMIT[X], $MN_USER_DATA_INT[3]: indices that are axis names or whole numbers
+// merge into the datum's name ("$MA_AX_VELO_LIMIT[X]"), the key a machine file gives it by.
+void merge_machine_data_indices(expr::Expr& e) {
+    for (std::size_t i = 0; i < e.code.size(); ++i) {
+        const expr::Instr v = e.code[i];
+        const std::string& name = e.names[v.name];
+        if (v.op != expr::Op::variable || v.argc == 0 || i < v.argc || name.size() < 5 || name[0] != '$' ||
+            (name[1] != 'M' && name[1] != 'S') || std::string_view("NCA").find(name[2]) == std::string_view::npos ||
+            name[3] != '_')
+            continue;
+        std::string key = name + "[";
+        bool merged = true;
+        for (std::size_t k = i - v.argc; k < i && merged; ++k) {
+            const expr::Instr& x = e.code[k];
+            if (x.op == expr::Op::variable && x.argc == 0 && axis_name(e.names[x.name])) key += e.names[x.name];
+            else if (x.op == expr::Op::number && x.value == std::floor(x.value) && std::fabs(x.value) < 1e9)
+                key += std::to_string(static_cast<long>(x.value));
+            else merged = false;
+            key += k + 1 < i ? "," : "]";
+        }
+        if (!merged) continue;
+        e.names.push_back(key);
+        e.code.erase(e.code.begin() + static_cast<std::ptrdiff_t>(i - v.argc), e.code.begin() + static_cast<std::ptrdiff_t>(i));
+        i -= v.argc;
+        e.code[i] = expr::Instr{expr::Op::variable, 0, expr::Fn::sin, static_cast<std::uint32_t>(e.names.size() - 1), 0};
+    }
+}
+
 class LineLexer {
 public:
     LineLexer(std::string_view line, int line_no, Program& prog) : s_(line), line_(line_no), prog_(prog) {}
@@ -94,6 +133,7 @@ private:
         try {
             expr::Expr e = expr::parse(s_, i_, expr::sinumerik_syntax());
             rewrite_frame_components(e);
+            merge_machine_data_indices(e);
             return prog_.add_expression(std::move(e));
         } catch (const expr::SyntaxError& e) {
             i_ = e.offset;
