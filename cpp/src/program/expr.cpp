@@ -35,6 +35,10 @@ constexpr FnName kFunctions[] = {
     {"BOUND", Fn::bound, 3, 3, S},          {"FIX", Fn::floor, 1, 1, L},
     {"FUP", Fn::ceil, 1, 1, L},             {"FIX", Fn::trunc, 1, 1, F},
     {"FUP", Fn::away, 1, 1, F},
+    {"STRLEN", Fn::strlen, 1, 1, S},        {"INDEX", Fn::index, 2, 2, S},
+    {"RINDEX", Fn::rindex, 2, 2, S},        {"SUBSTR", Fn::substr, 2, 3, S},
+    {"TOUPPER", Fn::toupper, 1, 1, S},      {"TOLOWER", Fn::tolower, 1, 1, S},
+    {"NUMBER", Fn::number, 1, 1, S},        {"ISNUMBER", Fn::isnumber, 1, 1, S},
 };
 const FnName* find_function(const std::string& name, std::uint8_t family) {
     for (const FnName& k : kFunctions)
@@ -90,6 +94,7 @@ private:
             p_ += best->spelling.size();
             expression(best->precedence + 1, depth + 1);
             emit(best->op);
+            if (best->op == Op::concat) e_.uses_text = true;
         }
     }
 
@@ -161,7 +166,16 @@ private:
             ++p_;
             return;
         }
-        if (c == '"') error("A string is not allowed in an arithmetic expression");
+        if (c == '"') {
+            if (!s_.strings) error("A string is not allowed in an arithmetic expression");
+            const std::size_t end = t_.find('"', p_ + 1);
+            if (end == std::string_view::npos) error("Unclosed string");
+            e_.texts.emplace_back(t_.substr(p_ + 1, end - p_ - 1));
+            e_.code.push_back(Instr{Op::text, 0, Fn::sin, static_cast<std::uint32_t>(e_.texts.size() - 1), 0});
+            e_.uses_text = true;
+            p_ = end + 1;
+            return;
+        }
         if (!ident_start(c)) error(std::string("Unexpected '") + c + "' in expression");
         std::size_t b = p_;
         while (p_ < t_.size() && ident_char(t_[p_])) ++p_;
@@ -205,6 +219,7 @@ private:
             }
             if (n < f->min_args || n > f->max_args) error(name + ": wrong number of arguments");
             e_.code.push_back(Instr{Op::call, static_cast<std::uint8_t>(n), f->fn, 0, 0});
+            if (f->fn >= Fn::strlen) e_.uses_text = true;
             return;
         }
         p_ = after;
@@ -372,23 +387,40 @@ double call(Fn f, const double* a) {
         case Fn::bound:
             if (a[0] > a[1]) throw MathError("BOUND: minimum greater than maximum", MathFault::bound_order);
             return std::fmin(std::fmax(a[2], a[0]), a[1]);
+        case Fn::strlen: case Fn::index: case Fn::rindex: case Fn::substr: case Fn::toupper: case Fn::tolower:
+        case Fn::number: case Fn::isnumber:
+            throw MathError("A string function where only numbers are evaluated");  // expr_text.cpp runs them
     }
     return 0;
 }
 
 }  // namespace
 
+double apply_function(Fn f, const double* args) {
+    const double r = call(f, args);
+    if (!std::isfinite(r)) throw MathError("Result out of range", MathFault::out_of_range);
+    return r;
+}
+
 const Syntax& sinumerik_syntax() {
     // Siemens PGA priorities: NOT; * / DIV MOD; + -; B_AND; B_XOR; B_OR; AND; XOR; OR;
-    // comparisons last (so "R1>1 AND R2<2" needs brackets, as on the control).
+    // "<<" (strings joined); comparisons last (so "R1>1 AND R2<2" needs brackets, as on the
+    // control).
     static const Syntax s{'(', ')', '[', ']',
                           {{"*", Op::mul, 10},         {"/", Op::div, 10},         {"DIV", Op::int_div, 10},
                            {"MOD", Op::mod, 10},       {"+", Op::add, 9},          {"-", Op::sub, 9},
                            {"B_AND", Op::bit_and, 8},  {"B_XOR", Op::bit_xor, 7},  {"B_OR", Op::bit_or, 6},
                            {"AND", Op::logical_and, 5}, {"XOR", Op::logical_xor, 4}, {"OR", Op::logical_or, 3},
+                           {"<<", Op::concat, 2},
                            {"==", Op::eq, 1},          {"<>", Op::ne, 1},          {"<=", Op::le, 1},
                            {">=", Op::ge, 1},          {"<", Op::lt, 1},           {">", Op::gt, 1}},
                           true};
+    static const Syntax with_strings = [] {
+        Syntax w = s;
+        w.strings = true;
+        return w;
+    }();
+    return with_strings;
     return s;
 }
 
@@ -492,9 +524,17 @@ namespace {
 int run(const Expr& e, Env& env, double* stack, const Syntax* syntax);
 }
 
+double evaluate_with_text(const Expr& e, Env& env);  // expr_text.cpp
+
 double evaluate(const Expr& e, Env& env, const Syntax* syntax) {
+    if (e.uses_text) return evaluate_with_text(e, env);
     double stack[512];
-    int sp = run(e, env, stack, syntax);
+    int sp;
+    try {
+        sp = run(e, env, stack, syntax);
+    } catch (const TextValue&) {  // a string variable: strings after all
+        return evaluate_with_text(e, env);
+    }
     return sp == 1 ? stack[0] : 0.0;
 }
 

@@ -13,6 +13,7 @@
 // parameters can be vacant (never set): a vacant value travels as NaN through a plain copy
 // and counts as 0 in arithmetic (Syntax::vacant).
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -30,6 +31,8 @@ enum class Op : std::uint8_t {
     add, sub, mul, div, int_div, mod, pow,
     eq, ne, lt, le, gt, ge,
     logical_and, logical_or, logical_xor, bit_and, bit_or, bit_xor,
+    text,    // 840D: pushes the string Expr::texts[name]
+    concat,  // 840D "<<": two values joined as text
 };
 
 enum class Fn : std::uint8_t {
@@ -37,6 +40,8 @@ enum class Fn : std::uint8_t {
     minval, maxval, bound,
     floor, ceil, away,  // LinuxCNC FIX / FUP; Fanuc FUP (away from zero)
     atan_ratio,         // ATAN[a]/[b]: atan2 in degrees, 0 for 0/0
+    // 840D string functions (expr_text.cpp)
+    strlen, index, rindex, substr, toupper, tolower, number, isnumber,
 };
 
 // Which controls know a function name.
@@ -53,6 +58,8 @@ struct Instr {
 struct Expr {
     std::vector<Instr> code;
     std::vector<std::string> names;  // upper case
+    std::vector<std::string> texts;  // string constants (Op::text)
+    bool uses_text = false;          // a string constant, "<<" or a string function: see evaluate_text
     bool constant() const { return code.size() == 1 && code[0].op == Op::number; }
 };
 
@@ -74,6 +81,7 @@ struct Syntax {
     double eq_tolerance = 0;                   // EQ / NE compare within this
     bool mod_floor = false;                    // MOD takes the divisor's sign (never negative for b > 0)
     bool vacant = false;                       // NaN parameters are vacant (Fanuc)
+    bool strings = false;                      // "..." constants, "<<", string functions (840D)
 };
 const Syntax& sinumerik_syntax();
 const Syntax& linuxcnc_syntax();
@@ -113,11 +121,25 @@ public:
     // ISO '#n' (Syntax::hash_parameters); NaN = vacant where the syntax has vacant values.
     virtual double param(double number) { (void)number; throw MathError("Parameters are not available here"); }
     virtual bool exists(const std::string& name) { (void)name; return false; }
+    // A string variable's value (840D STRING); nothing for a numeric name. Where get() is asked
+    // for a string variable it throws TextValue: the expression is then evaluated with strings.
+    virtual std::optional<std::string> text(const std::string& name, std::span<const double> indices) {
+        (void)name;
+        (void)indices;
+        return std::nullopt;
+    }
 };
+struct TextValue {};
 
 // Evaluates; throws MathError, and whatever Env::get throws.
 // `syntax` (optional) gives the comparison tolerance, MOD's sign and vacant values.
 double evaluate(const Expr& e, Env& env, const Syntax* syntax = nullptr);
+// A numeric function's value (MathError for a domain error or a result out of range).
+double apply_function(Fn f, const double* args);
+// With strings (Expr::uses_text, or a string variable met): the value as text, numbers
+// written as shortest_number writes them; evaluate() of such an expression takes this way
+// and refuses a string result (MathError).
+std::string evaluate_text(const Expr& e, Env& env);
 // Evaluates code that leaves several values (the indices of an assignment target) into `out`.
 void evaluate_all(const Expr& e, Env& env, std::vector<double>& out);
 

@@ -157,6 +157,22 @@ double Interp::eval_text(const std::string& text, int column) {
     }
 }
 
+std::string Interp::eval_text_string(const std::string& text, int column) {
+    try {
+        return eval_string(expr::parse_all(text, expr::sinumerik_syntax()), column);
+    } catch (const expr::SyntaxError& err) {
+        fail(code::syntax_error, std::string("12080 Syntax error: ") + err.what(), column);
+    }
+}
+
+std::string Interp::eval_string(const expr::Expr& e, int column) {
+    try {
+        return expr::evaluate_text(e, *this);
+    } catch (const expr::MathError& err) {
+        fail(code::math_error, std::string("14051 Arithmetic error in part program: ") + err.what(), column);
+    }
+}
+
 double Interp::value_of(const Token& t) { return t.expr >= 0 ? eval(t.expr, t.column) : t.value; }
 
 void Interp::run() {

@@ -31,6 +31,7 @@ struct Formal {
     bool by_reference = false;  // VAR
     bool integer = false;       // INT or BOOL
     bool boolean = false;
+    std::size_t text = 0;  // STRING[n]: n
 };
 
 struct ProgramInfo {
@@ -48,6 +49,10 @@ enum Ctl : std::uint8_t { ctl_none, ctl_if, ctl_else, ctl_endif, ctl_while, ctl_
 struct Variable {
     std::vector<double> v;
     bool integer = false;
+    // STRING[n]: the values are texts of at most `length` characters
+    bool text = false;
+    std::size_t length = 0;
+    std::vector<std::string> s;
     // A VAR parameter: the caller's variable (its element `ref_at`) or R parameter `r_index`.
     Variable* ref = nullptr;
     std::size_t ref_at = 0;
@@ -134,6 +139,7 @@ public:
 
     // expr::Env
     double get(const std::string& name, std::span<const double> idx) override;
+    std::optional<std::string> text(const std::string& name, std::span<const double> idx) override;
 
 private:
     struct Context {
@@ -198,6 +204,9 @@ private:
     void info(const char* code, const std::string& msg, int column = 0);
     double eval(std::int32_t e, int column);
     double value_of(const Token& t);
+    void set_text(Variable& var, std::span<const double> idx, const std::string& name, std::string value, int column);
+    std::string eval_text_string(const std::string& text, int column);
+    std::string eval_string(const expr::Expr& e, int column);  // a STRING value
     double eval_text(const std::string& text, int column);  // an argument of a call
 
     // ---- variables (interp_vars.cpp) ------------------------------------------------------

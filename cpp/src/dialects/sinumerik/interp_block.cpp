@@ -123,9 +123,17 @@ void Interp::block(std::span<const Token> t) {
             value_call(x);
             continue;
         }
-        if (x.is("MSG")) {
+        if (x.is("MSG")) {  // MSG("text" << R1): the text as the control shows it
             std::string m = x.text;
-            if (m.size() >= 2 && m.front() == '"' && m.back() == '"') m = m.substr(1, m.size() - 2);
+            if (m.find_first_not_of(" \t") == std::string::npos) {
+                m.clear();
+            } else {
+                try {
+                    m = eval_string(expr::parse_all(m, expr::sinumerik_syntax()), x.column);
+                } catch (const expr::SyntaxError&) {  // a form toolcomp does not read: the text as written
+                    if (m.size() >= 2 && m.front() == '"' && m.back() == '"') m = m.substr(1, m.size() - 2);
+                }
+            }
             info(code::message, m, x.column);
             continue;
         }
@@ -167,7 +175,8 @@ void Interp::block(std::span<const Token> t) {
         if (is_unsupported(k) || (x.is("G") && (x.value == 110 || x.value == 111 || x.value == 112)))
             fail(code::unsupported_word, (x.is("G") ? "G" + std::to_string(int_value(x.value)) : k) +
                                          " is not supported by toolcomp", x.column);
-        if (x.has_value || x.expr >= 0 || (!x.text.empty() && x.text.front() == '"')) {
+        // an address with its value, or with a text (T="DRILL"); SUB("abc", 5) is a call
+        if (x.has_value || x.expr >= 0 || (!x.text.empty() && x.text.front() == '"' && is_address(k))) {
             if (k.size() == 1 && k[0] >= 'A' && k[0] <= 'Z') {
                 const char l = k[0];
                 if (l == 'G') {

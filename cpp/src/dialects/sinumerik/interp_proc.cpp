@@ -30,26 +30,34 @@ bool identifier(const std::string& s) {
 
 }  // namespace
 
-// PROC's parameter list: [VAR] REAL|INT|BOOL name, ... (other types refused by name).
+// PROC's parameter list: [VAR] REAL|INT|BOOL|STRING[n] name, ... (other types refused by name).
 std::vector<Formal> Interp::parse_formals(const std::string& text, int line, int column) {
     std::vector<Formal> out;
     for (const std::string& raw : split_args(text)) {
         std::string s = raw;
         Formal f;
         if (s.rfind("VAR ", 0) == 0 || s.rfind("VAR\t", 0) == 0) f.by_reference = true, s = trimmed(s.substr(4));
+        if (s.rfind("STRING", 0) == 0) {  // STRING[n] NAME: its length
+            const auto open = s.find('['), close = s.find(']');
+            const std::string n = open == 6 && close != std::string::npos ? trimmed(s.substr(7, close - 7)) : "";
+            if (n.empty() || n.size() > 3 || n.find_first_not_of("0123456789") != std::string::npos || std::stoi(n) < 1)
+                throw ProgramError(code::syntax_error, "PROC parameter '" + raw + "': STRING[length] expected", {line, column, {}});
+            f.text = static_cast<std::size_t>(std::stoi(n));
+            s = "STRING " + trimmed(s.substr(close + 1));
+        }
         const auto blank = s.find_first_of(" \t");
         const std::string type = blank == std::string::npos ? s : s.substr(0, blank);
         const std::string name = blank == std::string::npos ? std::string() : trimmed(s.substr(blank));
-        if (type != "REAL" && type != "INT" && type != "BOOL")
+        if (type != "REAL" && type != "INT" && type != "BOOL" && type != "STRING")
             throw ProgramError(code::unsupported_word,
-                               "PROC parameter '" + raw + "': toolcomp takes REAL, INT and BOOL parameters (VAR too)",
+                               "PROC parameter '" + raw + "': toolcomp takes REAL, INT, BOOL and STRING parameters (VAR too)",
                                {line, column, {}});
         if (!identifier(name))
             throw ProgramError(code::unsupported_word,
                                "PROC parameter '" + raw + "': toolcomp takes single variables (no arrays)",
                                {line, column, {}});
         f.name = name;
-        f.integer = type != "REAL";
+        f.integer = type == "INT" || type == "BOOL";
         f.boolean = type == "BOOL";
         out.push_back(std::move(f));
     }
@@ -76,6 +84,17 @@ std::map<std::string, Variable> Interp::bind_arguments(const std::string& name, 
             continue;
         }
         Variable v;
+        if (f.text) {  // STRING[n]: the argument's text (omitted: empty)
+            v.text = true;
+            v.length = f.text;
+            v.v.assign(1, 0.0);  // the shape at() reads
+            v.s.assign(1, a.empty() ? std::string() : eval_text_string(a, column));
+            if (v.s[0].size() > v.length)
+                fail(code::string_too_long, f.name + " of " + name + ": \"" + v.s[0] + "\" is longer than its STRING[" +
+                                                std::to_string(v.length) + "]", column);
+            locals.emplace(f.name, std::move(v));
+            continue;
+        }
         v.integer = f.integer;
         double x = a.empty() ? 0.0 : eval_text(a, column);
         if (f.boolean) x = x != 0;
@@ -108,7 +127,7 @@ Variable Interp::reference_to(const std::string& actual, const Formal& f, const 
                                     : var[0] == 'R' && var.size() > 1 && var.find_first_not_of("0123456789", 1) == std::string::npos &&
                                           idx.empty();
     if (r_param) {
-        if (f.integer) fail(code::alarm_12330, "12330 Type of parameter " + f.name + " of " + name + " incorrect: " + actual + " is REAL", column);
+        if (f.integer || f.text) fail(code::alarm_12330, "12330 Type of parameter " + f.name + " of " + name + " incorrect: " + actual + " is REAL", column);
         const int n = var == "R" ? int_value(idx[0]) : std::stoi(var.substr(1));
         if (n < 0 || n >= static_cast<int>(r_.size())) fail(code::alarm_17020, "17020 Illegal array index: " + actual, column);
         ref.r_index = n;
@@ -121,13 +140,14 @@ Variable Interp::reference_to(const std::string& actual, const Formal& f, const 
         ref.r_index = target->r_index;
         ref.ref = target->ref;
         ref.ref_at = target->ref_at;
-        if (target->integer != f.integer)
+        const bool text = target->ref && target->ref->text;
+        if (target->integer != f.integer || text != (f.text > 0))
             fail(code::alarm_12330, "12330 Type of parameter " + f.name + " of " + name + " incorrect: " + actual, column);
         return ref;
     }
     const auto flat = target->at(idx);
     if (!flat) fail(code::alarm_17020, "17020 Illegal array index of " + var, column);
-    if (target->integer != f.integer)
+    if (target->integer != f.integer || target->text != (f.text > 0))
         fail(code::alarm_12330, "12330 Type of parameter " + f.name + " of " + name + " incorrect: " + actual, column);
     ref.ref = target;
     ref.ref_at = *flat;

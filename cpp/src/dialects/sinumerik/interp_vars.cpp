@@ -62,6 +62,7 @@ double Interp::get(const std::string& name, std::span<const double> idx) {
         return r_[static_cast<std::size_t>(n)];
     }
     if (Variable* v = find_variable(name)) {
+        if (v->text || (v->ref && v->ref->text)) throw expr::TextValue{};  // evaluated with strings
         if (v->r_index >= 0 || v->ref) {  // a VAR parameter: the caller's variable
             if (!idx.empty()) fail(code::alarm_17020, "17020 Illegal array index of " + name);
             return v->r_index >= 0 ? r_[static_cast<std::size_t>(v->r_index)] : v->ref->v[v->ref_at];
@@ -109,6 +110,30 @@ double Interp::get(const std::string& name, std::span<const double> idx) {
     if (name == "$P_TOOLNO" && idx.empty()) return tool_;
     if (name == "$P_TOOL" && idx.empty()) return d_;
     fail(code::alarm_12550, "12550 Name " + name + " not defined");
+}
+
+std::optional<std::string> Interp::text(const std::string& name, std::span<const double> idx) {
+    Variable* v = find_variable(name);
+    if (!v) return std::nullopt;
+    if (v->ref) {  // a VAR STRING parameter: the caller's variable
+        if (!v->ref->text) return std::nullopt;
+        if (!idx.empty()) fail(code::alarm_17020, "17020 Illegal array index of " + name);
+        return v->ref->s[v->ref_at];
+    }
+    if (!v->text) return std::nullopt;
+    const auto flat = v->at(idx);
+    if (!flat) fail(code::alarm_17020, "17020 Illegal array index of " + name);
+    return v->s[*flat];
+}
+
+// A STRING variable (or element) set to `value`, at most its declared length.
+void Interp::set_text(Variable& var, std::span<const double> idx, const std::string& name, std::string value, int column) {
+    Variable& target = var.ref ? *var.ref : var;
+    const auto flat = var.ref ? std::optional<std::size_t>(var.ref_at) : var.at(idx);
+    if (!flat || (var.ref && !idx.empty())) fail(code::alarm_17020, "17020 Illegal array index of " + name, column);
+    if (value.size() > target.length)
+        fail(code::string_too_long, name + ": \"" + value + "\" is longer than its STRING[" + std::to_string(target.length) + "]", column);
+    target.s[*flat] = std::move(value);
 }
 
 void Interp::set_variable(const std::string& name, std::span<const double> idx, double v, int column) {
@@ -208,8 +233,8 @@ std::optional<double> Interp::machine_datum(const std::string& base, std::span<c
 
 void Interp::define(std::span<const Token> t) {
     const std::string& type = t[0].text;
-    if (type != "REAL" && type != "INT" && type != "BOOL")
-        fail(code::unsupported_word, "DEF " + type + " variables are not supported by toolcomp (REAL, INT, BOOL are)", t[0].column);
+    if (type != "REAL" && type != "INT" && type != "BOOL" && type != "STRING")
+        fail(code::unsupported_word, "DEF " + type + " variables are not supported by toolcomp (REAL, INT, BOOL, STRING are)", t[0].column);
     auto& locals = stack_.back().locals;
     for (std::size_t i = 1; i < t.size(); ++i) {
         const Token& v = t[i];
@@ -219,13 +244,27 @@ void Interp::define(std::span<const Token> t) {
             v.text[0] == '$')
             fail(code::alarm_12170, "12170 Name " + v.text + " is reserved", v.column);
         Variable var;
-        var.integer = type != "REAL";
+        var.integer = type == "INT" || type == "BOOL";
+        var.text = type == "STRING";
+        var.length = var.text ? static_cast<std::size_t>(t[0].value) : 0;
         std::size_t n = v.has_value ? static_cast<std::size_t>(v.value) : 1;
         if (v.param > 0) {
             var.cols = static_cast<std::size_t>(v.param);
             n *= var.cols;
         }
         if (n > 100000) fail(code::alarm_12170, "12170 Array " + v.text + " too large", v.column);
+        if (var.text) {
+            var.v.assign(n, 0.0);  // the shape at() reads
+            var.s.assign(n, std::string());
+            if (v.expr >= 0) {
+                std::string x = eval_string(stack_.back().prog->expression(v.expr), v.column);
+                if (x.size() > var.length)
+                    fail(code::string_too_long, v.text + ": \"" + x + "\" is longer than its STRING[" + std::to_string(var.length) + "]", v.column);
+                for (std::string& e : var.s) e = x;
+            }
+            locals.emplace(v.text, std::move(var));
+            continue;
+        }
         var.v.assign(n, 0.0);
         if (v.expr >= 0) {
             double x = eval(v.expr, v.column);
@@ -248,7 +287,14 @@ void Interp::assign(const Token& t) {
         fail(code::math_error, std::string("14051 Arithmetic error in part program: ") + err.what(), t.column);
     }
     const std::string& name = target.names[var.name];
+    if (Variable* v = find_variable(name); v && (v->text || (v->ref && v->ref->text)))
+        return set_text(*v, idx, name,
+                        t.expr >= 0 ? eval_string(stack_.back().prog->expression(t.expr), t.column)
+                                    : t.text.substr(1, t.text.size() - 2),  // "text" as written
+                        t.column);
     if (!t.text.empty() && t.text.front() == '"') {
+        if (find_variable(name) || numbered(name, "R") > 0 || name == "R")
+            fail(code::math_error, "14051 Arithmetic error in part program: a string (" + t.text + ") where a number is expected", t.column);
         int n = numbered(name, "$TC_CARR");
         if (!n || idx.size() != 1) fail(code::unsupported_word, "String values are only supported for $TC_CARR21/22/23/34", t.column);
         try {

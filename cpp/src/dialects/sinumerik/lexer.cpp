@@ -271,6 +271,20 @@ private:
             t.key = "DEF";
             t.text = ident();
             if (t.text.empty()) error("Type expected after DEF");
+            if (t.text == "STRING") {  // STRING[n]: texts of at most n characters
+                skip();
+                double n = 0;
+                if (i_ >= s_.size() || s_[i_] != '[') error("STRING[length] expected");
+                ++i_;
+                skip();
+                if (!expr::read_number(s_, i_, n, false) || n < 1 || n > 200 || n != std::floor(n))
+                    error("STRING length 1..200 expected");
+                skip();
+                if (i_ >= s_.size() || s_[i_] != ']') error("']' expected");
+                ++i_;
+                t.value = n;
+                t.has_value = true;
+            }
             prog_.add_token(std::move(t));
             for (;;) {
                 skip();
@@ -490,10 +504,16 @@ private:
             prog_.add_token(std::move(t));
             return;
         }
-        if (i_ < s_.size() && s_[i_] == '"') {  // text data ($TC_CARR23[1]="P")
+        if (i_ < s_.size() && s_[i_] == '"') {  // text data ($TC_CARR23[1]="P", NAME="ABC")
+            const std::size_t save = i_;
             t.text = quoted();
-            prog_.add_token(std::move(t));
-            return;
+            skip();
+            if (i_ + 1 >= s_.size() || s_[i_] != '<' || s_[i_ + 1] != '<') {
+                prog_.add_token(std::move(t));
+                return;
+            }
+            i_ = save;  // "T" << R1: a string expression
+            t.text.clear();
         }
         t.expr = expression();
         t.param = target;
