@@ -349,3 +349,70 @@ def test_macros_of_macros_cannot_grow_without_bound():
     with pytest.raises(tc.ParseError) as e:
         run(text)
     assert "longer than 65536 characters" in e.value.message
+
+
+# ---- what real 840D programs carry (found running public programs) ---------------------------
+
+def test_names_are_not_case_sensitive_in_proc_parameters_and_var_arguments(tmp_path):
+    (tmp_path / "SUBV.SPF").write_text("PROC SUBV(real rStart, VAR REAL outV)\noutv = RSTART*2\nRET\n")
+    res = run("DEF REAL Ypos\nSUBV(2, Ypos)\nG1 X=YPOS F100\nM30\n", search_path=[tmp_path])
+    assert res.nominal.end[-1, 0] == 4
+
+
+def test_a_call_whose_first_argument_is_a_string(tmp_path):
+    (tmp_path / "SSUB.SPF").write_text("PROC SSUB(STRING[20] TXT, REAL A)\nG1 X=A+STRLEN(TXT) F100\nM17\n")
+    assert run('SSUB("abc", 5)\nM30\n', search_path=[tmp_path]).nominal.end[-1, 0] == 8
+
+
+def test_standard_cycles_are_refused_by_name_unless_a_program_of_that_name_is_given(tmp_path):
+    for call in ['CYCLE95("CONT", 1, 0.2)', "CYCLE97(1,,0,-20)", "POCKET3(10,0,1,-5)", "LONGHOLE(1)"]:
+        with pytest.raises(tc.ProgramError) as e:
+            run(f"G0 X0\n{call}\nM30\n")
+        assert e.value.code == "unsupported_word" and "standard cycle" in e.value.message
+    (tmp_path / "CYCLE97.SPF").write_text("PROC CYCLE97(REAL A)\nG1 X=A F100\nM17\n")
+    assert run("CYCLE97(7)\nM30\n", search_path=[tmp_path]).nominal.end[-1, 0] == 7
+
+
+def test_editor_grouping_master_spindle_and_extern_declarations_run_without_motion():
+    res = run('EXTERN SUBV(REAL, VAR REAL)\nGROUP_BEGIN(0,"ROUGH",0,0)\nSETMS(1)\nG1 X10 F100\nGROUP_END(0,0)\nM30\n')
+    assert res.nominal.end.tolist() == [[10, 0, 0]]
+    assert [d.code for d in res.diagnostics] == ["no_path_effect"] * 3
+
+
+def test_lims_caps_the_spindle_speed_of_g96():
+    # S200 m/min at radius 10: 200000 / (2 pi 10) = 3183.1 rev/min, capped at 2500: F0.1 mm/rev
+    # is 250 mm/min; at radius 20 the speed 1591.5 is under the cap: 159.15 mm/min.
+    res = run("G0 X10 Y0\nG96 S200 LIMS=2500 F0.1 M3\nG1 Y5\nG1 X20\nM30\n")
+    np.testing.assert_allclose(res.nominal.feed[1:], [250.0, 0.1 * 200000 / (2 * np.pi * 20)])
+    res = run("G0 X10 Y0\nG96 S200 F0.1 M3\nG1 Y5\nM30\n")
+    np.testing.assert_allclose(res.nominal.feed[1:], [0.1 * 200000 / (2 * np.pi * 10)])
+
+
+@pytest.mark.parametrize("line, word", [
+    ("G1 X10 Y0 F100 RND=2", "RND"), ("G1 X20 ANG=45 F100", "ANG"), ("G1 X10 CHF=1 F100", "CHF"),
+    ("WHENEVER $A_IN[1]==1 DO $R1=0", "Synchronized actions"), ("WHEN $AA_IM[X]>5 DO M120", "Synchronized actions"),
+])
+def test_contour_definitions_and_synchronized_actions_are_refused_by_name(line, word):
+    with pytest.raises(tc.ProgramError) as e:
+        run(f"G0 X0 Y0\n{line}\nM30\n")
+    assert e.value.code == "unsupported_word" and word in e.value.message
+
+
+@pytest.mark.parametrize("value, x", [(1, 1), (2, 2), (-3, 3), (7, 9)])
+def test_case_jumps_to_the_branch_of_the_value_else_default(value, x):
+    text = (f"R1={value}\nCASE R1 OF 1 GOTOF ONE 2 GOTOF TWO -3 GOTOF THREE DEFAULT GOTOF OTHER\n"
+            "ONE:\nG1 X1 F100\nGOTOF END\nTWO:\nG1 X2 F100\nGOTOF END\nTHREE:\nG1 X3 F100\nGOTOF END\n"
+            "OTHER:\nG1 X9 F100\nEND:\nM30\n")
+    assert xs(text) == [x]
+    # no branch and no DEFAULT: on with the next block
+    assert xs("R1=5\nCASE R1 OF 1 GOTOF ONE\nG1 X4 F100\nONE:\nM30\n") == [4]
+
+
+def test_g40_alone_after_a_circle_takes_effect_with_the_next_move():
+    t = tc.ToolTable()
+    t.set(tc.Tool(1, edges=[tc.CuttingEdge(radius=2.0, length=[0.0, 0.0, 0.0])]))
+    src = "G17 G90 T1 M6 D1\nG0 X-10 Y-10\nG41 G1 X0 Y0 F100\nG3 X10 Y10 CR=10\nG40\n{}\nM30\n"
+    assert run(src.format("G1 X20 Y20"), tools=t).path.end[-1].tolist() == [20, 20, 0]
+    with pytest.raises(tc.CompensationError) as e:  # the next move a circle: still 10754
+        run(src.format("G2 X20 Y0 CR=10"), tools=t)
+    assert e.value.code == "comp_exit_arc"

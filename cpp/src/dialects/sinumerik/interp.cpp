@@ -89,7 +89,7 @@ const ProgramInfo& Interp::info_of(const Program& p) {
             bool jump = false;
             for (const Token& x : t) jump |= x.key.rfind("GOTO", 0) == 0;
             if (jump) k = ctl_jump;
-        } else if (t[0].key.rfind("GOTO", 0) == 0) {
+        } else if (t[0].key.rfind("GOTO", 0) == 0 || t[0].key == "CASE") {
             k = ctl_jump;
         }
         if (k != ctl_none && (t[0].has_value || ((k == ctl_if || k == ctl_while || k == ctl_until || k == ctl_for) &&
@@ -237,6 +237,16 @@ bool Interp::control(std::span<const Token> t, std::uint8_t kind) {
     switch (kind) {
         case ctl_jump: {
             std::size_t i = 0;
+            if (t[0].key == "CASE") {  // the branch of the value, else DEFAULT, else the next block
+                const double v = eval(t[0].expr, t[0].column);
+                const Token* chosen = nullptr;
+                for (const Token& b : t.subspan(1))
+                    if ((b.param == 1 && b.value == v) || (b.param == 2 && !chosen)) chosen = &b;
+                for (const Token& b : t.subspan(1))
+                    if (b.param == 1 && b.value == v) chosen = &b;
+                if (chosen) jump(*chosen);
+                return true;
+            }
             if (t[0].key == "IF") {
                 if (!truth(t[0])) return true;
                 i = 1;
@@ -372,6 +382,16 @@ bool Interp::shopturn_step(const std::string& name) {
            std::all_of(name.begin() + 2, name.end(), [](char ch) { return (ch >= 'A' && ch <= 'Z') || ch == '_'; });
 }
 
+// The Siemens cycles a program calls by name (CYCLE95, POCKET3, SLOT1, LONGHOLE, ...).
+bool Interp::standard_cycle(const std::string& name) {
+    auto numbered = [&](std::string_view prefix) {
+        return name.size() > prefix.size() && name.compare(0, prefix.size(), prefix) == 0 &&
+               name.find_first_not_of("0123456789", prefix.size()) == std::string::npos;
+    };
+    return numbered("CYCLE") || numbered("POCKET") || numbered("SLOT") || name == "LONGHOLE" || name == "CONTPRON" ||
+           name == "CONTDCON" || name == "E_MANAGER";
+}
+
 void Interp::refuse_shopturn(const std::string& name, int column) const {
     fail(code::shopturn_program,
          "ShopMill/ShopTurn step program (" + name +
@@ -411,6 +431,11 @@ void Interp::call(const std::string& name, int passes, int column, const std::st
             break;
         }
         if (found.empty() && shopturn_step(name)) refuse_shopturn(name, column);
+        if (found.empty() && standard_cycle(name))
+            fail(code::unsupported_word, "The 840D's standard cycle " + name +
+                                             " is not supported by toolcomp (its tool path is computed inside the cycle; "
+                                             "a cycle program of that name on the search path is called)",
+                 column);
         if (found.empty())
             fail(code::alarm_14011, "14011 Program " + name + " not existing or will be edited" +
                               (opts_.search.dirs.empty() ? " (no search path given)" : " (not on the search path)"),

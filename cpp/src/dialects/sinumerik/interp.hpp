@@ -97,7 +97,7 @@ private:
 // What one block asks for, after its expressions are evaluated.
 struct BlockData {
     std::array<Value, 26> letter;  // A..Z (R is never an address)
-    Value cr, ar, turn, disc, offn, rpl, i1, j1, k1, tcarr;
+    Value cr, ar, turn, disc, offn, rpl, i1, j1, k1, tcarr, lims;
     CodeList g;  // code, column
     CodeList m;
     std::vector<std::pair<std::string, int>> keywords;  // NORM, CDON, TRANS ..., column
@@ -198,6 +198,7 @@ private:
     std::optional<ModalCall> modal_call_;  // MCALL CYCLE8x(...)
     bool blending_noted_ = false;
     static bool shopturn_step(const std::string& name);  // F_HEAD, E_DRILL, ...
+    static bool standard_cycle(const std::string& name);  // CYCLE95, POCKET3, ...
     [[noreturn]] void refuse_shopturn(const std::string& name, int column) const;
     bool ret();  // end of the current program level; false at the end of the main program
     [[noreturn]] void fail(const std::string& code, const std::string& msg, int column = 0) const;
@@ -290,6 +291,7 @@ private:
     // The machine's work origin (Machine::work_origin) in output coordinates (mm, a lathe's X
     // a radius): output = machine coordinates of the tool tip less it. Zero without a machine.
     Vec3 work_origin_ = Vec3::Zero();
+    double lims_ = 0;                 // LIMS: the speed limit under G96, rev/min (0: none)
     double feed_ = 0;                 // F: mm/min (G94) or mm/rev (G95, G96)
     double speed_ = 0;                // S: spindle speed, rev/min
     double cutting_speed_ = 0;        // S under G96: m/min

@@ -28,7 +28,9 @@ constexpr std::string_view kKeywords[] = {
 constexpr std::string_view kUnsupported[] = {
     "KONTC", "KONTT", "CUT2DF", "CUT3DC", "CUT3DF", "CUT3DFS", "CUT3DFF", "CUT3DCC", "CUT3DCCD", "TRAORI", "TRACYL",
     "TRANSMIT", "TCOFR", "TCOFRZ", "TCOFRY", "TCOFRX", "ASPLINE", "BSPLINE", "CSPLINE", "POLY", "OFFN_AX", "ORIC", "ORID",
-    "CYCLE90", "POCKET3", "POCKET4", "SLOT1", "SLOT2", "EXTERN", "G110", "G111", "G112", "ORIWKS", "ORIMKS",
+    "G110", "G111", "G112", "ORIWKS", "ORIMKS",
+    // contour definitions on the path (rounding, chamfers, angles): not read yet
+    "RND", "RNDM", "CHF", "CHR", "ANG",
     "ORIAXES", "ORIVECT", "ORIEULER", "ORIRPY", "TRACON", "CTRANS", "CROT", "CSCALE", "CMIRROR"};
 
 template <std::size_t N>
@@ -72,6 +74,10 @@ void Interp::no_path_call(const Token& x) {
         return;
     }
     if (x.is("WORKPIECE")) return info(code::no_path_effect, "WORKPIECE(...) sets the blank for the display: no motion", x.column);
+    if (x.is("GROUP_BEGIN") || x.is("GROUP_END"))
+        return info(code::no_path_effect, x.key + "(...) groups blocks in the editor: no motion", x.column);
+    if (x.is("SETMS")) return info(code::no_path_effect, "SETMS(...) names the master spindle: no motion", x.column);
+    if (x.is("EXTERN")) return;  // declares a subprogram's parameters for the compiler: nothing runs
     // CYCLE800(FR, TC, ST, MODE, X0, Y0, Z0, A, B, C, X1, Y1, Z1, DIR, ...)
     const std::vector<std::string> args = split_args(x.text);  // x.text: the arguments, without the parentheses
     for (std::size_t i : {7, 8, 9}) {
@@ -163,10 +169,14 @@ void Interp::block(std::span<const Token> t) {
             call_column = x.column;
             continue;
         }
-        if (x.is("CYCLE832") || x.is("WORKPIECE") || x.is("CYCLE800")) {
+        if (x.is("CYCLE832") || x.is("WORKPIECE") || x.is("CYCLE800") || x.is("GROUP_BEGIN") || x.is("GROUP_END") ||
+            x.is("SETMS") || x.is("EXTERN")) {
             no_path_call(x);
             continue;
         }
+        if (x.is("SYNACT"))
+            fail(code::unsupported_word, "Synchronized actions (" + x.text.substr(0, x.text.find(' ')) +
+                                             " ... DO ...) are not supported by toolcomp", x.column);
         if (x.is("SETAL")) {
             const long n = std::lround(eval_text(x.text, x.column));
             fail(code::setal, "Alarm " + std::to_string(n) + " set by the program (SETAL)", x.column);
@@ -222,7 +232,7 @@ void Interp::block(std::span<const Token> t) {
             }
             Value* v = x.is("CR") ? &b.cr : x.is("AR") ? &b.ar : x.is("TURN") ? &b.turn : x.is("DISC") ? &b.disc
                      : x.is("OFFN") ? &b.offn : x.is("RPL") ? &b.rpl : x.is("I1") ? &b.i1 : x.is("J1") ? &b.j1
-                     : x.is("K1") ? &b.k1 : x.is("TCARR") ? &b.tcarr : nullptr;
+                     : x.is("K1") ? &b.k1 : x.is("TCARR") ? &b.tcarr : x.is("LIMS") ? &b.lims : nullptr;
             if (!v) fail(code::unsupported_word, (x.text.empty() || x.text[0] == '"' ? k + "=" : x.text) + " is not supported by toolcomp", x.column);
             if (v->set) fail(code::alarm_12010, "12010 Address " + k + " programmed too often", x.column);
             *v = Value{true, value_of(x), x.param, x.column};

@@ -62,8 +62,8 @@ Motion Interp::motion_(MotionKind kind, const Vec3& end) const {
 }
 
 // G95: F (mm/rev) times S; G96: times the speed that keeps the cutting speed at the X where
-// the move ends (LIMS, the speed limit, is refused elsewhere). Not known (NaN) with the
-// spindle at rest or at the axis under G96.
+// the move ends, at most LIMS. Not known (NaN) with the spindle at rest or at the axis under
+// G96 without LIMS.
 double Interp::feed_rate(const Vec3& end) const {
     const double nan = std::numeric_limits<double>::quiet_NaN();
     switch (st_.feed_mode) {
@@ -76,7 +76,10 @@ double Interp::feed_rate(const Vec3& end) const {
     }
 }
 
-double Interp::css_speed(double x) const { return css_rpm(cutting_speed_ * 1000, std::fabs(x)); }  // S in m/min
+double Interp::css_speed(double x) const {  // S in m/min; LIMS caps it (rev/min)
+    const double rpm = css_rpm(cutting_speed_ * 1000, std::fabs(x));
+    return lims_ > 0 && !(rpm <= lims_) ? lims_ : rpm;
+}
 
 RadiusRequest Interp::radius_request() const {
     RadiusRequest r;
@@ -209,6 +212,10 @@ void Interp::execute(BlockData& b, int first_column) {
     }
     // ---- feed, speed, tools ------------------------------------------------------------------
     if (b.has('F') && nonmodal != 4) feed_ = b['F'].v * (st_.inch_feed ? kMmPerInch : 1.0);
+    if (b.lims.set) {
+        if (!(b.lims.v > 0)) fail(code::unused_word, "LIMS= is the spindle speed limit of G96 (rev/min): above 0", b.lims.column);
+        lims_ = b.lims.v;
+    }
     // ---- feed mode and spindle speed: G96's S is the cutting speed (m/min), else rev/min;
     // G97 keeps the speed G96 had reached where the tool stands --------------------------------
     if (feedmode == 97 && st_.feed_mode == 96) {
@@ -282,7 +289,9 @@ void Interp::execute(BlockData& b, int first_column) {
                               "G" + std::to_string(comp) + " with D0: no tool radius compensation", {line_, first_column}});
         if (side != 0 && (motion == 2 || motion == 3 || cip || ct || (motion < 0 && st_.motion >= 2)) && st_.side == 0)
             fail(code::alarm_10753, "10753 TRC selection only possible in a linear block", first_column);
-        if (side == 0 && st_.side != 0 && (motion == 2 || motion == 3 || cip || ct || (motion < 0 && st_.motion >= 2)))
+        // G40 in a block that moves on a circle; G40 alone takes effect with the next move
+        const bool moves = b.has('X') || b.has('Y') || b.has('Z');
+        if (side == 0 && st_.side != 0 && (motion == 2 || motion == 3 || cip || ct || (motion < 0 && moves && st_.motion >= 2)))
             fail(code::alarm_10754, "10754 TRC deselection only possible in a linear block", first_column);
         if (side == 0 && st_.side != 0) sink_.control({ControlKind::radius_off, line_, Vec3::Zero(), file()});
         st_.side = side;

@@ -34,7 +34,7 @@ bool identifier(const std::string& s) {
 std::vector<Formal> Interp::parse_formals(const std::string& text, int line, int column) {
     std::vector<Formal> out;
     for (const std::string& raw : split_args(text)) {
-        std::string s = raw;
+        std::string s = to_upper_ascii(raw);  // names are not case sensitive
         Formal f;
         if (s.rfind("VAR ", 0) == 0 || s.rfind("VAR\t", 0) == 0) f.by_reference = true, s = trimmed(s.substr(4));
         if (s.rfind("STRING", 0) == 0) {  // STRING[n] NAME: its length
@@ -108,9 +108,9 @@ std::map<std::string, Variable> Interp::bind_arguments(const std::string& name, 
 // A VAR argument: R5, R[expr], NAME or NAME[i] / NAME[i,j] of the caller (its own VAR
 // parameters followed to what they stand for).
 Variable Interp::reference_to(const std::string& actual, const Formal& f, const std::string& name, int column) {
-    std::string var = actual, index;
+    std::string var = to_upper_ascii(actual), index;  // names are not case sensitive
     if (const auto open = actual.find('['); open != std::string::npos && actual.back() == ']') {
-        var = trimmed(actual.substr(0, open));
+        var = to_upper_ascii(trimmed(actual.substr(0, open)));
         index = actual.substr(open + 1, actual.size() - open - 2);
     }
     auto not_a_variable = [&]() {

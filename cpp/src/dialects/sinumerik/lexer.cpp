@@ -15,6 +15,8 @@ bool is_digit(char c) { return ascii_digit(c); }
 // Statements that read an expression after them.
 bool condition_keyword(std::string_view k) { return k == "IF" || k == "WHILE" || k == "UNTIL"; }
 bool jump_keyword(std::string_view k) { return k == "GOTOF" || k == "GOTOB" || k == "GOTO" || k == "GOTOC"; }
+// Synchronized actions run beside the program in the interpolation cycle.
+bool synchronized_action(std::string_view k) { return k == "WHENEVER" || k == "WHEN" || k == "EVERY" || k == "FROM"; }
 // Calls whose result may be assigned ("R1=GETTCOR(...)").
 bool value_call(std::string_view k) { return k == "GETTCOR" || k == "SETTCOR" || k == "LENTOAX"; }
 
@@ -234,6 +236,59 @@ private:
             if (target.empty()) error("A program name or path expected after " + name);
             t.key = "CALL";
             t.text = std::move(target);
+            prog_.add_token(std::move(t));
+            return;
+        }
+        if (std::string_view(name) == "CASE") {  // CASE expr OF c GOTOF L ... DEFAULT GOTOF L
+            t.key = "CASE";
+            t.expr = expression();
+            prog_.add_token(std::move(t));
+            skip();
+            if (i_ >= s_.size() || !ident_start(s_[i_]) || ident() != "OF") error("OF expected in CASE");
+            for (;;) {
+                skip();
+                if (i_ >= s_.size()) return;
+                Token branch;
+                branch.column = col();
+                if (ident_start(s_[i_])) {
+                    const std::size_t save = i_;
+                    if (ident() != "DEFAULT") {
+                        i_ = save;
+                        error("A constant or DEFAULT expected in CASE");
+                    }
+                    branch.param = 2;
+                } else {
+                    double v = 0;
+                    bool negative = false;
+                    if (s_[i_] == '-' || s_[i_] == '+') negative = s_[i_++] == '-';
+                    if (!expr::read_number(s_, i_, v, false)) error("A constant or DEFAULT expected in CASE");
+                    branch.value = negative ? -v : v;
+                    branch.param = 1;
+                }
+                skip();
+                const std::size_t b = i_;
+                while (i_ < s_.size() && ident_char(s_[i_])) ++i_;
+                branch.key = to_upper_ascii(s_.substr(b, i_ - b));
+                if (!jump_keyword(branch.key)) error("GOTOF, GOTOB or GOTO expected in CASE");
+                skip();
+                const std::size_t l = i_;
+                while (i_ < s_.size() && ident_char(s_[i_])) ++i_;
+                if (i_ == l) error("Jump label expected after " + branch.key);
+                branch.text = to_upper_ascii(s_.substr(l, i_ - l));
+                prog_.add_token(std::move(branch));
+            }
+        }
+        if (std::string_view(name) == "EXTERN") {  // EXTERN NAME(REAL, VAR INT): a declaration
+            t.key = "EXTERN";
+            t.text = std::string(s_.substr(i_));
+            i_ = s_.size();
+            prog_.add_token(std::move(t));
+            return;
+        }
+        if (synchronized_action(name)) {  // WHENEVER ... DO ...: the rest of the line
+            t.key = "SYNACT";
+            t.text = name + std::string(s_.substr(i_));
+            i_ = s_.size();
             prog_.add_token(std::move(t));
             return;
         }
@@ -560,9 +615,10 @@ private:
 
 bool is_address(std::string_view n) {
     if (n.size() == 1) return n[0] != 'R' && n[0] >= 'A' && n[0] <= 'Z';
-    static constexpr std::array<std::string_view, 18> multi = {"CR", "AR", "TURN", "DISC", "OFFN", "RPL", "I1", "J1",
+    static constexpr std::array<std::string_view, 24> multi = {"CR", "AR", "TURN", "DISC", "OFFN", "RPL", "I1", "J1",
                                                                "K1", "ADIS", "ADISPOS", "TCARR", "AP", "RP", "DL",
-                                                               "SF", "FAD", "DISR"};
+                                                               "SF", "FAD", "DISR", "LIMS", "RND", "RNDM", "CHF",
+                                                               "CHR", "ANG"};
     for (std::string_view m : multi)
         if (m == n) return true;
     return false;
