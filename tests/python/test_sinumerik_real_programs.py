@@ -416,3 +416,17 @@ def test_g40_alone_after_a_circle_takes_effect_with_the_next_move():
     with pytest.raises(tc.CompensationError) as e:  # the next move a circle: still 10754
         run(src.format("G2 X20 Y0 CR=10"), tools=t)
     assert e.value.code == "comp_exit_arc"
+
+
+def test_rotary_axes_dc_acp_acn_reach_a_modulo_position():
+    # From C350: DC(10) the short way +20 (370); DC(200) from 10: -170 (200); ACP(190) from 200
+    # turning positively: +350 (550); ACN(200) from 190: -350 (200); half a turn: the positive way.
+    res = run("G0 X0 C350\nG0 C=DC(10)\nG0 C=DC(200)\nG0 C=ACP(190)\nG0 C=ACN(200)\nG0 A=DC(180)\nM30\n")
+    assert res.nominal.abc[:, 2].tolist() == [350, 370, 200, 550, 200, 200]
+    assert res.nominal.abc[-1, 0] == 180
+    with pytest.raises(tc.ProgramError) as e:
+        run("G0 C=DC(360)\nM30\n")
+    assert e.value.code == "16830"
+    with pytest.raises(tc.ParseError) as e:
+        run("G0 X=DC(10)\nM30\n")
+    assert e.value.code == "unsupported_word" and "rotary axes" in e.value.message

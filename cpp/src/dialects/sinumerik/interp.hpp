@@ -254,6 +254,7 @@ private:
     void programmable_offset(const BlockData& b, int g, int column);  // G58, G59
     void move(MotionKind kind, const Vec3& end, const BlockData& b);
     void arc(const BlockData& b, const Vec3& end_prog);
+    double modulo_target(double from, const Value& v) const;  // DC, ACP, ACN
     Motion motion_(MotionKind kind, const Vec3& end) const;
     double feed_rate(const Vec3& end) const;  // mm/min of a feed move ending at `end`
     double css_speed(double x) const;         // G96: rev/min at X (radius, mm); inf at the axis

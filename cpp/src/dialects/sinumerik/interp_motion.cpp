@@ -9,6 +9,7 @@
 #include "toolcomp/motion/spindle.hpp"
 #include "toolcomp/program/codes.hpp"
 #include "toolcomp/program/int_value.hpp"
+#include "toolcomp/program/text.hpp"
 #include "toolcomp/geometry/arc.hpp"
 
 namespace toolcomp::sinumerik {
@@ -41,6 +42,24 @@ Vec3 Interp::end_point(const BlockData& b, bool machine) const {
         p[i] = incremental ? p[i] + x : x;
     }
     return p;
+}
+
+// DC / ACP / ACN on a modulo rotary axis: the position v (0 <= v < 360) reached the shortest
+// way (half a turn: the positive way) / turning positively / negatively. The result goes on
+// from where the axis stands (the path's abc counts turns, as with M126/M127 on the TNC).
+double Interp::modulo_target(double from, const Value& v) const {
+    if (!(v.v >= 0 && v.v < 360))
+        fail(code::alarm_16830, "16830 Invalid modulo position programmed: " + shortest_number(v.v) + " (0 <= position < 360)", v.column);
+    double d = v.v - (from - 360 * std::floor(from / 360));
+    if (v.mod == 3) {
+        if (d > 180) d -= 360;
+        if (d <= -180) d += 360;
+    } else if (v.mod == 4 && d < 0) {
+        d += 360;
+    } else if (v.mod == 5 && d > 0) {
+        d -= 360;
+    }
+    return from + d;
 }
 
 Motion Interp::motion_(MotionKind kind, const Vec3& end) const {
@@ -332,7 +351,10 @@ void Interp::execute(BlockData& b, int first_column) {
         std::array<double, 3> abc = abc_;
         for (int i = 0; i < 3; ++i) {
             const Value& v = b[static_cast<char>('A' + i)];
-            if (v.set) abc[static_cast<std::size_t>(i)] = (v.mod == 2 || (v.mod == 0 && st_.incremental)) ? abc[static_cast<std::size_t>(i)] + v.v : v.v;
+            double& a = abc[static_cast<std::size_t>(i)];
+            if (!v.set) continue;
+            if (v.mod >= 3) a = modulo_target(a, v);
+            else a = (v.mod == 2 || (v.mod == 0 && st_.incremental)) ? a + v.v : v.v;
         }
         if (st_.motion >= 2) {
             if (machine) fail(code::g53_motion, "G53/G153/SUPA only with G0 or G1", first_column);

@@ -508,27 +508,32 @@ private:
         return "\"" + std::string(s_.substr(b, i_ - 1 - b)) + "\"";
     }
 
-    // The value of an address: an expression, AC(...) or IC(...).
+    // The value of an address: an expression, AC(...) or IC(...); of a rotary axis A, B, C
+    // also DC(...), ACP(...), ACN(...) (param 1 AC, 2 IC, 3 DC, 4 ACP, 5 ACN).
     void address_value(Token& t) {
         skip();
         std::size_t save = i_;
         if (i_ < s_.size() && ident_start(s_[i_])) {
             std::string mod = ident();
             skip();
-            if (i_ < s_.size() && s_[i_] == '(' && (mod == "AC" || mod == "IC")) {
+            const bool rotary = t.key == "A" || t.key == "B" || t.key == "C";
+            const bool modulo = mod == "DC" || mod == "ACP" || mod == "ACN";
+            if (i_ < s_.size() && s_[i_] == '(' && (mod == "AC" || mod == "IC" || (modulo && rotary))) {
                 ++i_;
                 std::int32_t e = expression();
                 skip();
                 if (i_ >= s_.size() || s_[i_] != ')') error("')' expected");
                 ++i_;
-                t.param = mod == "AC" ? 1 : 2;
+                t.param = mod == "AC" ? 1 : mod == "IC" ? 2 : mod == "DC" ? 3 : mod == "ACP" ? 4 : 5;
                 set_value(t, e);
                 return;
             }
-            if (i_ < s_.size() && s_[i_] == '(' && (mod == "DC" || mod == "ACP" || mod == "ACN" || mod == "CAC" || mod == "CIC" ||
+            if (i_ < s_.size() && s_[i_] == '(' && (modulo || mod == "CAC" || mod == "CIC" ||
                                                     mod == "CACP" || mod == "CACN" || mod == "CDC")) {
                 i_ = save;
-                throw ParseError(code::unsupported_word, mod + "() positioning of rotary axes is not supported by toolcomp",
+                throw ParseError(code::unsupported_word,
+                                 mod + (modulo ? "() positions rotary axes (A, B, C), not " + t.key
+                                               : "() positioning of rotary axes is not supported by toolcomp"),
                                  {line_, col()});
             }
             i_ = save;
