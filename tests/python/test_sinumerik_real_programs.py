@@ -430,3 +430,9 @@ def test_rotary_axes_dc_acp_acn_reach_a_modulo_position():
     with pytest.raises(tc.ParseError) as e:
         run("G0 X=DC(10)\nM30\n")
     assert e.value.code == "unsupported_word" and "rotary axes" in e.value.message
+
+
+def test_a_proc_run_as_the_main_program_takes_its_parameters_as_omitted():
+    # Selected on its own (not called), a PROC's parameters hold 0 / "" (VAR ones as locals).
+    res = run('PROC CHAMF(REAL rStart, VAR REAL OUT, STRING[5] S)\nG1 X=rStart+1 F100\nOUT=2\nG1 Y=OUT Z=STRLEN(S)\nM17\n')
+    assert res.nominal.end.tolist() == [[1, 0, 0], [1, 2, 0]]

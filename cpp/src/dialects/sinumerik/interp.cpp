@@ -177,6 +177,17 @@ double Interp::value_of(const Token& t) { return t.expr >= 0 ? eval(t.expr, t.co
 
 void Interp::run() {
     stack_.push_back(Context{&main_, &info_of(main_), 0, {}, false, 0, 0, files_.index(main_.name)});
+    // A PROC run as the main program: its parameters as omitted ones (0, "", VAR ones too)
+    for (const Formal& f : stack_.back().info->formals) {
+        Variable v;
+        v.integer = f.integer;
+        v.text = f.text > 0;
+        v.length = f.text;
+        v.v.assign(1, 0.0);
+        if (v.text) v.s.assign(1, std::string());
+        stack_.back().locals.emplace(f.name, std::move(v));
+        stack_.back().subpar.push_back(false);
+    }
     try {
         while (step()) {
         }
