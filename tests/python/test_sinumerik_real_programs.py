@@ -189,6 +189,26 @@ def test_proc_parameters_of_other_types_are_refused_by_name(tmp_path):
     assert e.value.code == "unsupported_word" and "AXIS _AX" in e.value.message
 
 
+def test_arrays_are_passed_whole_to_var_parameters(tmp_path):
+    # SUMUP adds VALS[0..N-1] of the caller's A (1 + 2 + 3) and writes VALS[0]; INNER gets the
+    # same array on, and BUMP one element of it.
+    (tmp_path / "SUMUP.SPF").write_text("PROC SUMUP(VAR REAL VALS[3], VAR REAL TOTAL, INT N)\nDEF INT I\nTOTAL=0\n"
+                                        "FOR I=0 TO N-1\nTOTAL=TOTAL+VALS[I]\nENDFOR\nVALS[0]=99\nINNER(VALS)\nM17\n")
+    (tmp_path / "INNER.SPF").write_text("PROC INNER(VAR REAL W[,3])\nW[2]=W[0]+1\nBUMP(W[1])\nM17\n")
+    (tmp_path / "BUMP.SPF").write_text("PROC BUMP(VAR REAL X1)\nX1=X1*10\nM17\n")
+    res = run("DEF REAL A[3]\nDEF REAL T\nA[0]=1\nA[1]=2\nA[2]=3\nSUMUP(A, T, 3)\nG1 X=T Y=A[0] Z=A[2] F100\n"
+              "G1 X=A[1]\nM30\n", search_path=[tmp_path])
+    assert res.nominal.end.tolist() == [[6, 99, 100], [20, 99, 100]]
+    for call, code in [("SUMUP(T, T, 1)", "12330"), ("SUMUP(A[1], T, 1)", "12320"), ("SUMUP(AI, T, 1)", "12330")]:
+        with pytest.raises(tc.ProgramError) as e:
+            run(f"DEF REAL A[3]\nDEF INT AI[3]\nDEF REAL T\n{call}\nM30\n", search_path=[tmp_path])
+        assert e.value.code == code, call
+    (tmp_path / "BAD.SPF").write_text("PROC BAD(REAL V[3])\nM17\n")
+    with pytest.raises(tc.ProgramError) as e:
+        run("DEF REAL A[3]\nBAD(A)\nM30\n", search_path=[tmp_path])
+    assert e.value.code == "syntax_error" and "VAR" in e.value.message
+
+
 @pytest.mark.parametrize("expr, value", [
     ("'B0101' B_AND 'B0011'", 1), ("'B0101' B_OR 'B0011'", 7), ("'B0101' B_XOR 'B0011'", 6), ("'H1F'", 31),
     ("'hff' B_AND 'B1111'", 15), ("B_NOT 'B0'", -1), ("'HFFFFFFFF'", -1),

@@ -32,6 +32,7 @@ struct Formal {
     bool integer = false;       // INT or BOOL
     bool boolean = false;
     std::size_t text = 0;  // STRING[n]: n
+    bool array = false;    // VAR REAL A[n] / A[n, m] / A[, m]: the caller's whole array
 };
 
 struct ProgramInfo {
@@ -56,6 +57,7 @@ struct Variable {
     // A VAR parameter: the caller's variable (its element `ref_at`) or R parameter `r_index`.
     Variable* ref = nullptr;
     std::size_t ref_at = 0;
+    bool whole = false;  // VAR REAL A[n]: `ref` is the caller's whole array
     int r_index = -1;
     std::size_t cols = 0;  // two-dimensional [rows, cols]; 0 for scalars and one dimension
     // Row-major position of the indices, or nullopt when they do not fit the declaration.
@@ -205,6 +207,7 @@ private:
     void info(const char* code, const std::string& msg, int column = 0);
     double eval(std::int32_t e, int column);
     double value_of(const Token& t);
+    std::pair<Variable*, std::size_t> element(Variable& v, std::span<const double> idx, const std::string& name, int column);
     void set_text(Variable& var, std::span<const double> idx, const std::string& name, std::string value, int column);
     std::string eval_text_string(const std::string& text, int column);
     std::string eval_string(const expr::Expr& e, int column);  // a STRING value

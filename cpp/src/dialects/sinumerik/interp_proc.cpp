@@ -47,7 +47,14 @@ std::vector<Formal> Interp::parse_formals(const std::string& text, int line, int
         }
         const auto blank = s.find_first_of(" \t");
         const std::string type = blank == std::string::npos ? s : s.substr(0, blank);
-        const std::string name = blank == std::string::npos ? std::string() : trimmed(s.substr(blank));
+        std::string name = blank == std::string::npos ? std::string() : trimmed(s.substr(blank));
+        if (const auto open = name.find('['); open != std::string::npos) {  // VAR REAL A[3] / A[,3]
+            if (!f.by_reference || name.back() != ']')
+                throw ProgramError(code::syntax_error, "PROC parameter '" + raw + "': an array is a VAR parameter",
+                                   {line, column, {}});
+            f.array = true;
+            name = trimmed(name.substr(0, open));
+        }
         if (type != "REAL" && type != "INT" && type != "BOOL" && type != "STRING")
             throw ProgramError(code::unsupported_word,
                                "PROC parameter '" + raw + "': toolcomp takes REAL, INT, BOOL and STRING parameters (VAR too)",
@@ -117,6 +124,21 @@ Variable Interp::reference_to(const std::string& actual, const Formal& f, const 
         fail(code::alarm_12320, "12320 Parameter " + f.name + " of " + name + " is not a variable: " + actual, column);
     };
     if (!identifier(var)) not_a_variable();
+    if (f.array) {  // the caller's whole array (or the whole array its own VAR parameter names)
+        Variable* target = index.empty() ? find_variable(var) : nullptr;
+        if (!target || target->r_index >= 0 || (target->ref && !target->whole)) not_a_variable();
+        Variable* store = target->ref ? target->ref : target;
+        if (store->integer != f.integer || store->text != (f.text > 0) || store->v.size() < 2)
+            fail(code::alarm_12330, "12330 Type of parameter " + f.name + " of " + name + " incorrect: " + actual +
+                                        (store->v.size() < 2 ? " is no array" : ""),
+                 column);
+        Variable ref;
+        ref.integer = f.integer;
+        ref.text = f.text > 0;
+        ref.ref = store;
+        ref.whole = true;
+        return ref;
+    }
     std::vector<double> idx;
     if (!index.empty())
         for (const std::string& part : split_args(index)) idx.push_back(eval_text(part, column));
@@ -135,7 +157,7 @@ Variable Interp::reference_to(const std::string& actual, const Formal& f, const 
     }
     Variable* target = find_variable(var);
     if (!target) not_a_variable();
-    if (target->r_index >= 0 || target->ref) {  // the caller's own VAR parameter
+    if (target->r_index >= 0 || (target->ref && !target->whole)) {  // the caller's own VAR parameter
         if (!idx.empty()) not_a_variable();
         ref.r_index = target->r_index;
         ref.ref = target->ref;
@@ -145,11 +167,13 @@ Variable Interp::reference_to(const std::string& actual, const Formal& f, const 
             fail(code::alarm_12330, "12330 Type of parameter " + f.name + " of " + name + " incorrect: " + actual, column);
         return ref;
     }
-    const auto flat = target->at(idx);
+    Variable* store = target->ref ? target->ref : target;  // an element of a whole array the caller was given
+    const auto flat = store->at(idx);
     if (!flat) fail(code::alarm_17020, "17020 Illegal array index of " + var, column);
-    if (target->integer != f.integer || target->text != (f.text > 0))
+    if (store->integer != f.integer || store->text != (f.text > 0))
         fail(code::alarm_12330, "12330 Type of parameter " + f.name + " of " + name + " incorrect: " + actual, column);
-    ref.ref = target;
+    ref.text = store->text;
+    ref.ref = store;
     ref.ref_at = *flat;
     return ref;
 }

@@ -62,14 +62,13 @@ double Interp::get(const std::string& name, std::span<const double> idx) {
         return r_[static_cast<std::size_t>(n)];
     }
     if (Variable* v = find_variable(name)) {
-        if (v->text || (v->ref && v->ref->text)) throw expr::TextValue{};  // evaluated with strings
-        if (v->r_index >= 0 || v->ref) {  // a VAR parameter: the caller's variable
+        if (v->r_index >= 0) {  // a VAR parameter standing for an R parameter
             if (!idx.empty()) fail(code::alarm_17020, "17020 Illegal array index of " + name);
-            return v->r_index >= 0 ? r_[static_cast<std::size_t>(v->r_index)] : v->ref->v[v->ref_at];
+            return r_[static_cast<std::size_t>(v->r_index)];
         }
-        const auto flat = v->at(idx);
-        if (!flat) fail(code::alarm_17020, "17020 Illegal array index of " + name);
-        return v->v[*flat];
+        const auto [store, at] = element(*v, idx, name, 0);
+        if (store->text) throw expr::TextValue{};  // evaluated with strings
+        return store->v[at];
     }
     if (int n = numbered(name, "$TC_DP")) {
         if (idx.size() != 2) fail(code::alarm_17020, "17020 " + name + " needs the indices [t, d]");
@@ -112,28 +111,30 @@ double Interp::get(const std::string& name, std::span<const double> idx) {
     fail(code::alarm_12550, "12550 Name " + name + " not defined");
 }
 
+// Where a variable's element lives: the variable itself, or for a VAR parameter the caller's
+// variable (one element of it, or a whole array the indices then address).
+std::pair<Variable*, std::size_t> Interp::element(Variable& v, std::span<const double> idx, const std::string& name, int column) {
+    Variable* store = v.ref ? v.ref : &v;
+    std::optional<std::size_t> flat;
+    if (v.ref && !v.whole) flat = idx.empty() ? std::optional<std::size_t>(v.ref_at) : std::nullopt;
+    else flat = store->at(idx);
+    if (!flat) fail(code::alarm_17020, "17020 Illegal array index of " + name, column);
+    return {store, *flat};
+}
+
 std::optional<std::string> Interp::text(const std::string& name, std::span<const double> idx) {
     Variable* v = find_variable(name);
-    if (!v) return std::nullopt;
-    if (v->ref) {  // a VAR STRING parameter: the caller's variable
-        if (!v->ref->text) return std::nullopt;
-        if (!idx.empty()) fail(code::alarm_17020, "17020 Illegal array index of " + name);
-        return v->ref->s[v->ref_at];
-    }
-    if (!v->text) return std::nullopt;
-    const auto flat = v->at(idx);
-    if (!flat) fail(code::alarm_17020, "17020 Illegal array index of " + name);
-    return v->s[*flat];
+    if (!v || v->r_index >= 0 || !(v->ref ? v->ref->text : v->text)) return std::nullopt;
+    const auto [store, at] = element(*v, idx, name, 0);
+    return store->s[at];
 }
 
 // A STRING variable (or element) set to `value`, at most its declared length.
 void Interp::set_text(Variable& var, std::span<const double> idx, const std::string& name, std::string value, int column) {
-    Variable& target = var.ref ? *var.ref : var;
-    const auto flat = var.ref ? std::optional<std::size_t>(var.ref_at) : var.at(idx);
-    if (!flat || (var.ref && !idx.empty())) fail(code::alarm_17020, "17020 Illegal array index of " + name, column);
-    if (value.size() > target.length)
-        fail(code::string_too_long, name + ": \"" + value + "\" is longer than its STRING[" + std::to_string(target.length) + "]", column);
-    target.s[*flat] = std::move(value);
+    const auto [store, at] = element(var, idx, name, column);
+    if (value.size() > store->length)
+        fail(code::string_too_long, name + ": \"" + value + "\" is longer than its STRING[" + std::to_string(store->length) + "]", column);
+    store->s[at] = std::move(value);
 }
 
 void Interp::set_variable(const std::string& name, std::span<const double> idx, double v, int column) {
@@ -149,15 +150,14 @@ void Interp::set_variable(const std::string& name, std::span<const double> idx, 
         return;
     }
     if (Variable* var = find_variable(name)) {
-        if (var->r_index >= 0 || var->ref) {  // a VAR parameter: the caller's variable
+        if (var->r_index >= 0) {  // a VAR parameter standing for an R parameter
             if (!idx.empty()) fail(code::alarm_17020, "17020 Illegal array index of " + name, column);
-            if (var->r_index >= 0) r_[static_cast<std::size_t>(var->r_index)] = v;
-            else var->ref->v[var->ref_at] = var->ref->integer ? std::round(v) : v;
+            r_[static_cast<std::size_t>(var->r_index)] = v;
             return;
         }
-        const auto flat = var->at(idx);
-        if (!flat) fail(code::alarm_17020, "17020 Illegal array index of " + name, column);
-        var->v[*flat] = var->integer ? std::round(v) : v;
+        const auto [store, at] = element(*var, idx, name, column);
+        if (store->text) fail(code::math_error, "14051 Arithmetic error in part program: a number for the STRING " + name, column);
+        store->v[at] = store->integer ? std::round(v) : v;
         return;
     }
     if (set_frame_component(name, idx, v, column)) return;
@@ -287,7 +287,7 @@ void Interp::assign(const Token& t) {
         fail(code::math_error, std::string("14051 Arithmetic error in part program: ") + err.what(), t.column);
     }
     const std::string& name = target.names[var.name];
-    if (Variable* v = find_variable(name); v && (v->text || (v->ref && v->ref->text)))
+    if (Variable* v = find_variable(name); v && v->r_index < 0 && (v->ref ? v->ref->text : v->text))
         return set_text(*v, idx, name,
                         t.expr >= 0 ? eval_string(stack_.back().prog->expression(t.expr), t.column)
                                     : t.text.substr(1, t.text.size() - 2),  // "text" as written
