@@ -183,10 +183,10 @@ def test_proc_argument_alarms(tmp_path, call, code):
 
 
 def test_proc_parameters_of_other_types_are_refused_by_name(tmp_path):
-    (tmp_path / "AXSUB.SPF").write_text("PROC AXSUB(AXIS _AX, REAL V)\nM17\n")
+    (tmp_path / "FRSUB.SPF").write_text("PROC FRSUB(FRAME _F, REAL V)\nM17\n")
     with pytest.raises(tc.ProgramError) as e:
-        run("G0 X0\nAXSUB(X, 1)\nM30\n", search_path=[tmp_path])
-    assert e.value.code == "unsupported_word" and "AXIS _AX" in e.value.message
+        run("G0 X0\nFRSUB(X, 1)\nM30\n", search_path=[tmp_path])
+    assert e.value.code == "unsupported_word" and "FRAME _F" in e.value.message
 
 
 def test_arrays_are_passed_whole_to_var_parameters(tmp_path):
@@ -207,6 +207,22 @@ def test_arrays_are_passed_whole_to_var_parameters(tmp_path):
     with pytest.raises(tc.ProgramError) as e:
         run("DEF REAL A[3]\nBAD(A)\nM30\n", search_path=[tmp_path])
     assert e.value.code == "syntax_error" and "VAR" in e.value.message
+
+
+def test_axis_variables_and_parameters_move_the_axis_they_name(tmp_path):
+    # DRL(_AX, DEPTH): down the applicate of the plane ($P_AXN3: Z in G17, Y in G18) and to 5
+    # on _AX; AX[Y]=IC(1) after a comparison with the axis X.
+    (tmp_path / "DRL.SPF").write_text("PROC DRL(AXIS _AX, REAL DEPTH)\nDEF AXIS _Z\n_Z=$P_AXN3\n"
+                                      "G1 AX[_Z]=-DEPTH AX[_AX]=5 F100\nIF _AX==X\nG1 AX[Y]=IC(1)\nENDIF\nM17\n")
+    res = run('DEF AXIS Q1=AXNAME("Z")\nG0 X0 Y0 Z10\nDRL(X, 3)\nG18\nDRL(Z, 2)\nG1 AX[Q1]=7\nM30\n',
+              search_path=[tmp_path])
+    assert res.nominal.end.tolist() == [[0, 0, 10], [5, 0, -3], [5, 1, -3], [5, -2, 5], [5, -2, 7]]
+    with pytest.raises(tc.ProgramError) as e:
+        run("G0 X0\nDRL(, 3)\nM30\n", search_path=[tmp_path])
+    assert e.value.code == "14010"
+    with pytest.raises(tc.ProgramError) as e:
+        run("G0 X0\nDRL(R1, 3)\nM30\n", search_path=[tmp_path])
+    assert e.value.code == "12330"
 
 
 @pytest.mark.parametrize("expr, value", [

@@ -39,6 +39,7 @@ constexpr FnName kFunctions[] = {
     {"RINDEX", Fn::rindex, 2, 2, S},        {"SUBSTR", Fn::substr, 2, 3, S},
     {"TOUPPER", Fn::toupper, 1, 1, S},      {"TOLOWER", Fn::tolower, 1, 1, S},
     {"NUMBER", Fn::number, 1, 1, S},        {"ISNUMBER", Fn::isnumber, 1, 1, S},
+    {"AXNAME", Fn::axname, 1, 1, S},        {"AXSTRING", Fn::axstring, 1, 1, S},
 };
 const FnName* find_function(const std::string& name, std::uint8_t family) {
     for (const FnName& k : kFunctions)
@@ -388,7 +389,7 @@ double call(Fn f, const double* a) {
             if (a[0] > a[1]) throw MathError("BOUND: minimum greater than maximum", MathFault::bound_order);
             return std::fmin(std::fmax(a[2], a[0]), a[1]);
         case Fn::strlen: case Fn::index: case Fn::rindex: case Fn::substr: case Fn::toupper: case Fn::tolower:
-        case Fn::number: case Fn::isnumber:
+        case Fn::number: case Fn::isnumber: case Fn::axname: case Fn::axstring:
             throw MathError("A string function where only numbers are evaluated");  // expr_text.cpp runs them
     }
     return 0;

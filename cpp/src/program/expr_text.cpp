@@ -73,6 +73,12 @@ Value text_call(Fn f, std::vector<Value>& a) {
         case Fn::number:
             if (!parse_number(text(0), r.d)) throw MathError("NUMBER: \"" + text(0) + "\" is no number");
             return r;
+        case Fn::axstring:  // an AXIS variable reads as its name
+            r.is_text = true;
+            r.s = text(0);
+            return r;
+        case Fn::axname:
+            throw MathError("AXNAME(...) gives an axis: only where an AXIS is expected");
         case Fn::isnumber: {
             double ignored;
             r.d = parse_number(text(0), ignored) ? 1 : 0;

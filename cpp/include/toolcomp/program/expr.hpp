@@ -42,6 +42,7 @@ enum class Fn : std::uint8_t {
     atan_ratio,         // ATAN[a]/[b]: atan2 in degrees, 0 for 0/0
     // 840D string functions (expr_text.cpp)
     strlen, index, rindex, substr, toupper, tolower, number, isnumber,
+    axname, axstring,  // AXNAME("X"): the axis of that name; AXSTRING(axis): its name
 };
 
 // Which controls know a function name.

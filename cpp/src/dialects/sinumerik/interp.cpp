@@ -182,6 +182,7 @@ void Interp::run() {
         Variable v;
         v.integer = f.integer;
         v.text = f.text > 0;
+        v.axis = f.axis;
         v.length = f.text;
         v.v.assign(1, 0.0);
         if (v.text) v.s.assign(1, std::string());

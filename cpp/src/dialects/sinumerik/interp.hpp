@@ -33,6 +33,7 @@ struct Formal {
     bool boolean = false;
     std::size_t text = 0;  // STRING[n]: n
     bool array = false;    // VAR REAL A[n] / A[n, m] / A[, m]: the caller's whole array
+    bool axis = false;     // AXIS
 };
 
 struct ProgramInfo {
@@ -52,6 +53,7 @@ struct Variable {
     bool integer = false;
     // STRING[n]: the values are texts of at most `length` characters
     bool text = false;
+    bool axis = false;  // AXIS: the text is an axis name (X, Y, Z, A, B, C)
     std::size_t length = 0;
     std::vector<std::string> s;
     // A VAR parameter: the caller's variable (its element `ref_at`) or R parameter `r_index`.
@@ -184,6 +186,7 @@ private:
                                                    const std::string& args, int column);
     Variable reference_to(const std::string& actual, const Formal& f, const std::string& name, int column);
     static std::vector<Formal> parse_formals(const std::string& text, int line, int column);
+    Token axis_address(const Token& t);  // AX[X]=10 as X10
     void no_path_call(const Token& x);  // CYCLE832, WORKPIECE, CYCLE800 without a swivel
     // Drilling cycles (interp_drilling.cpp): CYCLE81-CYCLE89, CYCLE840, directly or with MCALL.
     static bool drilling_cycle_name(const std::string& name);
@@ -208,6 +211,7 @@ private:
     double eval(std::int32_t e, int column);
     double value_of(const Token& t);
     std::pair<Variable*, std::size_t> element(Variable& v, std::span<const double> idx, const std::string& name, int column);
+    std::string axis_value(const expr::Expr& e, int column);  // AXIS: X, an AXIS variable, $P_AXN1
     void set_text(Variable& var, std::span<const double> idx, const std::string& name, std::string value, int column);
     std::string eval_text_string(const std::string& text, int column);
     std::string eval_string(const expr::Expr& e, int column);  // a STRING value

@@ -91,6 +91,21 @@ void Interp::no_path_call(const Token& x) {
     info(code::no_path_effect, "CYCLE800 without a swivel: the plane stays unrotated (the retraction of the machine's swivel data is not modelled)", x.column);
 }
 
+// AX[X]=10, AX[_AX]=10 (an AXIS variable): the address word X10.
+Token Interp::axis_address(const Token& t) {
+    Token a = t;
+    if (t.text.size() == 1 && std::string_view("XYZABC").find(t.text[0]) != std::string_view::npos) {
+        a.key = t.text;
+    } else if (Variable* v = find_variable(t.text); v && (v->ref ? v->ref->axis : v->axis)) {
+        a.key = *text(t.text, {});
+        if (a.key.empty()) fail(code::alarm_12330, "12330 AX[" + t.text + "]: the AXIS holds no axis", t.column);
+    } else {
+        fail(code::unsupported_word, "AX[" + t.text + "]: toolcomp moves the axes X, Y, Z, A, B, C (an axis name or an AXIS variable)", t.column);
+    }
+    a.text.clear();
+    return a;
+}
+
 void Interp::block(std::span<const Token> t) {
     Context& c = stack_.back();
     if (t[0].is("DEF")) {
@@ -115,7 +130,9 @@ void Interp::block(std::span<const Token> t) {
     bool mcall = false;  // MCALL in this block: the cycle after it is called modally
     std::optional<std::pair<std::string, std::vector<double>>> drill;  // CYCLE8x called here
     std::optional<std::pair<std::string, std::string>> pattern;        // HOLES1/2, CYCLE801 called here
-    for (const Token& x : t) {
+    Token axis_word;  // AX[axis]=value as the address of that axis
+    for (const Token& raw : t) {
+        const Token& x = raw.is("AX") ? (axis_word = axis_address(raw)) : raw;
         const std::string& k = x.key;
         if (x.is("=")) {
             assign(x);

@@ -55,10 +55,11 @@ std::vector<Formal> Interp::parse_formals(const std::string& text, int line, int
             f.array = true;
             name = trimmed(name.substr(0, open));
         }
-        if (type != "REAL" && type != "INT" && type != "BOOL" && type != "STRING")
+        if (type != "REAL" && type != "INT" && type != "BOOL" && type != "STRING" && type != "AXIS")
             throw ProgramError(code::unsupported_word,
-                               "PROC parameter '" + raw + "': toolcomp takes REAL, INT, BOOL and STRING parameters (VAR too)",
+                               "PROC parameter '" + raw + "': toolcomp takes REAL, INT, BOOL, STRING and AXIS parameters (VAR too)",
                                {line, column, {}});
+        if (type == "AXIS") f.axis = true, f.text = 8;
         if (!identifier(name))
             throw ProgramError(code::unsupported_word,
                                "PROC parameter '" + raw + "': toolcomp takes single variables (no arrays)",
@@ -91,6 +92,22 @@ std::map<std::string, Variable> Interp::bind_arguments(const std::string& name, 
             continue;
         }
         Variable v;
+        if (f.axis) {  // AXIS: an axis name or AXIS variable; one cannot be left out
+            if (a.empty())
+                fail(code::alarm_14010, "14010 Invalid default parameter in subprogram call: AXIS " + f.name + " of " + name +
+                                            " needs its argument",
+                     column);
+            v.text = v.axis = true;
+            v.length = 8;
+            v.v.assign(1, 0.0);
+            try {
+                v.s.assign(1, axis_value(expr::parse_all(a, expr::sinumerik_syntax()), column));
+            } catch (const expr::SyntaxError& err) {
+                fail(code::syntax_error, std::string("12080 Syntax error: ") + err.what(), column);
+            }
+            locals.emplace(f.name, std::move(v));
+            continue;
+        }
         if (f.text) {  // STRING[n]: the argument's text (omitted: empty)
             v.text = true;
             v.length = f.text;
@@ -128,7 +145,7 @@ Variable Interp::reference_to(const std::string& actual, const Formal& f, const 
         Variable* target = index.empty() ? find_variable(var) : nullptr;
         if (!target || target->r_index >= 0 || (target->ref && !target->whole)) not_a_variable();
         Variable* store = target->ref ? target->ref : target;
-        if (store->integer != f.integer || store->text != (f.text > 0) || store->v.size() < 2)
+        if (store->integer != f.integer || store->text != (f.text > 0) || store->axis != f.axis || store->v.size() < 2)
             fail(code::alarm_12330, "12330 Type of parameter " + f.name + " of " + name + " incorrect: " + actual +
                                         (store->v.size() < 2 ? " is no array" : ""),
                  column);
@@ -162,15 +179,15 @@ Variable Interp::reference_to(const std::string& actual, const Formal& f, const 
         ref.r_index = target->r_index;
         ref.ref = target->ref;
         ref.ref_at = target->ref_at;
-        const bool text = target->ref && target->ref->text;
-        if (target->integer != f.integer || text != (f.text > 0))
+        const bool text = target->ref && target->ref->text, axis = target->ref && target->ref->axis;
+        if (target->integer != f.integer || text != (f.text > 0) || axis != f.axis)
             fail(code::alarm_12330, "12330 Type of parameter " + f.name + " of " + name + " incorrect: " + actual, column);
         return ref;
     }
     Variable* store = target->ref ? target->ref : target;  // an element of a whole array the caller was given
     const auto flat = store->at(idx);
     if (!flat) fail(code::alarm_17020, "17020 Illegal array index of " + var, column);
-    if (store->integer != f.integer || store->text != (f.text > 0))
+    if (store->integer != f.integer || store->text != (f.text > 0) || store->axis != f.axis)
         fail(code::alarm_12330, "12330 Type of parameter " + f.name + " of " + name + " incorrect: " + actual, column);
     ref.text = store->text;
     ref.ref = store;

@@ -122,8 +122,37 @@ std::pair<Variable*, std::size_t> Interp::element(Variable& v, std::span<const d
     return {store, *flat};
 }
 
+// An AXIS value: an axis name (X, Y, Z, A, B, C), an AXIS variable, $P_AXN1 / 2 / 3 (the
+// abscissa, ordinate and applicate of the active plane), or AXNAME("X").
+std::string Interp::axis_value(const expr::Expr& e, int column) {
+    auto bad = [&]() -> std::string { fail(code::alarm_12330, "12330 An axis (X, Y, Z, A, B, C or an AXIS variable) expected", column); };
+    if (e.code.size() == 1 && e.code[0].op == expr::Op::variable && e.code[0].argc == 0) {
+        const std::string& n = e.names[e.code[0].name];
+        if (n.size() == 1 && std::string_view("XYZABC").find(n[0]) != std::string_view::npos) return n;
+        if (n.size() == 7 && n.rfind("$P_AXN", 0) == 0 && n[6] >= '1' && n[6] <= '3') {
+            const PlaneAxes ax = axes(st_.plane);
+            return std::string(1, "XYZ"[n[6] == '1' ? ax.a : n[6] == '2' ? ax.b : ax.c]);
+        }
+        if (Variable* v = find_variable(n); v && (v->ref ? v->ref->axis : v->axis)) return *text(n, {});
+        return bad();
+    }
+    if (e.code.size() == 2 && e.code[0].op == expr::Op::text && e.code[1].op == expr::Op::call &&
+        e.code[1].fn == expr::Fn::axname) {
+        const std::string n = to_upper_ascii(e.texts[e.code[0].name]);
+        if (n.size() == 1 && std::string_view("XYZABC").find(n[0]) != std::string_view::npos) return n;
+    }
+    return bad();
+}
+
 std::optional<std::string> Interp::text(const std::string& name, std::span<const double> idx) {
     Variable* v = find_variable(name);
+    if (!v && idx.empty()) {  // axes as values where strings are evaluated: IF _AX == X, $P_AXN3 == Z
+        if (name.size() == 1 && std::string_view("XYZABC").find(name[0]) != std::string_view::npos) return name;
+        if (name.size() == 7 && name.rfind("$P_AXN", 0) == 0 && name[6] >= '1' && name[6] <= '3') {
+            const PlaneAxes ax = axes(st_.plane);
+            return std::string(1, "XYZ"[name[6] == '1' ? ax.a : name[6] == '2' ? ax.b : ax.c]);
+        }
+    }
     if (!v || v->r_index >= 0 || !(v->ref ? v->ref->text : v->text)) return std::nullopt;
     const auto [store, at] = element(*v, idx, name, 0);
     return store->s[at];
@@ -233,8 +262,8 @@ std::optional<double> Interp::machine_datum(const std::string& base, std::span<c
 
 void Interp::define(std::span<const Token> t) {
     const std::string& type = t[0].text;
-    if (type != "REAL" && type != "INT" && type != "BOOL" && type != "STRING")
-        fail(code::unsupported_word, "DEF " + type + " variables are not supported by toolcomp (REAL, INT, BOOL, STRING are)", t[0].column);
+    if (type != "REAL" && type != "INT" && type != "BOOL" && type != "STRING" && type != "AXIS")
+        fail(code::unsupported_word, "DEF " + type + " variables are not supported by toolcomp (REAL, INT, BOOL, STRING, AXIS are)", t[0].column);
     auto& locals = stack_.back().locals;
     for (std::size_t i = 1; i < t.size(); ++i) {
         const Token& v = t[i];
@@ -245,8 +274,9 @@ void Interp::define(std::span<const Token> t) {
             fail(code::alarm_12170, "12170 Name " + v.text + " is reserved", v.column);
         Variable var;
         var.integer = type == "INT" || type == "BOOL";
-        var.text = type == "STRING";
-        var.length = var.text ? static_cast<std::size_t>(t[0].value) : 0;
+        var.text = type == "STRING" || type == "AXIS";
+        var.axis = type == "AXIS";
+        var.length = type == "STRING" ? static_cast<std::size_t>(t[0].value) : var.axis ? 8 : 0;
         std::size_t n = v.has_value ? static_cast<std::size_t>(v.value) : 1;
         if (v.param > 0) {
             var.cols = static_cast<std::size_t>(v.param);
@@ -257,7 +287,8 @@ void Interp::define(std::span<const Token> t) {
             var.v.assign(n, 0.0);  // the shape at() reads
             var.s.assign(n, std::string());
             if (v.expr >= 0) {
-                std::string x = eval_string(stack_.back().prog->expression(v.expr), v.column);
+                const expr::Expr& init = stack_.back().prog->expression(v.expr);
+                std::string x = var.axis ? axis_value(init, v.column) : eval_string(init, v.column);
                 if (x.size() > var.length)
                     fail(code::string_too_long, v.text + ": \"" + x + "\" is longer than its STRING[" + std::to_string(var.length) + "]", v.column);
                 for (std::string& e : var.s) e = x;
@@ -287,11 +318,16 @@ void Interp::assign(const Token& t) {
         fail(code::math_error, std::string("14051 Arithmetic error in part program: ") + err.what(), t.column);
     }
     const std::string& name = target.names[var.name];
-    if (Variable* v = find_variable(name); v && v->r_index < 0 && (v->ref ? v->ref->text : v->text))
+    if (Variable* v = find_variable(name); v && v->r_index < 0 && (v->ref ? v->ref->text : v->text)) {
+        if (v->ref ? v->ref->axis : v->axis) {
+            if (t.expr < 0) fail(code::alarm_12330, "12330 " + name + " is an AXIS: assign it an axis (X, Y, Z, A, B, C)", t.column);
+            return set_text(*v, idx, name, axis_value(stack_.back().prog->expression(t.expr), t.column), t.column);
+        }
         return set_text(*v, idx, name,
                         t.expr >= 0 ? eval_string(stack_.back().prog->expression(t.expr), t.column)
                                     : t.text.substr(1, t.text.size() - 2),  // "text" as written
                         t.column);
+    }
     if (!t.text.empty() && t.text.front() == '"') {
         if (find_variable(name) || numbered(name, "R") > 0 || name == "R")
             fail(code::math_error, "14051 Arithmetic error in part program: a string (" + t.text + ") where a number is expected", t.column);

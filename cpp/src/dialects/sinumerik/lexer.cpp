@@ -418,6 +418,22 @@ private:
             prog_.add_token(std::move(t));
             return;
         }
+        // AX[axis]=value: the address of the axis named (an axis or an AXIS variable).
+        if (name == "AX" && i_ < s_.size() && s_[i_] == '[') {
+            ++i_;
+            skip();
+            if (i_ >= s_.size() || !ident_start(s_[i_])) error("An axis name expected in AX[...]");
+            t.key = "AX";
+            t.text = ident();
+            skip();
+            if (i_ >= s_.size() || s_[i_] != ']') error("']' expected");
+            ++i_;
+            if (!at_assign()) error("'=' expected after AX[...]");
+            ++i_;
+            address_value(t);
+            prog_.add_token(std::move(t));
+            return;
+        }
         // Assignment to an indexed variable: NAME[i, j] = value.
         if (i_ < s_.size() && s_[i_] == '[') {
             i_ = start;
