@@ -36,8 +36,9 @@ bool axis_name(std::string_view n) {
 void merge_machine_data_indices(expr::Expr& e) {
     for (std::size_t i = 0; i < e.code.size(); ++i) {
         const expr::Instr v = e.code[i];
-        const std::string& name = e.names[v.name];
-        if (v.op != expr::Op::variable || v.argc == 0 || i < v.argc || name.size() < 5 || name[0] != '$' ||
+        if (v.op != expr::Op::variable) continue;
+        const std::string name = e.names[v.name];
+        if (v.argc == 0 || i < v.argc || name.size() < 5 || name[0] != '$' ||
             (name[1] != 'M' && name[1] != 'S') || std::string_view("NCA").find(name[2]) == std::string_view::npos ||
             name[3] != '_')
             continue;
