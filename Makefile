@@ -34,7 +34,7 @@ $(VENV)/.stamp: build/.apt-stamp pyproject.toml
 	test -x $(PY) || $(PYTHON) -m venv $(VENV)
 	$(PY) -m pip install -q --upgrade pip
 	$(PY) -m pip install -q "scikit-build-core>=0.10" "pybind11>=2.13" cmake ninja
-	$(PY) -m pip install -q "numpy>=1.21" pytest hypothesis "shapely>=2" nbclient nbformat ipykernel matplotlib pandas tqdm "dask[distributed]"
+	$(PY) -m pip install -q "numpy>=1.21" pytest hypothesis "shapely>=2" nbclient nbformat ipykernel matplotlib pandas tqdm "dask[distributed]" mypy
 	@touch $@
 
 bootstrap: $(VENV)/.stamp

@@ -11,6 +11,12 @@ import collections.abc as _abc
 import numbers as _numbers
 import os as _os
 import sys as _sys
+from typing import Callable as _Callable
+from typing import Iterable as _Iterable
+from typing import Mapping as _Mapping
+from typing import Optional as _Optional
+from typing import Sequence as _Sequence
+from typing import Union as _Union
 
 from . import _core
 from ._core import (
@@ -54,11 +60,20 @@ __all__ = [
 
 _sys.modules[__name__ + ".sinumerik"] = sinumerik  # type: ignore[assignment]  # `import toolcomp.sinumerik`
 
+# What run() and iter_run() take: a file name is a str or an os.PathLike.
+_FileName = _Union[str, "_os.PathLike[str]"]
+_SearchPath = _Union[_FileName, _Iterable[_FileName]]
+_Parameters = _Union[_Mapping[int, float], _FileName, None]
 
-def run(program, tools=None, *, dialect=None, strict=True, block_delete=False, profile=None,
-        units="mm", progress=None, progress_every=65536, search_path=(), parameters=None,
-        max_segments=20_000_000, max_bytes=2**31, max_line_length=2**20, threads=True, follow_links=False,
-        machine=None, probes=()):
+
+def run(program: _Union[Program, _FileName], tools: _Union[ToolTable, _FileName, None] = None, *,
+        dialect: _Optional[str] = None, strict: bool = True, block_delete: bool = False,
+        profile: _Optional[ControlProfile] = None, units: str = "mm",
+        progress: _Optional[_Callable[[int], object]] = None, progress_every: int = 65536,
+        search_path: _SearchPath = (), parameters: _Parameters = None, max_segments: int = 20_000_000,
+        max_bytes: int = 2**31, max_line_length: int = 2**20, threads: bool = True, follow_links: bool = False,
+        machine: _Union[Machine, _FileName, None] = None,
+        probes: _Iterable[_Optional[_Sequence[float]]] = ()) -> Result:
     """Interpret ``program`` and apply tool compensation.
 
     ``program`` is a :class:`Program` or a path to a program file (dialect from the suffix
@@ -169,9 +184,12 @@ def _run_inputs(tools, units, search_path, parameters):
     return tools, search_path, parameters
 
 
-def iter_run(program, tools=None, *, chunk=1_000_000, dialect=None, strict=True, block_delete=False,
-             profile=None, units="mm", search_path=(), parameters=None, max_bytes=2**31,
-             max_line_length=2**20, piece_bytes=1 << 20, follow_links=False, machine=None):
+def iter_run(program: _Union[Program, _FileName], tools: _Union[ToolTable, _FileName, None] = None, *,
+             chunk: int = 1_000_000, dialect: _Optional[str] = None, strict: bool = True, block_delete: bool = False,
+             profile: _Optional[ControlProfile] = None, units: str = "mm", search_path: _SearchPath = (),
+             parameters: _Parameters = None, max_bytes: int = 2**31, max_line_length: int = 2**20,
+             piece_bytes: int = 1 << 20, follow_links: bool = False,
+             machine: _Union[Machine, _FileName, None] = None) -> PathStream:
     """Run ``program`` like :func:`run` and yield its compensated path in chunks of ``chunk``
     segments (:class:`Path` objects; the last may be shorter). The chunks joined are the
     ``path`` that :func:`run` returns, segment for segment: the compensation look-ahead runs
