@@ -233,6 +233,14 @@ def _result_plot(self, ax=None, **kwargs):
 
 Result.plot = _result_plot
 
+from . import display as _display  # noqa: E402  (Jupyter's rich display)
+
+Result._repr_html_ = _display.result_html
+Result.__repr__ = _display.result_repr
+Path._repr_html_ = _display.path_html
+ToolTable._repr_html_ = _display.table_html
+Diagnostic._repr_html_ = _display.diagnostic_html
+
 
 def _table_to_pandas(self):
     """One row per cutting edge (pandas DataFrame); see :mod:`toolcomp.table_frames`."""
