@@ -31,6 +31,8 @@ class Diagnostic:
     def line(self) -> int: ...
     @property
     def column(self) -> int: ...
+    @property
+    def file(self) -> str: ...  # the called file the line is in; "" = the main program
 
 class CuttingEdge:
     """One cutting edge (D number) of a tool. Lengths in mm, angles in degrees."""
@@ -182,6 +184,7 @@ class ExitStyle(enum.Enum):
     """How the compensated path leaves the contour when compensation is cancelled."""
     perpendicular_to_last = 0
     corner_with_exit = 1
+    around_end_when_behind = 2
 
 class OutsideCorner(enum.Enum):
     """What fills the gap at an outside corner of the compensated path."""
@@ -235,6 +238,8 @@ class RadiusRules:
     non_plane_reaction: NonPlaneReaction
     lookahead: int
     gouge: GougeReaction
+    overcut_neighbours: int
+    overcut_tolerance: float
 
 class ControlProfile:
     """How a particular control behaves, as plain data; adjust fields and pass as run(..., profile=...)."""
@@ -302,6 +307,8 @@ class ControlProfile:
     startup_feed_per_rev: bool
     block_limit: int
     call_depth_limit: int
+    cutting_edge_default: int
+    m89_modal_cycle_call: bool
     no_motion_limit: int
     last_comment_only: bool
     feed_mode_clears_feed: bool
