@@ -48,10 +48,25 @@ build: bootstrap
 test: build
 	cd $(BUILD_DIR) && PATH=$(abspath $(VENV))/bin:$$PATH ctest --output-on-failure
 
-demo: build
+# The demo needs the module and a plot, no more: it builds neither the C++ tests nor the
+# benchmarks and installs only numpy and matplotlib (make test adds the rest later, to the
+# same build directory). Each step says what it does; the build's [n/N] lines count.
+$(VENV)/.demo-stamp: build/.apt-stamp
+	@echo "== demo 1/3: a Python environment with numpy, matplotlib and the build tools"
+	test -x $(PY) || $(PYTHON) -m venv $(VENV)
+	$(PY) -m pip install -q --upgrade pip
+	$(PY) -m pip install -q "scikit-build-core>=0.10" "pybind11>=2.13" cmake ninja "numpy>=1.21" matplotlib
+	@touch $@
+
+demo: $(VENV)/.demo-stamp
+	@echo "== demo 2/3: building the C++ module (a few minutes on 2 cores; log in build/demo-build.log)"
+	@set -o pipefail; PATH=$(abspath $(VENV))/bin:$$PATH $(PY) -m pip install -v --no-build-isolation --no-deps -e . \
+	  -Cbuild-dir=$(BUILD_DIR) -Ccmake.build-type=Release 2>&1 | tee build/demo-build.log \
+	  | { grep --line-buffered -E '^ *\[[0-9]+/[0-9]+\]' || true; } | sed -u 's/ Building CXX object CMakeFiles\/[^ ]*dir\// /'
+	@echo "== demo 3/3: running examples/bracket.ngc (G41 around a bracket) and drawing it"
 	@mkdir -p demo-out
-	$(PY) -m toolcomp run examples/pocket.ngc --tools examples/tools.tbl --plot demo-out/pocket.png
-	@echo "plot written to demo-out/pocket.png"
+	$(PY) -m toolcomp run examples/bracket.ngc --tools examples/tools.tbl --plot demo-out/bracket.png
+	@echo "plot written to demo-out/bracket.png: the programmed outline and the compensated path 5 mm outside it"
 
 build/.oracle-stamp:
 	@dpkg -s $(ORACLE_PKGS) >/dev/null 2>&1 || { apt-get update -qq && \
