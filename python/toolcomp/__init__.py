@@ -224,13 +224,16 @@ def iter_run(program: _Union[Program, _FileName], tools: _Union[ToolTable, _File
                                   max_line_length=max_line_length, follow_links=follow_links, machine=machine)
 
 
-def _result_plot(self, ax=None, **kwargs):
-    """Plot the programmed and compensated paths (matplotlib); returns the Axes."""
-    from .plot import plot_result
-
-    return plot_result(self, ax=ax, **kwargs)
+from . import plot as _plot  # noqa: E402  (cheap: matplotlib is imported when something is drawn)
 
 
+def _result_plot(self, ax=None, plane="xy", show_nominal=True, tolerance=None, title=None, legend=True,
+                 color_by="tool"):
+    return _plot.plot_result(self, ax=ax, plane=plane, show_nominal=show_nominal, tolerance=tolerance,
+                             title=title, legend=legend, color_by=color_by)
+
+
+_result_plot.__doc__ = _plot.plot_result.__doc__  # written once, in plot.py
 Result.plot = _result_plot
 
 from . import display as _display  # noqa: E402  (Jupyter's rich display)

@@ -18,6 +18,8 @@ import math
 import os
 import sys
 
+from typing import Any, Optional, Union
+
 import numpy as np
 
 RAPID, LINE, ARC_CW, ARC_CCW = 0, 1, 2, 3
@@ -288,8 +290,9 @@ def _drawing_tolerance(path):
     return max(DEFAULT_TOLERANCE, extent / 20000.0)
 
 
-def plot_result(result, ax=None, plane="xy", show_nominal=True, tolerance=None,
-                title=None, legend=True, color_by="tool"):
+def plot_result(result: Any, ax: Any = None, plane: str = "xy", show_nominal: bool = True,
+                tolerance: Optional[float] = None, title: Optional[str] = None, legend: bool = True,
+                color_by: str = "tool") -> Any:
     """Draw a run result: programmed path thin grey, compensated path coloured by tool,
     rapids dashed, segments inserted by compensation highlighted, diagnostics marked with
     their line number. Arcs are drawn as arcs, chorded within ``tolerance`` mm (default:
@@ -406,7 +409,8 @@ def plot_result(result, ax=None, plane="xy", show_nominal=True, tolerance=None,
     return ax
 
 
-def save_plot(result, filename, plane="xy", dpi=150, title=None, **kwargs):
+def save_plot(result: Any, filename: Union[str, "os.PathLike[str]"], plane: str = "xy", dpi: int = 150,
+              title: Optional[str] = None, **kwargs: Any) -> Union[str, "os.PathLike[str]"]:
     """Write :func:`plot_result` of ``result`` to ``filename`` (PNG, or any format matplotlib
     knows from the suffix). Uses no GUI backend, so it works on headless machines."""
     from matplotlib.backends.backend_agg import FigureCanvasAgg
