@@ -425,7 +425,7 @@ def test_lims_caps_the_spindle_speed_of_g96():
 
 
 @pytest.mark.parametrize("line, word", [
-    ("G1 X10 Y0 F100 RND=2", "RND"), ("G1 X20 ANG=45 F100", "ANG"), ("G1 X10 CHF=1 F100", "CHF"),
+    ("G1 X10 Y0 F100 RNDM=2", "RNDM"), ("G1 X20 ANG=45 F100", "ANG"),
     ("WHENEVER $A_IN[1]==1 DO $R1=0", "Synchronized actions"), ("WHEN $AA_IM[X]>5 DO M120", "Synchronized actions"),
 ])
 def test_contour_definitions_and_synchronized_actions_are_refused_by_name(line, word):

@@ -43,7 +43,7 @@ std::span<const Token> statements(std::span<const Token> t) {
 
 Interp::Interp(const Program& prog, const ToolTable* tools, const ControlProfile& profile, const InterpretOptions& opts,
                MotionSink& sink, std::vector<Diagnostic>& diags)
-    : main_(prog), tools_(tools), profile_(profile), opts_(opts), sink_(sink), diags_(diags) {
+    : main_(prog), tools_(tools), profile_(profile), opts_(opts), corners_(sink), sink_(corners_), diags_(diags) {
     edges_ = opts_.tool_data;
     holders_ = opts_.toolholders;
     st_.plane = profile_.startup_plane;
@@ -193,6 +193,7 @@ void Interp::run() {
         while (step()) {
         }
     } catch (...) {
+        corners_.abandon();
         sink_.finish();
         throw;
     }

@@ -20,6 +20,7 @@
 #include "../idle_watch.hpp"
 #include "toolcomp/program/source_files.hpp"
 #include "toolcomp/dialects/sinumerik/interpreter.hpp"
+#include "corner_sink.hpp"
 #include "frame_value.hpp"
 
 namespace toolcomp::sinumerik {
@@ -101,7 +102,7 @@ private:
 // What one block asks for, after its expressions are evaluated.
 struct BlockData {
     std::array<Value, 26> letter;  // A..Z (R is never an address)
-    Value cr, ar, turn, disc, offn, rpl, i1, j1, k1, tcarr, lims;
+    Value cr, ar, turn, disc, offn, rpl, i1, j1, k1, tcarr, lims, rnd, chf, chr;
     CodeList g;  // code, column
     CodeList m;
     std::vector<std::pair<std::string, int>> keywords;  // NORM, CDON, TRANS ..., column
@@ -261,6 +262,7 @@ private:
     void programmable_offset(const BlockData& b, int g, int column);  // G58, G59
     void move(MotionKind kind, const Vec3& end, const BlockData& b);
     void arc(const BlockData& b, const Vec3& end_prog);
+    void corner_request(const BlockData& b, int column);  // RND=, CHF=, CHR= at the end of the block's move
     double modulo_target(double from, const Value& v) const;  // DC, ACP, ACN
     Motion motion_(MotionKind kind, const Vec3& end) const;
     double feed_rate(const Vec3& end) const;  // mm/min of a feed move ending at `end`
@@ -273,7 +275,8 @@ private:
     const ToolTable* tools_;
     const ControlProfile& profile_;
     InterpretOptions opts_;
-    MotionSink& sink_;
+    CornerSink corners_;  // RND=, CHF=, CHR= between a block's move and the next
+    MotionSink& sink_;    // corners_, which hands the moves on
     std::vector<Diagnostic>& diags_;
 
     std::vector<Context> stack_;

@@ -30,7 +30,7 @@ constexpr std::string_view kUnsupported[] = {
     "TRANSMIT", "TCOFR", "TCOFRZ", "TCOFRY", "TCOFRX", "ASPLINE", "BSPLINE", "CSPLINE", "POLY", "OFFN_AX", "ORIC", "ORID",
     "G110", "G111", "G112", "ORIWKS", "ORIMKS",
     // contour definitions on the path (rounding, chamfers, angles): not read yet
-    "RND", "RNDM", "CHF", "CHR", "ANG",
+    "RNDM", "ANG",
     "ORIAXES", "ORIVECT", "ORIEULER", "ORIRPY", "TRACON", "CTRANS", "CROT", "CSCALE", "CMIRROR"};
 
 template <std::size_t N>
@@ -249,7 +249,8 @@ void Interp::block(std::span<const Token> t) {
             }
             Value* v = x.is("CR") ? &b.cr : x.is("AR") ? &b.ar : x.is("TURN") ? &b.turn : x.is("DISC") ? &b.disc
                      : x.is("OFFN") ? &b.offn : x.is("RPL") ? &b.rpl : x.is("I1") ? &b.i1 : x.is("J1") ? &b.j1
-                     : x.is("K1") ? &b.k1 : x.is("TCARR") ? &b.tcarr : x.is("LIMS") ? &b.lims : nullptr;
+                     : x.is("K1") ? &b.k1 : x.is("TCARR") ? &b.tcarr : x.is("LIMS") ? &b.lims : x.is("RND") ? &b.rnd
+                     : x.is("CHF") ? &b.chf : x.is("CHR") ? &b.chr : nullptr;
             if (!v) fail(code::unsupported_word, (x.text.empty() || x.text[0] == '"' ? k + "=" : x.text) + " is not supported by toolcomp", x.column);
             if (v->set) fail(code::alarm_12010, "12010 Address " + k + " programmed too often", x.column);
             *v = Value{true, value_of(x), x.param, x.column};

@@ -44,6 +44,18 @@ Vec3 Interp::end_point(const BlockData& b, bool machine) const {
     return p;
 }
 
+// RND=, CHF=, CHR= in a block: the corner at the end of its move (CornerSink), the size in
+// the program's unit; one of them per block.
+void Interp::corner_request(const BlockData& b, int column) {
+    const Value* v = b.rnd.set ? &b.rnd : b.chf.set ? &b.chf : b.chr.set ? &b.chr : nullptr;
+    if (!v) return;
+    if (b.rnd.set + b.chf.set + b.chr.set > 1) fail(code::alarm_12190, "12190 RND=, CHF= and CHR= in one block", v->column);
+    if (!(v->v > 0)) fail(code::chamfer_not_permitted, (b.rnd.set ? "RND=" : b.chf.set ? "CHF=" : "CHR=") + shortest_number(v->v) +
+                                                         ": the size is above 0", v->column);
+    const CornerKind k = b.rnd.set ? CornerKind::rounding : b.chf.set ? CornerKind::chamfer_length : CornerKind::chamfer_legs;
+    corners_.request({k, v->v * unit(), line_, v->column ? v->column : column});
+}
+
 // DC / ACP / ACN on a modulo rotary axis: the position v (0 <= v < 360) reached the shortest
 // way (half a turn: the positive way) / turning positively / negatively. The result goes on
 // from where the axis stands (the path's abc counts turns, as with M126/M127 on the TNC).
@@ -348,6 +360,7 @@ void Interp::execute(BlockData& b, int first_column) {
             if (b.has(a)) fail(code::alarm_12190, "12190 G4 must be programmed in a block of its own", b[a].column);
         if (motion >= 0) fail(code::alarm_12190, "12190 G4 must be programmed in a block of its own", first_column);
     } else if (!data_axes && (axes || rotary || (st_.motion >= 2 && arc_words))) {
+        corner_request(b, first_column);
         std::array<double, 3> abc = abc_;
         for (int i = 0; i < 3; ++i) {
             const Value& v = b[static_cast<char>('A' + i)];
@@ -375,6 +388,10 @@ void Interp::execute(BlockData& b, int first_column) {
             sink_.push(m);
         }
     }
+    const bool moved = nonmodal != 4 && !data_axes && (axes || rotary || (st_.motion >= 2 && arc_words));
+    if ((b.rnd.set || b.chf.set || b.chr.set) && !moved)
+        fail(code::corner_without_element, "RND=, CHF= and CHR= go with a path move in their block",
+             (b.rnd.set ? b.rnd : b.chf.set ? b.chf : b.chr).column);
     for (const char l : {'U', 'V', 'W', 'O', 'Q', 'E'})
         if (b.has(l)) fail(code::unsupported_word, std::string(1, l) + " words are not supported by toolcomp", b[l].column);
     if (b.has('N')) fail(code::syntax_error, "12080 Syntax error: a block number N must begin the block", b['N'].column);
