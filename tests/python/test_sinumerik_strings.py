@@ -91,3 +91,10 @@ def test_a_var_string_parameter_needs_a_string_variable(tmp_path):
         with pytest.raises(tc.ProgramError) as e:
             run(f"DEF INT N\nG0 X0\n{call}\nM30\n", search_path=[tmp_path])
         assert e.value.code == code, call
+
+
+def test_strings_in_an_assignments_indices_are_errors_not_crashes():
+    for text in ['DEF STRING[5] TXT="A"\nDEF REAL A[3]\nA[TXT]=1\nM30\n', 'DEF REAL A[3]\nA[STRLEN("AB")]=1\nM30\n']:
+        with pytest.raises(tc.ProgramError) as e:
+            run(text)
+        assert e.value.code == "math_error"

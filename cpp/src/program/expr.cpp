@@ -540,8 +540,14 @@ double evaluate(const Expr& e, Env& env, const Syntax* syntax) {
 }
 
 void evaluate_all(const Expr& e, Env& env, std::vector<double>& out) {
+    if (e.uses_text) throw MathError("Strings in an assignment's indices are not supported by toolcomp");
     double stack[512];
-    int sp = run(e, env, stack, nullptr);
+    int sp;
+    try {
+        sp = run(e, env, stack, nullptr);
+    } catch (const TextValue&) {
+        throw MathError("A string where a number is expected");
+    }
     out.assign(stack, stack + sp);
 }
 

@@ -253,6 +253,7 @@ private:
     void set_programmable(const Frame& f, std::optional<FrameValue> components);
     void select_settable(int n);
     void refresh_frames();
+    std::string assignment_target(const Token& t, std::vector<double>& idx);  // name, indices
     void frame_assign(const Token& t);
     FrameValue frame_expression(const std::string& text, int column);
     FrameValue frame_function(const std::string& name, const std::string& args, int column);

@@ -97,24 +97,15 @@ bool Interp::set_frame_component(const std::string& name, std::span<const double
     const auto c = static_cast<Component>(as_index(idx[whole + 1]));
     if (c == comp_sc && v == 0) fail(code::scale_zero, "A frame's scale of zero", column);
     f.at(as_index(idx[whole]), c) = c == comp_tr || c == comp_fi ? v * unit() : c == comp_mi ? (v != 0) : v;
-    if (&f == &*pframe_) set_programmable(pframe_->frame(), pframe_);
+    if (pframe_ && &f == &*pframe_) set_programmable(pframe_->frame(), pframe_);
     else if (&f == &iframe_ || &f == &bframe_) refresh_frames();
     return true;  // $P_UIFR[n]: in the data, active with the next G500 / G54 ... selecting it
 }
 
 // $P_xxx = frame expression.
 void Interp::frame_assign(const Token& t) {
-    const expr::Expr& target = stack_.back().prog->expression(t.param);
-    expr::Expr idx_code = target;
-    const expr::Instr var = idx_code.code.back();
-    idx_code.code.pop_back();
     std::vector<double> idx;
-    try {
-        expr::evaluate_all(idx_code, *this, idx);
-    } catch (const expr::MathError& err) {
-        fail(code::math_error, std::string("14051 Arithmetic error in part program: ") + err.what(), t.column);
-    }
-    const std::string& name = target.names[var.name];
+    const std::string name = assignment_target(t, idx);
     const FrameValue v = frame_expression(t.text, t.column);
     if (name == "$P_PFRAME") return set_programmable(v.frame(), v);
     frame_variable(name, idx, static_cast<std::size_t>(frame_indices(name)), true, t.column) = v;

@@ -305,19 +305,24 @@ void Interp::define(std::span<const Token> t) {
     }
 }
 
-void Interp::assign(const Token& t) {
+// An assignment's target: the variable's name, its indices evaluated into `idx` (the code
+// before the target's last instruction leaves them on the stack).
+std::string Interp::assignment_target(const Token& t, std::vector<double>& idx) {
     const expr::Expr& target = stack_.back().prog->expression(t.param);
-    // The target's indices: the code before its last instruction leaves them on the stack.
     expr::Expr idx_code = target;
     const expr::Instr var = idx_code.code.back();
     idx_code.code.pop_back();
-    std::vector<double> idx;
     try {
         expr::evaluate_all(idx_code, *this, idx);
     } catch (const expr::MathError& err) {
         fail(code::math_error, std::string("14051 Arithmetic error in part program: ") + err.what(), t.column);
     }
-    const std::string& name = target.names[var.name];
+    return target.names[var.name];
+}
+
+void Interp::assign(const Token& t) {
+    std::vector<double> idx;
+    const std::string name = assignment_target(t, idx);
     if (Variable* v = find_variable(name); v && v->r_index < 0 && (v->ref ? v->ref->text : v->text)) {
         if (v->ref ? v->ref->axis : v->axis) {
             if (t.expr < 0) fail(code::alarm_12330, "12330 " + name + " is an AXIS: assign it an axis (X, Y, Z, A, B, C)", t.column);
