@@ -93,6 +93,17 @@ Value text_call(Fn f, std::vector<Value>& a) {
     }
 }
 
+// An operator on numbers: expr.cpp's arithmetic, run on an expression of the operands.
+double numeric(std::initializer_list<double> operands, Op op) {
+    struct NoVariables : Env {
+        double get(const std::string&, std::span<const double>) override { return 0; }
+    } none;
+    Expr e;
+    for (double v : operands) e.code.push_back(Instr{Op::number, 0, Fn::sin, 0, v});
+    e.code.push_back(Instr{op, 0, Fn::sin, 0, 0});
+    return evaluate(e, none);
+}
+
 Value binary(Op op, const Value& a, const Value& b) {
     Value r;
     if (op == Op::concat) {
@@ -114,13 +125,7 @@ Value binary(Op op, const Value& a, const Value& b) {
         }
         return r;
     }
-    // numbers: the arithmetic of expr.cpp, through a two-value expression
-    Expr e;
-    e.code = {Instr{Op::number, 0, Fn::sin, 0, a.d}, Instr{Op::number, 0, Fn::sin, 0, b.d}, Instr{op, 0, Fn::sin, 0, 0}};
-    struct NoVariables : Env {
-        double get(const std::string&, std::span<const double>) override { return 0; }
-    } none;
-    r.d = evaluate(e, none);
+    r.d = numeric({a.d, b.d}, op);
     return r;
 }
 
@@ -147,16 +152,7 @@ Value run_text(const Expr& e, Env& env) {
             }
             case Op::neg: stack.back() = {false, -as_number(stack.back(), ""), {}}; break;
             case Op::logical_not: stack.back() = {false, as_number(stack.back(), "") == 0 ? 1.0 : 0.0, {}}; break;
-            case Op::bit_not: {
-                const double v = as_number(stack.back(), "");
-                Expr x;
-                x.code = {Instr{Op::number, 0, Fn::sin, 0, v}, Instr{Op::bit_not, 0, Fn::sin, 0, 0}};
-                struct NoVariables : Env {
-                    double get(const std::string&, std::span<const double>) override { return 0; }
-                } none;
-                stack.back() = {false, evaluate(x, none), {}};
-                break;
-            }
+            case Op::bit_not: stack.back() = {false, numeric({as_number(stack.back(), "")}, Op::bit_not), {}}; break;
             case Op::param: case Op::exists: case Op::exists_number:
                 throw MathError("Parameters are not available with strings");
             default: {

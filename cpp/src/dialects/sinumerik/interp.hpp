@@ -212,6 +212,7 @@ private:
     double eval(std::int32_t e, int column);
     double value_of(const Token& t);
     std::pair<Variable*, std::size_t> element(Variable& v, std::span<const double> idx, const std::string& name, int column);
+    std::optional<std::string> axis_named(const std::string& name);  // X, $P_AXN3, an AXIS variable
     std::string axis_value(const expr::Expr& e, int column);  // AXIS: X, an AXIS variable, $P_AXN1
     void set_text(Variable& var, std::span<const double> idx, const std::string& name, std::string value, int column);
     std::string eval_text_string(const std::string& text, int column);

@@ -94,14 +94,11 @@ void Interp::no_path_call(const Token& x) {
 // AX[X]=10, AX[_AX]=10 (an AXIS variable): the address word X10.
 Token Interp::axis_address(const Token& t) {
     Token a = t;
-    if (t.text.size() == 1 && std::string_view("XYZABC").find(t.text[0]) != std::string_view::npos) {
-        a.key = t.text;
-    } else if (Variable* v = find_variable(t.text); v && (v->ref ? v->ref->axis : v->axis)) {
-        a.key = *text(t.text, {});
-        if (a.key.empty()) fail(code::alarm_12330, "12330 AX[" + t.text + "]: the AXIS holds no axis", t.column);
-    } else {
+    const std::optional<std::string> axis = axis_named(t.text);
+    if (!axis)
         fail(code::unsupported_word, "AX[" + t.text + "]: toolcomp moves the axes X, Y, Z, A, B, C (an axis name or an AXIS variable)", t.column);
-    }
+    if (axis->empty()) fail(code::alarm_12330, "12330 AX[" + t.text + "]: the AXIS holds no axis", t.column);
+    a.key = *axis;
     a.text.clear();
     return a;
 }

@@ -122,37 +122,33 @@ std::pair<Variable*, std::size_t> Interp::element(Variable& v, std::span<const d
     return {store, *flat};
 }
 
-// An AXIS value: an axis name (X, Y, Z, A, B, C), an AXIS variable, $P_AXN1 / 2 / 3 (the
-// abscissa, ordinate and applicate of the active plane), or AXNAME("X").
+// The axis a name stands for: an axis (X, Y, Z, A, B, C), $P_AXN1 / 2 / 3 (the abscissa,
+// ordinate and applicate of the active plane), or an AXIS variable's axis.
+std::optional<std::string> Interp::axis_named(const std::string& n) {
+    if (n.size() == 1 && std::string_view("XYZABC").find(n[0]) != std::string_view::npos) return n;
+    if (n.size() == 7 && n.rfind("$P_AXN", 0) == 0 && n[6] >= '1' && n[6] <= '3') {
+        const PlaneAxes ax = axes(st_.plane);
+        return std::string(1, "XYZ"[n[6] == '1' ? ax.a : n[6] == '2' ? ax.b : ax.c]);
+    }
+    if (Variable* v = find_variable(n); v && (v->ref ? v->ref->axis : v->axis)) return text(n, {});
+    return std::nullopt;
+}
+
+// An AXIS value: what axis_named() names, or AXNAME("X").
 std::string Interp::axis_value(const expr::Expr& e, int column) {
-    auto bad = [&]() -> std::string { fail(code::alarm_12330, "12330 An axis (X, Y, Z, A, B, C or an AXIS variable) expected", column); };
-    if (e.code.size() == 1 && e.code[0].op == expr::Op::variable && e.code[0].argc == 0) {
-        const std::string& n = e.names[e.code[0].name];
-        if (n.size() == 1 && std::string_view("XYZABC").find(n[0]) != std::string_view::npos) return n;
-        if (n.size() == 7 && n.rfind("$P_AXN", 0) == 0 && n[6] >= '1' && n[6] <= '3') {
-            const PlaneAxes ax = axes(st_.plane);
-            return std::string(1, "XYZ"[n[6] == '1' ? ax.a : n[6] == '2' ? ax.b : ax.c]);
-        }
-        if (Variable* v = find_variable(n); v && (v->ref ? v->ref->axis : v->axis)) return *text(n, {});
-        return bad();
-    }
-    if (e.code.size() == 2 && e.code[0].op == expr::Op::text && e.code[1].op == expr::Op::call &&
-        e.code[1].fn == expr::Fn::axname) {
-        const std::string n = to_upper_ascii(e.texts[e.code[0].name]);
-        if (n.size() == 1 && std::string_view("XYZABC").find(n[0]) != std::string_view::npos) return n;
-    }
-    return bad();
+    std::optional<std::string> a;
+    if (e.code.size() == 1 && e.code[0].op == expr::Op::variable && e.code[0].argc == 0)
+        a = axis_named(e.names[e.code[0].name]);
+    else if (e.code.size() == 2 && e.code[0].op == expr::Op::text && e.code[1].op == expr::Op::call &&
+             e.code[1].fn == expr::Fn::axname)
+        a = axis_named(to_upper_ascii(e.texts[e.code[0].name]));
+    if (!a) fail(code::alarm_12330, "12330 An axis (X, Y, Z, A, B, C or an AXIS variable) expected", column);
+    return *a;
 }
 
 std::optional<std::string> Interp::text(const std::string& name, std::span<const double> idx) {
     Variable* v = find_variable(name);
-    if (!v && idx.empty()) {  // axes as values where strings are evaluated: IF _AX == X, $P_AXN3 == Z
-        if (name.size() == 1 && std::string_view("XYZABC").find(name[0]) != std::string_view::npos) return name;
-        if (name.size() == 7 && name.rfind("$P_AXN", 0) == 0 && name[6] >= '1' && name[6] <= '3') {
-            const PlaneAxes ax = axes(st_.plane);
-            return std::string(1, "XYZ"[name[6] == '1' ? ax.a : name[6] == '2' ? ax.b : ax.c]);
-        }
-    }
+    if (!v && idx.empty()) return axis_named(name);  // axes as values among strings: IF _AX == X
     if (!v || v->r_index >= 0 || !(v->ref ? v->ref->text : v->text)) return std::nullopt;
     const auto [store, at] = element(*v, idx, name, 0);
     return store->s[at];
