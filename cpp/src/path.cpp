@@ -35,8 +35,9 @@ void Path::reserve(std::size_t n) {
     // memory (and are given back by release_unused()). Jumps are few: they grow as needed.
     for (auto* v : {&end, &arc_centers_}) v->reserve(3 * n);
     arc_rank_.reserve(n / kRankRows + 1);
-    for (auto* v : {&tool_offset, &abc, &normal, &tool_axis}) v->reserve(n);
+    for (auto* v : {&tool_offset, &work_offset, &abc, &normal, &tool_axis}) v->reserve(n);
     file.reserve(n);
+    work_rotation.reserve(n);
     line.reserve(n);
     tool.reserve(n);
     turns.reserve(n);
@@ -100,8 +101,9 @@ void Path::release_unused() noexcept {
     feed.release_unused();
     toolcomp::release_unused(jump_rows_);
     toolcomp::release_unused(arc_rank_);
-    for (auto* v : {&tool_offset, &abc, &normal, &tool_axis}) v->release_unused();
+    for (auto* v : {&tool_offset, &work_offset, &abc, &normal, &tool_axis}) v->release_unused();
     for (auto* v : {&file, &tool, &turns}) v->release_unused();
+    work_rotation.release_unused();
     plane.release_unused();
     toolcomp::release_unused(line);
     toolcomp::release_unused(side);
@@ -117,10 +119,12 @@ bool Path::same_row(const Motion& m, const Vec3& offset) const {
     std::uint64_t diff = 0;
     for (int i = 0; i < 3; ++i) {
         diff |= bits(offset[i]) ^ bits(last_.tool_offset[i]);
+        diff |= bits(m.work_offset[i] * m.unit) ^ bits(last_.work_offset[i]);
         diff |= bits(m.abc[static_cast<std::size_t>(i)]) ^ bits(last_.abc[i]);
         diff |= bits(m.surface.normal[i]) ^ bits(last_.normal[i]);
         diff |= bits(m.tool_axis[i]) ^ bits(last_.tool_axis[i]);
     }
+    diff |= bits(m.work_rotation) ^ bits(last_.work_rotation);
     const std::uint32_t ints = static_cast<std::uint32_t>((m.tool ^ last_.tool) | (m.turns ^ last_.turns) |
                                                           (m.file ^ last_.file) |
                                                           (static_cast<std::int32_t>(m.plane) ^ last_.plane));
@@ -161,8 +165,9 @@ void Path::push(const Motion& m) {
     put3(end.append_unchecked(3), to);
     line.push_unchecked(m.line);
     if (all_uniform_ && same_row(m, off)) {  // the common case
-        for (auto* c : {&tool_offset, &abc, &normal, &tool_axis}) c->push_same();
+        for (auto* c : {&tool_offset, &work_offset, &abc, &normal, &tool_axis}) c->push_same();
         for (auto* c : {&tool, &turns, &file}) c->push_same();
+        work_rotation.push_same();
         plane.push_same();
     } else {
         push_row(m, off);
@@ -201,6 +206,7 @@ bool Path::same_segment(const Motion& a, const Motion& b) {
                       differ3(a.start, b.start) | differ3(a.end, b.end) | differ(a.line, b.line) |
                       differ(a.feed, b.feed) | differ(a.turns, b.turns) | differ(a.file, b.file) |
                       differ(a.tool, b.tool) | differ3(a.tool_offset, b.tool_offset) |
+                      differ3(a.work_offset, b.work_offset) | differ(a.work_rotation, b.work_rotation) |
                       differ3(a.surface.normal, b.surface.normal) | differ3(a.tool_axis, b.tool_axis);
     for (std::size_t i = 0; i < 3; ++i) d |= differ(a.abc[i], b.abc[i]);
     if (a.is_arc()) d |= differ3(a.center, b.center);
@@ -211,6 +217,8 @@ Path::Path(const Path& o, std::size_t rows)
     : kind(o.kind.data(), rows),
       end(o.end.data(), 3 * rows),
       tool_offset(o.tool_offset, rows),
+      work_offset(o.work_offset, rows),
+      work_rotation(o.work_rotation, rows),
       abc(o.abc, rows),
       normal(o.normal, rows),
       tool_axis(o.tool_axis, rows),
@@ -222,7 +230,8 @@ Path::Path(const Path& o, std::size_t rows)
       plane(o.plane, rows),
       generated(o.generated.data(), rows),
       file(o.file, rows),
-      files(o.files) {
+      files(o.files),
+      rates(o.rates) {
     const std::size_t jumps = static_cast<std::size_t>(
         std::lower_bound(o.jump_rows_.begin(), o.jump_rows_.end(), static_cast<std::uint64_t>(rows)) -
         o.jump_rows_.begin());
@@ -239,16 +248,18 @@ Path::Path(const Path& o, std::size_t rows)
         const std::size_t r = rows - 1;
         for (int k = 0; k < 3; ++k) {
             last_.tool_offset[k] = tool_offset(r, k);
+            last_.work_offset[k] = work_offset(r, k);
             last_.abc[k] = abc(r, k);
             last_.normal[k] = normal(r, k);
             last_.tool_axis[k] = tool_axis(r, k);
         }
+        last_.work_rotation = work_rotation(r);
         last_.tool = tool(r);
         last_.turns = turns(r);
         last_.file = file(r);
         last_.plane = plane(r);
     }
-    all_uniform_ = rows > 0 && tool_offset.uniform() && abc.uniform() && normal.uniform() && tool_axis.uniform() &&
+    all_uniform_ = rows > 0 && tool_offset.uniform() && work_offset.uniform() && work_rotation.uniform() && abc.uniform() && normal.uniform() && tool_axis.uniform() &&
                    tool.uniform() && turns.uniform() && file.uniform() && plane.uniform();
 }
 
@@ -258,16 +269,20 @@ void Path::push_row(const Motion& m, const Vec3& off) {
     UniformRow r;
     for (int i = 0; i < 3; ++i) {
         r.tool_offset[i] = off[i];
+        r.work_offset[i] = m.work_offset[i] * m.unit;
         r.abc[i] = m.abc[static_cast<std::size_t>(i)];
         r.normal[i] = n[i];
         r.tool_axis[i] = m.tool_axis[i];
     }
+    r.work_rotation = m.work_rotation;
     r.tool = m.tool;
     r.turns = m.turns;
     r.file = m.file;
     r.plane = static_cast<std::int32_t>(m.plane);
     try {
         tool_offset.push(r.tool_offset);
+        work_offset.push(r.work_offset);
+        work_rotation.push(&r.work_rotation);
         abc.push(r.abc);
         normal.push(r.normal);
         tool_axis.push(r.tool_axis);
@@ -291,7 +306,7 @@ void Path::push_row(const Motion& m, const Vec3& off) {
         feed.pop_back();
         throw;
     }
-    all_uniform_ = tool_offset.uniform() && abc.uniform() && normal.uniform() && tool_axis.uniform() &&
+    all_uniform_ = tool_offset.uniform() && work_offset.uniform() && work_rotation.uniform() && abc.uniform() && normal.uniform() && tool_axis.uniform() &&
                    tool.uniform() && turns.uniform() && file.uniform() && plane.uniform();
     last_ = r;
 }
@@ -310,11 +325,23 @@ Motion Path::segment(std::size_t i) const {
     m.file = file(i);
     m.tool = tool(i);
     m.tool_offset = get3(tool_offset, i);
+    m.work_offset = get3(work_offset, i);
+    m.work_rotation = work_rotation(i);
     m.surface.normal = get3(normal, i);
     m.tool_axis = get3(tool_axis, i);
     m.radius.side = side[i];
     m.generated = generated[i] != 0;
     return m;
+}
+
+Vec3 Path::machine_end_at(std::size_t i) const {
+    Vec3 p = get3(end, i);
+    if (const double r = work_rotation(i); r != 0) {
+        const double c = std::cos(r * kPi / 180), s = std::sin(r * kPi / 180), x = p.x(), y = p.y();
+        p.x() = c * x - s * y;
+        p.y() = s * x + c * y;
+    }
+    return p + get3(work_offset, i) + get3(tool_offset, i);
 }
 
 void Path::sample(double tolerance, std::vector<double>& points, std::vector<std::int64_t>& seg) const {

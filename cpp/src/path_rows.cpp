@@ -84,10 +84,11 @@ std::size_t Path::bytes() const {
     std::size_t b = kind.size() + side.size() + generated.size() + line.size() * sizeof(std::int32_t) +
                     (end.size() + jump_starts_.size() + arc_centers_.size()) * sizeof(double) +
                     (jump_rows_.size() + arc_rank_.size()) * sizeof(std::uint64_t) + feed.bytes();
-    for (const Vec3Column* c : {&tool_offset, &abc, &normal, &tool_axis})
+    for (const Vec3Column* c : {&tool_offset, &work_offset, &abc, &normal, &tool_axis})
         b += c->uniform() ? 3 * sizeof(double) : 3 * c->size() * sizeof(double);
     for (const UniformColumn<std::int32_t, 1>* c : {&tool, &turns, &file})
         b += c->uniform() ? sizeof(std::int32_t) : c->size() * sizeof(std::int32_t);
+    b += work_rotation.uniform() ? sizeof(double) : work_rotation.size() * sizeof(double);
     b += plane.uniform() ? 1 : plane.size();
     if (Rows* w = written_.rows.load(std::memory_order_acquire)) {
         std::lock_guard lock(w->mutex);

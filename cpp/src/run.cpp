@@ -13,6 +13,7 @@
 
 #include "control/travel.hpp"
 #include "dialects/table.hpp"
+#include "toolcomp/analysis/cycle_time.hpp"
 #include "toolcomp/compensation/stages.hpp"
 
 namespace toolcomp {
@@ -156,6 +157,13 @@ ProgramError out_of_memory_error() {
                        "max_bytes and ControlProfile.call_depth_limit");
 }
 
+double Result::cycle_time() const {
+    const Path& p = compensated();
+    double seconds = dwell_seconds + static_cast<double>(tool_changes(p)) * p.rates.tool_change_seconds;
+    for (double s : segment_seconds(p, p.rates)) seconds += s;
+    return seconds;
+}
+
 bool Result::ok() const {
     for (const auto& d : diagnostics)
         if (d.severity == Severity::error) return false;
@@ -255,6 +263,8 @@ Result run_main(const Program& program, const ToolTable* tools, const RunOptions
     }
     res.parameters = std::move(out.parameters);
     res.tools = std::move(out.tools);
+    res.dwell_seconds = out.dwell_seconds;
+    if (options.machine) res.nominal.rates = res.path.rates = options.machine->rates();
     return res;
 }
 }  // namespace

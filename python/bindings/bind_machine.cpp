@@ -180,6 +180,8 @@ void bind_machine(py::module_& m) {
                       triple_set("rapid_rate", &Machine::rapid_rate), "rapid traverse of each axis, mm/min (0: not given)")
         .def_property("max_feed", triple_get(&Machine::max_feed),
                       triple_set("max_feed", &Machine::max_feed), "the highest feed of each axis, mm/min (0: not given)")
+        .def_readwrite("tool_change_time", &Machine::tool_change_time,
+                       "seconds a tool change takes, chip to chip (0: not given), for Result.cycle_time")
         .def("check", [](const Machine& mc) { check_machine(mc); },
              "raise ValueError naming the field of a value the machine cannot have")
         .def("__repr__", [](const Machine& mc) {

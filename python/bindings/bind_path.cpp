@@ -8,6 +8,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include "toolcomp/analysis/cycle_time.hpp"
 #include "toolcomp/path.hpp"
 
 using namespace toolcomp;
@@ -135,6 +136,25 @@ void bind_path(py::module_& m) {
                                "extension blocks)")
         .def_property_readonly("tool_offset", column3(&Path::tool_offset),
                                "active tool length offset, float64 (N, 3), mm (X Y Z)")
+        .def_property_readonly("work_offset", column3(&Path::work_offset),
+                               "where the work coordinates lie in the machine's, float64 (N, 3), mm: machine_end = "
+                               "end + work_offset + tool_offset (with a work_rotation, the end rotated first)")
+        .def_property_readonly("work_rotation", column1(&Path::work_rotation),
+                               "rotation of the work coordinates about Z, float64 (N,), degrees (LinuxCNC G10 L2 R); "
+                               "0 elsewhere")
+        .def_property_readonly(
+            "machine_end",
+            [](const Path& p) {
+                auto* v = new std::vector<double>(3 * p.size());
+                for (std::size_t i = 0; i < p.size(); ++i) {
+                    const Vec3 e = p.machine_end_at(i);
+                    for (int k = 0; k < 3; ++k) (*v)[3 * i + static_cast<std::size_t>(k)] = e[k];
+                }
+                py::capsule c(v, [](void* x) { delete static_cast<std::vector<double>*>(x); });
+                return py::array_t<double>({static_cast<py::ssize_t>(p.size()), py::ssize_t(3)}, v->data(), c);
+            },
+            "end point of each segment in machine coordinates, float64 (N, 3), mm: the spindle's gauge point, "
+            "as the control's machine position shows it (a new array at each access)")
         .def_property_readonly("plane", column1(&Path::plane),
                                "working plane of each segment: 0 XY (G17), 1 ZX (G18), 2 YZ (G19)")
         .def_property_readonly("turns", column1(&Path::turns), "arcs: extra full turns (LinuxCNC P word - 1)")
@@ -175,5 +195,22 @@ void bind_path(py::module_& m) {
             "The path as an (M, 3) polyline with arcs chorded within `tolerance` mm, and the index of the "
             "segment each point belongs to.")
         .def("length", &Path::length, py::arg("include_rapids") = true, "Path length in mm (arcs exact).")
+        .def_property_readonly(
+            "duration",
+            [](const Path& p) {
+                auto* v = new std::vector<double>();
+                {
+                    py::gil_scoped_release nogil;
+                    *v = segment_seconds(p, p.rates);
+                }
+                py::capsule c(v, [](void* x) { delete static_cast<std::vector<double>*>(x); });
+                return py::array_t<double>({static_cast<py::ssize_t>(v->size())}, v->data(), c);
+            },
+            "Seconds each segment takes on the machine the path was run on: rapids at its rapid rates (10 m/min "
+            "per axis where it gives none), feed moves at their feed, slowed where an axis would pass its "
+            "max_feed; no acceleration (doc/cycle-time.md). NaN for a feed move without a positive feed.")
+        .def_property_readonly("tool_changes", &tool_changes,
+                               "how often the tool changes along the path (a first tool counts: the run starts with "
+                               "none)")
         .def("__repr__", [](const Path& p) { return "Path(" + std::to_string(p.size()) + " segments)"; });
 }

@@ -436,6 +436,19 @@ void bind_run(py::module_& m) {
             "the compensated Path (after the compensation stages); the `nominal` Path itself when no stage changed "
             "a segment (a program without compensation: stored once)")
         .def_readonly("blocks", &Result::blocks, "number of blocks in the program")
+        .def_property_readonly(
+            "cycle_time",
+            [](const Result& r) {
+                py::gil_scoped_release nogil;
+                return r.cycle_time();
+            },
+            "seconds the program takes on the run's machine: path.duration summed, the dwells (dwell_time) and "
+            "path.tool_changes times the machine's tool_change_time; an estimate without acceleration "
+            "(doc/cycle-time.md)")
+        .def_readonly("dwell_time", &Result::dwell_seconds,
+                      "seconds the program dwells: G4 (LinuxCNC P seconds, Fanuc P milliseconds or X/U seconds, "
+                      "Sinumerik F seconds or S revolutions), the dwells of LinuxCNC/Fanuc canned cycles (G82, G86, "
+                      "G88, G89 P), Heidenhain CYCL DEF 9")
         .def_readonly("tools", &Result::tools,
                       "the tool table as the program left it when it edited it (LinuxCNC G10 L1: the run's copy; "
                       "the table passed in is never changed), else None")

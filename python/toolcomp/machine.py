@@ -35,6 +35,7 @@ G30 / tool change positions in machine coordinates, and gives the axis travel an
     [rates]                      # mm/min (in/min with units = "inch")
     rapid = [25400, 25400, 25400]
     max_feed = [16510, 16510, 16510]
+    tool_change = 4.2            # seconds, chip to chip
 
 Every mistake in a file is a :class:`ParseError` with code ``machine_file`` and the line of
 the key it is about.
@@ -324,8 +325,14 @@ def parse(text: str, path: Optional[str] = None) -> "_core.Machine":
     m.travel = limits
 
     for key, value in _table(src, doc, "rates").items():
+        if key == "tool_change":
+            if isinstance(value, bool) or not isinstance(value, (int, float)) or not 0 <= value < math.inf:
+                raise src.error("rates.tool_change must be the seconds a tool change takes (a number >= 0)",
+                                "rates", key)
+            m.tool_change_time = float(value)
+            continue
         if key not in ("rapid", "max_feed"):
-            raise src.error(f"rates has no '{key}' (rapid, max_feed)", "rates", key)
+            raise src.error(f"rates has no '{key}' (rapid, max_feed, tool_change)", "rates", key)
         v = _triple(src, "rates", key, value, scale)
         if min(v) < 0:
             raise src.error(f"rates.{key} must not be negative", "rates", key)
@@ -432,10 +439,11 @@ def dumps(m: "_core.Machine") -> str:
         lines.append("\n[travel]")
         lines += [f"{a} = {_toml_value(list(t))}" for a, t in travel]
         lines.append(f"limit = {_toml_value('warning' if m.travel_limit_warning else 'error')}")
-    if any(m.rapid_rate) or any(m.max_feed):
+    if any(m.rapid_rate) or any(m.max_feed) or m.tool_change_time:
         lines.append("\n[rates]")
         lines.append(f"rapid = {_toml_value(list(m.rapid_rate))}")
         lines.append(f"max_feed = {_toml_value(list(m.max_feed))}")
+        lines.append(f"tool_change = {_toml_value(m.tool_change_time)}")
     return "\n".join(lines) + "\n"
 
 

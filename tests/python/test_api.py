@@ -127,8 +127,9 @@ def test_start_center_and_feed_are_written_out_once_when_asked_for():
     n, stored = len(p), p.nbytes
     # stored: a jump for the first start, the two arcs' centres; no start or centre row else
     # kind side generated line end; a jump row and start, two centres, one rank, two runs of the
-    # feed (NaN, then 200); the uniform columns once: four 3-vectors, tool, turns, file, plane
-    assert stored == n * (1 + 1 + 1 + 4 + 24) + 8 + 24 + 2 * 24 + 8 + 2 * 16 + 4 * 24 + 3 * 4 + 1
+    # feed (NaN, then 200); the uniform columns once: five 3-vectors, tool, turns, file, plane,
+    # the work rotation
+    assert stored == n * (1 + 1 + 1 + 4 + 24) + 8 + 24 + 2 * 24 + 8 + 2 * 16 + 5 * 24 + 3 * 4 + 1 + 8
     a = p.start
     assert p.nbytes == stored + 24 * n
     assert np.shares_memory(a, p.start)  # kept: the same rows the next time

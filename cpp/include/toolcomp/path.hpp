@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "toolcomp/column.hpp"
+#include "toolcomp/control/rates.hpp"
 #include "toolcomp/motion/motion.hpp"
 #include "toolcomp/page_warmer.hpp"
 #include "toolcomp/run_column.hpp"
@@ -31,6 +32,9 @@ public:
     Column<std::uint8_t> kind;
     Column<double> end;                   // 3 per segment
     Vec3Column tool_offset{0, 0, 0};
+    // machine = Rz(work_rotation) * end + work_offset + tool_offset (Motion::work_offset).
+    Vec3Column work_offset{0, 0, 0};
+    UniformColumn<double, 1> work_rotation;  // degrees
     Vec3Column abc{0, 0, 0};              // degrees
     Vec3Column normal{kNaN, kNaN, kNaN};  // unit surface normal (3D compensation)
     Vec3Column tool_axis{0, 0, 1};
@@ -44,6 +48,8 @@ public:
     // The files segments come from: the main program first, then each called program or
     // subprogram file in the order the run first entered it.
     std::vector<std::string> files;
+    // The rates of the machine the path was run on, for the time it takes (Path.duration).
+    MachineRates rates;
 
     Path() = default;
     // The first `rows` segments of `other`, stored as `other` stores them (room for no more).
@@ -70,6 +76,9 @@ public:
     void warm_with(PageWarmer* warmer);
     // Segment i back as a Motion (for sampling, checks and later stages).
     Motion segment(std::size_t i) const;
+    // The end of segment i in machine coordinates (mm): Rz(work_rotation) end + work_offset +
+    // tool_offset.
+    Vec3 machine_end_at(std::size_t i) const;
     // Start point and arc centre of segment i (NaN centre for rapids and lines).
     Vec3 start_at(std::size_t i) const;
     Vec3 center_at(std::size_t i) const;
@@ -92,7 +101,8 @@ public:
 private:
     // A segment's values of the uniform columns.
     struct UniformRow {
-        double tool_offset[3], abc[3], normal[3], tool_axis[3];
+        double tool_offset[3], work_offset[3], abc[3], normal[3], tool_axis[3];
+        double work_rotation;
         std::int32_t tool, turns, file, plane;
     };
     // The last segment's row, and whether every uniform column was still uniform after it:

@@ -96,7 +96,11 @@ struct Result {
     std::optional<Blank> blank;  // the workpiece blank the program declares (mm), if any
     std::map<int, double> parameters;  // numbered parameters set at the end (LinuxCNC, Fanuc)
     std::optional<ToolTable> tools;    // the tool table as the program left it, when it edited it (G10 L1)
+    double dwell_seconds = 0;          // the dwells the run made (G4, the cycles' dwells)
     bool ok() const;
+    // Seconds the program takes on the run's machine: its compensated path's segments, its
+    // dwells and its tool changes (analysis/cycle_time.hpp).
+    double cycle_time() const;
 };
 
 Result run(const Program& program, const ToolTable* tools, const RunOptions& options = {});

@@ -122,6 +122,8 @@ void check_machine(const Machine& m) {
             if (!std::isfinite((*r)[i]) || (*r)[i] < 0)
                 bad(std::string(r == &m.rapid_rate ? "rapid_rate." : "max_feed.") + a, "must be a finite number >= 0");
     }
+    if (!std::isfinite(m.tool_change_time) || m.tool_change_time < 0)
+        bad("tool_change_time", "must be a finite number >= 0 (seconds)");
     check_profile(m.profile);
 }
 

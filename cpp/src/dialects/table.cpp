@@ -61,13 +61,13 @@ void interpret_sinumerik(const DialectRun& r) {
     s.progress_every = o.progress_every ? o.progress_every : 1;
     s.search = search_of(o);
     s.machine = o.machine.get();
-    sinumerik::interpret(r.program, r.tools, p, s, r.sink, r.diagnostics, &r.out.files);
+    sinumerik::interpret(r.program, r.tools, p, s, r.sink, r.diagnostics, &r.out);
 }
 
 void interpret_heidenhain(const DialectRun& r) {
     const RunOptions& o = r.options;
     heidenhain::interpret(r.program, r.tools, r.profile, r.sink, r.diagnostics, o.progress,
-                          o.progress_every ? o.progress_every : 1, search_of(o), &r.out.files, o.machine.get(),
+                          o.progress_every ? o.progress_every : 1, search_of(o), &r.out, o.machine.get(),
                           o.block_delete);
 }
 

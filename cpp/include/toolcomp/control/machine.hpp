@@ -15,6 +15,7 @@
 #include <optional>
 #include <string>
 
+#include "toolcomp/control/rates.hpp"
 #include "toolcomp/control/profile.hpp"
 #include "toolcomp/program/dialect.hpp"
 
@@ -117,6 +118,8 @@ struct Machine {
     // Rapid traverse and the highest feed of each axis (mm/min; 0: not given). Read and
     // checked, for cycle time.
     std::array<double, 3> rapid_rate{0, 0, 0}, max_feed{0, 0, 0};
+    double tool_change_time = 0;  // seconds a tool change takes, chip to chip (0: not given)
+    MachineRates rates() const { return {rapid_rate, max_feed, tool_change_time}; }
 
     // Spindles, 1 to 8 (LinuxCNC's [TRAJ]SPINDLES): a program selects one with $0 .. $n-1.
     int spindles = 1;

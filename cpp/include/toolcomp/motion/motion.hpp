@@ -60,6 +60,10 @@ struct Motion {
     std::int32_t file = 0;  // which file the block is in (Path::files)
     std::int32_t tool = 0;
     Vec3 tool_offset = Vec3::Zero();
+    // Where the work coordinates lie in the machine's: machine = Rz(work_rotation) * end +
+    // work_offset + tool_offset (the rotation in degrees about Z, LinuxCNC's G10 L2 R).
+    Vec3 work_offset = Vec3::Zero();
+    double work_rotation = 0;
     RadiusRequest radius;
     SurfaceRequest surface;
     Vec3 tool_axis = Vec3(0, 0, 1);  // unit vector from the tip towards the spindle

@@ -161,6 +161,7 @@ Motion Interp::motion_to(MotionKind kind, const Vec3& end) const {
     m.file = file_;
     m.tool = tool_;
     m.tool_offset = tlo_;
+    m.work_offset = work_origin_;  // the moves are in the machine's axes less the preset
     m.unit = unit_;
     m.feed = kind == MotionKind::rapid ? std::nan("") : feed_;
     m.radius.side = static_cast<std::int8_t>(side_);
@@ -662,12 +663,12 @@ void Interp::call_program(Tokens t, int depth) {
 void interpret(const Program& program, const ToolTable* tools, const ControlProfile& profile, MotionSink& sink,
                std::vector<Diagnostic>& diagnostics, const std::function<void(std::size_t)>& progress,
                std::size_t progress_every, const SearchPath& search,
-               std::vector<std::string>* files, const Machine* machine, bool block_delete) {
+               InterpretOutput* out, const Machine* machine, bool block_delete) {
     Interp interp(program, tools, profile, sink, diagnostics, search);
     interp.set_machine(machine);
     interp.skip_marked_blocks(block_delete);
     if (progress) interp.on_progress(progress, progress_every);
-    run_reporting(interp, files, [](const Interp& i) { return i.files(); });
+    run_reporting(interp, out, [](const Interp& i) { return InterpretOutput{i.files(), {}, {}, i.dwell_seconds()}; });
 }
 
 }  // namespace toolcomp::heidenhain

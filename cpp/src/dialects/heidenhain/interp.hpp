@@ -34,6 +34,7 @@ public:
     void skip_marked_blocks(bool on) { block_delete_ = on; }  // the block skip '/'
     void run();
     const std::vector<std::string>& files() const { return files_.names(); }
+    double dwell_seconds() const { return dwell_seconds_; }
     // Called with the number of blocks executed so far, every `every` blocks.
     void on_progress(std::function<void(std::size_t)> f, std::size_t every) {
         progress_ = std::move(f);
@@ -106,6 +107,7 @@ private:
     bool shortest_rotary_ = false;     // M126: rotary axes take the shorter way
     double speed_ = 0;                 // S, rev/min (TOOL CALL, or a block's S)
     void cycle(Tokens t);           // CYCL DEF / CYCL CALL
+    void dwell(Tokens t);           // CYCL DEF 9 DWELL TIME
     // The block's tokens with Q parameters in words replaced by values (in `scratch` when
     // there are any, else `t` itself).
     Tokens resolve(Tokens t, std::vector<Token>& scratch) const;
@@ -194,6 +196,7 @@ private:
     int line_ = 0;
     int file_ = 0;        // Path::files index of the program whose blocks run
     SourceFiles files_;
+    double dwell_seconds_ = 0;  // CYCL DEF 9, seconds
     double unit_ = 1.0;  // mm per program unit
     Plane plane_ = Plane::xy;
     Vec3 pos_ = Vec3::Zero();

@@ -27,6 +27,17 @@ int sub_number(double v) { return static_cast<int>(std::lround((v - std::floor(v
 
 }  // namespace
 
+// CYCL DEF 9.1 DWELL 1.5 (V.ZEIT in the German dialogue): no motion; the seconds count in the
+// run's time.
+void Interp::dwell(Tokens t) {
+    if (t[2].value == std::floor(t[2].value)) return;  // 9.0 names the cycle
+    for (std::size_t i = 3; i < t.size(); ++i)
+        if (t[i].has_value) {
+            dwell_seconds_ += std::max(0.0, t[i].value);
+            return;
+        }
+}
+
 void Interp::cycle(Tokens t) {
     const bool def = t.size() >= 3 && t[1].is("DEF");
     if (t.size() >= 2 && t[1].is("CALL")) return cycle_call(t);
@@ -35,7 +46,7 @@ void Interp::cycle(Tokens t) {
     if (def && in(t[2], 10, 11)) return rotation(t);
     if (def && in(t[2], 11, 12)) return scaling(t);
     if (def && in(t[2], 26, 27)) return axis_scaling(t);
-    if (def && in(t[2], 9, 10)) return;  // DWELL TIME: no motion
+    if (def && in(t[2], 9, 10)) return dwell(t);
     if (def && in(t[2], 19, 20)) return working_plane(t);
     if (def && in(t[2], 32, 33)) {
         if (!tolerance_noted_)

@@ -616,6 +616,7 @@ bool Interp::execute_tail(const BlockWords& bw, int motion_to_be) {
     // LinuxCNC keeps -1 for a missing P and reads any other value, negative ones too.
     if (g0 == 40 && (!bw.has('P') || (profile_.dwell_negative_p ? bw['P'].value == -1 : bw['P'].value < 0)))
         fail(code::dwell_missing, "Dwell time missing with g4", bw.g_column[g_nonmodal]);
+    if (g0 == 40) dwell(bw['P'].value);
     if (modal) {
         // 11-12: plane, units (an F in the same block was read in the old units, as LinuxCNC does)
         if (bw.g[g_units] >= 0) set_units(bw.g[g_units] == 200);

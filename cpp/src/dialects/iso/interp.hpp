@@ -98,6 +98,8 @@ public:
     double param(double number) override;
     bool exists(const std::string& name) override;
     InterpretOutput output() const;
+    // A dwell of P (seconds; milliseconds where G4 X is the seconds): added to the run's time.
+    void dwell(double p) { dwell_seconds_ += std::max(0.0, profile_.dwell_x_seconds ? p / 1000 : p); }
 
 private:
     // ---- block execution (interp.cpp) --------------------------------------------------
@@ -256,6 +258,7 @@ private:
     std::size_t probes_used_ = 0;             // probe moves so far (the next takes opts_.probes[this])
     std::array<double, 10> probe_values_{};   // #5061-#5070 after a probe
     bool probed_ = false;
+    double dwell_seconds_ = 0;  // G4 and the cycles' dwells, seconds
     bool debug_output_ = true;  // LinuxCNC #5599: (DEBUG, ...) shown
 
     // ---- LinuxCNC's spindle-synchronised motion (interp_spindle_sync.cpp) ------------------

@@ -188,6 +188,7 @@ void Interp::cycle(const BlockWords& bw, int code) {
                 // Bore, dwell, stop: the operator retracts by hand. The control then takes the
                 // tool to be at the clearance level; the path has no move for that.
                 fed(at(a, b, bottom));
+                dwell(cyc_.p);
                 pos_ = at(a, b, clear);
                 info(code::manual_retract, "G88: the operator retracts the tool by hand; the next move starts at the clearance level");
                 break;
@@ -195,6 +196,7 @@ void Interp::cycle(const BlockWords& bw, int code) {
             case 820:
             case 860:
                 fed(at(a, b, bottom));
+                if (code != 810) dwell(cyc_.p);
                 straight(MotionKind::rapid, at(a, b, clear), nan);
                 break;
             case 850:
@@ -204,6 +206,7 @@ void Interp::cycle(const BlockWords& bw, int code) {
                 break;
             case 890:
                 fed(at(a, b, bottom));
+                dwell(cyc_.p);
                 fed(at(a, b, clear));
                 break;
             case 730:

@@ -151,6 +151,16 @@ Motion Interp::motion_to(MotionKind kind, const Vec6& end) const {
     m.file = file_;
     m.tool = tool_;
     m.tool_offset = tlo_.head<3>();
+    // machine = R (program + G92) + G5x + tool offset (to_machine): R G92 + G5x is the offset.
+    const double rotation = rotation_[st_.coord_system - 1];
+    Vec3 g92 = g92_.head<3>();
+    if (rotation != 0) {
+        const double r = rotation * kPi / 180, c = std::cos(r), s = std::sin(r), x = g92.x();
+        g92.x() = c * x - s * g92.y();
+        g92.y() = s * x + c * g92.y();
+    }
+    m.work_offset = g92 + g5x_[st_.coord_system - 1].head<3>();
+    m.work_rotation = rotation;
     m.radius = radius_;
     m.unit = scale();
     m.tool_axis = Vec3::Zero();

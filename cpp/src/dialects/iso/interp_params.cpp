@@ -302,6 +302,6 @@ std::string Interp::substitute(const std::string& text) {
     return out;
 }
 
-InterpretOutput Interp::output() const { return {files_, params_.snapshot(), edited_tools_}; }
+InterpretOutput Interp::output() const { return {files_, params_.snapshot(), edited_tools_, dwell_seconds_}; }
 
 }  // namespace toolcomp::iso

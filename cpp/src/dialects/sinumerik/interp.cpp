@@ -502,9 +502,9 @@ bool Interp::ret() {
 
 void interpret(const Program& program, const ToolTable* tools, const ControlProfile& profile,
                const InterpretOptions& options, MotionSink& sink, std::vector<Diagnostic>& diagnostics,
-               std::vector<std::string>* files) {
+               InterpretOutput* out) {
     Interp interp(program, tools, profile, options, sink, diagnostics);
-    run_reporting(interp, files, [](const Interp& i) { return i.files(); });
+    run_reporting(interp, out, [](const Interp& i) { return InterpretOutput{i.files(), {}, {}, i.dwell_seconds()}; });
 }
 
 }  // namespace toolcomp::sinumerik

@@ -141,6 +141,7 @@ public:
            MotionSink& sink, std::vector<Diagnostic>& diags);
     void run();
     const std::vector<std::string>& files() const { return files_.names(); }
+    double dwell_seconds() const { return dwell_seconds_; }
 
     // expr::Env
     double get(const std::string& name, std::span<const double> idx) override;
@@ -307,6 +308,7 @@ private:
     double lims_ = 0;                 // LIMS: the speed limit under G96, rev/min (0: none)
     double feed_ = 0;                 // F: mm/min (G94) or mm/rev (G95, G96)
     double speed_ = 0;                // S: spindle speed, rev/min
+    double dwell_seconds_ = 0;        // G4 F / S, seconds
     double cutting_speed_ = 0;        // S under G96: m/min
     std::optional<Vec2> last_tangent_;  // direction at the end of the last plane move (CT)
 

@@ -86,6 +86,7 @@ Motion Interp::motion_(MotionKind kind, const Vec3& end) const {
     m.file = file();
     m.tool = tool_;
     m.tool_offset = tool_offset_;
+    m.work_offset = work_origin_;  // the moves are in the machine's axes less the work origin
     m.tool_axis = tool_axis_;
     m.radius = radius_request();
     m.unit = 1.0;
@@ -359,6 +360,9 @@ void Interp::execute(BlockData& b, int first_column) {
         for (const char a : {'X', 'Y', 'Z', 'A', 'B', 'C'})
             if (b.has(a)) fail(code::alarm_12190, "12190 G4 must be programmed in a block of its own", b[a].column);
         if (motion >= 0) fail(code::alarm_12190, "12190 G4 must be programmed in a block of its own", first_column);
+        // F seconds, S revolutions of the spindle at its speed (none counted when it stands).
+        const double seconds = b.has('F') ? b['F'].v : speed_ > 0 ? b['S'].v * 60 / speed_ : 0;
+        dwell_seconds_ += std::max(0.0, seconds);
     } else if (!data_axes && (axes || rotary || (st_.motion >= 2 && arc_words))) {
         corner_request(b, first_column);
         std::array<double, 3> abc = abc_;

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "toolcomp/dialects/output.hpp"
 #include "toolcomp/control/machine.hpp"
 #include "toolcomp/control/profile.hpp"
 #include "toolcomp/motion/motion.hpp"
@@ -24,11 +25,12 @@ namespace toolcomp::heidenhain {
 // empty search path every CALL PGM fails with "not found". The called program runs inline:
 // Q parameters and modal state are shared, radius compensation is cancelled by the call
 // (TNC), and its moves carry the line numbers of the called file and its index (Motion::file)
-// in `files` (optional: the main program first, then each called file as first entered).
+// in `out->files` (optional: the main program first, then each called file as first
+// entered); `out->dwell_seconds` gets the dwells' seconds.
 void interpret(const Program& program, const ToolTable* tools, const ControlProfile& profile, MotionSink& sink,
                std::vector<Diagnostic>& diagnostics, const std::function<void(std::size_t)>& progress = {},
                std::size_t progress_every = 1 << 16, const SearchPath& search = {},
-               std::vector<std::string>* files = nullptr, const Machine* machine = nullptr,
+               InterpretOutput* out = nullptr, const Machine* machine = nullptr,
                bool block_delete = false);  // skip the blocks marked '/'
 
 }  // namespace toolcomp::heidenhain

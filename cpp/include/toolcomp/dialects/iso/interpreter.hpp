@@ -10,6 +10,7 @@
 #include "toolcomp/control/machine.hpp"
 #include "toolcomp/control/probe.hpp"
 #include "toolcomp/control/profile.hpp"
+#include "toolcomp/dialects/output.hpp"
 #include "toolcomp/motion/motion.hpp"
 #include "toolcomp/program/diagnostic.hpp"
 #include "toolcomp/program/program.hpp"
@@ -18,9 +19,8 @@
 
 namespace toolcomp::iso {
 
-// Numbered parameter values (#n -> value): what a run starts from (a LinuxCNC .var file,
-// Fanuc common variables) and what it ends with.
-using ParameterValues = std::map<int, double>;
+using toolcomp::InterpretOutput;
+using toolcomp::ParameterValues;
 
 struct InterpretOptions {
     bool block_delete = false;  // skip blocks that start with '/'
@@ -44,12 +44,6 @@ struct InterpretOptions {
     std::function<void(const std::string&)> file_opened;
 };
 
-// What a run leaves besides its moves.
-struct InterpretOutput {
-    std::vector<std::string> files;  // the files moves came from, main program first (Motion::file)
-    ParameterValues parameters;      // numbered parameters at the end (set ones only)
-    std::optional<ToolTable> tools;  // the tool table as the program left it, when it edited it (G10 L1)
-};
 
 // Emits every move into `sink`; non-fatal messages go to `diagnostics`.
 // Throws ProgramError (code, message, line, column) at the first error, after the moves

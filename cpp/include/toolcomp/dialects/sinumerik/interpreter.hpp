@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "toolcomp/dialects/output.hpp"
 #include "toolcomp/control/machine.hpp"
 #include "toolcomp/control/profile.hpp"
 #include "toolcomp/compensation/toolholder.hpp"
@@ -46,10 +47,10 @@ struct InterpretOptions {
     const Machine* machine = nullptr;           // builder M codes (control/machine.hpp)
 };
 
-// `files` (optional) receives the main program's name and each subprogram file's, in the
-// order first entered: Motion::file indexes it.
+// `out` (optional) receives the main program's name and each subprogram file's, in the
+// order first entered (Motion::file indexes them), and the dwells' seconds.
 void interpret(const Program& program, const ToolTable* tools, const ControlProfile& profile,
                const InterpretOptions& options, MotionSink& sink, std::vector<Diagnostic>& diagnostics,
-               std::vector<std::string>* files = nullptr);
+               InterpretOutput* out = nullptr);
 
 }  // namespace toolcomp::sinumerik
