@@ -7,6 +7,7 @@
 #   make bench   benchmarks (print figures)
 #   make fuzz    libFuzzer targets (fuzz/) for FUZZ_SECONDS each, ASan+UBSan (installs clang)
 #   make test-sanitize  C++ and Python tests against an ASan+UBSan build (build/sanitize)
+#   make docs    the documentation site (Sphinx) in build/docs/html
 SHELL      := /bin/bash
 PYTHON     ?= python3
 VENV       := .venv
@@ -16,7 +17,7 @@ APT_PKGS   := g++ libeigen3-dev catch2 ninja-build
 ORACLE_PKGS:= linuxcnc-uspace
 FUZZ_PKGS  := clang libclang-rt-dev
 
-.PHONY: all build test demo oracle bench clean bootstrap fuzz test-sanitize
+.PHONY: all build test demo oracle bench clean bootstrap fuzz test-sanitize docs
 
 all: build
 
@@ -166,6 +167,26 @@ test-sanitize: bootstrap
 	  || { cat $(SAN_DIR)/logs/report* 2>/dev/null; exit 1; }
 	@if ls $(SAN_DIR)/logs/report* >/dev/null 2>&1; then cat $(SAN_DIR)/logs/report*; \
 	  echo "test-sanitize: sanitizer reports above"; exit 1; fi
+
+# ---- documentation ---------------------------------------------------------------------
+# The Sphinx site in build/docs/html: the Markdown pages of doc/, the notebooks of notebooks/
+# executed during the build (their figures are the current engine's), and the API reference
+# read from the docstrings of the module `make build` installed. The packages are the `docs`
+# extra of pyproject.toml, installed into .venv without reinstalling toolcomp itself. -E
+# reads every page again: autodoc cannot see that the module changed. Warnings fail. The
+# notebooks draw with Jupyter's inline backend (MPLBACKEND unset), as in the tests.
+DOCS_DIR := build/docs
+
+$(VENV)/.docs-stamp: $(VENV)/.stamp pyproject.toml
+	$(PY) -c "import sys; toml = __import__('tomllib' if sys.version_info >= (3, 11) else 'tomli'); \
+	  print('\n'.join(toml.load(open('pyproject.toml', 'rb'))['project']['optional-dependencies']['docs']))" \
+	  > build/docs-requirements.txt
+	$(PY) -m pip install -q -r build/docs-requirements.txt
+	@touch $@
+
+docs: build $(VENV)/.docs-stamp
+	env -u MPLBACKEND $(PY) -m sphinx -q -E -W --keep-going -b html -d $(DOCS_DIR)/doctrees doc $(DOCS_DIR)/html
+	@echo "documentation written to $(DOCS_DIR)/html/index.html"
 
 clean:
 	rm -rf build demo-out
