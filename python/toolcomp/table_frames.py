@@ -14,6 +14,7 @@ from typing import List, NamedTuple, Optional
 import numpy as np
 
 from . import _core
+from ._optional import require
 
 _VEC = {"length": ("x", "y", "z"), "rotary": ("a", "b", "c"), "uvw": ("u", "v", "w"),
         "length_wear": ("x_wear", "y_wear", "z_wear")}
@@ -35,8 +36,7 @@ def _rows(table):
 
 def to_pandas(table: "_core.ToolTable"):
     """One row per cutting edge: tool, edge, pocket, name, comment, x..w, wear, radii, tip."""
-    import pandas as pd
-
+    pd = require("pandas", "pandas", "ToolTable.to_pandas")
     return pd.DataFrame(list(_rows(table)), columns=list(COLUMNS))
 
 
