@@ -1,6 +1,6 @@
 """Command line: run or check NC programs the way the control would.
 
-    python -m toolcomp run PROGRAM [--tools TABLE] [--dialect D] [--plot FILE.png]
+    python -m toolcomp run PROGRAM [--tools TABLE] [--dialect D] [--plot FILE.png] [--progress]
                                    [--csv FILE] [--json FILE] [--units-table mm|inch]
     python -m toolcomp check PROGRAM... [--tools TABLE] [--dialect D] [--format text|json]
 
@@ -178,30 +178,98 @@ def _read_tools(tc, path, units):
         os.unlink(tmp)
 
 
-PROGRESS_MIN_BLOCKS = 1_000_000
+PROGRESS_MIN_BLOCKS = 1_000_000  # on a terminal, a bar for runs (blocks) and plots (segments) this long
 
 
-def _progress_bar(program, stream=None):
-    """A tqdm bar on stderr for programs of a million blocks or more (a Program or a block
-    count), when stderr is a terminal and tqdm is installed; None otherwise."""
+def _shows_progress(size, force, stream) -> bool:
+    """Whether to show progress: ``force`` True (--progress) always, False (--no-progress)
+    never, None when ``stream`` is a terminal and ``size`` is a million or more."""
+    if force is not None:
+        return bool(force)
+    return size is not None and size >= PROGRESS_MIN_BLOCKS and stream.isatty()
+
+
+class _ProgressLines:
+    """What the command line shows without tqdm: plain lines on the stream, at every tenth
+    of the way (the part of tqdm's interface it uses: n, total, update, close)."""
+
+    def __init__(self, total, unit, desc, file):
+        self.n, self.total, self.unit, self.desc, self.file = 0, total, unit, desc, file
+        self._tenths = -1
+
+    def update(self, k=1):
+        self.n += k
+        tenths = 10 * self.n // self.total if self.total else 10
+        if tenths > self._tenths:
+            self._tenths = tenths
+            print(f"toolcomp: {self.desc}: {self.n:,} of {self.total:,} {self.unit}s ({10 * tenths}%)",
+                  file=self.file, flush=True)
+
+    def close(self):
+        pass
+
+
+def _progress_bar(program, stream=None, force=None):
+    """A bar on stderr of the blocks run (``program``: a Program or a block count): a tqdm
+    bar, or plain lines without tqdm; when :func:`_shows_progress` (for a million blocks or
+    more on a terminal, or ``force``), else None."""
     stream = stream or sys.stderr
     blocks = program if isinstance(program, int) or program is None else len(program)
-    if blocks is None or blocks < PROGRESS_MIN_BLOCKS or not stream.isatty():
+    if blocks is None or not _shows_progress(blocks, force, stream):
         return None
     try:
         from tqdm import tqdm
     except ImportError:
-        return None
-    return tqdm(total=blocks, unit="block", unit_scale=True, file=stream, leave=False)
+        bar = _ProgressLines(blocks, "block", "run", stream)
+        bar.update(0)
+        return bar
+    return tqdm(total=blocks, desc="run", unit="block", unit_scale=True, file=stream, leave=False)
+
+
+class _PlotProgress:
+    """``save_plot``'s progress(done, total, what) as a bar of the drawing's steps on the
+    stream (tqdm's, or a plain line a step without tqdm)."""
+
+    def __init__(self, stream):
+        self.stream = stream
+        self.bar = None
+        try:
+            from tqdm import tqdm
+        except ImportError:
+            tqdm = None
+        self._tqdm = tqdm
+
+    def __call__(self, done, total, what):
+        if self._tqdm is None:
+            print(f"toolcomp: plot: {what} ({done} of {total} steps)", file=self.stream, flush=True)
+            return
+        if self.bar is None:
+            self.bar = self._tqdm(total=total, desc="plot", unit="step", file=self.stream, leave=False)
+        self.bar.total = total
+        self.bar.set_postfix_str(what, refresh=False)
+        self.bar.update(done - self.bar.n)
+
+    def close(self):
+        if self.bar is not None:
+            self.bar.close()
+
+
+def _plot_progress(segments, stream=None, force=None):
+    """A :class:`_PlotProgress` for a plot of ``segments`` segments when
+    :func:`_shows_progress`, else None."""
+    stream = stream or sys.stderr
+    return _PlotProgress(stream) if _shows_progress(segments, force, stream) else None
 
 
 def execute(program_file, tools_file=None, dialect=None, units_table=None, search_path=(),
-            parameters=None, whole_path=True, csv=None, machine=None) -> Outcome:
+            parameters=None, whole_path=True, csv=None, machine=None, progress=None) -> Outcome:
     """Read the program and tool table and run it with ``strict=False``; every problem
     becomes a diagnostic record. Raises UsageError for unreadable inputs. ``whole_path=False``
     (the caller needs the records, the summary and at most ``csv``, a CsvWriter): a large
     program file is run as a stream (cli_stream.py), in bounded memory, and ``out.streamed``
-    is set (the compensated path went to ``csv`` chunk by chunk; ``out.result`` is None)."""
+    is set (the compensated path went to ``csv`` chunk by chunk; ``out.result`` is None).
+    ``progress``: a bar of the blocks run on stderr; None: for a million blocks or more on
+    a terminal, True: always, False: never."""
     _check_readable(program_file, "program")
     if tools_file is not None:
         _check_readable(tools_file, "tool table")
@@ -238,7 +306,8 @@ def execute(program_file, tools_file=None, dialect=None, units_table=None, searc
             out.records.append(Record.of(exc, parameters, "error"))
             return out
     if not whole_path and cli_stream.streams(program_file):
-        return cli_stream.execute_streamed(tc, out, program_file, dialect, run_kwargs, _progress_bar, csv)
+        return cli_stream.execute_streamed(tc, out, program_file, dialect, run_kwargs,
+                                           lambda blocks: _progress_bar(blocks, force=progress), csv)
 
     try:
         out.program = tc.Program.read(program_file, **kwargs)
@@ -255,11 +324,13 @@ def execute(program_file, tools_file=None, dialect=None, units_table=None, searc
 
     if source is program_file:
         run_kwargs.update(kwargs)
-    bar = _progress_bar(out.program)
+    bar = _progress_bar(out.program, force=progress)
     if bar is not None:
         run_kwargs["progress"] = lambda n: bar.update(n - bar.n)
     try:
         out.result = tc.run(source, strict=False, **run_kwargs)
+        if bar is not None:
+            bar.update(bar.total - bar.n)
     except tc.Error as exc:
         out.records.append(Record.of(parse_error or exc, program_file, "error"))
         return out
@@ -268,10 +339,9 @@ def execute(program_file, tools_file=None, dialect=None, units_table=None, searc
             raise
         out.records.append(Record.of(parse_error, program_file, "error"))
         return out
-
-    if bar is not None:
-        bar.update(bar.total - bar.n)
-        bar.close()
+    finally:
+        if bar is not None:
+            bar.close()
     out.records.extend(Record.of(d, program_file) for d in out.result.diagnostics)
     if parse_error is not None and not any(r.is_error for r in out.records):
         out.records.append(Record.of(parse_error, program_file, "error"))
@@ -461,7 +531,8 @@ def cmd_run(args) -> int:
     writer = CsvWriter(args.csv) if args.csv else None
     try:
         out = execute(args.program, args.tools, args.dialect, args.units_table, args.search_path,
-                      args.parameters, whole_path=bool(args.plot), csv=writer, machine=args.machine)
+                      args.parameters, whole_path=bool(args.plot), csv=writer, machine=args.machine,
+                      progress=args.progress)
         if writer is not None and not out.streamed:
             writer.add(out.result.path if out.result is not None else None)
     except BaseException:
@@ -480,11 +551,17 @@ def cmd_run(args) -> int:
         if out.result is None:
             print(f"toolcomp: no path to plot for {args.program}", file=sys.stderr)
         else:
+            from toolcomp.plot import path_size
+
+            progress = _plot_progress(path_size(out.result.path), force=args.progress)
             try:
                 from toolcomp.plot import save_plot
-                save_plot(out.result, args.plot, title=os.path.basename(args.program))
+                save_plot(out.result, args.plot, title=os.path.basename(args.program), progress=progress)
             except ImportError:
                 raise UsageError("--plot needs matplotlib: pip install 'toolcomp[plot]'")
+            finally:
+                if progress is not None:
+                    progress.close()
     return EXIT_ERRORS if out.has_errors else EXIT_OK
 
 
@@ -569,6 +646,9 @@ def build_parser() -> argparse.ArgumentParser:
     r.add_argument("program", metavar="PROGRAM")
     common(r)
     r.add_argument("--plot", metavar="FILE.png", help="write a plot of the paths")
+    r.add_argument("--progress", action=argparse.BooleanOptionalAction, default=None,
+                   help="show the progress of the run and of the plot on stderr (default: on a terminal, "
+                        "for a million blocks or segments or more)")
     r.add_argument("--csv", metavar="FILE", help="write the compensated segments as CSV")
     r.add_argument("--json", metavar="FILE", help="write the summary as JSON")
     r.set_defaults(func=cmd_run)

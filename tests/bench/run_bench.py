@@ -9,7 +9,8 @@ times as long, to see that time grows linearly; 0 or 1 to skip); TOOLCOMP_BENCH_
 to the temporary directory; 0 to skip). Peak memory of one run and of the stream are measured
 in a fresh interpreter each. Also a 1M-block Heidenhain
 L/CR program, the same contour for a Sinumerik 840D, and a LinuxCNC program that computes it
-in an o-while loop.
+in an o-while loop. Plotting: res.plot() and savefig of the G42 program's paths, TOOLCOMP_BENCH_PLOT_SEGMENTS
+compensated segments (default 1,000,000; 0 to skip), in a fresh interpreter.
 """
 import os
 import resource
@@ -162,6 +163,61 @@ def bench_stream(n):
     print(f"streaming      : tc.iter_run over {r['blocks']:,} blocks ({size / 2**30:.2f} GiB file, written in "
           f"{gen:.0f} s): {r['segments']:,} segments in {r['seconds']:.1f} s, "
           f"{r['seconds'] / r['blocks'] * 1e9:.0f} ns/block, peak RSS {r['peak']:.0f} MB")
+
+
+# res.plot() and savefig in a fresh interpreter: pyplot imported first (a notebook has it),
+# then the first res.plot() as a user meets it (the columns it reads written out on the way),
+# a second one, and the PNG. Peak RSS as for _CHILD.
+_PLOT_CHILD = r"""
+import json, sys, time
+import matplotlib
+matplotlib.use("Agg")
+import toolcomp as tc
+
+def hwm():
+    with open("/proc/self/status") as f:
+        return next(int(l.split()[1]) for l in f if l.startswith("VmHWM")) / 1024
+
+res = tc.run(sys.argv[1], tc.ToolTable.parse("T1 P1 Z50 D6\n", "linuxcnc"))
+t = time.perf_counter()
+import matplotlib.pyplot as plt
+pyplot = time.perf_counter() - t
+base = hwm()
+t = time.perf_counter()
+ax = res.plot()
+first = time.perf_counter() - t
+vertices = sum(len(line.get_xdata()) for line in ax.get_lines())
+t = time.perf_counter()
+ax.figure.savefig(sys.argv[2], dpi=150)
+save = time.perf_counter() - t
+peak = hwm()
+plt.close(ax.figure)
+t = time.perf_counter()
+plt.close(res.plot().figure)
+again = time.perf_counter() - t
+print(json.dumps(dict(segments=len(res.path), nominal=len(res.nominal), blocks=res.blocks, pyplot=pyplot,
+                      first=first, again=again, save=save, vertices=vertices, base=base, peak=peak,
+                      columns=(res.path.nbytes + res.nominal.nbytes) / 2**20)))
+"""
+
+
+def bench_plot(segments):
+    """res.plot() of the G42 program with about `segments` compensated segments (5 for every
+    3 blocks) and savefig of it to a PNG at 150 dpi, in a fresh interpreter."""
+    import json
+
+    with tempfile.TemporaryDirectory() as d:
+        path, png = os.path.join(d, "plot.ngc"), os.path.join(d, "plot.png")
+        write_program(path, segments * 3 // 5)
+        out = subprocess.run([sys.executable, "-c", _PLOT_CHILD, path, png], check=True, capture_output=True,
+                             text=True)
+        r = json.loads(out.stdout)
+        size = os.path.getsize(png)
+    print(f"plot           : res.plot() of {r['segments']:,} compensated + {r['nominal']:,} programmed segments "
+          f"({r['blocks']:,} blocks): {r['first']:.2f} s (again {r['again']:.2f} s; pyplot imported before, "
+          f"{r['pyplot']:.2f} s), {r['vertices']:,} points drawn; savefig 150 dpi {r['save']:.2f} s "
+          f"({size / 1024:.0f} KB); peak RSS {r['peak']:.0f} MB, {r['peak'] - r['base']:.0f} MB over the run's "
+          f"{r['base']:.0f} MB ({r['columns']:.0f} MB of Path columns)")
 
 
 def best_of(fn, repeat=3):
@@ -323,6 +379,9 @@ def main():
     bench_other("LinuxCNC o-while loop with G42.1", *generate_loops(n), "linuxcnc", tools)
     bench_batch(n, tools)
     bench_memory(n)
+    plotted = int(os.environ.get("TOOLCOMP_BENCH_PLOT_SEGMENTS", "1000000"))
+    if plotted > 0:
+        bench_plot(plotted)
     factor = int(os.environ.get("TOOLCOMP_BENCH_LINEAR", "10"))
     if factor > 1:
         bench_linear(n, factor)

@@ -5,6 +5,7 @@ import sys
 import pytest
 
 import toolcomp as tc
+from toolcomp.plot import save_plot
 
 
 @pytest.fixture
@@ -27,3 +28,12 @@ def test_to_pandas_without_pandas_names_the_extra(without):
     without("pandas")
     with pytest.raises(ImportError, match=r"ToolTable.to_pandas needs pandas.*toolcomp\[pandas\]"):
         _table().to_pandas()
+
+
+def test_plot_without_matplotlib_names_the_extra(without, tmp_path):
+    res = tc.run(tc.Program.parse("G21 G90\nG1 X10 F100\nM2\n", dialect="linuxcnc"))
+    without("matplotlib")
+    with pytest.raises(ImportError, match=r"Result.plot needs matplotlib.*toolcomp\[plot\]"):
+        res.plot()
+    with pytest.raises(ImportError, match=r"save_plot needs matplotlib.*toolcomp\[plot\]"):
+        save_plot(res, tmp_path / "p.png")
