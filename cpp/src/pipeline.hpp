@@ -25,6 +25,13 @@ void run_pipeline(const Program& program, const ToolTable* tools, const RunOptio
                   const ControlProfile& profile, MotionSink& nominal, MotionSink& compensated,
                   std::vector<Diagnostic>& diagnostics, iso::InterpretOutput& out, const PipelineHooks& hooks = {});
 
+// The interpreter alone, its moves into `sink` (no compensation; diagnostics dropped).
+void interpret_only(const Program& program, const ToolTable* tools, const RunOptions& options, MotionSink& sink,
+                    const PipelineHooks& hooks);
+// What start.hpp runs of a program file: its first piece and on, read again.
+std::function<void(const RunOptions&, MotionSink&)> beginning_of_file(const std::string& path, Dialect dialect,
+                                                                      const ToolTable* tools, const ReadLimits& limits);
+
 // Memory exhausted anywhere in a run (a Path's columns, a called file's text, the
 // interpreter's state) is the run's error with a stable code, ProgramError("out_of_memory"),
 // not std::bad_alloc (which Python raises as a bare MemoryError).

@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "pipeline.hpp"
+#include "start.hpp"
 #include "unchanged_path.hpp"
 #include "program/program_source.hpp"
 
@@ -170,6 +171,26 @@ bool Result::ok() const {
     return true;
 }
 
+void interpret_only(const Program& program, const ToolTable* tools, const RunOptions& options, MotionSink& sink,
+                    const PipelineHooks& hooks) {
+    const ControlProfile profile = options.profile ? *options.profile
+                                   : options.machine ? options.machine->profile
+                                                     : profile_for(program.dialect);
+    std::vector<Diagnostic> diagnostics;
+    iso::InterpretOutput out;
+    dialect_row(program.dialect).interpret({program, tools, profile, options, sink, diagnostics, out, hooks});
+}
+
+Beginning beginning_of_file(const std::string& path, Dialect dialect, const ToolTable* tools, const ReadLimits& limits) {
+    return [=](const RunOptions& o, MotionSink& sink) {
+        // Small pieces: the beginning is a few moves, not the megabyte a run reads ahead.
+        ProgramSource src(path, dialect, limits, kPieceBytes / 16, /*limit_pieces=*/true, {}, /*threads=*/false);
+        PipelineHooks hooks;
+        hooks.next_piece = src.next_piece();
+        interpret_only(src.first(), tools, o, sink, hooks);
+    };
+}
+
 void run_pipeline(const Program& program, const ToolTable* tools, const RunOptions& options,
                   const ControlProfile& profile, MotionSink& nominal, MotionSink& compensated,
                   std::vector<Diagnostic>& diagnostics, iso::InterpretOutput& out, const PipelineHooks& hooks) {
@@ -271,9 +292,10 @@ Result run_main(const Program& program, const ToolTable* tools, const RunOptions
 
 namespace {
 Result run_file_main(const std::string& path, std::optional<Dialect> dialect, const ToolTable* tools,
-                     const RunOptions& options) {
-    ProgramSource src(path, dialect_of_file(path, dialect), options.limits, kPieceBytes, /*limit_pieces=*/true, {},
-                      options.threads);
+                     const RunOptions& run_options) {
+    const Dialect d = dialect_of_file(path, dialect);
+    const RunOptions options = with_start(run_options, beginning_of_file(path, d, tools, run_options.limits));
+    ProgramSource src(path, d, options.limits, kPieceBytes, /*limit_pieces=*/true, {}, options.threads);
     PipelineHooks hooks;
     hooks.next_piece = src.next_piece();
     try {
@@ -290,7 +312,12 @@ Result run(const Program& program, const ToolTable* tools, const RunOptions& opt
     if (options.profile) check_profile(*options.profile);
     if (options.machine) check_machine(*options.machine);
     check_search_path(options.search_path);
-    return out_of_memory_as_error([&] { return run_main(program, tools, options, {}, program.size()); });
+    return out_of_memory_as_error([&] {
+        const RunOptions o = with_start(options, [&](const RunOptions& r, MotionSink& sink) {
+            interpret_only(program, tools, r, sink, {});
+        });
+        return run_main(program, tools, o, {}, program.size());
+    });
 }
 
 Result run_file(const std::string& path, std::optional<Dialect> dialect, const ToolTable* tools,

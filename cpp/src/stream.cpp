@@ -10,6 +10,7 @@
 #include "dialects/table.hpp"
 #include "pipeline.hpp"
 #include "program/program_source.hpp"
+#include "start.hpp"
 
 namespace toolcomp {
 
@@ -127,6 +128,14 @@ void PathStream::produce() {
     CountingSink nominal(programmed_);
     PipelineHooks hooks;
     RunOptions run = options_.run;  // its progress also tells blocks_read()
+    const ToolTable* tools = tools_ ? &*tools_ : nullptr;
+    try {
+        run = with_start(run, program_ ? Beginning([&](const RunOptions& o, MotionSink& sink) {
+                                  interpret_only(*program_, tools, o, sink, {});
+                              })
+                                       : beginning_of_file(path_, *dialect_, tools, options_.read));
+    } catch (...) {  // an option the run refuses: the run says so
+    }
     run.progress = [this, user = options_.run.progress](std::size_t n) {
         blocks_read_.store(n, std::memory_order_relaxed);
         if (user) user(n);

@@ -148,6 +148,9 @@ void bind_machine(py::module_& m) {
                       triple_set("g28", &Machine::g28), "the G28 position in machine coordinates, (x, y, z) mm")
         .def_property("g30", triple_get(&Machine::g30),
                       triple_set("g30", &Machine::g30), "the G30 position in machine coordinates, (x, y, z) mm")
+        .def_property("start", triple_get(&Machine::start), triple_set("start", &Machine::start),
+                      "where the axes stand when a program starts, machine coordinates, (x, y, z) mm (default: "
+                      "the machine's zero)")
         .def_property("m92", triple_get(&Machine::m92), triple_set("m92", &Machine::m92),
                       "Heidenhain: the additional machine datum (M92) in machine coordinates, (x, y, z) mm")
         .def_property(

@@ -65,6 +65,13 @@ RunOptions run_options(bool strict, bool block_delete, std::optional<ControlProf
 }
 }  // namespace
 
+std::optional<Vec3> start_position(const std::optional<std::array<double, 3>>& xyz) {
+    if (!xyz) return std::nullopt;
+    for (double v : *xyz)
+        if (!std::isfinite(v)) throw py::value_error("start must be three finite numbers (x, y, z), mm");
+    return Vec3((*xyz)[0], (*xyz)[1], (*xyz)[2]);
+}
+
 namespace {
 // A tolerance a program's arcs are measured against: a finite number, not negative (refused
 // when set, by name; check_profile refuses it again when a run starts).
@@ -516,11 +523,13 @@ void bind_run(py::module_& m) {
            std::optional<ControlProfile> profile, py::object progress, std::size_t progress_every,
            std::vector<std::string> search_path, std::map<int, double> parameters, std::size_t max_segments,
            bool threads, bool follow_links, std::uint64_t max_bytes, std::size_t max_line_length,
-           std::optional<Machine> machine, const std::vector<std::optional<std::vector<double>>>& probes) {
+           std::optional<Machine> machine, const std::vector<std::optional<std::vector<double>>>& probes,
+           std::optional<std::array<double, 3>> start) {
             RunOptions o = run_options(strict, block_delete, std::move(profile), progress, progress_every,
                                        std::move(search_path), std::move(parameters), max_segments, threads,
                                        follow_links, machine);
             o.probes = probe_results(probes);
+            o.start = start_position(start);
             o.limits = ReadLimits{max_bytes, max_line_length};
             const auto table = snapshot(tools);
             py::gil_scoped_release nogil;
@@ -532,6 +541,7 @@ void bind_run(py::module_& m) {
         py::arg("max_segments") = kDefaultMaxSegments, py::arg("threads") = true, py::arg("follow_links") = false,
         py::arg("max_bytes") = kDefaultMaxProgramBytes, py::arg("max_line_length") = kDefaultMaxLineLength,
         py::arg("machine") = py::none(), py::arg("probes") = std::vector<std::optional<std::vector<double>>>{},
+        py::arg("start") = py::none(),
         "Interpret a Program with an optional ToolTable and apply tool compensation; returns a Result. strict=True "
         "raises the first error, strict=False returns the path up to it; block_delete skips '/' blocks; profile "
         "overrides the dialect's ControlProfile; progress(blocks_read) is called every progress_every blocks; "
@@ -543,18 +553,22 @@ void bind_run(py::module_& m) {
         "link out of its search directory; max_bytes and max_line_length bound every called file. The GIL is "
         "released while the program runs. probes: what the probe moves (LinuxCNC G38.2-G38.5) meet, one per "
         "probe move in order: None (no contact) or the contact point X Y Z [A B C] in the program's coordinates "
-        "(mm); beyond them a probe touches at its target.");
+        "(mm); beyond them a probe touches at its target. start: where the axes stand when the program starts, "
+        "(x, y, z) machine coordinates in mm; None: the machine's start, or without a machine where the program "
+        "first sends each axis.");
     m.def(
         "run_file",
         [](const std::string& path, std::optional<std::string> dialect, const ToolTable* tools, bool strict,
            bool block_delete, std::optional<ControlProfile> profile, py::object progress, std::size_t progress_every,
            std::vector<std::string> search_path, std::map<int, double> parameters, std::size_t max_segments,
            std::uint64_t max_bytes, std::size_t max_line_length, bool threads, bool follow_links,
-           std::optional<Machine> machine, const std::vector<std::optional<std::vector<double>>>& probes) {
+           std::optional<Machine> machine, const std::vector<std::optional<std::vector<double>>>& probes,
+           std::optional<std::array<double, 3>> start) {
             RunOptions o = run_options(strict, block_delete, std::move(profile), progress, progress_every,
                                        std::move(search_path), std::move(parameters), max_segments, threads,
                                        follow_links, machine);
             o.probes = probe_results(probes);
+            o.start = start_position(start);
             std::optional<Dialect> d;
             if (dialect) d = dialect_from_name(*dialect);
             const auto table = snapshot(tools);
@@ -565,7 +579,7 @@ void bind_run(py::module_& m) {
         py::arg("profile"), py::arg("progress"), py::arg("progress_every"), py::arg("search_path"),
         py::arg("parameters"), py::arg("max_segments"), py::arg("max_bytes"), py::arg("max_line_length"),
         py::arg("threads") = true, py::arg("follow_links") = false, py::arg("machine") = py::none(),
-        py::arg("probes") = std::vector<std::optional<std::vector<double>>>{},
+        py::arg("probes") = std::vector<std::optional<std::vector<double>>>{}, py::arg("start") = py::none(),
         "run() on a program file, read leniently; a LinuxCNC / Fanuc file without control flow is read and "
         "parsed a piece at a time as it runs (see toolcomp.run).");
 }

@@ -13,8 +13,10 @@ namespace {
 StreamOptions stream_options(bool strict, bool block_delete, std::optional<ControlProfile> profile,
                              std::vector<std::string> search_path, std::map<int, double> parameters,
                              std::size_t chunk, std::size_t piece_bytes, std::uint64_t max_bytes,
-                             std::size_t max_line_length, bool follow_links, const std::optional<Machine>& machine) {
+                             std::size_t max_line_length, bool follow_links, const std::optional<Machine>& machine,
+                             const std::optional<std::array<double, 3>>& start) {
     StreamOptions o;
+    o.run.start = start_position(start);
     if (machine) o.run.machine = std::make_shared<const Machine>(*machine);
     o.run.follow_links = follow_links;
     o.run.strict = strict;
@@ -83,33 +85,36 @@ void bind_stream(py::module_& m) {
         [](const std::string& path, std::optional<std::string> dialect, const ToolTable* tools, bool strict,
            bool block_delete, std::optional<ControlProfile> profile, std::vector<std::string> search_path,
            std::map<int, double> parameters, std::size_t chunk, std::size_t piece_bytes, std::uint64_t max_bytes,
-           std::size_t max_line_length, bool follow_links, std::optional<Machine> machine) {
+           std::size_t max_line_length, bool follow_links, std::optional<Machine> machine,
+           std::optional<std::array<double, 3>> start) {
             std::optional<Dialect> d;
             if (dialect) d = dialect_from_name(*dialect);
             return std::make_shared<PathStream>(path, d, snapshot(tools),
                                                 stream_options(strict, block_delete, std::move(profile),
                                                                std::move(search_path), std::move(parameters), chunk,
                                                                piece_bytes, max_bytes, max_line_length, follow_links,
-                                                               machine));
+                                                               machine, start));
         },
         py::arg("path"), py::arg("dialect"), py::arg("tools"), py::arg("strict"), py::arg("block_delete"),
         py::arg("profile"), py::arg("search_path"), py::arg("parameters"), py::arg("chunk"), py::arg("piece_bytes"),
         py::arg("max_bytes"), py::arg("max_line_length"), py::arg("follow_links") = false,
-        py::arg("machine") = py::none(), "A PathStream over a program file (see toolcomp.iter_run).");
+        py::arg("machine") = py::none(), py::arg("start") = py::none(),
+        "A PathStream over a program file (see toolcomp.iter_run).");
     m.def(
         "iter_run_program",
         [](std::shared_ptr<Program> program, const ToolTable* tools, bool strict, bool block_delete,
            std::optional<ControlProfile> profile, std::vector<std::string> search_path,
            std::map<int, double> parameters, std::size_t chunk, std::uint64_t max_bytes, std::size_t max_line_length,
-           bool follow_links, std::optional<Machine> machine) {
+           bool follow_links, std::optional<Machine> machine, std::optional<std::array<double, 3>> start) {
             return std::make_shared<PathStream>(std::shared_ptr<const Program>(std::move(program)), snapshot(tools),
                                                 stream_options(strict, block_delete, std::move(profile),
                                                                std::move(search_path), std::move(parameters), chunk,
                                                                kPieceBytes, max_bytes, max_line_length, follow_links,
-                                                               machine));
+                                                               machine, start));
         },
         py::arg("program"), py::arg("tools"), py::arg("strict"), py::arg("block_delete"), py::arg("profile"),
         py::arg("search_path"), py::arg("parameters"), py::arg("chunk"),
         py::arg("max_bytes") = kDefaultMaxProgramBytes, py::arg("max_line_length") = kDefaultMaxLineLength,
-        py::arg("follow_links") = false, py::arg("machine") = py::none(), "A PathStream over a parsed Program (see toolcomp.iter_run).");
+        py::arg("follow_links") = false, py::arg("machine") = py::none(), py::arg("start") = py::none(),
+        "A PathStream over a parsed Program (see toolcomp.iter_run).");
 }

@@ -3,8 +3,10 @@
 // names only, no logic.
 #include <pybind11/pybind11.h>
 
+#include <array>
 #include <optional>
 
+#include "toolcomp/geometry/vec.hpp"
 #include "toolcomp/tools/tool_table.hpp"
 
 namespace py = pybind11;
@@ -16,6 +18,9 @@ inline std::optional<toolcomp::ToolTable> snapshot(const toolcomp::ToolTable* t)
     return t ? std::optional<toolcomp::ToolTable>(*t) : std::nullopt;
 }
 inline const toolcomp::ToolTable* ptr(const std::optional<toolcomp::ToolTable>& t) { return t ? &*t : nullptr; }
+
+// run(start=...): (x, y, z) machine coordinates, mm, finite; None: not given.
+std::optional<toolcomp::Vec3> start_position(const std::optional<std::array<double, 3>>& xyz);
 
 void bind_errors(py::module_& m);
 void bind_program(py::module_& m);

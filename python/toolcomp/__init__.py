@@ -64,6 +64,7 @@ _sys.modules[__name__ + ".sinumerik"] = sinumerik  # type: ignore[assignment]  #
 _FileName = _Union[str, "_os.PathLike[str]"]
 _SearchPath = _Union[_FileName, _Iterable[_FileName]]
 _Parameters = _Union[_Mapping[int, float], _FileName, None]
+_Start = _Union[None, str, _Sequence[float]]
 
 
 def run(program: _Union[Program, _FileName], tools: _Union[ToolTable, _FileName, None] = None, *,
@@ -73,7 +74,7 @@ def run(program: _Union[Program, _FileName], tools: _Union[ToolTable, _FileName,
         search_path: _SearchPath = (), parameters: _Parameters = None, max_segments: int = 20_000_000,
         max_bytes: int = 2**31, max_line_length: int = 2**20, threads: bool = True, follow_links: bool = False,
         machine: _Union[Machine, _FileName, None] = None,
-        probes: _Iterable[_Optional[_Sequence[float]]] = ()) -> Result:
+        probes: _Iterable[_Optional[_Sequence[float]]] = (), start: _Start = None) -> Result:
     """Interpret ``program`` and apply tool compensation.
 
     ``program`` is a :class:`Program` or a path to a program file (dialect from the suffix
@@ -107,6 +108,12 @@ def run(program: _Union[Program, _FileName], tools: _Union[ToolTable, _FileName,
     system, mm; the probe move ends there and #5061-#5070 read it. A probe move beyond the list
     touches at its target (warning ``probe_move``). The GIL is released while the program runs.
 
+    ``start`` is where the axes stand when the program starts, in machine coordinates:
+    ``(x, y, z)`` in mm, or ``"machine_zero"`` (LinuxCNC's interpreter run on its own, rs274,
+    starts there). None: the machine's ``start`` when a ``machine`` is given (its zero unless
+    its file says otherwise); without a machine, each axis where the program first sends it,
+    so the path begins at the program's first position (doc/python.md, "Where a path starts").
+
     Limits (each raises a :class:`Error` subclass with a stable ``code``): a program file
     larger than ``max_bytes`` is refused before it is read (``input_too_large``, as is every
     file it calls; a FIFO, device or directory: ``not_a_regular_file``), a line longer than
@@ -136,12 +143,27 @@ def run(program: _Union[Program, _FileName], tools: _Union[ToolTable, _FileName,
                               profile=profile, progress=progress, progress_every=progress_every,
                               search_path=search_path, parameters=parameters, max_segments=max_segments,
                               max_bytes=max_bytes, max_line_length=max_line_length, threads=threads,
-                              follow_links=follow_links, machine=machine, probes=list(probes))
+                              follow_links=follow_links, machine=machine, probes=list(probes),
+                              start=_start_input(start))
     return _core.run(program, tools, strict=strict, block_delete=block_delete, profile=profile,
                      progress=progress, progress_every=progress_every, search_path=search_path,
                      parameters=parameters, max_segments=max_segments, threads=threads,
                      follow_links=follow_links, max_bytes=max_bytes, max_line_length=max_line_length,
-                     machine=machine, probes=list(probes))
+                     machine=machine, probes=list(probes), start=_start_input(start))
+
+
+def _start_input(start):
+    """run()'s start as the engine takes it: None or (x, y, z) mm."""
+    if start is None:
+        return None
+    if isinstance(start, str):
+        if start != "machine_zero":
+            raise ValueError(f"start must be None, 'machine_zero' or (x, y, z), not {start!r}")
+        return (0.0, 0.0, 0.0)
+    xyz = tuple(float(v) for v in start)
+    if len(xyz) != 3:
+        raise ValueError(f"start must be (x, y, z), not {start!r}")
+    return xyz
 
 
 def _whole_at_least(name, value, least):
@@ -189,7 +211,7 @@ def iter_run(program: _Union[Program, _FileName], tools: _Union[ToolTable, _File
              profile: _Optional[ControlProfile] = None, units: str = "mm", search_path: _SearchPath = (),
              parameters: _Parameters = None, max_bytes: int = 2**31, max_line_length: int = 2**20,
              piece_bytes: int = 1 << 20, follow_links: bool = False,
-             machine: _Union[Machine, _FileName, None] = None) -> PathStream:
+             machine: _Union[Machine, _FileName, None] = None, start: _Start = None) -> PathStream:
     """Run ``program`` like :func:`run` and yield its compensated path in chunks of ``chunk``
     segments (:class:`Path` objects; the last may be shorter). The chunks joined are the
     ``path`` that :func:`run` returns, segment for segment: the compensation look-ahead runs
@@ -200,7 +222,7 @@ def iter_run(program: _Union[Program, _FileName], tools: _Union[ToolTable, _File
     numbers or M99: CAM output) is read ``piece_bytes`` at a time, so memory does not grow
     with its length; other programs (and Heidenhain, Sinumerik) are read whole, up to
     ``max_bytes``, their path still streamed; ``max_bytes`` and ``max_line_length`` bound the
-    files it calls too, and ``follow_links`` is :func:`run`'s. ``max_segments`` does not apply.
+    files it calls too, and ``follow_links`` and ``start`` are :func:`run`'s. ``max_segments`` does not apply.
 
     Errors: with ``strict=True`` the run's error is raised by the loop after the chunk that
     holds the segments before it; with ``strict=False`` it ends the stream and is in
@@ -218,10 +240,11 @@ def iter_run(program: _Union[Program, _FileName], tools: _Union[ToolTable, _File
         return _core.iter_run_file(_os.fspath(program), dialect, tools, strict=strict, block_delete=block_delete,
                                    profile=profile, search_path=search_path, parameters=parameters, chunk=chunk,
                                    piece_bytes=piece_bytes, max_bytes=max_bytes, max_line_length=max_line_length,
-                                   follow_links=follow_links, machine=machine)
+                                   follow_links=follow_links, machine=machine, start=_start_input(start))
     return _core.iter_run_program(program, tools, strict=strict, block_delete=block_delete, profile=profile,
                                   search_path=search_path, parameters=parameters, chunk=chunk, max_bytes=max_bytes,
-                                  max_line_length=max_line_length, follow_links=follow_links, machine=machine)
+                                  max_line_length=max_line_length, follow_links=follow_links, machine=machine,
+                                  start=_start_input(start))
 
 
 from . import plot as _plot  # noqa: E402  (cheap: matplotlib is imported when something is drawn)

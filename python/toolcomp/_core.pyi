@@ -370,7 +370,8 @@ def run(program: Program, tools: Optional[ToolTable] = None, strict: bool = True
         max_segments: int = 20000000, threads: bool = True, follow_links: bool = False,
         max_bytes: int = 2147483648, max_line_length: int = 1048576,
         machine: Optional[Machine] = None,
-        probes: Sequence[Optional[Sequence[float]]] = ()) -> Result: ...
+        probes: Sequence[Optional[Sequence[float]]] = (),
+        start: Optional[Tuple[float, float, float]] = None) -> Result: ...
 
 class PathStream:
     """Iterator over a run's compensated path in chunks; see toolcomp.iter_run."""
@@ -395,18 +396,22 @@ class PathStream:
 def iter_run_file(path: str, dialect: Optional[str], tools: Optional[ToolTable], *, strict: bool,
                   block_delete: bool, profile: Optional[ControlProfile], search_path: Sequence[str],
                   parameters: Mapping[int, float], chunk: int, piece_bytes: int, max_bytes: int,
-                  max_line_length: int, follow_links: bool = False) -> PathStream: ...
+                  max_line_length: int, follow_links: bool = False, machine: Optional[Machine] = None,
+                  start: Optional[Tuple[float, float, float]] = None) -> PathStream: ...
 
 def iter_run_program(program: Program, tools: Optional[ToolTable], *, strict: bool, block_delete: bool,
                      profile: Optional[ControlProfile], search_path: Sequence[str],
                      parameters: Mapping[int, float], chunk: int, max_bytes: int = 2147483648,
-                     max_line_length: int = 1048576, follow_links: bool = False) -> PathStream: ...
+                     max_line_length: int = 1048576, follow_links: bool = False,
+                     machine: Optional[Machine] = None,
+                     start: Optional[Tuple[float, float, float]] = None) -> PathStream: ...
 
 def run_file(path: str, dialect: Optional[str], tools: Optional[ToolTable], *, strict: bool, block_delete: bool,
              profile: Optional[ControlProfile], progress: Optional[Callable[[int], None]], progress_every: int,
              search_path: Sequence[str], parameters: Mapping[int, float], max_segments: int, max_bytes: int,
              max_line_length: int, threads: bool = True, follow_links: bool = False,
-             machine: Optional[Machine] = None, probes: Sequence[Optional[Sequence[float]]] = ()) -> Result: ...
+             machine: Optional[Machine] = None, probes: Sequence[Optional[Sequence[float]]] = (),
+             start: Optional[Tuple[float, float, float]] = None) -> Result: ...
 
 _Plane = Union[int, str]  # 17, 18, 19 or "G17", "G18", "G19"
 _EdgeMap = dict[Tuple[int, int], "sinumerik.Edge"]
@@ -577,6 +582,7 @@ class Machine:
     work_origin: Tuple[float, float, float]
     g28: Tuple[float, float, float]
     g30: Tuple[float, float, float]
+    start: Tuple[float, float, float]
     m92: Tuple[float, float, float]
     tool_change: Sequence[Optional[float]]
     travel: Sequence[Tuple[float, float]]

@@ -24,6 +24,7 @@ G30 / tool change positions in machine coordinates, and gives the axis travel an
     [positions]                  # machine coordinates
     work_origin = [-400.0, -200.0, -500.0]   # where program zero (G54) is
     g28 = [0, 0, 0]
+    start = [0, 0, 0]            # where the axes stand when a program starts
     tool_change = { z = 0 }      # M6 sends Z there first
 
     [travel]                     # [min, max] of each axis, machine coordinates
@@ -295,7 +296,7 @@ def parse(text: str, path: Optional[str] = None) -> "_core.Machine":
 
     positions = _table(src, doc, "positions")
     for key, value in positions.items():
-        if key in ("work_origin", "g28", "g30", "m92"):
+        if key in ("work_origin", "g28", "g30", "m92", "start"):
             setattr(m, key, _triple(src, "positions", key, value, scale))
         elif key == "tool_change":
             if not isinstance(value, dict) or set(value) - set(_AXES):
@@ -304,7 +305,8 @@ def parse(text: str, path: Optional[str] = None) -> "_core.Machine":
             m.tool_change = tuple(None if a not in value else _number(src, "positions", key, value[a]) * scale
                                   for a in _AXES)
         else:
-            raise src.error(f"positions has no '{key}' (work_origin, g28, g30, m92, tool_change)", "positions", key)
+            raise src.error(f"positions has no '{key}' (work_origin, g28, g30, m92, start, tool_change)", "positions",
+                            key)
 
     travel = _table(src, doc, "travel")
     limits = [(-math.inf, math.inf)] * 3
@@ -429,6 +431,8 @@ def dumps(m: "_core.Machine") -> str:
     lines.append(f"work_origin = {_toml_value(list(m.work_origin))}")
     lines.append(f"g28 = {_toml_value(list(m.g28))}")
     lines.append(f"g30 = {_toml_value(list(m.g30))}")
+    if any(m.start):
+        lines.append(f"start = {_toml_value(list(m.start))}")
     if m.control == "heidenhain" or any(m.m92):
         lines.append(f"m92 = {_toml_value(list(m.m92))}")
     given = {a: v for a, v in zip(_AXES, m.tool_change) if v is not None}

@@ -52,6 +52,7 @@ Result run_file(const std::string& file, const std::vector<std::string>& search_
 Result run_text_in(const std::string& text, const std::vector<std::string>& search_path) {
     RunOptions o;
     o.search_path = search_path;
+    o.start = Vec3::Zero();  // the paths below count the first move from machine zero
     return run(parse_program(text, Dialect::heidenhain), nullptr, o);
 }
 

@@ -43,7 +43,7 @@ def test_toolcomp_raises_same_error(prog, tmp_path):
     empty.write_text("")
     tools = tc.ToolTable.read(str(empty))
     with pytest.raises((tc.ProgramError, tc.ParseError, tc.CompensationError)) as info:
-        tc.run(tc.Program.read(str(prog)), tools=tools)   # parse errors may come from read()
+        tc.run(tc.Program.read(str(prog)), tools=tools, start="machine_zero")   # parse errors may come from read()
     err = info.value
     got = getattr(err, "message", None) or str(err)
     assert got == message

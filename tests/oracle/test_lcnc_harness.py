@@ -178,7 +178,7 @@ def test_g84_off_the_xy_plane_is_reported_where_linuxcnc_feeds(plane, block, tmp
     p.write_text(f"G21 {plane} G90 G94 S500 M3\nG0 X0 Y0 Z0\n{block}\nG80\nM2\n")
     rs = lcnc.nominal(str(p))
     feed_to = rs["end"][rs["kind"] == lcnc.LINE][0]
-    res = tc.run(tc.Program.read(str(p)))
+    res = tc.run(tc.Program.read(str(p)), start="machine_zero")
     (w,) = [d for d in res.diagnostics if d.code == "g84_off_axis"]
     assert w.line == 3
     assert "X%.4f Y%.4f Z%.4f" % tuple(feed_to) in w.message

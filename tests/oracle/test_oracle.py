@@ -27,7 +27,8 @@ def _table_for(prog: Path) -> Path:
 
 def _toolcomp_nominal(prog: Path, tbl: Path, probes=()):
     tc = pytest.importorskip("toolcomp")
-    res = tc.run(tc.Program.read(str(prog)), tools=tc.ToolTable.read(str(tbl)), probes=probes)
+    res = tc.run(tc.Program.read(str(prog)), tools=tc.ToolTable.read(str(tbl)), probes=probes,
+                 start="machine_zero")  # rs274 starts at machine zero
     return res.nominal
 
 

@@ -171,7 +171,8 @@ def toolcomp_run(program: Path, table: Path, strict=True):
     tc = _tc()
     tools = tc.ToolTable.read(str(table))
     try:
-        res = tc.run(tc.Program.read(str(program), strict=False), tools=tools, strict=strict)
+        # rs274 starts at machine zero
+        res = tc.run(tc.Program.read(str(program), strict=False), tools=tools, strict=strict, start="machine_zero")
     except tc.Error as e:
         return None, e, None
     return path_columns(res.path), None, res

@@ -281,7 +281,7 @@ def toolcomp_run(program: Path, table: Path, strict=True):
     tools = tc.ToolTable.read(str(table))
     try:
         res = tc.run(tc.Program.read(str(program), strict=False), tools=tools, strict=strict,
-                     search_path=[str(SUBS)])
+                     search_path=[str(SUBS)], start="machine_zero")  # rs274 starts at machine zero
     except tc.Error as e:
         return None, e, None
     return oc.path_columns(res.path), None, res

@@ -39,6 +39,6 @@ def test_messages_match_rs274(name, tmp_path):
     path = tmp_path / f"{name}.ngc"
     path.write_text(PROGRAMS[name])
     want = rs274_messages(path)
-    res = tc.run(tc.Program.read(str(path)))
+    res = tc.run(tc.Program.read(str(path)), start="machine_zero")
     got = [d.message for d in res.diagnostics if d.code == "message"]
     assert got == want

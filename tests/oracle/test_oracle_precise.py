@@ -92,7 +92,7 @@ def _tc():
 
 def toolcomp_nominal(program, tools):
     tc = _tc()
-    res = tc.run(tc.Program.read(str(program)), tools=tc.ToolTable.read(str(tools)))
+    res = tc.run(tc.Program.read(str(program)), tools=tc.ToolTable.read(str(tools)), start="machine_zero")
     return res.nominal
 
 
@@ -405,7 +405,7 @@ def test_toolcomp_error_line_matches_module(prog, tmp_path):
     assert mod["error"] is not None, "the gcode module accepted %s" % prog.name
     tools = tc.ToolTable.read(str(_empty_table(tmp_path)))
     with pytest.raises(tc.Error) as info:
-        tc.run(tc.Program.read(str(prog)), tools=tools)     # parse errors may come from read()
+        tc.run(tc.Program.read(str(prog)), tools=tools, start="machine_zero")     # parse errors may come from read()
     assert _module_line(prog, mod, info.value.line) == mod["error"]["line"], (
         "%s: toolcomp error line %s (%s), module line %d (%s)"
         % (prog.name, info.value.line, info.value, mod["error"]["line"], mod["error"]["message"]))
@@ -426,7 +426,7 @@ def test_path_before_error_matches_module(prog, tmp_path):
     assert mod["error"] is not None, "the gcode module accepted %s" % prog.name
     tools = tc.ToolTable.read(str(_empty_table(tmp_path)))
     try:
-        path = tc.run(tc.Program.read(str(prog)), tools=tools, strict=False).path
+        path = tc.run(tc.Program.read(str(prog)), tools=tools, strict=False, start="machine_zero").path
         cols = toolcomp_columns(path)
         cols["side"] = np.asarray(path.side)
     except tc.ParseError:

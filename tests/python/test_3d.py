@@ -10,7 +10,7 @@ N_EX = (0.2637581, 0.0078922, -0.8764339)  # the TNC manuals' example normal (|N
 def ln_program(lines, tool="TOOL DEF 1 L+0 R+3 R2+3\nTOOL CALL 1 Z DR-0.1 DR2-0.1", extra=""):
     body = [tool, "L X+0 Y+0 Z+50 R0 FMAX" + extra] + lines
     text = "\n".join(f"{i} {l}" for i, l in enumerate(["BEGIN PGM S MM"] + body + ["END PGM S MM"]))
-    return tc.run(tc.Program.parse(text, dialect="heidenhain"))
+    return tc.run(tc.Program.parse(text, dialect="heidenhain"), start="machine_zero")
 
 
 def test_ln_ball_cutter_moves_along_the_normal():
@@ -112,7 +112,7 @@ def test_peripheral_milling_with_m128_uses_the_deltas_only():
     text = "\n".join(f"{i} {b}" for i, b in enumerate([
         "BEGIN PGM P MM", "TOOL DEF 1 L+0 R+5", "TOOL CALL 1 Z DR-0.2", "L X-10 Y+0 Z+0 R0 F500 M128",
         "L X+0 Y+0 RL", "L X+50 Y+0", "L X+60 Y+10 R0", "END PGM P MM"]))
-    p = tc.run(tc.Program.parse(text, dialect="heidenhain")).path
+    p = tc.run(tc.Program.parse(text, dialect="heidenhain"), start="machine_zero").path
     along = np.flatnonzero(p.line == 6)[-1]
     np.testing.assert_allclose(p.end[along, :2], [50, -0.2])
 

@@ -13,6 +13,8 @@ TOOLS = "T1 P1 Z25 D10 ;end mill\nT2 P2 X1 Z30.5 D6\nT3 P3 X0.5 Y-0.25 Z40 D12\n
 
 def run(text, tools=None, dialect="linuxcnc", **kw):
     table = tc.ToolTable.parse(tools, "linuxcnc") if tools else None
+    # The points below count the first move from machine zero, where the run is told to start.
+    kw.setdefault("start", "machine_zero")
     return tc.run(tc.Program.parse(text, dialect=dialect), tools=table, **kw)
 
 

@@ -56,7 +56,7 @@ def outcome(name, exp):
             profile = tc.ControlProfile(exp["dialect"])
             profile.block_limit = exp["block_limit"]
         prog = tc.Program.read(path, dialect=exp["dialect"])
-        res = tc.run(prog, tools, profile=profile)
+        res = tc.run(prog, tools, profile=profile, start="machine_zero")
         return {"kind": "ok", "segments": len(res.path), "nonfinite": _finite_path(res)}
     except tc.Error as e:
         return {"kind": "error", "type": type(e).__name__, "code": e.code, "message": e.message, "line": e.line}
@@ -74,7 +74,7 @@ def lenient_outcome(name, exp):
         profile.block_limit = exp["block_limit"]
     try:
         prog = tc.Program.read(str(BAD / name), dialect=exp["dialect"], strict=False)
-        res = tc.run(prog, tools, profile=profile, strict=False)
+        res = tc.run(prog, tools, profile=profile, strict=False, start="machine_zero")
     except tc.Error:
         return None
     except Exception as e:  # noqa: BLE001

@@ -28,7 +28,7 @@ def _main(dialect):
 
 def _error(dialect, search, **kwargs):
     with pytest.raises(tc.Error) as e:
-        tc.run(_main(dialect), search_path=[search], **kwargs)
+        tc.run(_main(dialect), search_path=[search], **kwargs, start="machine_zero")
     assert e.value.line == 2, e.value
     return e.value
 
@@ -37,7 +37,7 @@ def _error(dialect, search, **kwargs):
 def test_a_called_file_runs(dialect, tmp_path):
     _, name, text = CASES[dialect]
     (tmp_path / name).write_text(text)
-    res = tc.run(_main(dialect), search_path=[tmp_path])
+    res = tc.run(_main(dialect), search_path=[tmp_path], start="machine_zero")
     assert res.nominal.end[-1, 0] == 1.0
 
 
@@ -51,7 +51,7 @@ def test_max_bytes_holds_for_called_files(dialect, tmp_path):
     e = _error(dialect, tmp_path, max_bytes=size - 1)
     assert e.code == "input_too_large"
     assert f"it is {size} bytes, more than the limit of {size - 1} bytes" in e.message
-    tc.run(_main(dialect), search_path=[tmp_path], max_bytes=size)  # at the limit: read
+    tc.run(_main(dialect), search_path=[tmp_path], max_bytes=size, start="machine_zero")  # at the limit: read
 
 
 @pytest.mark.parametrize("dialect", DIALECTS)
@@ -65,7 +65,7 @@ def test_max_bytes_holds_for_files_called_by_a_program_file(dialect, tmp_path):
     suffix = {"linuxcnc": ".ngc", "fanuc": ".nc", "heidenhain": ".h", "sinumerik": ".mpf"}[dialect]
     (tmp_path / ("main" + suffix)).write_text(main)
     with pytest.raises(tc.Error) as e:
-        tc.run(tmp_path / ("main" + suffix), search_path=[tmp_path / "subs"], max_bytes=len(main) + 1)
+        tc.run(tmp_path / ("main" + suffix), search_path=[tmp_path / "subs"], max_bytes=len(main) + 1, start="machine_zero")
     assert (e.value.code, e.value.line) == ("input_too_large", 2)
     with pytest.raises(tc.Error) as e:
         list(tc.iter_run(tmp_path / ("main" + suffix), search_path=[tmp_path / "subs"], max_bytes=len(main) + 1))
@@ -79,7 +79,7 @@ def test_max_line_length_holds_for_called_files(dialect, tmp_path):
     longest = max(len(line) for line in text.splitlines())
     e = _error(dialect, tmp_path, max_line_length=longest - 1)
     assert e.code == "line_too_long"
-    tc.run(_main(dialect), search_path=[tmp_path], max_line_length=longest)
+    tc.run(_main(dialect), search_path=[tmp_path], max_line_length=longest, start="machine_zero")
 
 
 def test_iter_run_of_a_program_holds_the_limits_too(tmp_path):
@@ -102,7 +102,7 @@ def test_a_link_out_of_the_search_directory_is_refused(dialect, tmp_path):
     e = _error(dialect, tmp_path / "subs")
     assert e.code == "outside_search_path"
     assert "follow_links=True" in e.message
-    res = tc.run(_main(dialect), search_path=[tmp_path / "subs"], follow_links=True)
+    res = tc.run(_main(dialect), search_path=[tmp_path / "subs"], follow_links=True, start="machine_zero")
     assert res.nominal.end[-1, 0] == 1.0
 
 
@@ -112,7 +112,7 @@ def test_a_link_within_the_search_directory_runs(dialect, tmp_path):
     (tmp_path / "lib").mkdir()
     (tmp_path / "lib" / "real_file").write_text(text)
     os.symlink("lib/real_file", tmp_path / name)  # relative, inside the search directory
-    res = tc.run(_main(dialect), search_path=[tmp_path])
+    res = tc.run(_main(dialect), search_path=[tmp_path], start="machine_zero")
     assert res.nominal.end[-1, 0] == 1.0
 
 
@@ -121,7 +121,7 @@ def test_a_search_directory_that_is_a_link_is_its_own_place(tmp_path):
     (tmp_path / "real").mkdir()
     (tmp_path / "real" / name).write_text(text)
     os.symlink(tmp_path / "real", tmp_path / "alias")
-    res = tc.run(_main("linuxcnc"), search_path=[tmp_path / "alias"])
+    res = tc.run(_main("linuxcnc"), search_path=[tmp_path / "alias"], start="machine_zero")
     assert res.nominal.end[-1, 0] == 1.0
 
 
@@ -130,7 +130,7 @@ def test_heidenhain_cannot_reach_the_root_through_a_link(tmp_path):
     prog = tc.Program.parse("0 BEGIN PGM MAIN MM\n1 CALL PGM TNC:\\root\\etc\\hostname\n2 END PGM MAIN MM\n",
                             dialect="heidenhain")
     with pytest.raises(tc.Error) as e:
-        tc.run(prog, search_path=[tmp_path])
+        tc.run(prog, search_path=[tmp_path], start="machine_zero")
     assert (e.value.code, e.value.line) == ("outside_search_path", 2)
 
 
@@ -142,7 +142,7 @@ def test_a_dangling_link_is_no_entry_and_the_search_goes_on(dialect, tmp_path):
     os.symlink(tmp_path / "nothing", tmp_path / "a" / name)
     (tmp_path / "b" / name).write_text(text)
     for follow in (False, True):
-        res = tc.run(_main(dialect), search_path=[tmp_path / "a", tmp_path / "b"], follow_links=follow)
+        res = tc.run(_main(dialect), search_path=[tmp_path / "a", tmp_path / "b"], follow_links=follow, start="machine_zero")
         assert res.nominal.end[-1, 0] == 1.0
         assert res.nominal.files[1].startswith(str(tmp_path / "b"))
 
@@ -174,7 +174,7 @@ def test_a_device_linked_into_the_search_directory(tmp_path):
 @pytest.mark.parametrize("search", [[""], ["subs", ""]])
 def test_an_empty_search_directory_is_refused(search):
     with pytest.raises(ValueError, match="empty directory name"):
-        tc.run(_main("linuxcnc"), search_path=search)
+        tc.run(_main("linuxcnc"), search_path=search, start="machine_zero")
     with pytest.raises(ValueError, match="empty directory name"):
         tc.iter_run(_main("linuxcnc"), search_path=search)
 
@@ -191,7 +191,7 @@ def test_sinumerik_picks_the_same_file_whatever_the_directory_order(tmp_path):
     (tmp_path / "l10.mpf").write_text("G1 X2 F100\nM17\n")
     (tmp_path / "l10.spf").write_text("G1 X1 F100\nM17\n")
     (tmp_path / "L10.Spf").write_text("G1 X4 F100\nM17\n")
-    res = tc.run(_main("sinumerik"), search_path=[tmp_path])
+    res = tc.run(_main("sinumerik"), search_path=[tmp_path], start="machine_zero")
     assert os.path.basename(res.nominal.files[1]) == "L10.Spf"
     np.testing.assert_array_equal(res.nominal.end[-1], [4, 0, 0])
 

@@ -27,11 +27,12 @@ def _tools(*numbers):
 
 
 def test_feed_move_takes_its_length_over_its_feed_and_a_dwell_adds_its_seconds():
-    res = _run("G21 G90 G94\nG1 X100 F600\nG4 P2.5\nG0 X0\nM2\n")
+    res = _run("G21 G90 G94\nG0 X0 Y0 Z0\nG1 X100 F600\nG4 P2.5\nG0 X0\nM2\n")
     d = res.path.duration
-    assert d.shape == (2,)
-    assert d[0] == pytest.approx(100 / 600 * 60)  # 10 s
-    assert d[1] == pytest.approx(100 / 10000 * 60)  # no machine: rapids at 10 m/min per axis
+    assert d.shape == (3,)
+    assert d[0] == 0  # the path starts at the first position: no way there
+    assert d[1] == pytest.approx(100 / 600 * 60)  # 10 s
+    assert d[2] == pytest.approx(100 / 10000 * 60)  # no machine: rapids at 10 m/min per axis
     assert res.dwell_time == pytest.approx(2.5)
     assert res.cycle_time == pytest.approx(10 + 0.6 + 2.5)
 
@@ -63,8 +64,8 @@ def test_arc_runs_at_its_feed_along_the_arc_capped_by_its_plane_axes():
 
 
 def test_feed_per_revolution_runs_at_feed_times_speed():
-    res = _run("G21 G90 G95\nS1000 M3\nG1 X100 F0.2\nM2\n")  # 0.2 mm/rev * 1000 rev/min
-    assert res.path.duration[0] == pytest.approx(100 / 200 * 60)
+    res = _run("G21 G90 G95\nS1000 M3\nG0 X0\nG1 X100 F0.2\nM2\n")  # 0.2 mm/rev * 1000 rev/min
+    assert res.path.duration[1] == pytest.approx(100 / 200 * 60)
 
 
 def test_tool_changes_count_each_new_tool_and_take_the_machine_time():
@@ -81,10 +82,13 @@ M2
     m = _machine(tool_change_time=4.0)
     res = _run(text, machine=m, tools=_tools(1, 2))
     assert res.path.tool_changes == 3
-    moves = res.path.duration.sum()
-    assert res.cycle_time == pytest.approx(moves + 3 * 4.0)
-    # Without a tool change time the changes are counted but take no time.
-    assert _run(text, tools=_tools(1, 2)).cycle_time == pytest.approx(moves)
+    # From the machine's zero: X10 at 10 m/min 0.06 s, X20 at 600 mm/min 1 s, X0 0.12 s, X10 0.06 s.
+    assert res.path.duration.sum() == pytest.approx(1.24)
+    assert res.cycle_time == pytest.approx(1.24 + 3 * 4.0)
+    # Without a machine the path starts at X10 and a tool change takes no time (counted still).
+    plain = _run(text, tools=_tools(1, 2))
+    assert plain.path.tool_changes == 3
+    assert plain.cycle_time == pytest.approx(1.18)
 
 
 def test_fanuc_dwell_p_is_milliseconds_and_x_seconds():

@@ -66,12 +66,12 @@ def random_contour(seed):
 
 def paths():
     tools = tc.ToolTable.read(ROOT / "examples/tools.tbl")
-    yield tc.run(ROOT / "examples/pocket.ngc", tools=tools).path
+    yield tc.run(ROOT / "examples/pocket.ngc", tools=tools, start="machine_zero").path
     yield tc.run(tc.Program.parse("G21 G17 G0 X10 Y0\nG1 Z0 F300\nG3 X10 Y0 Z-6 I-10 J0 P3 F200\n"
-                                  "G18 G2 X20 Z-6 I5 K0\nG19 G3 Y5 Z-1 J0 K5 P2\nG17 G2 X20 Y5 Z-3 I1 J-1 P4\nM2\n")).path
+                                  "G18 G2 X20 Z-6 I5 K0\nG19 G3 Y5 Z-1 J0 K5 P2\nG17 G2 X20 Y5 Z-3 I1 J-1 P4\nM2\n"), start="machine_zero").path
     table = tc.ToolTable.parse("T1 P1 D6.35 Z25.4\nT2 P2 D3\nT3 P3 D0.1\n", "linuxcnc")
     for seed in range(12):
-        res = tc.run(tc.Program.parse(random_contour(seed)), tools=table, strict=False)
+        res = tc.run(tc.Program.parse(random_contour(seed)), tools=table, strict=False, start="machine_zero")
         yield res.path
         yield res.nominal
 
@@ -108,7 +108,7 @@ def test_spelling_by_hand():
     # 0.0000015 just above; 2.5 with no decimals rounds to even; -0.0000004 is "-0.000000",
     # a zero once trimmed.
     res = tc.run(tc.Program.parse("G21 G0 X0.0000005 Y0.0000015 Z-0.0000004\nG1 X2.5 Y-0.4 F100.0000004\n"
-                                  "G1 X12.3456785 Y1000 Z0\nM2\n"))
+                                  "G1 X12.3456785 Y1000 Z0\nM2\n"), start="machine_zero")
     p = res.path
     assert to_gcode(p, comments=False).splitlines() == [
         "G21 G90 G94 G40 G17 G91.1", "G0 X0 Y0.000002", "G1 X2.5 Y-0.4 F100", "G1 X12.345678 Y1000", "M2"]
@@ -120,7 +120,7 @@ def test_spelling_by_hand():
 
 
 def test_bad_arguments():
-    p = tc.run(tc.Program.parse("G21 G1 X1 F100\nM2\n")).path
+    p = tc.run(tc.Program.parse("G21 G1 X1 F100\nM2\n"), start="machine_zero").path
     with pytest.raises(ValueError, match="digits must be 0..30"):
         to_gcode(p, digits=31)
     with pytest.raises(ValueError, match="unknown export dialect"):

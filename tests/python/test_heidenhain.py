@@ -13,7 +13,7 @@ def pgm(body, tools=None, strict=True):
     """A program with BEGIN PGM on line 1: the body's k-th line is source line k + 1."""
     lines = ["BEGIN PGM T MM"] + body.strip().splitlines() + ["END PGM T MM"]
     text = "\n".join(f"{i} {l.strip()}" for i, l in enumerate(lines))
-    return tc.run(tc.Program.parse(text, dialect="heidenhain"), tools=tools, strict=strict)
+    return tc.run(tc.Program.parse(text, dialect="heidenhain"), tools=tools, strict=strict, start="machine_zero")
 
 
 def ends(p, i=None):
@@ -193,7 +193,7 @@ L X+60 Y-40 R0
 def test_blank_and_units():
     text = "0 BEGIN PGM B INCH\n1 BLK FORM 0.1 Z X+0 Y+0 Z-1\n2 BLK FORM 0.2 X+4 Y+3 Z+0\n3 TOOL DEF 1 L+0 R+0\n4 TOOL CALL 1 Z\n5 L X+1 Y+1 Z+0 R0 F10\n6 END PGM B INCH\n"
     prog = tc.Program.parse(text, dialect="heidenhain")
-    res = tc.run(prog)
+    res = tc.run(prog, start="machine_zero")
     np.testing.assert_allclose(res.path.end[0], [25.4, 25.4, 0])
     assert res.path.feed[0] == pytest.approx(25.4)  # F in 1/10 inch/min
     np.testing.assert_allclose(res.blank, [[0, 0, -25.4], [101.6, 76.2, 0]])

@@ -13,6 +13,8 @@ R, F = tc.RAPID, tc.LINE
 
 
 def run(text, **kw):
+    # The points below count the first move from machine zero, where the run is told to start.
+    kw.setdefault("start", "machine_zero")
     return tc.run(tc.Program.parse(text, "heidenhain"), **kw)
 
 

@@ -14,7 +14,8 @@ def text(lines, eol="\n"):
 
 
 def run(src, strict=True):
-    return tc.run(tc.Program.parse(src, dialect="heidenhain", strict=strict), strict=strict)
+    # The points below count the first move from machine zero, where the run is told to start.
+    return tc.run(tc.Program.parse(src, dialect="heidenhain", strict=strict), strict=strict, start="machine_zero")
 
 
 @pytest.mark.parametrize("eol", ["\r", "\r\n", "\r\r\n"], ids=["cr", "crlf", "cr-cr-lf"])

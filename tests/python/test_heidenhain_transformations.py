@@ -19,6 +19,8 @@ def run(body, **kw):
     for b in lines:  # continuation lines (indented) carry no block number
         text += (b if b.startswith(" ") else f"{n} {b}") + "\n"
         n += not b.startswith(" ")
+    # The points below count the first move from machine zero, where the run is told to start.
+    kw.setdefault("start", "machine_zero")
     return tc.run(tc.Program.parse(text, "heidenhain"), **kw)
 
 

@@ -66,7 +66,7 @@ def test_m91_and_m92_positions_are_the_spindles_from_the_machine_datums():
 
 
 def test_without_a_machine_m91_is_measured_from_program_zero():
-    res = tc.run(tc.Program.parse(KLARTEXT, dialect="heidenhain"))
+    res = tc.run(tc.Program.parse(KLARTEXT, dialect="heidenhain"), start="machine_zero")
     # Machine zero at program zero: M91 Z-1 puts the tip at -1 - 100 = -101; M92's datum is
     # the machine's zero too.
     np.testing.assert_allclose(res.nominal.end[2], [10, 20, -101])
@@ -198,7 +198,7 @@ def test_without_a_machine_m91_and_m92_are_measured_from_the_preset():
     # The plain machine: its zero and the M92 datum at the preset. The spindle at Z+0 puts the
     # tip of the 100 mm tool at Z-100; M92 X+10 at X+10.
     res = tc.run(tc.Program.parse(KLARTEXT.replace("6 L Z-1", "6 L Z+0").replace("7 L X-50 Y-10", "7 L X+10 Y-10"),
-                                  dialect="heidenhain"))
+                                  dialect="heidenhain"), start="machine_zero")
     np.testing.assert_allclose(res.nominal.end[2:4], [[10, 20, -100], [10, -10, -100]])
 
 
@@ -208,7 +208,7 @@ def test_builder_cycles_declared_in_the_machine_file_run_without_moving():
     text = ("0 BEGIN PGM A MM\n1 CYCL DEF 392 ATC ~\n    Q240=+1 ;MODE ~\n    Q241=+2 ;LEVEL\n"
             "2 L X+Q241 Y+0 Z+0 R0 FMAX\n3 END PGM A MM\n")
     with pytest.raises(tc.ProgramError) as e:
-        tc.run(tc.Program.parse(text, dialect="heidenhain"))
+        tc.run(tc.Program.parse(text, dialect="heidenhain"), start="machine_zero")
     assert e.value.code == "unsupported_block" and "CYCL DEF 392 ATC" in e.value.message
     m = tc.Machine.parse('control = "heidenhain"\nkind = "mill"\n[cycles]\n392 = { action = "nothing", name = "ATC" }\n')
     assert m.cycles[392].name == "ATC"

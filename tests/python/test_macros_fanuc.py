@@ -14,6 +14,8 @@ import toolcomp as tc
 
 def run(text, **kw):
     prog = tc.Program.parse(textwrap.dedent(text), dialect="fanuc")
+    # The points below count the first move from machine zero, where the run is told to start.
+    kw.setdefault("start", "machine_zero")
     return tc.run(prog, **kw)
 
 
@@ -122,7 +124,7 @@ def test_subprogram_file_on_the_search_path(tmp_path):
     (tmp_path / "O1234.nc").write_text("O1234\nG91 G1 X5 F100\nM99\n")
     main = tmp_path / "main.nc"
     main.write_text("G21 G0 X0\nM98 P1234 L2\nG90 G0 Y1\nM30\n")
-    res = tc.run(tc.Program.read(str(main)), search_path=[str(tmp_path)])
+    res = tc.run(tc.Program.read(str(main)), search_path=[str(tmp_path)], start="machine_zero")
     assert ends(res) == [[0, 0, 0], [5, 0, 0], [10, 0, 0], [10, 1, 0]]
     assert res.path.file.tolist() == [0, 1, 1, 0]
     assert res.path.line.tolist() == [1, 2, 2, 3]

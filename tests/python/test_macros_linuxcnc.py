@@ -15,6 +15,8 @@ import toolcomp as tc
 
 def run(text, **kw):
     prog = tc.Program.parse(textwrap.dedent(text), dialect="linuxcnc")
+    # The points below count the first move from machine zero, where the run is told to start.
+    kw.setdefault("start", "machine_zero")
     return tc.run(prog, **kw)
 
 
@@ -323,7 +325,7 @@ def test_subroutine_files_on_the_search_path_carry_their_file_and_lines(tmp_path
     (tmp_path / "pocket.ngc").write_text("(a sub file)\no<pocket> sub\n  G1 X#1 F100\n  G1 Y#2\no<pocket> endsub\nM2\n")
     main = tmp_path / "main.ngc"
     main.write_text("G21\nG0 X0 Y0\no<Pocket> call [3] [4]\nG0 Z5\nM2\n")
-    res = tc.run(tc.Program.read(str(main)), search_path=[str(tmp_path)])
+    res = tc.run(tc.Program.read(str(main)), search_path=[str(tmp_path)], start="machine_zero")
     p = res.path
     assert ends(res).tolist() == [[0, 0, 0], [3, 0, 0], [3, 4, 0], [3, 4, 5]]
     assert p.line.tolist() == [2, 3, 4, 4]

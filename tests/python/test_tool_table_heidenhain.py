@@ -137,9 +137,9 @@ def test_a_locked_tool_is_refused(rt, tail):
     table = locked_table("L", rt)
     prog = "0 BEGIN PGM T MM\n1 TOOL CALL 1 Z\n2 L X+0 Y+0 Z+10 R0 FMAX\n3 END PGM T MM\n"
     with pytest.raises(tc.ProgramError) as e:
-        tc.run(tc.Program.parse(prog, "heidenhain"), tools=table)
+        tc.run(tc.Program.parse(prog, "heidenhain"), tools=table, start="machine_zero")
     assert e.value.code == "tool_locked" and e.value.line == 2 and tail in e.value.message  # file line 2
-    ok = tc.run(tc.Program.parse(prog.replace("CALL 1", "CALL 2"), "heidenhain"), tools=table)
+    ok = tc.run(tc.Program.parse(prog.replace("CALL 1", "CALL 2"), "heidenhain"), tools=table, start="machine_zero")
     assert ok.path.tool[-1] == 2
-    unlocked = tc.run(tc.Program.parse(prog, "heidenhain"), tools=locked_table(" ", rt))
+    unlocked = tc.run(tc.Program.parse(prog, "heidenhain"), tools=locked_table(" ", rt), start="machine_zero")
     assert unlocked.path.tool[-1] == 1

@@ -52,6 +52,10 @@ struct RunOptions {
     // `profile` is given; its builder M codes, origins, tool change position and travel
     // limits act in every dialect (doc/machines.md).
     std::shared_ptr<const Machine> machine;
+    // Where the axes stand when the program starts, machine coordinates (mm; a lathe's X a
+    // diameter, as the machine's). Not given: the machine's `start` when there is a machine,
+    // else where the program first sends each axis (first_positions(), start.cpp).
+    std::optional<Vec3> start;
     // Called with the number of blocks read (Heidenhain: executed) so far, every
     // `progress_every` blocks; may throw to stop the run.
     std::function<void(std::size_t)> progress;

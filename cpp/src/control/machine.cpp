@@ -113,6 +113,7 @@ void check_machine(const Machine& m) {
         finite("work_origin." + a, m.work_origin[i]);
         finite("g28." + a, m.g28[i]);
         finite("g30." + a, m.g30[i]);
+        finite("start." + a, m.start[i]);
         finite("m92." + a, m.m92[i]);
         if (m.tool_change[i]) finite("tool_change." + a, *m.tool_change[i]);
         const AxisTravel& t = m.travel[i];

@@ -41,6 +41,7 @@ void interpret_iso(const DialectRun& r) {
     iopts.progress_every = o.progress_every ? o.progress_every : 1;
     iopts.search = search_of(o);
     iopts.machine = o.machine.get();
+    iopts.start = o.start;
     iopts.parameters = o.parameters;
     iopts.probes = o.probes;
     iopts.next_piece = r.hooks.next_piece;
@@ -61,6 +62,7 @@ void interpret_sinumerik(const DialectRun& r) {
     s.progress_every = o.progress_every ? o.progress_every : 1;
     s.search = search_of(o);
     s.machine = o.machine.get();
+    s.start = o.start;
     sinumerik::interpret(r.program, r.tools, p, s, r.sink, r.diagnostics, &r.out);
 }
 
@@ -68,7 +70,7 @@ void interpret_heidenhain(const DialectRun& r) {
     const RunOptions& o = r.options;
     heidenhain::interpret(r.program, r.tools, r.profile, r.sink, r.diagnostics, o.progress,
                           o.progress_every ? o.progress_every : 1, search_of(o), &r.out, o.machine.get(),
-                          o.block_delete);
+                          o.block_delete, o.start);
 }
 
 constexpr DialectRow kDialects[] = {

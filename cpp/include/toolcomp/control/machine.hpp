@@ -103,6 +103,9 @@ struct Machine {
     std::array<double, 3> work_origin{0, 0, 0};
     // The G28 and G30 positions in machine coordinates (LinuxCNC #5161-#5163, #5181-#5183).
     std::array<double, 3> g28{0, 0, 0}, g30{0, 0, 0};
+    // Where the axes stand when a program starts, in machine coordinates (the reference
+    // point the machine is at after homing: its zero, unless the builder put it elsewhere).
+    std::array<double, 3> start{0, 0, 0};
     // Heidenhain: the additional machine datum the builder defines, in machine coordinates: a
     // positioning block with M92 is measured from it (with M91 from the machine's zero).
     std::array<double, 3> m92{0, 0, 0};

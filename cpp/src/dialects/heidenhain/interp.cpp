@@ -663,9 +663,10 @@ void Interp::call_program(Tokens t, int depth) {
 void interpret(const Program& program, const ToolTable* tools, const ControlProfile& profile, MotionSink& sink,
                std::vector<Diagnostic>& diagnostics, const std::function<void(std::size_t)>& progress,
                std::size_t progress_every, const SearchPath& search,
-               InterpretOutput* out, const Machine* machine, bool block_delete) {
+               InterpretOutput* out, const Machine* machine, bool block_delete, const std::optional<Vec3>& start) {
     Interp interp(program, tools, profile, sink, diagnostics, search);
     interp.set_machine(machine);
+    if (start) interp.set_start(*start);
     interp.skip_marked_blocks(block_delete);
     if (progress) interp.on_progress(progress, progress_every);
     run_reporting(interp, out, [](const Interp& i) { return InterpretOutput{i.files(), {}, {}, i.dwell_seconds()}; });

@@ -31,6 +31,7 @@ public:
     // The machine the program runs on (interp_machine.cpp): its builder M codes, work origin,
     // machine datums (M91, M92) and tool change position. The run starts at its zero.
     void set_machine(const Machine* m);
+    void set_start(const Vec3& machine);  // the axes at the start, machine coordinates (mm)
     void skip_marked_blocks(bool on) { block_delete_ = on; }  // the block skip '/'
     void run();
     const std::vector<std::string>& files() const { return files_.names(); }

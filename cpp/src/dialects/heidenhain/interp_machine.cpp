@@ -16,6 +16,8 @@ void Interp::set_machine(const Machine* m) {
     pos_ = -work_origin_;  // at the machine's zero, no tool yet
 }
 
+void Interp::set_start(const Vec3& machine) { pos_ = machine / unit_ - work_origin_; }
+
 // TNC: "coordinates in a positioning block with M91 are referenced to the machine datum
 // [with M92 to the additional machine datum]; radius compensation remains the same, the
 // tool length is not compensated" and M91/M92 act in their own block only. An axis given

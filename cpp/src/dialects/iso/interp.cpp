@@ -45,6 +45,11 @@ Interp::Interp(const Program& prog, const ToolTable* tools, const ControlProfile
     if (st_.motion != 800) plain_motion_ = st_.motion;
     load_parameters(opts.parameters);
     if (opts.machine) place_machine(*opts.machine, opts.parameters);
+    if (opts.start) {
+        Vec6 at = Vec6::Zero();
+        for (int j = 0; j < 3; ++j) at[j] = (*opts.start)[j] / machine_scale(j);
+        pos_ = from_machine(at);
+    }
     if (opts.machine && opts.machine->has_travel_limits()) travel_.emplace(*opts.machine);
 }
 

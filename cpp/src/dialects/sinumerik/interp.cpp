@@ -53,6 +53,11 @@ Interp::Interp(const Program& prog, const ToolTable* tools, const ControlProfile
         if (m->kind == MachineKind::lathe) work_origin_.x() /= 2;  // a lathe's machine X is a diameter
         pos_ = -work_origin_;
     }
+    if (opts_.start) {
+        Vec3 at = *opts_.start;
+        if (opts_.machine && opts_.machine->kind == MachineKind::lathe) at.x() /= 2;
+        pos_ = at - work_origin_;
+    }
 }
 
 void Interp::fail(const std::string& code, const std::string& msg, int column) const {

@@ -1,6 +1,7 @@
 #pragma once
 // The Heidenhain conversational interpreter: runs Klartext blocks and emits the Motion
 // stream (tool-centre requests for RL/RR, length offsets from TOOL CALL).
+#include <optional>
 #include <functional>
 #include <string>
 #include <vector>
@@ -31,6 +32,7 @@ void interpret(const Program& program, const ToolTable* tools, const ControlProf
                std::vector<Diagnostic>& diagnostics, const std::function<void(std::size_t)>& progress = {},
                std::size_t progress_every = 1 << 16, const SearchPath& search = {},
                InterpretOutput* out = nullptr, const Machine* machine = nullptr,
-               bool block_delete = false);  // skip the blocks marked '/'
+               bool block_delete = false,  // skip the blocks marked '/'
+               const std::optional<Vec3>& start = std::nullopt);  // the axes at the start, machine coordinates (mm)
 
 }  // namespace toolcomp::heidenhain

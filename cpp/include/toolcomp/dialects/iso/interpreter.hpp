@@ -36,6 +36,8 @@ struct InterpretOptions {
     // The machine the program runs on: its builder M codes, work origin, G28/G30 positions,
     // tool change position and travel limits (control/machine.hpp); nullptr: none.
     const Machine* machine = nullptr;
+    // Where the axes stand at the start, machine coordinates (mm); none: the machine's zero.
+    std::optional<Vec3> start;
     // A main program read in pieces (streaming): called when the blocks of the piece run out,
     // it returns the next piece, or nullptr at the end of the file. The piece stays valid
     // until the next call. Control structures (O-words, GOTO targets) must lie within a piece.

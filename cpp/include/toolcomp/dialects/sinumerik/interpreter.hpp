@@ -8,6 +8,7 @@
 // program itself writes into them ($P_UIFR, $P_IFRAME, $P_BFRAME) and the programmable frame
 // (TRANS, ROT, SCALE, MIRROR, their additive forms, G58/G59, $P_PFRAME) are applied. The table
 // zero-point shift of a type P toolholder (TCARR + TCOABS) is part of the output.
+#include <optional>
 #include <functional>
 #include <map>
 #include <string>
@@ -45,6 +46,7 @@ struct InterpretOptions {
     std::map<int, Toolholder> toolholders;      // $TC_CARR data known before the program starts
     int max_call_depth = 16;                    // program levels (main program included)
     const Machine* machine = nullptr;           // builder M codes (control/machine.hpp)
+    std::optional<Vec3> start;                  // the axes at the start, machine coordinates (mm)
 };
 
 // `out` (optional) receives the main program's name and each subprogram file's, in the
