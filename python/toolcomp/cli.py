@@ -6,8 +6,7 @@
 
 Diagnostics are printed as ``file:line:column: severity code message`` so editors and CI
 log parsers can jump to the block. Exit status: 0 when no diagnostic is an error, 1 when
-one is, 2 on usage errors (bad options, a program or table that cannot be read), 3 when
-the engine itself cannot be loaded.
+one is, 2 on usage errors (bad options, a program or table that cannot be read).
 """
 
 from __future__ import annotations
@@ -16,33 +15,23 @@ import argparse
 import json
 import os
 import sys
-import tempfile
 
 import numpy as np
 
+import toolcomp as tc
 from toolcomp import cli_stream
 
-EXIT_OK, EXIT_ERRORS, EXIT_USAGE, EXIT_ENGINE = 0, 1, 2, 3
+EXIT_OK, EXIT_ERRORS, EXIT_USAGE = 0, 1, 2
 
-try:  # the dialects and their suffixes: the engine's table (without the engine, _engine() says so)
-    from toolcomp._core import dialect_table as _dialect_table
-
-    _DIALECT_TABLE = _dialect_table()
-except ImportError:  # pragma: no cover
-    _DIALECT_TABLE = []
+_DIALECT_TABLE = tc._core.dialect_table()  # the dialects and their suffixes
 DIALECTS = tuple(row["name"] for row in _DIALECT_TABLE)
 SUFFIX_DIALECTS = {s: row["name"] for row in _DIALECT_TABLE for s in row["suffixes"]}
 ERROR_SEVERITIES = ("error", "fatal")
-INCH = 25.4
 MAX_COUNTED_BYTES = 2**31  # Program.read's default max_bytes
 
 
 class UsageError(Exception):
     """Bad input from the command line: reported as ``toolcomp: error: …``, exit 2."""
-
-
-class EngineUnavailable(Exception):
-    """The compiled engine cannot be imported (package not built): exit 3."""
 
 
 class Record:
@@ -56,14 +45,8 @@ class Record:
 
     @classmethod
     def of(cls, diag, file, severity=None):
-        sev = severity or _severity_name(getattr(diag, "severity", "error"))
-        message = getattr(diag, "message", None)
-        if message is None:  # an exception: str() is the message
-            message = str(diag)
-        return cls(getattr(diag, "file", None) or file,
-                   _int_or_none(getattr(diag, "line", None)),
-                   _int_or_none(getattr(diag, "column", None)),
-                   sev, str(getattr(diag, "code", "") or type(diag).__name__), str(message))
+        """A tc.Diagnostic, or a raised tc.Error (give its ``severity``: errors carry none)."""
+        return cls(diag.file or file, diag.line, diag.column, severity or diag.severity, diag.code, diag.message)
 
     @property
     def is_error(self):
@@ -78,24 +61,11 @@ class Record:
         return {k: getattr(self, k) for k in self.__slots__}
 
 
-def _int_or_none(v):
-    try:
-        return None if v is None else int(v)
-    except (TypeError, ValueError):
-        return None
-
-
 def _directory_name(v):
     """A --search-path value: a directory's name (an empty one would mean the working directory)."""
     if not v:
         raise argparse.ArgumentTypeError("an empty directory name; name the directory (e.g. '.')")
     return v
-
-
-def _severity_name(sev) -> str:
-    """'error' from 'error', Severity.error or an enum member; also used for dialects."""
-    name = getattr(sev, "name", None) or str(sev)
-    return name.rsplit(".", 1)[-1].lower()
 
 
 # ---------------------------------------------------------------------------------------
@@ -120,16 +90,6 @@ class Outcome:
         return any(r.is_error for r in self.records)
 
 
-def _engine():
-    try:
-        import toolcomp as tc
-        # the engine's names must be there, not just the package
-        tc.run, tc.Program, tc.ToolTable, tc.Error  # noqa: B018
-    except (ImportError, AttributeError) as exc:
-        raise EngineUnavailable(f"cannot load the toolcomp engine: {exc}") from exc
-    return tc
-
-
 def _check_readable(path, what):
     if not os.path.exists(path):
         raise UsageError(f"{what} '{path}' does not exist")
@@ -139,43 +99,9 @@ def _check_readable(path, what):
         raise UsageError(f"{what} '{path}' is not readable")
 
 
-def _metric_copy_of_tbl(path):
-    """A LinuxCNC .tbl in inches rewritten in mm (offsets X..W and diameter D)."""
-    out = []
-    with open(path, encoding="utf-8", errors="replace") as f:
-        for raw in f:
-            body, sep, comment = raw.rstrip("\n").partition(";")
-            words = []
-            for w in body.split():
-                if w[:1].upper() in "XYZUVWD" and len(w) > 1:
-                    try:
-                        w = f"{w[0]}{float(w[1:]) * INCH:.6f}"
-                    except ValueError:
-                        pass
-                words.append(w)
-            out.append(" ".join(words) + (" " + sep + comment if sep else "") + "\n")
-    fd, tmp = tempfile.mkstemp(suffix=".tbl", prefix="toolcomp-mm-")
-    with os.fdopen(fd, "w", encoding="utf-8") as f:
-        f.writelines(out)
-    return tmp
-
-
 def _read_tools(tc, path, units):
-    if units is None:
-        return tc.ToolTable.read(path)
-    try:
-        return tc.ToolTable.read(path, units=units)
-    except TypeError:
-        pass  # this engine reads tables without a units option: convert the file here
-    if units == "mm":
-        return tc.ToolTable.read(path)
-    if not path.lower().endswith(".tbl"):
-        raise UsageError("--units-table inch is supported for LinuxCNC .tbl tables only")
-    tmp = _metric_copy_of_tbl(path)
-    try:
-        return tc.ToolTable.read(tmp)
-    finally:
-        os.unlink(tmp)
+    """The table at ``path``, its lengths in ``units`` (None: the table's own)."""
+    return tc.ToolTable.read(path) if units is None else tc.ToolTable.read(path, units=units)
 
 
 PROGRESS_MIN_BLOCKS = 1_000_000  # on a terminal, a bar for runs (blocks) and plots (segments) this long
@@ -275,7 +201,6 @@ def execute(program_file, tools_file=None, dialect=None, units_table=None, searc
         _check_readable(tools_file, "tool table")
     if parameters is not None:
         _check_readable(parameters, "parameter file")
-    tc = _engine()
     dialect = dialect or SUFFIX_DIALECTS.get(os.path.splitext(program_file)[1].lower())
     out = Outcome(program_file, dialect)
 
@@ -311,8 +236,7 @@ def execute(program_file, tools_file=None, dialect=None, units_table=None, searc
 
     try:
         out.program = tc.Program.read(program_file, **kwargs)
-        name = getattr(out.program, "dialect", None)
-        out.dialect = _severity_name(name) if name is not None else dialect
+        out.dialect = out.program.dialect
         source = out.program
     except tc.Error as exc:
         # A program that does not parse as a whole may still run up to the bad block
@@ -333,11 +257,6 @@ def execute(program_file, tools_file=None, dialect=None, units_table=None, searc
             bar.update(bar.total - bar.n)
     except tc.Error as exc:
         out.records.append(Record.of(parse_error or exc, program_file, "error"))
-        return out
-    except TypeError:
-        if parse_error is None:
-            raise
-        out.records.append(Record.of(parse_error, program_file, "error"))
         return out
     finally:
         if bar is not None:
@@ -480,14 +399,14 @@ class CsvWriter:
 
     @staticmethod
     def _header():
-        return _engine()._core._csv_header
+        return tc._core._csv_header
 
     def add(self, path) -> None:
         from toolcomp.plot import path_size
 
         self._open()
         n = path_size(path) if path is not None else 0
-        core = _engine()._core
+        core = tc._core
         # A block of rows at a time: the text of a whole path would take many times its memory.
         for a in range(0, n, CSV_ROWS_AT_ONCE):
             self._file.write(core._csv_rows(path, a, min(n, a + CSV_ROWS_AT_ONCE), self.rows + a))
@@ -688,9 +607,6 @@ def main(argv=None) -> int:
     except UsageError as exc:
         print(f"toolcomp {args.command}: error: {exc}", file=sys.stderr)
         return EXIT_USAGE
-    except EngineUnavailable as exc:
-        print(f"toolcomp: error: {exc}", file=sys.stderr)
-        return EXIT_ENGINE
     except OSError as exc:  # output files that cannot be written
         print(f"toolcomp {args.command}: error: {exc}", file=sys.stderr)
         return EXIT_USAGE

@@ -531,11 +531,6 @@ def _plane_axes(plane):
         raise ValueError(f"plane must be one of {sorted(PLANES)}, not {plane!r}") from None
 
 
-def _severity_name(sev) -> str:
-    name = getattr(sev, "name", None) or str(sev)
-    return name.rsplit(".", 1)[-1].lower()
-
-
 def _diagnostic_position(diag, path_points, line_col, last_point):
     """Where to mark a diagnostic: the start of the first segment of its line; an error
     after the last segment (the control stopped there) at the end of the path."""
@@ -546,7 +541,7 @@ def _diagnostic_position(diag, path_points, line_col, last_point):
         hits = np.nonzero(line_col == line)[0]
         if len(hits):
             return path_points[hits[0]]
-    if _severity_name(getattr(diag, "severity", "")) in ("error", "fatal") and last_point is not None:
+    if diag.severity == "error" and last_point is not None:
         return last_point
     return None
 
@@ -708,7 +703,7 @@ def _plot_result(result, ax=None, plane="xy", show_nominal=True, tolerance=None,
         pos = _diagnostic_position(d, starts, line_col, last_point)
         if pos is None:
             continue
-        sev = _severity_name(getattr(d, "severity", "note"))
+        sev = d.severity
         style = _SEVERITY_STYLE.get(sev, dict(marker="o", color="steelblue", s=45))
         ax.scatter([pos[h]], [pos[v]], zorder=6, edgecolors="white", linewidths=0.6,
                    label=sev if sev not in labelled else None, **style)
