@@ -29,85 +29,109 @@ std::optional<Element2> RadiusCompensation::held_element() const {
     return Element2::line(start, c);
 }
 
+namespace {
+// A piece the compensation inserts at a corner: the move's data, no turns, no centre.
+Motion corner_piece(const Motion& m) {
+    Motion piece = m;
+    piece.generated = true;
+    piece.turns = 0;
+    piece.center = Vec3::Constant(std::nan(""));
+    return piece;
+}
+}  // namespace
+
 // Fill the gap of an outside corner between the held element (ending at C) and the next
-// element's equidistant `next` (starting at `mid`). `turn` is the turning angle (> 0).
+// element's equidistant `next` (starting at `mid`). `turn` is the turning angle (> 0). The
+// strategies in the order they are tried: meet at the intersection (M97, or the profile's
+// choice within its corner limit), the DISC fillet; then, the held move ending at C, the
+// extension blocks, a straight rapid or the transition arc.
 void RadiusCompensation::outside_corner(const Motion& m, const Vec2& P, const Element2& next, double turn,
                                         bool check_held) {
     const RadiusRules& rules = profile_.radius;
-    const Vec2 C = plane2(current_);
-    const Vec2 mid = next.p0;
     const auto held = held_element();
     // Heidenhain M97 in the block before the corner: meet at the intersection, whatever the angle.
     const bool m97 = !queue_.empty() && queue_.front().m.radius.corner == static_cast<int>(OutsideCorner::intersection);
-    if ((m97 || (outside_ != OutsideCorner::arc && turn <= rules.corner_limit)) && held) {
-        // Meet where the two equidistants (extended) cross, nearest to the programmed corner.
-        auto xs = intersect(*held, next);
-        if (!xs.empty()) {
-            Vec2 v = xs[0];
-            for (const Vec2& x : xs)
-                if ((x - P).norm() < (v - P).norm()) v = x;
-            move_end_and_flush(v, m.line, /*check=*/false);
-            return;
-        }
-    }
-    if (outside_ == OutsideCorner::arc && disc_ > 0 && held && !held->is_arc && !next.is_arc &&
-        m.kind != MotionKind::rapid) {
-        // DISC: a fillet of radius r(1 - k) between the extended equidistants, k = DISC/100.
-        auto xs = intersect(*held, next);
-        if (!xs.empty()) {
-            const double k = std::min(disc_, 100.0) / 100;
-            const Vec2 v = xs[0];
-            const Vec2 t1 = C + k * (v - C), t2 = mid + k * (v - mid);
-            move_end_and_flush(t1, m.line, /*check=*/false);
-            if (k < 1) {
-                Motion fillet = m;
-                fillet.generated = true;
-                fillet.turns = 0;
-                fillet.kind = side_ > 0 ? MotionKind::arc_cw : MotionKind::arc_ccw;
-                fillet.end = with_plane(current_, t2);
-                fillet.center = with_plane(current_, t1 + (1 - k) * (P - C));
-                hold(fillet, Vec2::Zero(), 0);
-                flush();
-            }
-            endpoint_ = t2;
-            endpoint_valid_ = true;
-            return;
-        }
-    }
+    const bool intersection = m97 || (outside_ != OutsideCorner::arc && turn <= rules.corner_limit);
+    if (held && intersection && meet_at_intersection(m, P, *held, next)) return;
+    const bool disc = outside_ == OutsideCorner::arc && disc_ > 0 && m.kind != MotionKind::rapid;
+    if (held && disc && !held->is_arc && !next.is_arc && disc_fillet(m, P, *held, next)) return;
     if (check_held)
-        move_end_and_flush(C, m.line);
+        move_end_and_flush(plane2(current_), m.line);
     else
         flush();
-    Motion fill = m;
-    fill.generated = true;
-    fill.turns = 0;
-    fill.center = Vec3::Constant(std::nan(""));
-    if (outside_ == OutsideCorner::extension && held && turn > rules.corner_limit) {
-        // Extend both elements by r along their tangents and join the extensions.
-        const Vec2 e1 = C + r_ * held->end_tangent(), e2 = mid - r_ * next.start_tangent();
-        if (m.kind != MotionKind::rapid) fill.kind = MotionKind::line;
-        // A middle block shorter than the minimum in both axes is dropped; the last block then
-        // runs from the first extension straight to the next element's start.
-        const double min_len = rules.extension_min_length / m.unit;
-        const bool drop_middle = min_len > 0 && std::fabs(e2.x() - e1.x()) < min_len && std::fabs(e2.y() - e1.y()) < min_len;
-        std::vector<Vec2> points{e1, e2, mid};
-        if (drop_middle) points.erase(points.begin() + 1);
-        for (const Vec2& pt : points) {
-            fill.end = with_plane(current_, pt);
-            hold(fill, Vec2::Zero(), 0);
-        }
-    } else if (m.kind == MotionKind::rapid) {  // no arc traverse exists: a straight one
-        fill.end = with_plane(current_, mid);
-        hold(fill, Vec2::Zero(), 0);
-    } else {  // transition arc of the tool radius about the programmed corner
-        fill.kind = side_ > 0 ? MotionKind::arc_cw : MotionKind::arc_ccw;
-        fill.end = with_plane(current_, mid);
-        fill.center = with_plane(current_, P);
-        hold(fill, Vec2::Zero(), 0);
-    }
+    if (outside_ == OutsideCorner::extension && held && turn > rules.corner_limit)
+        extension_blocks(m, *held, next);
+    else if (m.kind == MotionKind::rapid)
+        hold_piece(corner_piece(m), next.p0);  // no arc traverse exists: a straight one
+    else
+        transition_arc(m, P, next.p0);
     flush();
-    endpoint_ = mid;
+    endpoint_ = next.p0;
     endpoint_valid_ = true;
+}
+
+// Where the two equidistants (extended) cross, nearest to the programmed corner P; false
+// when they do not.
+bool RadiusCompensation::meet_at_intersection(const Motion& m, const Vec2& P, const Element2& held,
+                                              const Element2& next) {
+    auto xs = intersect(held, next);
+    if (xs.empty()) return false;
+    Vec2 v = xs[0];
+    for (const Vec2& x : xs)
+        if ((x - P).norm() < (v - P).norm()) v = x;
+    move_end_and_flush(v, m.line, /*check=*/false);
+    return true;
+}
+
+// DISC (Sinumerik): a fillet of radius r(1 - k) between the extended equidistants of two
+// lines, k = DISC/100; false when they do not cross.
+bool RadiusCompensation::disc_fillet(const Motion& m, const Vec2& P, const Element2& held, const Element2& next) {
+    auto xs = intersect(held, next);
+    if (xs.empty()) return false;
+    const Vec2 C = plane2(current_), mid = next.p0;
+    const double k = std::min(disc_, 100.0) / 100;
+    const Vec2 v = xs[0];
+    const Vec2 t1 = C + k * (v - C), t2 = mid + k * (v - mid);
+    move_end_and_flush(t1, m.line, /*check=*/false);
+    if (k < 1) {
+        Motion fillet = corner_piece(m);
+        fillet.kind = side_ > 0 ? MotionKind::arc_cw : MotionKind::arc_ccw;
+        fillet.center = with_plane(current_, t1 + (1 - k) * (P - C));
+        hold_piece(fillet, t2);
+        flush();
+    }
+    endpoint_ = t2;
+    endpoint_valid_ = true;
+    return true;
+}
+
+// Both elements extended by r along their tangents and the extensions joined (Fanuc type
+// C); a middle block shorter than the minimum in both axes is dropped, the last block then
+// running from the first extension straight to the next element's start.
+void RadiusCompensation::extension_blocks(const Motion& m, const Element2& held, const Element2& next) {
+    const Vec2 C = plane2(current_), mid = next.p0;
+    const Vec2 e1 = C + r_ * held.end_tangent(), e2 = mid - r_ * next.start_tangent();
+    Motion piece = corner_piece(m);
+    if (m.kind != MotionKind::rapid) piece.kind = MotionKind::line;
+    const double min_len = profile_.radius.extension_min_length / m.unit;
+    const bool drop_middle = min_len > 0 && std::fabs(e2.x() - e1.x()) < min_len && std::fabs(e2.y() - e1.y()) < min_len;
+    std::vector<Vec2> points{e1, e2, mid};
+    if (drop_middle) points.erase(points.begin() + 1);
+    for (const Vec2& pt : points) hold_piece(piece, pt);
+}
+
+// The transition arc of the tool radius about the programmed corner P (LinuxCNC).
+void RadiusCompensation::transition_arc(const Motion& m, const Vec2& P, const Vec2& mid) {
+    Motion arc = corner_piece(m);
+    arc.kind = side_ > 0 ? MotionKind::arc_cw : MotionKind::arc_ccw;
+    arc.center = with_plane(current_, P);
+    hold_piece(arc, mid);
+}
+
+// Holds `piece` ending at `at` (in the plane; off it where the move stands).
+void RadiusCompensation::hold_piece(Motion piece, const Vec2& at) {
+    piece.end = with_plane(current_, at);
+    hold(piece, Vec2::Zero(), 0);
 }
 
 // Heidenhain M98 on the held move: both elements end and start perpendicular to themselves

@@ -67,6 +67,12 @@ private:
                               const Vec2& p);
     std::optional<Element2> held_element() const;
     void outside_corner(const Motion& m, const Vec2& P, const Element2& next, double turn, bool check_held);
+    // the outside corner's strategies (radius_joints.cpp)
+    bool meet_at_intersection(const Motion& m, const Vec2& P, const Element2& held, const Element2& next);
+    bool disc_fillet(const Motion& m, const Vec2& P, const Element2& held, const Element2& next);
+    void extension_blocks(const Motion& m, const Element2& held, const Element2& next);
+    void transition_arc(const Motion& m, const Vec2& P, const Vec2& mid);
+    void hold_piece(Motion piece, const Vec2& at);
     bool close_open_entry(const Vec2& mid);
     bool open_corner(const Motion& m, const Vec2& mid);
     void turn_off(int line, bool cancel = true);
