@@ -132,10 +132,10 @@ void RadiusCompensation::push(const Motion& m) {
     checks_ = m.radius.checks;
     lookahead_ = m.radius.lookahead;
     const RadiusRules& rules = profile_.radius;
-    entry_ = m.radius.entry >= 0 ? static_cast<EntryStyle>(m.radius.entry) : rules.entry;
-    outside_ = m.radius.outside >= 0 ? static_cast<OutsideCorner>(m.radius.outside) : rules.outside_corner;
-    gouge_ = m.radius.gouge >= 0 ? static_cast<GougeReaction>(m.radius.gouge) : rules.gouge;
-    disc_ = m.radius.disc >= 0 ? m.radius.disc : rules.disc;
+    entry_ = m.radius.entry.value_or(rules.entry);
+    outside_ = m.radius.outside.value_or(rules.outside_corner);
+    gouge_ = m.radius.gouge.value_or(rules.gouge);
+    disc_ = m.radius.disc ? *m.radius.disc : rules.disc;
     if (active_ && m.radius.side != 0 && m.radius.radius <= 0) turn_off(m.line, /*cancel=*/false);  // radius 0 (T00)
     if (m.is_arc() && (arc_not_allowed_ || exit_open_))
         fail(code::comp_exit_arc, profile_.radius.messages.exit_arc, m.line);
@@ -263,9 +263,8 @@ void RadiusCompensation::control(const ControlEvent& e) {
                     queue_.pop_back();  // the virtual element itself is not cut
                 }
             }
-            const ExitStyle exit = !queue_.empty() && queue_.front().m.radius.exit >= 0
-                                       ? static_cast<ExitStyle>(queue_.front().m.radius.exit)
-                                       : profile_.radius.exit;
+            const ExitStyle exit = !queue_.empty() && queue_.front().m.radius.exit ? *queue_.front().m.radius.exit
+                                                                                   : profile_.radius.exit;
             if (active_ && exit != ExitStyle::perpendicular_to_last && !queue_.empty()) {
                 exit_open_ = true;  // settled by the cancel move
                 exit_when_behind_ = exit == ExitStyle::around_end_when_behind;

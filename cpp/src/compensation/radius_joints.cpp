@@ -50,7 +50,7 @@ void RadiusCompensation::outside_corner(const Motion& m, const Vec2& P, const El
     const RadiusRules& rules = profile_.radius;
     const auto held = held_element();
     // Heidenhain M97 in the block before the corner: meet at the intersection, whatever the angle.
-    const bool m97 = !queue_.empty() && queue_.front().m.radius.corner == static_cast<int>(OutsideCorner::intersection);
+    const bool m97 = !queue_.empty() && queue_.front().m.radius.corner_at_intersection;
     const bool intersection = m97 || (outside_ != OutsideCorner::arc && turn <= rules.corner_limit);
     if (held && intersection && meet_at_intersection(m, P, *held, next)) return;
     const bool disc = outside_ == OutsideCorner::arc && disc_ > 0 && m.kind != MotionKind::rapid;

@@ -10,7 +10,9 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 
+#include "toolcomp/compensation/radius_styles.hpp"
 #include "toolcomp/geometry/arc.hpp"
 #include "toolcomp/geometry/vec.hpp"
 
@@ -24,20 +26,20 @@ struct RadiusRequest {
     double radius = 0;        // program units
     std::int8_t orientation = 0;  // lathe tip number, 0 = none
     bool checks = true;           // gouge and interference checks on (9/Series M800 turns them off)
-    // Block-local overrides (Heidenhain M97 / M98 / M120): the outside corner after this move
-    // (-1: the profile's; else an OutsideCorner value, met at the intersection), an open
-    // contour corner after this move, and a look-ahead that skips what the tool cannot reach.
-    std::int8_t corner = -1;
+    // Block-local (Heidenhain M97 / M98 / M120): the outside corner after this move met at
+    // the intersection of the equidistants whatever its angle (M97), an open contour corner
+    // after it (M98), a look-ahead that skips what the tool cannot reach (M120).
+    bool corner_at_intersection = false;
     bool open_corner = false;
     std::int8_t lookahead = 0;
     // Modal choices a program switches (Sinumerik NORM/KONT, G450/G451, DISC, CDON/CDOF);
-    // negative: the profile's. `entry` is read on the activation move, the others at the
-    // corner before this move.
-    std::int8_t entry = -1;    // EntryStyle
-    std::int8_t exit = -1;     // ExitStyle (read on the last compensated move)
-    std::int8_t outside = -1;  // OutsideCorner
-    std::int8_t gouge = -1;    // GougeReaction
-    float disc = -1;           // DISC 0..100
+    // none: the profile's. `entry` is read on the activation move, `exit` on the last
+    // compensated move, the others at the corner before this move.
+    std::optional<EntryStyle> entry;
+    std::optional<ExitStyle> exit;
+    std::optional<OutsideCorner> outside;
+    std::optional<GougeReaction> gouge;
+    std::optional<float> disc;  // DISC 0..100
 };
 
 // 3D compensation requested for a move (Heidenhain LN): the surface normal at its end and

@@ -113,7 +113,7 @@ void Interp::m_function(Tokens t, const Token& k) {
         if (m < 0) return;
     }
     switch (m) {
-        case 97: corner_ = static_cast<std::int8_t>(OutsideCorner::intersection); break;
+        case 97: m97_ = true; break;
         case 98: open_corner_ = true; break;
         case 120: {
             const Token* la = find(t, "LA");
@@ -177,7 +177,7 @@ Motion Interp::motion_to(MotionKind kind, const Vec3& end) const {
     if (m.is_arc() && !frame().conformal_in(m.plane))
         fail(code::scaling_refused, "An arc under axis-specific scaling (CYCL DEF 26) with different factors in its plane "
                                     "would be an ellipse: the TNC refuses it");
-    m.radius.corner = corner_;
+    m.radius.corner_at_intersection = m97_;
     m.radius.open_corner = open_corner_;
     m.radius.lookahead = static_cast<std::int8_t>(lookahead_);
     return m;
@@ -321,7 +321,7 @@ bool is_sysread(std::string_view text) {
 bool Interp::execute(Tokens t) {
     const std::string_view k0 = t[0].key;
     const std::string_view k1 = t.size() > 1 ? std::string_view(t[1].key) : std::string_view();
-    corner_ = -1;
+    m97_ = false;
     open_corner_ = false;
     rapid_ = false;
     cycle_call_pending_ = false;

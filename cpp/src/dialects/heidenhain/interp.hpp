@@ -221,7 +221,7 @@ private:
     double radius_ = 0;  // effective tool radius, program units
     Vec3 tlo_ = Vec3::Zero();
     std::map<int, ToolDef> defs_;
-    std::int8_t corner_ = -1;  // M97 in this block
+    bool m97_ = false;         // M97 in this block
     bool open_corner_ = false; // M98 in this block
     int lookahead_ = 0;        // M120 LA n, modal until R0
     bool m128_ = false;        // M128: tool orientation follows the program (TCPM)

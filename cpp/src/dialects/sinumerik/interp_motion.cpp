@@ -122,12 +122,11 @@ RadiusRequest Interp::radius_request() const {
         const int tip = int_value(active_->DP(2));
         r.orientation = static_cast<std::int8_t>(tip >= 0 && tip <= 9 ? tip : 0);
     }
-    r.entry = static_cast<std::int8_t>(st_.entry);
-    if (st_.entry == static_cast<int>(EntryStyle::around_start_when_behind))
-        r.exit = static_cast<std::int8_t>(ExitStyle::around_end_when_behind);
-    r.outside = static_cast<std::int8_t>(st_.outside);
-    r.gouge = static_cast<std::int8_t>(st_.gouge);
-    r.disc = static_cast<float>(st_.disc);
+    if (st_.entry >= 0) r.entry = static_cast<EntryStyle>(st_.entry);
+    if (r.entry == EntryStyle::around_start_when_behind) r.exit = ExitStyle::around_end_when_behind;
+    if (st_.outside >= 0) r.outside = static_cast<OutsideCorner>(st_.outside);
+    if (st_.gouge >= 0) r.gouge = static_cast<GougeReaction>(st_.gouge);
+    if (st_.disc >= 0) r.disc = static_cast<float>(st_.disc);
     return r;
 }
 
