@@ -61,6 +61,19 @@ class Record:
         return {k: getattr(self, k) for k in self.__slots__}
 
 
+def _start_position(v):
+    """A --start value: machine_zero, or X,Y,Z in mm."""
+    if v == "machine_zero":
+        return v
+    try:
+        xyz = tuple(float(c) for c in v.split(","))
+    except ValueError:
+        xyz = ()
+    if len(xyz) != 3:
+        raise argparse.ArgumentTypeError(f"expected machine_zero or X,Y,Z (mm), not {v!r}")
+    return xyz
+
+
 def _directory_name(v):
     """A --search-path value: a directory's name (an empty one would mean the working directory)."""
     if not v:
@@ -188,7 +201,7 @@ def _plot_progress(segments, stream=None, force=None):
 
 
 def execute(program_file, tools_file=None, dialect=None, units_table=None, search_path=(),
-            parameters=None, whole_path=True, csv=None, machine=None, progress=None) -> Outcome:
+            parameters=None, whole_path=True, csv=None, machine=None, progress=None, start=None) -> Outcome:
     """Read the program and tool table and run it with ``strict=False``; every problem
     becomes a diagnostic record. Raises UsageError for unreadable inputs. ``whole_path=False``
     (the caller needs the records, the summary and at most ``csv``, a CsvWriter): a large
@@ -216,6 +229,8 @@ def execute(program_file, tools_file=None, dialect=None, units_table=None, searc
     run_kwargs = {} if tools is None else {"tools": tools}
     if search_path:
         run_kwargs["search_path"] = list(search_path)
+    if start is not None:
+        run_kwargs["start"] = start
     if machine is not None:
         try:
             run_kwargs["machine"] = machine if machine in ("mill", "lathe") else tc.machine.resolve(machine)
@@ -451,7 +466,7 @@ def cmd_run(args) -> int:
     try:
         out = execute(args.program, args.tools, args.dialect, args.units_table, args.search_path,
                       args.parameters, whole_path=bool(args.plot), csv=writer, machine=args.machine,
-                      progress=args.progress)
+                      progress=args.progress, start=args.start)
         if writer is not None and not out.streamed:
             writer.add(out.result.path if out.result is not None else None)
     except BaseException:
@@ -489,7 +504,7 @@ def cmd_check(args) -> int:
     for p in args.programs:
         _check_readable(p, "program")
     outcomes = [execute(p, args.tools, args.dialect, args.units_table, args.search_path, args.parameters,
-                        machine=args.machine,
+                        machine=args.machine, start=args.start,
                         whole_path=False) for p in args.programs]
     if args.format == "json":
         doc = [{"program": o.program_file, "ok": not o.has_errors,
@@ -504,7 +519,7 @@ def cmd_check(args) -> int:
 
 def cmd_export(args) -> int:
     out = execute(args.program, args.tools, args.dialect, args.units_table, args.search_path, args.parameters,
-                  machine=args.machine)
+                  machine=args.machine, start=args.start)
     if out.has_errors or out.result is None:
         # A program the control refuses has no compensated path to export.
         for r in out.records:
@@ -556,6 +571,10 @@ def build_parser() -> argparse.ArgumentParser:
         sp.add_argument("--machine", metavar="NAME|FILE.toml",
                         help="the machine the program runs on: a preset (haas-mill, haas-lathe, fanuc-lathe, ...) "
                              "or a machine file; builder M codes, positions and travel limits act")
+        sp.add_argument("--start", metavar="machine_zero|X,Y,Z", type=_start_position,
+                        help="where the axes stand when the program starts, machine coordinates in mm "
+                             "(default: the machine's start, or without --machine where the program first "
+                             "sends each axis)")
         sp.add_argument("--parameters", metavar="FILE.var",
                         help="LinuxCNC parameter file: the numbered parameters the program starts from")
 

@@ -1,6 +1,8 @@
 """Where a path starts: without a machine, each axis where the program first sends it; with
 a machine, at the machine's start (its zero unless its file says otherwise); start= says it
 for a run. Numbers worked by hand from the programs."""
+import math
+
 import numpy as np
 import pytest
 
@@ -119,3 +121,26 @@ def test_machine_file_start_reads_and_writes_back():
     m = tc.Machine.parse('control = "linuxcnc"\n[positions]\nstart = [-10, -20, 0]\n')
     assert list(m.start) == [-10, -20, 0]
     assert list(tc.Machine.parse(m.dumps()).start) == [-10, -20, 0]
+
+
+def test_the_command_line_takes_the_start(tmp_path):
+    import json
+    import subprocess
+    import sys
+
+    f = tmp_path / "part.ngc"
+    f.write_text("G21 G90\nG0 X10 Y20\nG1 X30 F100\nM2\n")
+
+    def rapid_length(*opts):
+        out = tmp_path / "s.json"
+        r = subprocess.run([sys.executable, "-m", "toolcomp", "run", str(f), "--json", str(out), *opts],
+                           capture_output=True, text=True)
+        assert r.returncode == 0, r.stderr
+        return json.loads(out.read_text())["length_mm"]["rapid"]
+
+    assert rapid_length() == 0  # the path starts at X10 Y20, the first position
+    assert rapid_length("--start", "machine_zero") == pytest.approx(math.hypot(10, 20))
+    assert rapid_length("--start", "13,24,0") == pytest.approx(5)  # from (13, 24): 3-4-5
+    r = subprocess.run([sys.executable, "-m", "toolcomp", "run", str(f), "--start", "1,2"],
+                       capture_output=True, text=True)
+    assert r.returncode == 2 and "X,Y,Z" in r.stderr
