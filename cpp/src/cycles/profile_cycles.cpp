@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "profile_geometry.hpp"
@@ -205,10 +206,16 @@ void Rougher::run(int variant, Point at) {
             variant = 3;
         }
         bool pocket = false;
+        std::size_t last_p = pieces_.size();  // the turn before's piece, tool and level
+        Point last_at = at;
+        double last_x = std::numeric_limits<double>::quiet_NaN();
         while (p < pieces_.size() && !pocket) {
-            if (++spins_ > 50'000'000)
+            // A turn that leaves the piece, the tool and the level as they were repeats itself
+            // for ever (the loop depends on nothing else); the count is the backstop.
+            if (++spins_ > 50'000'000 || (p == last_p && at == last_at && x == last_x))
                 geometry_error("the cycle does not end: no level is cut from Z" + std::to_string(real(at)) +
                                " (normal frame) and the level does not drop (LinuxCNC loops here forever)");
+            last_p = p, last_at = at, last_x = x;
             x = next_level(x, at);
             if (dive(p, at, x)) {  // the profile rises from here
                 if (variant == 1) {
