@@ -3,6 +3,8 @@ Result.cycle_time, from the feeds and the machine's rates (doc/cycle-time.md). E
 number is worked by hand: minutes = mm / (mm/min), times 60."""
 import math
 
+import numpy as np
+
 import pytest
 
 import toolcomp as tc
@@ -126,3 +128,43 @@ def test_machine_file_tool_change_time_reads_and_writes_back():
     assert tc.Machine.parse(m.dumps()).tool_change_time == 3.5
     with pytest.raises(tc.ParseError, match="tool_change"):
         tc.Machine.parse('control = "fanuc"\n[rates]\ntool_change = -1\n')
+
+
+HAAS_INCH = """%
+O1001 (TWO HOLES, AS A HAAS POST WRITES THEM)
+(T1 D=0.25 CARBIDE DRILL)
+G20 G17 G40 G49 G80 G90
+T1 M06
+G00 G90 G54 X1. Y1. S2000 M03
+G43 H01 Z1. M08
+G81 G98 Z-0.5 R0.1 F10.
+X2.
+G80
+G00 Z1. M09
+G28 G91 Z0.
+M30
+%
+"""
+
+
+def test_an_inch_haas_program_on_its_machine():
+    m = _machine("fanuc", work_origin=(-400.0, -200.0, -500.0), rapid_rate=(25400, 25400, 25400),
+                 tool_change_time=4.0)
+    t = tc.ToolTable()
+    t.set(tc.Tool(1, edges=[tc.CuttingEdge(radius=3.175, length=[0.0, 0.0, 50.0])]))
+    res = _run(HAAS_INCH, dialect="fanuc", machine=m, tools=t)
+    p = res.path
+    # The bottom of the first hole: X1 Y1 Z-0.5 in, G54 and the 50 mm tool added.
+    bottom = p.machine_end[np.isclose(p.end[:, 2], -12.7)][0]
+    assert bottom == pytest.approx([25.4 - 400, 25.4 - 200, -12.7 - 500 + 50])
+    # From machine zero, program (400, 200, 500): rapids at 25.4 m/min take the longest axis.
+    rapid = lambda mm: mm / 25400 * 60  # noqa: E731
+    moves = (rapid(400 - 25.4)               # G00 X1. Y1.
+             + rapid(450 - 25.4)             # G43 H01 Z1.: from Z 500 - 50
+             + 2 * (rapid(25.4 - 2.54)       # down to R0.1
+                    + 15.24 / 254 * 60       # feed 0.6 in at 10 in/min
+                    + rapid(25.4 + 12.7))    # G98: back to the initial Z1.
+             + rapid(25.4)                   # X2.
+             + rapid(450 - 25.4))            # G28 G91 Z0.: machine Z0, program Z 500 - 50
+    assert p.duration.sum() == pytest.approx(moves)
+    assert res.cycle_time == pytest.approx(moves + 4.0)  # one tool change
