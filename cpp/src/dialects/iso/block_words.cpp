@@ -72,8 +72,8 @@ void add_g(BlockWords& bw, const Word& w, const ControlProfile& profile, const M
         // the last code of a modal group in a block is the one that counts.
         if (profile.last_g_code_wins && group != g_nonmodal) {
             // replaced below
-        } else if (group == g_motion && (code == 800 || bw.g[group] == 800)) {
-            if (code == 800) return;
+        } else if (group == g_motion && (code == G80 || bw.g[group] == G80)) {
+            if (code == G80) return;
         } else {
             fail(code::modal_group_conflict, "Two g codes used from same modal group", bw.line, w.column);
         }

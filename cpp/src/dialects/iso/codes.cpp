@@ -5,46 +5,46 @@ namespace toolcomp::iso {
 int g_group(int c, const ControlProfile& p) {
     // G-code system A with the lathe cycles: G32 threading, G90 / G92 / G94 the turning,
     // threading and facing cycles, modal in group 01.
-    if (p.g_code_system_a && p.turning_cycles && (c == 320 || c == 900 || c == 920 || c == 940)) return g_motion;
+    if (p.g_code_system_a && p.turning_cycles && (c == G32 || c == G90 || c == G92 || c == G94)) return g_motion;
     // G73 pattern repeating, G74 / G75 peck drilling / grooving, G76 threading (group 00).
-    if (p.g_code_system_a && p.turning_cycles && (c == 730 || c == 740 || c == 750 || c == 760)) return g_nonmodal;
-    if (p.g_code_system_a && c == 750) return kUnsupported;
+    if (p.g_code_system_a && p.turning_cycles && (c == G73 || c == G74 || c == G75 || c == G76)) return g_nonmodal;
+    if (p.g_code_system_a && c == G75) return kUnsupported;
     switch (c) {
-        case 40: case 100: case 280: case 281: case 300: case 301: case 530:
-        case 920: case 921: case 922: case 923:
+        case G4: case G10: case G28: case G28_1: case G30: case G30_1: case G53:
+        case G92: case G92_1: case G92_2: case G92_3:
             return g_nonmodal;
-        case 520: return p.g52_offset ? g_nonmodal : kUnsupported;
-        case 700: case 710: case 720: return p.turning_cycles ? g_nonmodal : p.profile_cycles ? g_motion : kUnsupported;
-        case 711: case 712: case 721: case 722: return p.profile_cycles ? g_motion : kUnsupported;
-        case 500: return p.g_code_system_a ? g_nonmodal : kUnknown;  // lathe: coordinates, spindle clamp
-        case 382: case 383: case 384: case 385:  // probing: refused when run (see interp.cpp)
-        case 800: return p.cycles_own_group ? g_cycle : g_motion;
-        case 0: case 10: case 20: case 30: case 730: case 740: case 810: case 820: case 830:
-        case 840: case 850: case 860: case 870: case 880: case 890:
+        case G52: return p.g52_offset ? g_nonmodal : kUnsupported;
+        case G70: case G71: case G72: return p.turning_cycles ? g_nonmodal : p.profile_cycles ? g_motion : kUnsupported;
+        case G71_1: case G71_2: case G72_1: case G72_2: return p.profile_cycles ? g_motion : kUnsupported;
+        case G50: return p.g_code_system_a ? g_nonmodal : kUnknown;  // lathe: coordinates, spindle clamp
+        case G38_2: case G38_3: case G38_4: case G38_5:  // probing: refused when run (see interp.cpp)
+        case G80: return p.cycles_own_group ? g_cycle : g_motion;
+        case G0: case G1: case G2: case G3: case G73: case G74: case G81: case G82: case G83:
+        case G84: case G85: case G86: case G87: case G88: case G89:
             return g_motion;
-        case 170: case 180: case 190: return g_plane;
-        case 900: case 910: return g_distance;
-        case 901: case 911: return g_arc_distance;
-        case 930: case 940: case 950: return g_feed_mode;
-        case 200: case 210: return g_units;
-        case 400: case 410: case 420: case 411: case 421: return g_radius_comp;
-        case 430: case 431: case 432: case 490: return g_length_comp;
-        case 440: return p.length_subtract_word ? g_length_comp : kUnknown;
-        case 650: return p.macro_calls ? g_nonmodal : kUnknown;
-        case 660: case 661: case 670: return p.macro_calls ? kUnsupported : kUnknown;
-        case 980: case 990: return g_retract;
-        case 540: case 550: case 560: case 570: case 580: case 590: case 591: case 592: case 593:
+        case G17: case G18: case G19: return g_plane;
+        case G90: case G91: return g_distance;
+        case G90_1: case G91_1: return g_arc_distance;
+        case G93: case G94: case G95: return g_feed_mode;
+        case G20: case G21: return g_units;
+        case G40: case G41: case G42: case G41_1: case G42_1: return g_radius_comp;
+        case G43: case G43_1: case G43_2: case G49: return g_length_comp;
+        case G44: return p.length_subtract_word ? g_length_comp : kUnknown;
+        case G65: return p.macro_calls ? g_nonmodal : kUnknown;
+        case G66: case G66_1: case G67: return p.macro_calls ? kUnsupported : kUnknown;
+        case G98: case G99: return g_retract;
+        case G54: case G55: case G56: case G57: case G58: case G59: case G59_1: case G59_2: case G59_3:
             return g_coord_system;
-        case 610: case 611: case 640: return g_path_control;
-        case 960: case 970: return g_spindle_mode;
-        case 70: case 80: return g_lathe_diameter;
+        case G61: case G61_1: case G64: return g_path_control;
+        case G96: case G97: return g_spindle_mode;
+        case G7: case G8: return g_lathe_diameter;
         // Real LinuxCNC codes that toolcomp does not run yet: splines and NURBS, spindle-
         // synchronised motion, probing, threading, lathe cycles, rotated planes.
-        case 330: case 331: case 760: return p.spindle_sync_motion ? g_motion : kUnsupported;
-        case 50: case 51: case 52: return p.splines ? g_motion : kUnsupported;
-        case 53: return p.splines ? g_nonmodal : kUnsupported;  // G5.3
-        case 171: case 181: case 191:
-        case 521: case 731: case 961:
+        case G33: case G33_1: case G76: return p.spindle_sync_motion ? g_motion : kUnsupported;
+        case G5: case G5_1: case G5_2: return p.splines ? g_motion : kUnsupported;
+        case G5_3: return p.splines ? g_nonmodal : kUnsupported;  // G5.3
+        case G17_1: case G18_1: case G19_1:
+        case G52_1: case G73_1: case G96_1:
             return kUnsupported;
         default:
             return kUnknown;
@@ -53,20 +53,20 @@ int g_group(int c, const ControlProfile& p) {
 
 int m_group(int c, const ControlProfile& p) {
     switch (c) {
-        case 0: case 10: case 20: case 300: case 600: return m_stop;
-        case 60: case 610: return m_tool_change;
-        case 30: case 40: case 50: return m_spindle;
-        case 70: case 80: case 90: return m_coolant;
-        case 480: case 490: case 500: case 510: case 520: case 530: return m_override;
-        case 620: case 630: case 640: case 650: case 660: case 670: case 680:
+        case M0: case M1: case M2: case M30: case M60: return m_stop;
+        case M6: case M61: return m_tool_change;
+        case M3: case M4: case M5: return m_spindle;
+        case M7: case M8: case M9: return m_coolant;
+        case M48: case M49: case M50: case M51: case M52: case M53: return m_override;
+        case M62: case M63: case M64: case M65: case M66: case M67: case M68:
             return m_io;  // digital/analog I/O: no effect on the path (interp_machine.cpp)
-        case 700: case 710: case 720: case 730:  // LinuxCNC: in M3-M5's group
+        case M70: case M71: case M72: case M73:  // LinuxCNC: in M3-M5's group
             return p.modal_state_codes ? m_spindle : kUnsupported;
-        case 190:  // LinuxCNC: M19 spindle orient, in M3-M5's group
+        case M19:  // LinuxCNC: M19 spindle orient, in M3-M5's group
             return p.spindle_orient ? m_spindle : kUnsupported;
-        case 990: if (p.numbered_subprograms) return m_stop; [[fallthrough]];  // LinuxCNC: M99 in main = M2
-        case 980: return p.m98_subprograms ? m_subprogram : kUnknown;
-        case 8000: case 8010: return p.ttrc_check_codes ? m_checks : kUnknown;
+        case M99: if (p.numbered_subprograms) return m_stop; [[fallthrough]];  // LinuxCNC: M99 in main = M2
+        case M98: return p.m98_subprograms ? m_subprogram : kUnknown;
+        case M800: case M801: return p.ttrc_check_codes ? m_checks : kUnknown;
         default:
             // M100-M199 are user programs on LinuxCNC: without them the code is unknown.
             return kUnknown;

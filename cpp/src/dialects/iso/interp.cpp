@@ -15,17 +15,17 @@ namespace toolcomp::iso {
 
 namespace {
 bool is_cycle(int motion) {
-    return motion == 730 || motion == 740 || (motion >= 810 && motion <= 890);
+    return motion == G73 || motion == G74 || (motion >= G81 && motion <= G89);
 }
 bool uses_axes_group0(int g0) {
-    return g0 == 100 || g0 == 280 || g0 == 300 || g0 == 920 || g0 == 520 || g0 == 500 || g0 == 700 || g0 == 710 ||
-           g0 == 720 || g0 == 730 || g0 == 740 || g0 == 750 || g0 == 760;
+    return g0 == G10 || g0 == G28 || g0 == G30 || g0 == G92 || g0 == G52 || g0 == G50 || g0 == G70 || g0 == G71 ||
+           g0 == G72 || g0 == G73 || g0 == G74 || g0 == G75 || g0 == G76;
 }
 // Codes whose block's axis words are data, not a move: G10, G28, G30, G92 and the tool
 // length offsets given as axis values (G43.1, G43.2).
 bool axes_are_data(const BlockWords& bw) {
     int lc = bw.g[g_length_comp];
-    return uses_axes_group0(bw.g[g_nonmodal]) || lc == 431 || lc == 432;
+    return uses_axes_group0(bw.g[g_nonmodal]) || lc == G43_1 || lc == G43_2;
 }
 }  // namespace
 
@@ -39,10 +39,10 @@ Interp::Interp(const Program& prog, const ToolTable* tools, const ControlProfile
     st_.inch = profile.startup_inch;
     st_.diameter = profile.x_diameter;
     st_.plane = profile.startup_plane;
-    if (profile.startup_feed_per_rev) st_.feed_mode = 950;
+    if (profile.startup_feed_per_rev) st_.feed_mode = G95;
     st_.motion = profile.startup_motion;
     st_.retract_initial = profile.startup_retract_initial;
-    if (st_.motion != 800) plain_motion_ = st_.motion;
+    if (st_.motion != G80) plain_motion_ = st_.motion;
     load_parameters(opts.parameters);
     if (opts.machine) place_machine(*opts.machine, opts.parameters);
     if (opts.start) {
@@ -129,7 +129,7 @@ void Interp::set_units(bool inch) {
     for (double* v : {&cyc_.r, &cyc_.z, &cyc_.q, &cyc_.i, &cyc_.j, &cyc_.k, &cycle_il_}) *v *= f;
     radius_.radius *= f;
     // LinuxCNC reads the G64 tolerance back from the machine here, which holds it in G64 only.
-    if (st_.path_control != 640) tolerance_ = 0;
+    if (st_.path_control != G64) tolerance_ = 0;
 }
 
 void Interp::fail(const char* code, const std::string& msg, int column) const {
@@ -215,7 +215,7 @@ void Interp::run_blocks() {
         const std::span<const Word> words = syntax_ ? block_words(block) : p.words(block);
         if (profile_.macro_calls) {
             bool g65 = false;
-            for (const Word& w : words) g65 = g65 || (w.letter == 'G' && w.value == 65);
+            for (const Word& w : words) g65 = g65 || (w.letter == 'G' && w.value == written(G65));
             if (g65) {
                 int column = 0;
                 for (const Word& w : words)
@@ -225,7 +225,7 @@ void Interp::run_blocks() {
             }
         }
         BlockWords bw = collect_words(words, block.line, profile_, opts_.machine);
-        if (profile_.dwell_x_seconds && bw.g[g_nonmodal] == 40) fanuc_dwell(bw);
+        if (profile_.dwell_x_seconds && bw.g[g_nonmodal] == G4) fanuc_dwell(bw);
         alarm_text_.clear();
         if (profile_.macro_calls && block.comment_count) alarm_text_ = p.comments(block)[0].text;
         if (block.statement_count) assignments(block);  // messages show the values after them
@@ -298,53 +298,53 @@ void Interp::check_words(const BlockWords& bw, int motion_to_be) {
     constexpr std::uint32_t kChecked = letter_bit('D') | letter_bit('E') | letter_bit('H') | letter_bit('I') |
                                        letter_bit('J') | letter_bit('K') | letter_bit('L') | letter_bit('P') |
                                        letter_bit('Q') | letter_bit('R');
-    if (profile_.c_word_is_chamfer && bw.has('C') && motion_to_be == 10 &&
+    if (profile_.c_word_is_chamfer && bw.has('C') && motion_to_be == G1 &&
         (bw.has('X') || bw.has('Z') || bw.has('U') || bw.has('W')))
         fail(code::unsupported_word,
              "C beside X or Z in G1 is the chamfer of a Fanuc lathe: not supported by toolcomp (a C axis move "
              "stands in a block of its own)",
              bw['C'].column);
-    const bool sync = motion_to_be == 330 || motion_to_be == 331, g76 = motion_to_be == 760;  // LinuxCNC
-    const bool g5 = motion_to_be == 50, g51 = motion_to_be == 51, g52 = motion_to_be == 52;  // splines
+    const bool sync = motion_to_be == G33 || motion_to_be == G33_1, g76 = motion_to_be == G76;  // LinuxCNC
+    const bool g5 = motion_to_be == G5, g51 = motion_to_be == G5_1, g52 = motion_to_be == G5_2;  // splines
     const bool g7x = profile_.profile_cycles && is_profile_cycle(motion_to_be);  // LinuxCNC G70-G72
-    const bool g70 = g7x && motion_to_be == 700, g71 = g7x && !g70;
-    const bool m19 = bw.m[m_spindle] == 190;  // LinuxCNC's spindle orient: R Q P
+    const bool g70 = g7x && motion_to_be == G70, g71 = g7x && !g70;
+    const bool m19 = bw.m[m_spindle] == M19;  // LinuxCNC's spindle orient: R Q P
     if ((bw.letters & kChecked) == 0 && !sync && !g76) return;  // none of the words that need a code to use them
     const int g0 = bw.g[g_nonmodal];
-    if (g0 >= 700 && g0 <= 760 && g0 % 10 == 0) return;  // the lathe cycles G70-G76 read their words
-    const bool arc = motion_to_be == 20 || motion_to_be == 30;
-    const bool g87 = motion_to_be == 870;  // back boring takes I J K too
+    if (g0 >= G70 && g0 <= G76 && g0 % 10 == 0) return;  // the lathe cycles G70-G76 read their words
+    const bool arc = motion_to_be == G2 || motion_to_be == G3;
+    const bool g87 = motion_to_be == G87;  // back boring takes I J K too
     const bool cycle_block = is_cycle(motion_to_be);
     auto col = [&](char c) { return bw[c].column; };
     if (bw.has('D') && !(profile_.d_word_alone && !profile_.t_offsets)) {
         int rc = bw.g[g_radius_comp];
-        if (!(rc == 410 || rc == 411 || rc == 420 || rc == 421 || bw.g[g_spindle_mode] == 960 || g7x))
+        if (!(rc == G41 || rc == G41_1 || rc == G42 || rc == G42_1 || bw.g[g_spindle_mode] == G96 || g7x))
             fail(code::unused_word, "D word with no G41, G41.1, G42, G42.1, G71, G71.1, G71.2 or G96 to use it", col('D'));
     }
     const bool io = bw.m[m_io] >= 0;  // M62-M68 take P, Q and E
-    if (bw.has('E') && !(io && bw.m[m_io] >= 660) && !g76 && !g70) fail(code::unused_word, "E word with no G70, G76, M66, M67 or M68 to use it", col('E'));
+    if (bw.has('E') && !(io && bw.m[m_io] >= M66) && !g76 && !g70) fail(code::unused_word, "E word with no G70, G76, M66, M67 or M68 to use it", col('E'));
     if (bw.has('H')) {
         int lc = bw.g[g_length_comp];
-        if (!(lc == 430 || lc == 432 || lc == 440 || g76)) fail(code::unused_word, "H word with no G43 or G76 to use it", col('H'));
+        if (!(lc == G43 || lc == G43_2 || lc == G44 || g76)) fail(code::unused_word, "H word with no G43 or G76 to use it", col('H'));
     }
-    const bool exit_dir = bw.g[g_radius_comp] == 400 && profile_.radius.exit_direction_words;
-    if (bw.has('I') && !(arc || g87 || exit_dir || g0 == 100 || motion_to_be == 331 || g76 || g5 || g51 || g71))
+    const bool exit_dir = bw.g[g_radius_comp] == G40 && profile_.radius.exit_direction_words;
+    if (bw.has('I') && !(arc || g87 || exit_dir || g0 == G10 || motion_to_be == G33_1 || g76 || g5 || g51 || g71))
         fail(code::unused_word, "I word with no G2, G3, G5, G5.1, G10, G33.1, G76, or G87 to use it", col('I'));
-    if (bw.has('J') && !(arc || g87 || exit_dir || g0 == 100 || g76 || g5 || g51))
+    if (bw.has('J') && !(arc || g87 || exit_dir || g0 == G10 || g76 || g5 || g51))
         fail(code::unused_word, "J word with no G2, G3, G5, G5.1, G10, G76 or G87 to use it", col('J'));
     if (bw.has('K') && !(arc || g87 || exit_dir || sync || g76)) fail(code::unused_word, "K word with no G2, G3, G33, G33.1, G76, or G87 to use it", col('K'));
     if (bw.has('L')) {
         int rc = bw.g[g_radius_comp];
-        if (!(g0 == 100 || cycle_block || rc >= 410 || bw.m[m_io] == 660 || g76 || g52))  // G41, G41.1, G42, G42.1, M66
+        if (!(g0 == G10 || cycle_block || rc >= G41 || bw.m[m_io] == M66 || g76 || g52))  // G41, G41.1, G42, G42.1, M66
             fail(code::unused_word,
                  "L word with no G10, cutter compensation, canned cycle, digital/analog input, M98 or NURBS code",
                  col('L'));
     }
     if (bw.has('P')) {
         int m = bw.m[m_override];
-        bool ok = arc || io || g0 == 40 || g0 == 100 || bw.g[g_path_control] == 640 || motion_to_be == 820 ||
-                  motion_to_be == 860 || motion_to_be == 880 || motion_to_be == 890 ||
-                  (m >= 500 && m <= 530) || g76 || g5 || g52 || g70 || m19;
+        bool ok = arc || io || g0 == G4 || g0 == G10 || bw.g[g_path_control] == G64 || motion_to_be == G82 ||
+                  motion_to_be == G86 || motion_to_be == G88 || motion_to_be == G89 ||
+                  (m >= M50 && m <= M53) || g76 || g5 || g52 || g70 || m19;
         if (!ok)
             fail(code::unused_word,
                  "P word with no G2 G3 G4 G10 G64 G5 G5.2 G76 G82 G86 G88 G89 or M50 M51 M52 M53 M62 M63 M64 "
@@ -352,15 +352,15 @@ void Interp::check_words(const BlockWords& bw, int motion_to_be) {
                  col('P'));
     }
     if (bw.has('Q')) {
-        bool ok = (io && bw.m[m_io] >= 660) || g0 == 100 || bw.g[g_path_control] == 640 || motion_to_be == 730 || motion_to_be == 830 ||
-                  bw.m[m_tool_change] == 610 || g76 || g5 || g7x || m19;
+        bool ok = (io && bw.m[m_io] >= M66) || g0 == G10 || bw.g[g_path_control] == G64 || motion_to_be == G73 || motion_to_be == G83 ||
+                  bw.m[m_tool_change] == M61 || g76 || g5 || g7x || m19;
         if (!ok)
             fail(code::unused_word,
                  "Q word with no G5, G10, G64, G73, G76, G83, M19, M66, M67, M68 or user M code that uses it",
                  col('Q'));
     }
-    const bool single_cycle = motion_to_be == 900 || motion_to_be == 920 || motion_to_be == 940;
-    if (bw.has('R') && !(arc || cycle_block || single_cycle || g0 == 100 || g76 || g71 || m19))
+    const bool single_cycle = motion_to_be == G90 || motion_to_be == G92 || motion_to_be == G94;
+    if (bw.has('R') && !(arc || cycle_block || single_cycle || g0 == G10 || g76 || g71 || m19))
         fail(code::unused_word, "R word with no g code that uses it", col('R'));
     if (m19) {
         const double p = bw['P'].value;
@@ -398,23 +398,23 @@ void Interp::system_a_codes(const BlockWords& bw) const {
         const char *error, *message;
     };
     static constexpr Refused kRefused[] = {
-        {g_distance, 900, code::unsupported_g_code, "G90 is the turning cycle in G-code system A: not supported by toolcomp"},
-        {g_distance, 910, code::unknown_g_code, "G91 does not exist in G-code system A (U and W are the incremental words)"},
-        {g_nonmodal, 920, code::unsupported_g_code, "G92 is the threading cycle in G-code system A: not supported by toolcomp"},
-        {g_feed_mode, 940, code::unsupported_g_code, "G94 is the facing cycle in G-code system A: not supported by toolcomp"},
+        {g_distance, G90, code::unsupported_g_code, "G90 is the turning cycle in G-code system A: not supported by toolcomp"},
+        {g_distance, G91, code::unknown_g_code, "G91 does not exist in G-code system A (U and W are the incremental words)"},
+        {g_nonmodal, G92, code::unsupported_g_code, "G92 is the threading cycle in G-code system A: not supported by toolcomp"},
+        {g_feed_mode, G94, code::unsupported_g_code, "G94 is the facing cycle in G-code system A: not supported by toolcomp"},
         // The mill's canned cycles mean other cycles on a Fanuc lathe (G73 pattern repeating,
         // G74 end face peck drilling, G83-G89 face and side drilling with live tools).
-        {g_motion, 730, code::unsupported_g_code, "G73 is the pattern repeating cycle on a lathe: not supported by toolcomp"},
-        {g_motion, 740, code::unsupported_g_code, "G74 is the end face peck drilling cycle on a lathe: not supported by toolcomp"},
-        {g_motion, 810, code::unsupported_g_code, "G81 is a lathe drilling cycle here: not supported by toolcomp"},
-        {g_motion, 820, code::unsupported_g_code, "G82 is a lathe drilling cycle here: not supported by toolcomp"},
-        {g_motion, 830, code::unsupported_g_code, "G83 is the face drilling cycle on a lathe: not supported by toolcomp"},
-        {g_motion, 840, code::unsupported_g_code, "G84 is the face tapping cycle on a lathe: not supported by toolcomp"},
-        {g_motion, 850, code::unsupported_g_code, "G85 is the face boring cycle on a lathe: not supported by toolcomp"},
-        {g_motion, 860, code::unsupported_g_code, "G86 is a lathe cycle here: not supported by toolcomp"},
-        {g_motion, 870, code::unsupported_g_code, "G87 is the side drilling cycle on a lathe: not supported by toolcomp"},
-        {g_motion, 880, code::unsupported_g_code, "G88 is the side tapping cycle on a lathe: not supported by toolcomp"},
-        {g_motion, 890, code::unsupported_g_code, "G89 is the side boring cycle on a lathe: not supported by toolcomp"},
+        {g_motion, G73, code::unsupported_g_code, "G73 is the pattern repeating cycle on a lathe: not supported by toolcomp"},
+        {g_motion, G74, code::unsupported_g_code, "G74 is the end face peck drilling cycle on a lathe: not supported by toolcomp"},
+        {g_motion, G81, code::unsupported_g_code, "G81 is a lathe drilling cycle here: not supported by toolcomp"},
+        {g_motion, G82, code::unsupported_g_code, "G82 is a lathe drilling cycle here: not supported by toolcomp"},
+        {g_motion, G83, code::unsupported_g_code, "G83 is the face drilling cycle on a lathe: not supported by toolcomp"},
+        {g_motion, G84, code::unsupported_g_code, "G84 is the face tapping cycle on a lathe: not supported by toolcomp"},
+        {g_motion, G85, code::unsupported_g_code, "G85 is the face boring cycle on a lathe: not supported by toolcomp"},
+        {g_motion, G86, code::unsupported_g_code, "G86 is a lathe cycle here: not supported by toolcomp"},
+        {g_motion, G87, code::unsupported_g_code, "G87 is the side drilling cycle on a lathe: not supported by toolcomp"},
+        {g_motion, G88, code::unsupported_g_code, "G88 is the side tapping cycle on a lathe: not supported by toolcomp"},
+        {g_motion, G89, code::unsupported_g_code, "G89 is the side boring cycle on a lathe: not supported by toolcomp"},
     };
     for (const Refused& r : kRefused)
         if (bw.g[r.group] == r.code) fail(r.error, r.message, bw.g_column[r.group]);
@@ -427,8 +427,8 @@ int Interp::motion_of(const BlockWords& bw) const {
     const bool axes = bw.has_axis();
     int motion_to_be = bw.g[g_motion];
     if (motion_to_be < 0 && axes && !axes_are_data(bw)) motion_to_be = st_.motion;
-    if (g0 == 530 && profile_.g53_rapid && axes) motion_to_be = 0;  // Fanuc: G53 at rapid, whatever the mode
-    if (profile_.bare_motion_codes && motion_to_be < 0 && !axes && (st_.motion == 20 || st_.motion == 30) &&
+    if (g0 == G53 && profile_.g53_rapid && axes) motion_to_be = G0;  // Fanuc: G53 at rapid, whatever the mode
+    if (profile_.bare_motion_codes && motion_to_be < 0 && !axes && (st_.motion == G2 || st_.motion == G3) &&
         (bw.has('I') || bw.has('J') || bw.has('K')))
         motion_to_be = st_.motion;  // "I1" alone under G2: an arc
     return motion_to_be;
@@ -451,37 +451,37 @@ int Interp::execute_head(const BlockWords& bw) {
     if (bw.has_polar()) polar_checks(bw);
     if (profile_.g_code_system_a && bw.g_groups != 0) system_a_codes(bw);
     // G80 of group 09 (cycles_own_group): the cycle ends, the group 01 mode before it is back.
-    if (bw.g[g_cycle] == 800 && (is_cycle(st_.motion) || st_.motion == 800)) {
+    if (bw.g[g_cycle] == G80 && (is_cycle(st_.motion) || st_.motion == G80)) {
         st_.motion = plain_motion_;
         cycle_il_set_ = false;
     }
 
     const bool data_axes = axes_are_data(bw);
     const bool bare = profile_.bare_motion_codes;
-    if (motion_code >= 0 && motion_code != 800) {
+    if (motion_code >= 0 && motion_code != G80) {
         if (bare ? uses_axes_group0(g0) : data_axes && axes && !profile_.motion_beside_data_axes)
             fail(code::two_axis_codes, "Cannot use two g codes that both use axis values", bw.g_column[g_nonmodal]);
-        if (bare && !axes && motion_code != 0 && motion_code != 10 && motion_code != 20 && motion_code != 30 &&
-            motion_code != 52 && !bw.machine_g && !is_profile_cycle(motion_code))
+        if (bare && !axes && motion_code != G0 && motion_code != G1 && motion_code != G2 && motion_code != G3 &&
+            motion_code != G5_2 && !bw.machine_g && !is_profile_cycle(motion_code))
             // G5.2 P alone: the first control point's weight; a remap: its argspec; G7x: here
             fail(code::axes_missing, "All axes missing with motion code", bw.g_column[g_motion]);
     }
-    if (motion_code == 800 && axes) fail(code::axis_with_g80, "Cannot use axis values with g80", bw.axis_column());
+    if (motion_code == G80 && axes) fail(code::axis_with_g80, "Cannot use axis values with g80", bw.axis_column());
     const int motion_to_be = motion_of(bw);
-    if (motion_to_be == 800 && axes && !data_axes)
+    if (motion_to_be == G80 && axes && !data_axes)
         fail(code::axis_without_motion, "Cannot use axis values without a g code that uses them", bw.axis_column());
-    if ((motion_code == 20 || motion_code == 30) && g0 == 40)
+    if ((motion_code == G2 || motion_code == G3) && g0 == G4)
         fail(code::g4_with_arc, "G4 not allowed with G2 or G3 because they both use P", bw.g_column[g_nonmodal]);
-    if (g0 == 530) {
-        if (!(motion_to_be == 0 || motion_to_be == 10))
+    if (g0 == G53) {
+        if (!(motion_to_be == G0 || motion_to_be == G1))
             fail(code::g53_motion, "Must use g0 or g1 with g53", bw.g_column[g_nonmodal]);
-        bool incremental = bw.g[g_distance] >= 0 ? bw.g[g_distance] == 910 : st_.incremental;
+        bool incremental = bw.g[g_distance] >= 0 ? bw.g[g_distance] == G91 : st_.incremental;
         if (incremental) fail(code::g53_incremental, "Cannot use g53 incremental", bw.g_column[g_nonmodal]);
     }
-    if ((g0 == 920 || g0 == 520) && !axes) fail(code::g92_no_axes, "All axes missing with g52 or g92", bw.g_column[g_nonmodal]);
+    if ((g0 == G92 || g0 == G52) && !axes) fail(code::g92_no_axes, "All axes missing with g52 or g92", bw.g_column[g_nonmodal]);
     check_words(bw, motion_to_be);
     spindle_choice(bw, motion_to_be);
-    if (bw.g[g_spindle_mode] == 960 && !bw.has('S') && profile_.g96_needs_s)
+    if (bw.g[g_spindle_mode] == G96 && !bw.has('S') && profile_.g96_needs_s)
         fail(code::g96_s_missing, "S word missing with G96", bw.g_column[g_spindle_mode]);
     if (bw.has('U') || bw.has('V') || bw.has('W')) {
         char l = bw.has('U') ? 'U' : bw.has('V') ? 'V' : 'W';
@@ -498,34 +498,34 @@ int Interp::execute_head(const BlockWords& bw) {
     // G40/G41/G42, the rest after them (so G40 G43 is allowed, G41 G43 is not, G40 G18 is
     // not). G53 is refused with the move (motion_line).
     const int comp_code = bw.g[g_radius_comp];
-    const bool comp_before = comp_on(), comp_after = comp_code >= 0 ? comp_code != 400 : comp_before;
+    const bool comp_before = comp_on(), comp_after = comp_code >= 0 ? comp_code != G40 : comp_before;
     if (comp_before && modal) {
         if (int io = bw.m[m_io]; io >= 0) {
-            const char* what = io == 620 ? "Cannot set motion output with cutter radius compensation on"
-                             : io == 630 ? "Cannot set motion digital output with cutter radius compensation on"
-                             : io <= 650 ? "Cannot set auxiliary digital output with cutter radius compensation on"
-                             : io == 660 ? "Cannot wait for digital input with cutter radius compensation on"
-                             : io == 670 ? "Cannot set motion analog output with cutter radius compensation on"
+            const char* what = io == M62 ? "Cannot set motion output with cutter radius compensation on"
+                             : io == M63 ? "Cannot set motion digital output with cutter radius compensation on"
+                             : io <= M65 ? "Cannot set auxiliary digital output with cutter radius compensation on"
+                             : io == M66 ? "Cannot wait for digital input with cutter radius compensation on"
+                             : io == M67 ? "Cannot set motion analog output with cutter radius compensation on"
                                          : "Cannot set auxiliary analog output with cutter radius compensation on";
             fail(code::comp_io, what, bw.m_column[m_io]);
         }
-        if (bw.m[m_tool_change] == 60)
+        if (bw.m[m_tool_change] == M6)
             fail(code::comp_tool_change, "Cannot change tools with cutter radius compensation on", bw.m_column[m_tool_change]);
         // LinuxCNC 2.9 takes M61 here and loses the move held for the next corner (its
         // position is read back after a tool change): a wrong path, refused instead.
-        if (bw.m[m_tool_change] == 610)
+        if (bw.m[m_tool_change] == M61)
             fail(code::comp_m61,
                  "Cannot set the tool number (M61) with cutter radius compensation on: LinuxCNC would lose the "
                  "compensated move it holds",
                  bw.m_column[m_tool_change]);
         if (int ov = bw.m[m_override]; ov >= 0) {
-            bool enable = ov == 480 || (ov >= 500 && (!bw.has('P') || bw['P'].value != 0));
+            bool enable = ov == M48 || (ov >= M50 && (!bw.has('P') || bw['P'].value != 0));
             fail(code::comp_overrides,
                  enable ? "Cannot enable overrides with cutter radius compensation on"
                         : "Cannot disable overrides with cutter radius compensation on",
                  bw.m_column[m_override]);
         }
-        if (bw.g[g_plane] >= 0 && bw.g[g_plane] != (st_.plane == Plane::xy ? 170 : st_.plane == Plane::zx ? 180 : 190))
+        if (bw.g[g_plane] >= 0 && bw.g[g_plane] != (st_.plane == Plane::xy ? G17 : st_.plane == Plane::zx ? G18 : G19))
             fail(code::comp_plane_change, "Cannot change planes with cutter radius compensation on", bw.g_column[g_plane]);
     }
     if (comp_after) {
@@ -533,7 +533,7 @@ int Interp::execute_head(const BlockWords& bw) {
             if (bw.g[g_length_comp] >= 0)
                 fail(code::comp_tool_offset, "Cannot change tool offset with cutter radius compensation on",
                      bw.g_column[g_length_comp]);
-            const bool axis_offsets = g0 == 920 || g0 == 921 || g0 == 922 || g0 == 923 || g0 == 520;
+            const bool axis_offsets = g0 == G92 || g0 == G92_1 || g0 == G92_2 || g0 == G92_3 || g0 == G52;
             if ((axis_offsets || bw.g[g_coord_system] >= 0) && profile_.radius.offset_change_reenters) {
                 // 9/Series: compensation ends here for the moment (the last move its exit) and
                 // the first move in the new system is an entry.
@@ -551,7 +551,7 @@ int Interp::execute_head(const BlockWords& bw) {
             if (bw.g[g_retract] >= 0)
                 fail(code::comp_retract_mode, "Cannot change retract mode with cutter radius compensation on",
                      bw.g_column[g_retract]);
-            if (g0 == 100) {
+            if (g0 == G10) {
                 if (!profile_.radius.messages.g10.empty())
                     fail(code::comp_g10, profile_.radius.messages.g10, bw.g_column[g_nonmodal]);
                 // LinuxCNC refuses G10 L2/L20 of the active system (tool table edits pass)
@@ -561,12 +561,12 @@ int Interp::execute_head(const BlockWords& bw) {
                     fail(code::comp_g10, "Cannot change the active coordinate system with cutter radius compensation on",
                          bw.g_column[g_nonmodal]);
             }
-            if (g0 == 280 || g0 == 300)
+            if (g0 == G28 || g0 == G30)
                 fail(code::comp_home, "Cannot use g28 or g30 with cutter radius comp", bw.g_column[g_nonmodal]);
             if (axis_offsets && !profile_.radius.offset_change_reenters)
                 fail(code::comp_axis_offsets, "Cannot change axis offsets with cutter radius comp", bw.g_column[g_nonmodal]);
         }
-        if (motion_code >= 382 && motion_code <= 385)
+        if (motion_code >= G38_2 && motion_code <= G38_5)
             fail(code::comp_probe, "Cannot probe with cutter radius comp on", bw.g_column[g_motion]);
     }
 
@@ -577,28 +577,28 @@ int Interp::execute_head(const BlockWords& bw) {
         if (bw.g[g_feed_mode] >= 0) {
             st_.feed_mode = bw.g[g_feed_mode];
             // (G93 too, unseen: inverse time needs an F in every feed block)
-            if (profile_.feed_mode_clears_feed && st_.feed_mode != 930) feed_ = 0;  // an F in this block is read after it
+            if (profile_.feed_mode_clears_feed && st_.feed_mode != G93) feed_ = 0;  // an F in this block is read after it
         }
         if (profile_.t_offsets && bw.g[g_retract] >= 0)  // Fanuc lathes: G98 per minute, G99 per revolution
-            st_.feed_mode = bw.g[g_retract] == 980 ? 940 : 950;
+            st_.feed_mode = bw.g[g_retract] == G98 ? G94 : G95;
     }
     // LinuxCNC's feed rate in G93 is that of the last inverse-time move (motion_line,
     // motion_arc): an F word there times its own block only.
-    if (bw.has('F') && !(st_.feed_mode == 930 && profile_.feed_mode_clears_feed))
-        feed_ = bw['F'].value * (st_.feed_mode == 930 ? 1.0 : scale());
+    if (bw.has('F') && !(st_.feed_mode == G93 && profile_.feed_mode_clears_feed))
+        feed_ = bw['F'].value * (st_.feed_mode == G93 ? 1.0 : scale());
     spindle_words(bw);
     // 5-6: tools
     if (bw.has('T')) select_tool(bw);
     if (modal) {
-        if (bw.m[m_tool_change] == 60 && opts_.machine) to_tool_change_position(bw.m_column[m_tool_change]);
+        if (bw.m[m_tool_change] == M6 && opts_.machine) to_tool_change_position(bw.m_column[m_tool_change]);
         if (bw.m[m_tool_change] >= 0) change_tool(bw, bw.m[m_tool_change]);
         if (int ch = bw.m[m_checks]; ch >= 0) {  // 9/Series M800 / M801
-            checks_ = ch == 8010;
+            checks_ = ch == M801;
             radius_.checks = checks_;
         }
         // 7-9: spindle, coolant, overrides: state of the machine, not of the path (the spindle
         // direction matters to the boring cycles).
-        if (int sp = bw.m[m_spindle]; sp >= 700) {
+        if (int sp = bw.m[m_spindle]; sp >= M70) {
             if (modal_state(bw)) return kBlockEnded;  // LinuxCNC M70-M73; after a restore: the block ends
         } else if (sp >= 0) {
             spindle_turn(bw, sp);
@@ -619,15 +619,15 @@ bool Interp::execute_tail(const BlockWords& bw, int motion_to_be) {
     const bool modal = bw.modal_codes() || bw.m_codes();
     // 10: dwell
     // LinuxCNC keeps -1 for a missing P and reads any other value, negative ones too.
-    if (g0 == 40 && (!bw.has('P') || (profile_.dwell_negative_p ? bw['P'].value == -1 : bw['P'].value < 0)))
+    if (g0 == G4 && (!bw.has('P') || (profile_.dwell_negative_p ? bw['P'].value == -1 : bw['P'].value < 0)))
         fail(code::dwell_missing, "Dwell time missing with g4", bw.g_column[g_nonmodal]);
-    if (g0 == 40) dwell(bw['P'].value);
+    if (g0 == G4) dwell(bw['P'].value);
     if (modal) {
         // 11-12: plane, units (an F in the same block was read in the old units, as LinuxCNC does)
-        if (bw.g[g_units] >= 0) set_units(bw.g[g_units] == 200);
-        if (bw.g[g_plane] >= 0) st_.plane = bw.g[g_plane] == 170 ? Plane::xy : bw.g[g_plane] == 180 ? Plane::zx : Plane::yz;
+        if (bw.g[g_units] >= 0) set_units(bw.g[g_units] == G20);
+        if (bw.g[g_plane] >= 0) st_.plane = bw.g[g_plane] == G17 ? Plane::xy : bw.g[g_plane] == G18 ? Plane::zx : Plane::yz;
         if (bw.g[g_lathe_diameter] >= 0) {
-            const bool d = bw.g[g_lathe_diameter] == 70;
+            const bool d = bw.g[g_lathe_diameter] == G7;
             diameter_switched_ = d != st_.diameter;  // (LinuxCNC's G76 reads it)
             st_.diameter = d;
         }
@@ -638,82 +638,82 @@ bool Interp::execute_tail(const BlockWords& bw, int motion_to_be) {
         // 15: coordinate system
         if (bw.g[g_coord_system] >= 0) {
             int c = bw.g[g_coord_system];
-            set_coord_system(c < 590 ? (c - 530) / 10 : 6 + (c - 590));
+            set_coord_system(c < G59 ? (c - G53) / 10 : 6 + (c - G59));
         }
         // 16-18: path control, distance modes, retract mode
         if (bw.g[g_path_control] >= 0) {
             st_.path_control = bw.g[g_path_control];
-            if (st_.path_control == 640) {  // P and Q kept as given (LinuxCNC's M70 saves them)
+            if (st_.path_control == G64) {  // P and Q kept as given (LinuxCNC's M70 saves them)
                 const WordSlot p = bw['P'], q = bw['Q'];
                 tolerance_ = p.set && p.value >= 0 ? p.value : 0;
                 naivecam_ = q.set && q.value >= 0 ? q.value : p.set && p.value >= 0 ? p.value : 0;
             }
-            if (st_.path_control == 640 && !warned_blending_) {  // once a run
+            if (st_.path_control == G64 && !warned_blending_) {  // once a run
                 info(code::blending_not_modelled,
                      "G64 blending is a tolerance of the executed path: toolcomp returns the programmed path",
                      bw.g_column[g_path_control]);
                 warned_blending_ = true;
             }
         }
-        if (bw.g[g_distance] >= 0) st_.incremental = bw.g[g_distance] == 910;
-        if (bw.g[g_arc_distance] >= 0) st_.arc_absolute = bw.g[g_arc_distance] == 901;
-        if (bw.g[g_retract] >= 0 && !profile_.t_offsets) st_.retract_initial = bw.g[g_retract] == 980;
+        if (bw.g[g_distance] >= 0) st_.incremental = bw.g[g_distance] == G91;
+        if (bw.g[g_arc_distance] >= 0) st_.arc_absolute = bw.g[g_arc_distance] == G90_1;
+        if (bw.g[g_retract] >= 0 && !profile_.t_offsets) st_.retract_initial = bw.g[g_retract] == G98;
     }
     if (bw.has('D') && profile_.d_word_alone && !profile_.t_offsets) {
         const int rc = bw.g[g_radius_comp];
-        if (rc != 410 && rc != 411 && rc != 420 && rc != 421) modal_d_number(bw);
+        if (rc != G41 && rc != G41_1 && rc != G42 && rc != G42_1) modal_d_number(bw);
     }
     // 19: G10, G28/G30, G92
     switch (g0) {
-        case 100: g10(bw); break;
-        case 280: case 281: case 300: case 301: home(bw, g0); break;
-        case 920: case 921: case 922: case 923: case 520: g92(bw, g0); break;
-        case 500: g50(bw); break;
-        case 700: finishing_cycle(bw); break;
-        case 710: case 720: roughing_cycle(bw, g0); break;
-        case 760: threading_cycle(bw); break;
-        case 53: nurbs_end(bw); break;
-        case 730: pattern_cycle(bw); break;
-        case 740: case 750: peck_cycle(bw, g0); break;
+        case G10: g10(bw); break;
+        case G28: case G28_1: case G30: case G30_1: home(bw, g0); break;
+        case G92: case G92_1: case G92_2: case G92_3: case G52: g92(bw, g0); break;
+        case G50: g50(bw); break;
+        case G70: finishing_cycle(bw); break;
+        case G71: case G72: roughing_cycle(bw, g0); break;
+        case G76: threading_cycle(bw); break;
+        case G5_3: nurbs_end(bw); break;
+        case G73: pattern_cycle(bw); break;
+        case G74: case G75: peck_cycle(bw, g0); break;
         default: break;
     }
     // 20: motion
     prev_motion_ = st_.motion;
     if (motion_code >= 0 && !is_cycle(motion_code)) cycle_il_set_ = false;
     if (motion_code >= 0) st_.motion = motion_code;
-    if (motion_code == 0 || motion_code == 10 || motion_code == 20 || motion_code == 30) plain_motion_ = motion_code;
+    if (motion_code == G0 || motion_code == G1 || motion_code == G2 || motion_code == G3) plain_motion_ = motion_code;
     // A motion code with its axis words (or, bare, without them: a zero-length move or a
     // whole circle), or axis words that are not data under a modal motion.
-    const bool moves = bare ? motion_to_be >= 0 && motion_to_be != 800 && (motion_code >= 0 || !data_axes)
+    const bool moves = bare ? motion_to_be >= 0 && motion_to_be != G80 && (motion_code >= 0 || !data_axes)
                             : motion_to_be >= 0 && axes && !data_axes;
     if (profile_.profile_cycles && is_profile_cycle(motion_to_be)) {
         profile_cycle(bw, motion_to_be);  // with or without axis words
     } else if (moves) {
         switch (motion_to_be) {
-            case 0: case 10: motion_line(bw, motion_to_be, g0 == 530); break;
-            case 20: case 30: motion_arc(bw, motion_to_be); break;
-            case 320: thread_line(bw); break;
-            case 330: sync_line(bw); break;
-            case 331: rigid_tap(bw); break;
-            case 760: lcnc_threading(bw); break;
-            case 382: case 383: case 384: case 385: probe(bw, motion_to_be); break;
-            case 50: case 51: spline(bw, motion_to_be); break;
-            case 52: nurbs_point(bw); break;
-            case 900: case 920: case 940: single_cycle(bw, motion_to_be); break;
+            case G0: case G1: motion_line(bw, motion_to_be, g0 == G53); break;
+            case G2: case G3: motion_arc(bw, motion_to_be); break;
+            case G32: thread_line(bw); break;
+            case G33: sync_line(bw); break;
+            case G33_1: rigid_tap(bw); break;
+            case G76: lcnc_threading(bw); break;
+            case G38_2: case G38_3: case G38_4: case G38_5: probe(bw, motion_to_be); break;
+            case G5: case G5_1: spline(bw, motion_to_be); break;
+            case G5_2: nurbs_point(bw); break;
+            case G90: case G92: case G94: single_cycle(bw, motion_to_be); break;
             default:
                 if (!bw.machine_g) cycle(bw, motion_to_be);
                 else if (!remapped_motion(bw)) return true;
                 break;
         }
-    } else if ((motion_code == 20 || motion_code == 30) && (bw.has('I') || bw.has('J') || bw.has('K') || bw.has('R'))) {
+    } else if ((motion_code == G2 || motion_code == G3) && (bw.has('I') || bw.has('J') || bw.has('K') || bw.has('R'))) {
         motion_arc(bw, motion_code);  // full circle given by its centre only
     }
     // 21: stop / end
     int stop = bw.m[m_stop];
-    if (stop == 0 || stop == 10 || stop == 600) sink_.control({ControlKind::stop, line_, Vec3::Zero(), file_});
-    if (stop == 990 && frames_.size() > 1)  // LinuxCNC: M99 not first in a subprogram's line
+    if (stop == M0 || stop == M1 || stop == M60) sink_.control({ControlKind::stop, line_, Vec3::Zero(), file_});
+    if (stop == M99 && frames_.size() > 1)  // LinuxCNC: M99 not first in a subprogram's line
         fail(code::m99_in_sub, "Bug:  Reached convert_stop() from M99 as subprogram return", bw.m_column[m_stop]);
-    if (stop == 20 || stop == 300 || stop == 990) {  // M99 in the main program: M2 (LinuxCNC, standalone)
+    if (stop == M2 || stop == M30 || stop == M99) {  // M99 in the main program: M2 (LinuxCNC, standalone)
         sink_.control({ControlKind::program_end, line_, Vec3::Zero(), file_});
         radius_ = {};  // M2/M30 end compensation (and reset the other modes)
         return false;

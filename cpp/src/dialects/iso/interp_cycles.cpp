@@ -27,7 +27,7 @@ void Interp::cycle(const BlockWords& bw, int code) {
     // depth (below), then each cycle's own words. P and Q of -1 are LinuxCNC's "no word"
     // (its block keeps -1 for a missing P or Q); other negative values are read as given.
     if (feed_ <= 0) fail(code::zero_feed, "Cannot feed with zero feed rate");
-    if (st_.feed_mode == 930) fail(code::cycle_inverse_time, "Cannot use inverse time feed with canned cycles");
+    if (st_.feed_mode == G93) fail(code::cycle_inverse_time, "Cannot use inverse time feed with canned cycles");
     if (comp_on())
         fail(code::comp_canned_cycle, "Cannot use canned cycles with cutter compensation on",
              bw.g[g_motion] >= 0 ? bw.g_column[g_motion] : bw.axis_column());
@@ -78,21 +78,21 @@ void Interp::cycle(const BlockWords& bw, int code) {
     if (r < bottom)
         fail(code::cycle_r_below_depth, std::string("R less than ") + static_cast<char>(cl - 'A' + 'a') +
                                         " in cycle in " + plane_name + " plane");
-    if (code == 730 || code == 830) {
+    if (code == G73 || code == G83) {
         if (q_word)
             cyc_.q = bw['Q'].value;
         else if (!continuing)
             fail(code::cycle_q_missing, "Q word missing with " + gname, bw.has('Q') ? bw['Q'].column : 0);
     }
-    if (code == 740 || code == 840) {
+    if (code == G74 || code == G84) {
         if (p_word) cyc_.p = bw['P'].value;  // optional dwell at the bottom
-    } else if (code == 820 || code == 860 || code == 880 || code == 890) {
+    } else if (code == G82 || code == G86 || code == G88 || code == G89) {
         if (p_word)
             cyc_.p = bw['P'].value;
         else if (!continuing)
             fail(code::cycle_p_missing, "Dwell time p word missing with " + gname);
     }
-    if (code == 870) {  // back boring: offsets from the hole and the top of the counterbore (see below)
+    if (code == G87) {  // back boring: offsets from the hole and the top of the counterbore (see below)
         const char* names = "IJK";
         for (int n = 0; n < 3; ++n) {
             char c = names[n];
@@ -118,7 +118,7 @@ void Interp::cycle(const BlockWords& bw, int code) {
     }
     const double clear = st_.retract_initial ? old_cc : r;
     // A feed move of the cycle; under G96 its feed follows the X where it ends, as any move's.
-    auto fed = [&](const Vec6& p) { straight(MotionKind::line, p, feed_for(bw, 10, 0, p[0])); };
+    auto fed = [&](const Vec6& p) { straight(MotionKind::line, p, feed_for(bw, G1, 0, p[0])); };
     const double rapid_delta = st_.inch ? 0.010 : 0.010 * kMmPerInch;  // LinuxCNC's G83_RAPID_DELTA
     for (int rep = 0; rep < repeats; ++rep) {
         if (rep > 0) count_block(bw['L'].column);
@@ -140,17 +140,17 @@ void Interp::cycle(const BlockWords& bw, int code) {
         straight(MotionKind::rapid, at(a, b, level), nan);
         if (level != r) straight(MotionKind::rapid, at(a, b, r), nan);
         // The control checks the spindle when the cycle itself starts, after the approach.
-        if ((code == 860 || code == 870 || code == 880 || code == 740 || code == 840) && spindle().turning == 0)
-            fail(code::spindle_not_turning, "Spindle not turning in " + std::string(code == 740 ? "G74" : code == 840 ? "G84" : gname));
-        if ((code == 730 || code == 830) && cyc_.q <= 0)
+        if ((code == G86 || code == G87 || code == G88 || code == G74 || code == G84) && spindle().turning == 0)
+            fail(code::spindle_not_turning, "Spindle not turning in " + std::string(code == G74 ? "G74" : code == G84 ? "G84" : gname));
+        if ((code == G73 || code == G83) && cyc_.q <= 0)
             fail(code::cycle_q_zero, "Negative or zero q value used", bw.has('Q') ? bw['Q'].column : 0);
-        if (code == 840 && spindle().turning < 0)
+        if (code == G84 && spindle().turning < 0)
             fail(code::spindle_direction, "Spindle turning counterclockwise in G84");
-        if (code == 740 && spindle().turning > 0) fail(code::spindle_direction, "Spindle turning clockwise in G74");
+        if (code == G74 && spindle().turning > 0) fail(code::spindle_direction, "Spindle turning clockwise in G74");
         switch (code) {
-            case 740:
-            case 840:  // tapping: feed in, reverse the spindle, feed straight out to clearance
-                if (code == 840 && st_.plane != Plane::xy && profile_.g84_axes_warning) {
+            case G74:
+            case G84:  // tapping: feed in, reverse the spindle, feed straight out to clearance
+                if (code == G84 && st_.plane != Plane::xy && profile_.g84_axes_warning) {
                     // LinuxCNC 2.9 feeds its G84 in G18 / G19 to the plane's coordinates and
                     // the depth in another axis order (its own test records it): the tap
                     // would go elsewhere. toolcomp keeps the tap on the hole's axis and says so.
@@ -166,7 +166,7 @@ void Interp::cycle(const BlockWords& bw, int code) {
                 fed(at(a, b, bottom));
                 fed(at(a, b, clear));
                 break;
-            case 870: {
+            case G87: {
                 // Back boring: in beside the hole with the spindle oriented, across to the
                 // hole's axis at the bottom, feed up to the counterbore top and back, then out
                 // the same way. The words go by axis letter (I X, J Y, K Z): in G17 I J are
@@ -184,7 +184,7 @@ void Interp::cycle(const BlockWords& bw, int code) {
                 straight(MotionKind::rapid, at(a, b, clear), nan);
                 break;
             }
-            case 880:
+            case G88:
                 // Bore, dwell, stop: the operator retracts by hand. The control then takes the
                 // tool to be at the clearance level; the path has no move for that.
                 fed(at(a, b, bottom));
@@ -192,31 +192,31 @@ void Interp::cycle(const BlockWords& bw, int code) {
                 pos_ = at(a, b, clear);
                 info(code::manual_retract, "G88: the operator retracts the tool by hand; the next move starts at the clearance level");
                 break;
-            case 810:
-            case 820:
-            case 860:
+            case G81:
+            case G82:
+            case G86:
                 fed(at(a, b, bottom));
-                if (code != 810) dwell(cyc_.p);
+                if (code != G81) dwell(cyc_.p);
                 straight(MotionKind::rapid, at(a, b, clear), nan);
                 break;
-            case 850:
+            case G85:
                 fed(at(a, b, bottom));
                 fed(at(a, b, r));
                 straight(MotionKind::rapid, at(a, b, clear), nan);
                 break;
-            case 890:
+            case G89:
                 fed(at(a, b, bottom));
                 dwell(cyc_.p);
                 fed(at(a, b, clear));
                 break;
-            case 730:
-            case 830:
+            case G73:
+            case G83:
                 for (double depth = r - cyc_.q; depth > bottom; depth -= cyc_.q) {
                     // Every peck counts against the block limit: a huge depth with a tiny Q
                     // (or one that no longer changes the depth) stops there, never hangs.
                     count_block(bw['Q'].column);
                     fed(at(a, b, depth));
-                    if (code == 830) straight(MotionKind::rapid, at(a, b, r), nan);
+                    if (code == G83) straight(MotionKind::rapid, at(a, b, r), nan);
                     straight(MotionKind::rapid, at(a, b, depth + rapid_delta), nan);
                 }
                 fed(at(a, b, bottom));

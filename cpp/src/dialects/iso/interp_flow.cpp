@@ -409,7 +409,7 @@ const LoadedProgram* Interp::fanuc_program(long number) {
 }
 
 void Interp::subprogram(int mcode, const WordSlot& p_word, const WordSlot& l_word, int column) {
-    if (mcode == 990) {  // M99: return (to N P of the caller when given)
+    if (mcode == M99) {  // M99: return (to N P of the caller when given)
         if (frames_.size() < 2) {
             // In the main program M99 runs it again from the top (the block limit stops it).
             frames_.back().pc = 0;
@@ -481,7 +481,7 @@ void Interp::macro_call(std::span<const Word> words, int column) {
     for (const Word& w : words) {
         if (w.letter == 'N') continue;
         if (w.letter == 'G') {
-            if (w.value != 65) fail(code::g65_other_codes, "G65 must be the only G code of its block", w.column);
+            if (w.value != written(G65)) fail(code::g65_other_codes, "G65 must be the only G code of its block", w.column);
             continue;
         }
         if (w.letter == 'P' || w.letter == 'L') {

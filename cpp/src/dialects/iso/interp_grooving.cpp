@@ -20,7 +20,7 @@ namespace toolcomp::iso {
 
 void Interp::peck_cycle(const BlockWords& bw, int code) {
     const int col = bw.g_column[g_nonmodal];
-    const bool g75 = code == 750;
+    const bool g75 = code == G75;
     const std::string name = g75 ? "G75" : "G74";
     for (char c : {'I', 'K', 'D', 'Y'})
         if (bw.has(c)) fail(code::unsupported_word, std::string(1, c) + " in " + name + " is not supported by toolcomp", bw[c].column);
@@ -52,7 +52,7 @@ void Interp::peck_cycle(const BlockWords& bw, int code) {
     if (std::fabs(end[s] - a[s]) / std::max(shift, 1e-12) > 1e6 || (peck > 0 && std::fabs(end[p] - a[p]) / peck > 1e6))
         fail(code::cycle_bad_value, "PS0062 ILLEGAL COMMAND IN G71-G76: " + name + " with more than a million pecks or grooves", col);
     auto go = [&](MotionKind k, const Vec6& q) {
-        if (q != pos_) straight(k, q, k == MotionKind::rapid ? std::nan("") : feed_for(bw, 10, 0, q[0]));
+        if (q != pos_) straight(k, q, k == MotionKind::rapid ? std::nan("") : feed_for(bw, G1, 0, q[0]));
     };
     double at = a[s];
     for (bool last = false; !last;) {

@@ -15,13 +15,13 @@ int round_to_int(double v) { return static_cast<int>(std::floor(v + 0.5)); }
 }  // namespace
 
 void Interp::io_code(const BlockWords& bw) {
-    const int m = bw.m[m_io] / 10, col = bw.m_column[m_io];
-    const std::string name = "M" + std::to_string(m);
-    if (m <= 65) {
+    const int m = bw.m[m_io], col = bw.m_column[m_io];
+    const std::string name = "M" + std::to_string(m / 10);
+    if (m <= M65) {
         if (!bw.has('P')) fail(code::io_bad_words, "No valid P word with " + name, col);
         return;
     }
-    if (m == 66) {
+    if (m == M66) {
         const bool p = bw.has('P'), e = bw.has('E'), l = bw.has('L');
         if (p && e) fail(code::io_bad_words, "Invalid to select both a digital and an analog input with M66", col);
         if (bw['Q'].value <= 0 && l && round_to_int(bw['L'].value) > 0)

@@ -34,9 +34,9 @@ void Interp::thread_line(const BlockWords& bw) {
 
 void Interp::single_cycle(const BlockWords& bw, int code) {
     const int col = bw.g[g_motion] >= 0 ? bw.g_column[g_motion] : bw.axis_column();
-    const char* name = code == 900 ? "G90" : code == 920 ? "G92" : "G94";
+    const char* name = code == G90 ? "G90" : code == G92 ? "G92" : "G94";
     if (feed_ <= 0) fail(code::zero_feed, std::string(name) + " needs a feed F", col);
-    if (code == 920 ? spindle().speed <= 0 : st_.feed_mode == 950 && spindle().speed <= 0)
+    if (code == G92 ? spindle().speed <= 0 : st_.feed_mode == G95 && spindle().speed <= 0)
         fail(code::zero_spindle_speed, std::string(name) + " needs the spindle turning (S)", col);
     if (comp_on())
         fail(code::unsupported_g_code, std::string(name) + " with tool nose radius compensation on is not supported by toolcomp",
@@ -58,11 +58,11 @@ void Interp::single_cycle(const BlockWords& bw, int code) {
         p[2] = z;
         return p;
     };
-    auto feed_at = [&](const Vec6& e) { return feed_for(bw, 10, 0, e[0]); };
+    auto feed_at = [&](const Vec6& e) { return feed_for(bw, G1, 0, e[0]); };
     auto straight = [&](MotionKind k, const Vec6& p, double f) {
         if (p != pos_) Interp::straight(k, p, f);
     };
-    if (code == 940) {
+    if (code == G94) {
         const Vec6 p1 = at(a[0], single_.z + single_.r), p2 = at(single_.x, single_.z), p3 = at(single_.x, a[2]);
         straight(MotionKind::rapid, p1, std::nan(""));
         straight(MotionKind::line, p2, feed_at(p2));
@@ -70,7 +70,7 @@ void Interp::single_cycle(const BlockWords& bw, int code) {
     } else {
         const Vec6 p1 = at(single_.x + single_.r, a[2]), p2 = at(single_.x, single_.z), p3 = at(a[0], single_.z);
         straight(MotionKind::rapid, p1, std::nan(""));
-        if (code == 920) {
+        if (code == G92) {
             thread_cut(p1, p2, thread_chamfer_length(feed_ / scale()), profile_.thread_chamfer_angle, a[0] >= p2[0] ? 1.0 : -1.0);
             straight(MotionKind::rapid, at(a[0], pos_[2]), std::nan(""));
         } else {

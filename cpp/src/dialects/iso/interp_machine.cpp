@@ -43,7 +43,7 @@ void Interp::remap_call(const MachineCode& c, const BlockWords& bw, const std::s
     const bool at = c.argspec.find('@') != std::string::npos;
     for (char ch : c.argspec) {
         if (ch == '>' || ch == '^') {
-            const double v = ch == '>' ? (st_.feed_mode == 930 ? feed_ : feed_ / scale()) : spindles_[0].speed;
+            const double v = ch == '>' ? (st_.feed_mode == G93 ? feed_ : feed_ / scale()) : spindles_[0].speed;
             if (v <= 0) unmet += ch == '>' ? "F>0," : "S>0,";
             else named.emplace_back(ch == '>' ? "f" : "s", v);
             continue;

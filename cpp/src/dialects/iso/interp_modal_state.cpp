@@ -29,29 +29,29 @@ std::string g_text(int code10) {
 ModalSnapshot Interp::snapshot() const {
     ModalSnapshot s;
     s.g.fill(-1);
-    s.g[3] = st_.plane == Plane::xy ? 170 : st_.plane == Plane::zx ? 180 : 190;
-    s.g[4] = radius_.side > 0 ? 410 : radius_.side < 0 ? 420 : 400;  // G41.1/G42.1 as G41/G42
-    s.g[5] = st_.inch ? 200 : 210;
-    s.g[6] = st_.incremental ? 910 : 900;
-    s.g[7] = st_.feed_mode == 930 ? 930 : st_.feed_mode == 940 ? 940 : 950;
-    s.g[8] = st_.coord_system <= 6 ? 530 + 10 * st_.coord_system : 590 + st_.coord_system - 6;
-    s.g[9] = tlo_.isZero(0) ? 490 : 430;  // any offset applied: G43 (G43.1, G43.2 among them)
-    s.g[10] = st_.retract_initial ? 980 : 990;
+    s.g[3] = st_.plane == Plane::xy ? G17 : st_.plane == Plane::zx ? G18 : G19;
+    s.g[4] = radius_.side > 0 ? G41 : radius_.side < 0 ? G42 : G40;  // G41.1/G42.1 as G41/G42
+    s.g[5] = st_.inch ? G20 : G21;
+    s.g[6] = st_.incremental ? G91 : G90;
+    s.g[7] = st_.feed_mode == G93 ? G93 : st_.feed_mode == G94 ? G94 : G95;
+    s.g[8] = st_.coord_system <= 6 ? G53 + 10 * st_.coord_system : G59 + st_.coord_system - 6;
+    s.g[9] = tlo_.isZero(0) ? G49 : G43;  // any offset applied: G43 (G43.1, G43.2 among them)
+    s.g[10] = st_.retract_initial ? G98 : G99;
     s.g[11] = st_.path_control;
-    s.g[13] = spindles_[0].css ? 960 : 970;
-    s.g[14] = st_.arc_absolute ? 901 : 911;
-    s.g[15] = st_.diameter ? 70 : 80;
-    s.g[16] = g92_on_ ? 923 : 922;
+    s.g[13] = spindles_[0].css ? G96 : G97;
+    s.g[14] = st_.arc_absolute ? G90_1 : G91_1;
+    s.g[15] = st_.diameter ? G7 : G8;
+    s.g[16] = g92_on_ ? G92_3 : G92_2;
     s.m.fill(-1);
-    s.m[2] = spindles_[0].turning > 0 ? 3 : spindles_[0].turning < 0 ? 4 : 5;
-    s.m[4] = machine_.mist ? 7 : machine_.flood ? -1 : 9;
-    s.m[5] = machine_.flood ? 8 : -1;
+    s.m[2] = spindles_[0].turning > 0 ? M3 : spindles_[0].turning < 0 ? M4 : M5;
+    s.m[4] = machine_.mist ? M7 : machine_.flood ? -1 : M9;
+    s.m[5] = machine_.flood ? M8 : -1;
     // LinuxCNC 2.9.0 tests its per-spindle override array as a truth value: always true, so
     // the slot says M48 or M51, never M49 or M50.
-    s.m[6] = machine_.feed_override ? 48 : 51;
-    s.m[7] = machine_.adaptive_feed ? 52 : -1;
-    s.m[8] = machine_.feed_hold ? 53 : -1;
-    s.feed = st_.feed_mode == 930 ? feed_ : feed_ / scale();
+    s.m[6] = machine_.feed_override ? M48 : M51;
+    s.m[7] = machine_.adaptive_feed ? M52 : -1;
+    s.m[8] = machine_.feed_hold ? M53 : -1;
+    s.feed = st_.feed_mode == G93 ? feed_ : feed_ / scale();
     s.speed = spindles_[0].speed;
     s.tolerance = tolerance_;
     s.naivecam = naivecam_;
@@ -63,15 +63,15 @@ ModalSnapshot Interp::snapshot() const {
 bool Interp::modal_state(const BlockWords& bw) {
     ModalSnapshot& saved = frames_.back().saved;
     const int code = bw.m[m_spindle];
-    if (code == 700 || code == 730) {
+    if (code == M70 || code == M73) {
         // M73 in a subroutine arms the restore on return; it stays armed (M71, M70 after it).
-        const bool on_return = saved.restore_on_return || (code == 730 && frames_.size() > 1);
+        const bool on_return = saved.restore_on_return || (code == M73 && frames_.size() > 1);
         saved = snapshot();
         saved.valid = true;
         saved.restore_on_return = on_return;
         return false;
     }
-    if (code == 710) {
+    if (code == M71) {
         saved.valid = false;  // a restore on return stays armed for a later M70
         return false;
     }
@@ -115,7 +115,7 @@ void Interp::run_restore_text(const std::string& text, int column) {
 bool Interp::restore_modal(const ModalSnapshot& saved, int column) {
     bool ran = false;
     if (saved.g[5] != (st_.inch ? 200 : 210)) {  // units first, so that F is read in them
-        run_restore_text(saved.g[5] == 200 ? "G20" : "G21", column);
+        run_restore_text(saved.g[5] == G20 ? "G20" : "G21", column);
         ran = true;
     }
     const ModalSnapshot now = snapshot();
@@ -127,16 +127,16 @@ bool Interp::restore_modal(const ModalSnapshot& saved, int column) {
     for (int slot : {3, 4, 6, 7, 8, 9, 10, 11, 13, 14, 15, 16}) {
         const int v = saved.g[static_cast<std::size_t>(slot)];
         if (v == now.g[static_cast<std::size_t>(slot)] || v < 0) continue;
-        if (slot == 11 && v == 640) g64 = true;  // written last, with its P and Q
+        if (slot == 11 && v == G64) g64 = true;  // written last, with its P and Q
         else text += g_text(v);
     }
-    if (g64 && saved.g[11] == 640)
+    if (g64 && saved.g[11] == G64)
         text += saved.tolerance < 0 ? std::string(" G64")
               : saved.naivecam < 0  ? printf_number(" G64 P%f", saved.tolerance)
                                     : printf_number(" G64 P%f", saved.tolerance) + printf_number(" Q%f", saved.naivecam);
     for (int slot : {2, 4, 5, 6, 7, 8}) {
         const int v = saved.m[static_cast<std::size_t>(slot)];
-        if (v != now.m[static_cast<std::size_t>(slot)] && v >= 0) text += "M" + std::to_string(v) + "\n";
+        if (v != now.m[static_cast<std::size_t>(slot)] && v >= 0) text += "M" + std::to_string(v / 10) + "\n";
     }
     if (text.empty()) return ran;
     run_restore_text(text, column);

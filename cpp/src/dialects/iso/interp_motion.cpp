@@ -93,33 +93,33 @@ void Interp::polar_checks(const BlockWords& bw) const {
     if (st_.plane != Plane::xy) fail(code::polar_coordinates, "Cannot use polar coordinate except in G17 plane", col);
     if (bw.has('X')) fail(code::polar_coordinates, "Cannot specify both polar coordinate and X word", bw['X'].column);
     if (bw.has('Y')) fail(code::polar_coordinates, "Cannot specify both polar coordinate and Y word", bw['Y'].column);
-    if (g0 == 920) fail(code::polar_coordinates, "Polar coordinates can only be used for motion", col);
-    if (g0 == 530) fail(code::polar_coordinates, "Cannot use polar coordinates with G53", col);
-    if (g0 == 100 || g0 == 280 || g0 == 300 || g0 == 520)
+    if (g0 == G92) fail(code::polar_coordinates, "Polar coordinates can only be used for motion", col);
+    if (g0 == G53) fail(code::polar_coordinates, "Cannot use polar coordinates with G53", col);
+    if (g0 == G10 || g0 == G28 || g0 == G30 || g0 == G52)
         fail(code::unsupported_word, "Polar coordinates with G" + std::to_string(g0 / 10) + " are not supported by toolcomp", col);
 }
 
 // LinuxCNC keeps an inverse-time move's rate as its feed rate (what a canned cycle in G93
 // finds: zero before any such move).
 void Interp::inverse_time_rate(double feed) {
-    if (st_.feed_mode == 930 && profile_.feed_mode_clears_feed) feed_ = feed;
+    if (st_.feed_mode == G93 && profile_.feed_mode_clears_feed) feed_ = feed;
 }
 
 // Feed per revolution needs a spindle speed (S; M5 keeps it).
 void Interp::check_feed_per_rev(int column) const {
-    if (st_.feed_mode == 950 && spindle().speed == 0)
+    if (st_.feed_mode == G95 && spindle().speed == 0)
         fail(code::zero_spindle_speed, "Cannot feed with zero spindle speed in feed per rev mode", column);
 }
 
 double Interp::feed_for(const BlockWords& bw, int code, double length, double x_end) const {
-    if (code == 0) return std::nan("");
+    if (code == G0) return std::nan("");
     switch (st_.feed_mode) {
-        case 930:  // inverse time: the move takes 1/F minutes
+        case G93:  // inverse time: the move takes 1/F minutes
             if (!bw.has('F'))
                 fail(code::inverse_time_feed_missing,
-                     code == 10 ? "F word missing with inverse time g1 move" : "F word missing with inverse time arc move");
+                     code == G1 ? "F word missing with inverse time g1 move" : "F word missing with inverse time arc move");
             return std::max(profile_.inverse_time_min_rate * scale(), bw['F'].value * length);
-        case 950: {  // units per revolution
+        case G95: {  // units per revolution
             const double rpm = spindle_rpm(x_end);
             return std::isfinite(rpm) ? feed_ * rpm : std::nan("");
         }
@@ -194,9 +194,9 @@ void Interp::motion_line(const BlockWords& bw, int code, bool machine_coords) {
             if (bw.has(kAxisLetter[i])) m[i] = axis_value(bw, i);
         end = from_machine(m);
     }
-    if (code == 10 && st_.feed_mode != 930 && feed_ <= 0)
+    if (code == G1 && st_.feed_mode != G93 && feed_ <= 0)
         fail(code::zero_feed, "Cannot do g1 with zero feed rate", bw.axis_column());
-    if (code == 10) check_feed_per_rev(bw.axis_column());
+    if (code == G1) check_feed_per_rev(bw.axis_column());
     if (machine_coords && comp_on() && radius_.radius > 0)
         fail(code::comp_g53, "Cannot use g53 with cutter radius comp", bw.g_column[g_nonmodal]);
     // The length an inverse-time feed is worked out from: of X, Y, Z, or, when only rotary
@@ -204,8 +204,8 @@ void Interp::motion_line(const BlockWords& bw, int code, bool machine_coords) {
     double length = (end.head<3>() - pos_.head<3>()).norm() * scale();
     if (length == 0) length = (end.tail<3>() - pos_.tail<3>()).norm() * scale();
     double feed = feed_for(bw, code, length, end[0]);
-    if (code == 10) inverse_time_rate(feed);
-    straight(code == 0 ? MotionKind::rapid : MotionKind::line, end, feed);
+    if (code == G1) inverse_time_rate(feed);
+    straight(code == G0 ? MotionKind::rapid : MotionKind::line, end, feed);
 }
 
 // LinuxCNC's check of a centre-format arc: both ends at a radius above the least, and on one
@@ -239,7 +239,7 @@ void Interp::motion_arc(const BlockWords& bw, int code) {
     const char a_l = letters[ax.a], b_l = letters[ax.b];
     const char a_off = offset_letter[ax.a], b_off = offset_letter[ax.b], c_off = offset_letter[ax.c];
     if (arc_not_allowed_) fail(code::comp_exit_arc, profile_.radius.messages.exit_arc);
-    if (st_.feed_mode != 930 && feed_ <= 0) fail(code::zero_feed, "Cannot make arc with zero feed rate");
+    if (st_.feed_mode != G93 && feed_ <= 0) fail(code::zero_feed, "Cannot make arc with zero feed rate");
     check_feed_per_rev(0);
     const bool r_form = bw.has('R');
     if (r_form && (bw.has('I') || bw.has('J') || bw.has('K')))
@@ -278,7 +278,7 @@ void Interp::motion_arc(const BlockWords& bw, int code) {
     Vec6 end = find_end(bw);
     Vec2 s(pos_[ax.a], pos_[ax.b]), e(end[ax.a], end[ax.b]);
     Vec2 c;
-    const int dir = code == 30 ? 1 : -1;
+    const int dir = code == G3 ? 1 : -1;
     if (r_form) {
         if (s == e) fail(code::arc_same_point, "Current point same as end point of arc", bw['R'].column);
         const double R = bw['R'].value;
@@ -302,13 +302,13 @@ void Interp::motion_arc(const BlockWords& bw, int code) {
     Vec6 centre = pos_;
     centre[ax.a] = c.x();
     centre[ax.b] = c.y();
-    Motion m = motion_to(code == 30 ? MotionKind::arc_ccw : MotionKind::arc_cw, end);
+    Motion m = motion_to(code == G3 ? MotionKind::arc_ccw : MotionKind::arc_cw, end);
     m.center = centre.head<3>();
     m.turns = p - 1;
     // An inverse-time arc's length as LinuxCNC measures it: the start radius times the sweep
     // (a slight spiral is not averaged), with the helix rise.
     double length = 0;
-    if (st_.feed_mode == 930) {
+    if (st_.feed_mode == G93) {
         const Arc a = m.arc();
         length = std::hypot(arc_start_radius(a) * arc_sweep(a), end[ax.c] - pos_[ax.c]) * scale();
     }

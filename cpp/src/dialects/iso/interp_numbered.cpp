@@ -73,7 +73,7 @@ void Interp::numbered_return(std::size_t k) {
     const Frame& f = frames_.back();
     const Program& p = f.prog();
     for (const Word& w : p.words(p.blocks()[k]))
-        if (w.letter != 'N' && !(w.letter == 'M' && w.value == 99))
+        if (w.letter != 'N' && !(w.letter == 'M' && w.value == written(M99)))
             fail(code::bad_o_word, "Unexpected character after O-word", w.column);
     if (f.kind == Frame::o_call)
         fail(code::o_word_structure, "'O.... endsub' or 'O.... return' must follow 'O.... sub' subroutine definition");

@@ -122,7 +122,7 @@ void Interp::g10(const BlockWords& bw) {
 
 void Interp::g92(const BlockWords& bw, int code) {
     switch (code) {
-        case 920: {
+        case G92: {
             Vec6 value = g92_;
             for (int i = 0; i < 6; ++i)
                 if (bw.has(kAxisLetter[i])) value[i] = pos_[i] + g92_[i] - axis_value(bw, i);
@@ -131,7 +131,7 @@ void Interp::g92(const BlockWords& bw, int code) {
             g92_on_ = true;
             break;
         }
-        case 520: {  // G52: a local offset of the work coordinate system, G92's storage (LinuxCNC)
+        case G52: {  // G52: a local offset of the work coordinate system, G92's storage (LinuxCNC)
             Vec6 value = g92_;
             for (int i = 0; i < 6; ++i)
                 if (bw.has(kAxisLetter[i])) value[i] = axis_value(bw, i);
@@ -140,9 +140,9 @@ void Interp::g92(const BlockWords& bw, int code) {
             g92_on_ = true;
             break;
         }
-        case 921: change_offset(g92_, Vec6::Zero()); g92_saved_.setZero(); g92_on_ = false; break;
-        case 922: change_offset(g92_, Vec6::Zero()); g92_on_ = false; break;
-        case 923: change_offset(g92_, g92_saved_); g92_on_ = true; break;
+        case G92_1: change_offset(g92_, Vec6::Zero()); g92_saved_.setZero(); g92_on_ = false; break;
+        case G92_2: change_offset(g92_, Vec6::Zero()); g92_on_ = false; break;
+        case G92_3: change_offset(g92_, g92_saved_); g92_on_ = true; break;
         default: break;
     }
 }
@@ -164,8 +164,8 @@ void Interp::g50(const BlockWords& bw) {
 }
 
 void Interp::home(const BlockWords& bw, int code) {
-    Vec6& stored = (code == 280 || code == 281) ? g28_ : g30_;
-    if (code == 281 || code == 301) {  // G28.1 / G30.1: remember where the machine is
+    Vec6& stored = (code == G28 || code == G28_1) ? g28_ : g30_;
+    if (code == G28_1 || code == G30_1) {  // G28.1 / G30.1: remember where the machine is
         if (comp_on())
             fail(code::comp_set_home, "Cannot set reference point with cutter compensation in effect",
                  bw.g_column[g_nonmodal]);

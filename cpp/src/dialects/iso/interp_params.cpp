@@ -134,19 +134,19 @@ void Interp::set_param(double number, double v, int column) {
 
 void MachineSwitches::update(const BlockWords& bw) {
     if (int c = bw.m[m_coolant]; c >= 0) {
-        if (c == 70) mist = true;
-        else if (c == 80) flood = true;
+        if (c == M7) mist = true;
+        else if (c == M8) flood = true;
         else mist = flood = false;  // M9
     }
     if (int ov = bw.m[m_override]; ov >= 0) {
         const bool on = !bw.has('P') || bw['P'].value != 0;
         switch (ov) {
-            case 480: feed_override = speed_override = true; break;
-            case 490: feed_override = speed_override = false; break;
-            case 500: feed_override = on; break;
-            case 510: speed_override = on; break;
-            case 520: adaptive_feed = on; break;
-            case 530: feed_hold = on; break;
+            case M48: feed_override = speed_override = true; break;
+            case M49: feed_override = speed_override = false; break;
+            case M50: feed_override = on; break;
+            case M51: speed_override = on; break;
+            case M52: adaptive_feed = on; break;
+            case M53: feed_hold = on; break;
             default: break;
         }
     }
@@ -175,7 +175,7 @@ bool Interp::mode_param(const std::string& name, double& v) const {
     auto flag = [&](bool b) { return v = b ? 1.0 : 0.0, true; };
     if (name == "_coord_system") {
         const int c = st_.coord_system;
-        return v = c <= 6 ? 530 + 10 * c : 590 + (c - 6), true;
+        return v = c <= 6 ? G53 + 10 * c : G59 + (c - 6), true;
     }
     if (name == "_motion_mode") return v = st_.motion, true;
     if (name == "_plane") return v = st_.plane == Plane::xy ? 170 : st_.plane == Plane::zx ? 180 : 190, true;
@@ -189,13 +189,13 @@ bool Interp::mode_param(const std::string& name, double& v) const {
     if (name == "_vminor") return v = 0, true;
     if (name == "_spindle_on") return flag(spindles_[0].turning != 0);
     if (name == "_spindle_cw") return flag(spindles_[0].turning > 0);
-    if (name == "_units_per_minute") return flag(st_.feed_mode == 940);
-    if (name == "_units_per_rev") return flag(st_.feed_mode == 950);
-    if (name == "_inverse_time") return flag(st_.feed_mode == 930);
+    if (name == "_units_per_minute") return flag(st_.feed_mode == G94);
+    if (name == "_units_per_rev") return flag(st_.feed_mode == G95);
+    if (name == "_inverse_time") return flag(st_.feed_mode == G93);
     if (name == "_ijk_absolute_mode") return flag(st_.arc_absolute);
     if (name == "_lathe_diameter_mode") return flag(st_.diameter);
     if (name == "_lathe_radius_mode") return flag(!st_.diameter);
-    if (name == "_tool_offset") return flag(st_.length_mode != 490);
+    if (name == "_tool_offset") return flag(st_.length_mode != G49);
     if (name == "_retract_r_plane") return flag(!st_.retract_initial);
     if (name == "_retract_old_z") return flag(st_.retract_initial);
     if (name == "_mist") return flag(machine_.mist);
@@ -220,7 +220,7 @@ double Interp::get(const std::string& name, std::span<const double>) {
     if (name == "_incremental") return st_.incremental ? 1 : 0;
     if (name == "_current_tool") return tool_;
     if (name == "_selected_tool") return selected_;
-    if (name == "_feed") return st_.feed_mode == 930 ? feed_ : feed_ / scale();
+    if (name == "_feed") return st_.feed_mode == G93 ? feed_ : feed_ / scale();
     if (name == "_rpm") return std::fabs(spindles_[0].speed);
     if (name.size() == 2 && name[0] == '_') {
         static constexpr char kAxes[] = "xyzabc";

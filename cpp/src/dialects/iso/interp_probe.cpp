@@ -19,7 +19,7 @@ void Interp::probe(const BlockWords& bw, int code) {
     const int type = code - 382;  // bit 0: no error without contact; bit 1: probe away from the part
     const std::string name = "G38." + std::to_string(code - 380);
     if (feed_ == 0) fail(code::probe_words, "Cannot probe with zero feed rate", col);
-    if (st_.feed_mode == 950) fail(code::probe_words, "Cannot probe with feed per rev mode", col);
+    if (st_.feed_mode == G95) fail(code::probe_words, "Cannot probe with feed per rev mode", col);
     const Vec6 target = find_end(bw);
     if ((type & 1) == 0 && target == pos_) fail(code::probe_words, "Start point too close to probe point", col);
     const bool given = probes_used_ < opts_.probes.size();

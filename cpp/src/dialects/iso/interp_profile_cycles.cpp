@@ -48,7 +48,7 @@ void Interp::profile_piece(const BlockWords& w, int& mode, Point& at, std::vecto
     if (inc) end += at;
     if (w.g[g_motion] >= 0) mode = w.g[g_motion];
     if (end == at) return;
-    const bool straight = mode == 0 || mode == 10, arc = mode == 20 || mode == 30;
+    const bool straight = mode == G0 || mode == G1, arc = mode == G2 || mode == G3;
     if (straight) pieces.push_back({Piece::line, at, end});
     if (arc) {
         Point centre(w.has('K') ? w['K'].value : 0.0, w.has('I') ? w['I'].value : 0.0);
@@ -59,13 +59,13 @@ void Interp::profile_piece(const BlockWords& w, int& mode, Point& at, std::vecto
                 fail(code::profile_cycle_block, "G7x error: the arc's radius R is less than half the distance to its end",
                      w['R'].column);
             const Point d = Point(0, 1) * std::sqrt((r * r - chord2 / 4) / chord2) * (end - at);
-            centre = (at + end) / 2.0 + (mode == 30 ? d : -d);
+            centre = (at + end) / 2.0 + (mode == G3 ? d : -d);
         } else {
             if (!w.has('I') && !w.has('K'))
                 fail(code::profile_cycle_block, "G7X error: either I or K must be present for arc", w.g_column[g_motion]);
             if (!st_.arc_absolute) centre += at;
         }
-        pieces.push_back({Piece::arc, at, end, centre, mode == 30});
+        pieces.push_back({Piece::arc, at, end, centre, mode == G3});
     }
     if (straight || arc) {
         if (w.has('A') && w.has('C')) refuse('C', "Both A and C parameters on a corner", 'X');
@@ -125,14 +125,14 @@ void Interp::profile_cycle(const BlockWords& bw, int code) {
     const int col = bw.g_column[g_motion];
     const std::string name = cycle_name(code);
     if (!bw.has('Q')) fail(code::profile_cycle_words, "G7x.x  requires a Q word", col);
-    if (comp_on() && code != 700) fail(code::profile_cycle_start, name + " cannot be used with cutter compensation enabled", col);
+    if (comp_on() && code != G70) fail(code::profile_cycle_start, name + " cannot be used with cutter compensation enabled", col);
     if (st_.plane != Plane::zx) fail(code::profile_cycle_start, name + " can only be used in XZ plane (G18)", col);
     if (comp_on())
         fail(code::profile_cycle_start,
              "G70 under cutter radius compensation: LinuxCNC 2.9.0 rapids to a wrong point first, later versions "
              "switch compensation off for the rapids; not supported by toolcomp",
              col);
-    if (st_.feed_mode == 930) fail(code::cycle_inverse_time, name + " in inverse time feed (G93): not supported by toolcomp", col);
+    if (st_.feed_mode == G93) fail(code::cycle_inverse_time, name + " in inverse time feed (G93): not supported by toolcomp", col);
     // The start point: X / Z (G91: from here). The first rapid goes to the words as absolute
     // coordinates even in G91, as LinuxCNC's does.
     const Vec6 start = find_end(bw);
@@ -158,7 +158,7 @@ void Interp::profile_cycle(const BlockWords& bw, int code) {
     const std::size_t max_moves = std::min(kMaxMoves, block_budget());
     std::vector<cycles::Step> steps;
     try {
-        if (code == 700) {
+        if (code == G70) {
             steps = cycles::profile::finish(std::move(pieces), {word('D', 0), word('E', 0), word('P', 1)}, max_moves);
         } else {
             const double depth = word('I', 1);

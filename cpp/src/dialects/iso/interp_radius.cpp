@@ -12,7 +12,7 @@ namespace toolcomp::iso {
 
 void Interp::radius_comp(const BlockWords& bw, int code) {
     const int col = bw.g_column[g_radius_comp];
-    if (code == 400) {
+    if (code == G40) {
         Vec3 dir = Vec3::Zero();
         if (profile_.radius.exit_direction_words) {
             const char* offs = "IJK";
@@ -26,8 +26,8 @@ void Interp::radius_comp(const BlockWords& bw, int code) {
         radius_ = {};
         return;
     }
-    const bool dynamic = code == 411 || code == 421;
-    const std::string name = code == 410 ? "G41" : code == 420 ? "G42" : code == 411 ? "G41.1" : "G42.1";
+    const bool dynamic = code == G41_1 || code == G42_1;
+    const std::string name = code == G41 ? "G41" : code == G42 ? "G42" : code == G41_1 ? "G41.1" : "G42.1";
     if (st_.plane == Plane::yz && !profile_.radius.yz_plane) fail(code::comp_plane, profile_.radius.messages.plane, col);
     if (comp_on() && !profile_.radius.side_change) fail(code::comp_already_on, profile_.radius.messages.already_on, col);
 
@@ -43,7 +43,7 @@ void Interp::radius_comp(const BlockWords& bw, int code) {
     } else if (profile_.t_offsets) {
         if (bw.has('D'))
             fail(code::comp_d_on_lathe, "D word is not used here: the T word's offset gives the nose radius", bw['D'].column);
-        radius_.side = static_cast<std::int8_t>(code == 410 ? 1 : -1);
+        radius_.side = static_cast<std::int8_t>(code == G41 ? 1 : -1);
         radius_.checks = checks_;
         set_radius_from_offset();
         return;
@@ -70,7 +70,7 @@ void Interp::radius_comp(const BlockWords& bw, int code) {
         if (orientation != 0 && orientation != 9 && st_.plane != Plane::zx)
             fail(code::comp_lathe_tool_plane, name + " with lathe tool, but plane is not G18", col);
     }
-    int side = (code == 410 || code == 411) ? 1 : -1;
+    int side = (code == G41 || code == G41_1) ? 1 : -1;
     if (radius < 0) {  // a negative radius cuts on the other side
         side = -side;
         radius = -radius;

@@ -28,8 +28,8 @@ void Interp::spindle_choice(const BlockWords& bw, int motion_to_be) const {
     if (!bw.has('$')) return;
     const int col = bw['$'].column;
     const int sp = bw.m[m_spindle], ov = bw.m[m_override];
-    const bool sync = motion_to_be == 330 || motion_to_be == 331 || motion_to_be == 760;
-    if (!(sp == 30 || sp == 40 || sp == 50 || sp == 190 || ov == 510 || sync || bw.has('S') || bw.g[g_feed_mode] >= 0 ||
+    const bool sync = motion_to_be == G33 || motion_to_be == G33_1 || motion_to_be == G76;
+    if (!(sp == M3 || sp == M4 || sp == M5 || sp == M19 || ov == M51 || sync || bw.has('S') || bw.g[g_feed_mode] >= 0 ||
           bw.g[g_spindle_mode] >= 0))
         fail(code::spindle_choice,
              "$ (spindle selection) word with no M3, M4, M5, M19, M51, G33, G33.1, G76, G95, G96 or G97 to use it", col);
@@ -42,13 +42,13 @@ void Interp::spindle_choice(const BlockWords& bw, int motion_to_be) const {
     if (bw.g[g_spindle_mode] >= 0) check(false, "Invalid spindle ($) number in Spindle Mode command");
     if (bw.g[g_feed_mode] >= 0) check(false, "Invalid spindle ($) number in Spindle Feed command");
     if (bw.has('S')) check(true, "Invalid spindle ($) number in Spindle speed command");
-    if (sp == 30 || sp == 40 || sp == 50)
+    if (sp == M3 || sp == M4 || sp == M5)
         check(true, "Spindle ($) number out of range in M" + std::to_string(sp / 10) + " Command");
-    if (sp == 190) check(false, "Spindle ($) number out of range in M19 Command");
-    if (ov == 510 && (n < 1 || n >= kSpindles)) fail(code::spindle_choice, "Invalid spindle ($) number in M51 command", col);
-    if (motion_to_be == 330) check(false, "Invalid spindle ($) number in G33 move");
-    if (motion_to_be == 331) check(false, "Invalid spindle ($) number in G33.1 move");
-    if (motion_to_be == 760) check(false, "Invalid D-number in G76 cycle");
+    if (sp == M19) check(false, "Spindle ($) number out of range in M19 Command");
+    if (ov == M51 && (n < 1 || n >= kSpindles)) fail(code::spindle_choice, "Invalid spindle ($) number in M51 command", col);
+    if (motion_to_be == G33) check(false, "Invalid spindle ($) number in G33 move");
+    if (motion_to_be == G33_1) check(false, "Invalid spindle ($) number in G33.1 move");
+    if (motion_to_be == G76) check(false, "Invalid D-number in G76 cycle");
 }
 
 // S, G96/G97 and G93-G95 as LinuxCNC 2.9 takes them with $: the spindle mode and the feed
@@ -60,15 +60,15 @@ void Interp::spindle_words(const BlockWords& bw) {
     if (int sm = bw.g[g_spindle_mode]; sm >= 0) {  // G96 (D: its speed limit) / G97
         active_spindle_ = n;
         Spindle& s = spindle();
-        s.css = sm == 960;
+        s.css = sm == G96;
         if (s.css) s.css_max = bw.has('D') ? std::fabs(bw['D'].value) : 0;  // no D: no limit
     }
     if (bw.g[g_feed_mode] >= 0) active_spindle_ = n;
     if (dollar) {  // G33, G33.1, G76 with $ follow that spindle (the motion only looked up then)
         const int motion = motion_of(bw);
-        if (motion == 330 || motion == 331 || motion == 760) active_spindle_ = n;
+        if (motion == G33 || motion == G33_1 || motion == G76) active_spindle_ = n;
     }
-    if (bw.has('S') && bw.g[g_nonmodal] != 500) {  // (G50 S: the spindle clamp of a Fanuc lathe)
+    if (bw.has('S') && bw.g[g_nonmodal] != G50) {  // (G50 S: the spindle clamp of a Fanuc lathe)
         for (int i = 0; i < spindle_count(); ++i)
             if (i == n || (dollar && n == -1)) spindles_[static_cast<std::size_t>(i)].speed = bw['S'].value;
     }
@@ -80,11 +80,11 @@ void Interp::spindle_words(const BlockWords& bw) {
 void Interp::spindle_turn(const BlockWords& bw, int code) {
     const bool dollar = bw.has('$');
     const int n = dollar ? static_cast<int>(bw['$'].value) : 0;
-    const int turning = code == 30 ? 1 : code == 40 ? -1 : 0;
-    const bool all = code == 190 || (dollar && n == -1);
+    const int turning = code == M3 ? 1 : code == M4 ? -1 : 0;
+    const bool all = code == M19 || (dollar && n == -1);
     for (int i = 0; i < spindle_count(); ++i)
         if (all || i == n) spindles_[static_cast<std::size_t>(i)].turning = turning;
-    if (code == 190 && bw.has('Q') && bw['Q'].value <= 0.0)
+    if (code == M19 && bw.has('Q') && bw['Q'].value <= 0.0)
         fail(code::spindle_orient_words, "Q word with M19 requires a value > 0", bw['Q'].column);
 }
 

@@ -136,15 +136,15 @@ void Interp::spline(const BlockWords& bw, int code) {
     auto bad = [&](const char* msg) { fail(code::spline_words, msg, col); };
     st_.motion = prev_motion_;  // G5 and G5.1 leave the motion mode as it was
     if (comp_on()) bad("Cannot convert spline with cutter radius compensation");
-    if (st_.feed_mode != 930 && feed_ == 0) bad("Cannot make arc with zero feed rate");
-    if (st_.feed_mode == 930 && !bw.has('F')) bad("F word missing with inverse time arc move");
+    if (st_.feed_mode != G93 && feed_ == 0) bad("Cannot make arc with zero feed rate");
+    if (st_.feed_mode == G93 && !bw.has('F')) bad("F word missing with inverse time arc move");
     if (st_.plane != Plane::xy) bad("Splines must be in the XY plane");
     if (bw.has('Z') || bw.has('A') || bw.has('B') || bw.has('C')) bad("Splines may not have motion in Z, A, B, or C");
     const bool i = bw.has('I'), j = bw.has('J');
-    if (code == 51 && !(i && j)) bad("Must specify both I and J with G5.1");
-    if (code == 50 && i != j) bad("Must specify both I and J, or neither");
+    if (code == G5_1 && !(i && j)) bad("Must specify both I and J with G5.1");
+    if (code == G5 && i != j) bad("Must specify both I and J, or neither");
     const Vec6 end = find_end(bw);
-    if (code == 50 && !(bw.has('P') && bw.has('Q'))) bad("Must specify both P and Q with G5");
+    if (code == G5 && !(bw.has('P') && bw.has('Q'))) bad("Must specify both P and Q with G5");
     if (!nurbs_points_.empty())
         fail(code::spline_words,
              "G5 or G5.1 after G5.2 control points that no G5.3 ended: LinuxCNC puts them before the spline's; not "
@@ -152,7 +152,7 @@ void Interp::spline(const BlockWords& bw, int code) {
              col);
     const double sx = pos_[0], sy = pos_[1];
     std::vector<std::array<double, 3>> cps{{sx, sy, 1}};
-    if (code == 50) {
+    if (code == G5) {
         const double ci = i ? bw['I'].value : cyc_.i, cj = j ? bw['J'].value : cyc_.j;
         cps.push_back({sx + ci, sy + cj, 1});
         cps.push_back({end[0] + bw['P'].value, end[1] + bw['Q'].value, 1});
@@ -162,7 +162,7 @@ void Interp::spline(const BlockWords& bw, int code) {
         cps.push_back({sx + bw['I'].value, sy + bw['J'].value, 1});
     }
     cps.push_back({end[0], end[1], 1});
-    nurbs_feed(cps, code == 50 ? 4 : 3, col);
+    nurbs_feed(cps, code == G5 ? 4 : 3, col);
     pos_[0] = end[0];
     pos_[1] = end[1];
 }
@@ -185,8 +185,8 @@ void Interp::nurbs_point(const BlockWords& bw) {
              col);
     if (!x && p && w > 0 && !nurbs_points_.empty()) bad("Can specify P without X and Y only for the first control point");
     if (w <= 0 && !nurbs_points_.empty()) bad("Must specify positive weight P for every Control Point");
-    if (st_.feed_mode != 930 && feed_ == 0) bad("Cannot make a NURBS with 0 feedrate");
-    if (prev_motion_ != 52) nurbs_points_.clear();
+    if (st_.feed_mode != G93 && feed_ == 0) bad("Cannot make a NURBS with 0 feedrate");
+    if (prev_motion_ != G5_2) nurbs_points_.clear();
     if (nurbs_points_.empty()) {
         nurbs_points_.push_back({pos_[0], pos_[1], p && w > 0 && !x && !y ? w : 1.0});
         nurbs_order_ = 3;
@@ -200,9 +200,9 @@ void Interp::nurbs_point(const BlockWords& bw) {
 
 void Interp::nurbs_end(const BlockWords& bw) {
     const int col = bw.g_column[g_nonmodal];
-    if (bw.g[g_motion] >= 0 && bw.g[g_motion] != 52)
+    if (bw.g[g_motion] >= 0 && bw.g[g_motion] != G5_2)
         fail(code::spline_words, "Between G5.2 and G5.3 codes, only additional G5.2 codes are allowed.", col);
-    if (st_.motion != 52) fail(code::spline_words, "Cannot use G5.3 without G5.2 first", col);
+    if (st_.motion != G5_2) fail(code::spline_words, "Cannot use G5.3 without G5.2 first", col);
     // The basis takes 2^order steps, a curve 12 n^2 of them: bounds that no real curve reaches.
     if (nurbs_order_ > kMaxNurbsOrder || nurbs_points_.size() > kMaxNurbsPoints)
         fail(code::spline_words,

@@ -91,7 +91,7 @@ void Interp::select_tool(const BlockWords& bw) {
 }
 
 void Interp::change_tool(const BlockWords& bw, int mcode) {
-    if (mcode == 60) {  // M6: the prepared tool goes into the spindle; no length offset yet
+    if (mcode == M6) {  // M6: the prepared tool goes into the spindle; no length offset yet
         if (selected_ >= 0) tool_ = selected_;
         if (profile_.tool_change_stops_spindle)
             for (Spindle& s : spindles_) s.turning = 0;
@@ -121,11 +121,11 @@ void Interp::length_comp(const BlockWords& bw, int code) {
         return t;
     };
     switch (code) {
-        case 490:
+        case G49:
             change_offset(tlo_, Vec6::Zero());
             break;
-        case 430:
-        case 440: {
+        case G43:
+        case G44: {
             int t = 0;
             if (profile_.modal_offset_numbers) {  // Fanuc: the H number is modal, H0 no offset
                 if (bw.has('H')) last_h_ = h_tool();
@@ -135,17 +135,17 @@ void Interp::length_comp(const BlockWords& bw, int code) {
                 if (t == 0 && bw.has('H')) t = spindle_tool();  // H0: the tool in the spindle
             }
             Vec6 v = tool_offset_of(t, bw.has('H') ? bw['H'].column : col);
-            change_offset(tlo_, code == 440 ? Vec6(-v) : v);
+            change_offset(tlo_, code == G44 ? Vec6(-v) : v);
             break;
         }
-        case 431: {  // dynamic: the named components are replaced
+        case G43_1: {  // dynamic: the named components are replaced
             Vec6 v = tlo_;
             for (int i = 0; i < 6; ++i)
                 if (bw.has(kAxisLetter[i])) v[i] = axis_value(bw, i);  // G7: an X word is a diameter
             change_offset(tlo_, v);
             break;
         }
-        case 432: {  // additive
+        case G43_2: {  // additive
             bool axes = bw.has_axis();
             if (bw.has('H') && axes) fail(code::g43_2_both, "G43.2: Can not have both H and axis words", col);
             if (!bw.has('H') && !axes) fail(code::g43_2_none, "G43.2: No axes specified and H word missing", col);

@@ -78,7 +78,7 @@ Interp::ContourMoves Interp::read_contour(std::size_t from, std::size_t to) {
             if (bw.g[g] >= 0 && g != g_motion && g != g_radius_comp && g != g_spindle_mode)
                 fail(code::cycle_improper_block, "PS0066 IMPROPER G-CODE IN G71-G73: G" + shortest_number(bw.g[g] / 10.0) +
                                                      " in the contour", bw.g_column[g]);
-        if (bw.g[g_motion] >= 0 && bw.g[g_motion] != 0 && bw.g[g_motion] != 10 && bw.g[g_motion] != 20 && bw.g[g_motion] != 30)
+        if (bw.g[g_motion] >= 0 && bw.g[g_motion] != G0 && bw.g[g_motion] != G1 && bw.g[g_motion] != G2 && bw.g[g_motion] != G3)
             fail(code::cycle_improper_block, "PS0066 IMPROPER G-CODE IN G71-G73: G" + shortest_number(bw.g[g_motion] / 10.0) +
                                                  " in the contour", bw.g_column[g_motion]);
         if (bw.m_count || bw.machine_call)
@@ -110,7 +110,7 @@ Interp::ContourMoves Interp::read_contour(std::size_t from, std::size_t to) {
 // allowance (U a diameter), D the depth of cut in the one-block form.
 void Interp::roughing_cycle(const BlockWords& bw, int code) {
     const int col = bw.g_column[g_nonmodal];
-    const bool g71 = code == 710;
+    const bool g71 = code == G71;
     const char name[] = {'G', '7', g71 ? '1' : '2', '\0'};
     for (char c : {'X', 'Z'})
         if (bw.has(c))
@@ -237,7 +237,7 @@ BlockWords Interp::first_block(std::size_t from, int col) {
     const Block& b = p.blocks()[from];
     BlockWords first = collect_words(syntax_ ? block_words(b) : p.words(b), b.line, profile_, opts_.machine);
     const int motion = first.g[g_motion] >= 0 ? first.g[g_motion] : st_.motion;
-    if (motion != 0 && motion != 10)
+    if (motion != G0 && motion != G1)
         fail(code::cycle_first_block, "PS0065 ILLEGAL COMMAND IN G71-G73: the P block must be G00 or G01", col);
     return first;
 }

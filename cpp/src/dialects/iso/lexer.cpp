@@ -3,6 +3,7 @@
 #include "toolcomp/program/decimal.hpp"
 #include "toolcomp/program/text.hpp"
 
+#include "codes.hpp"
 #include "line_lexer.hpp"
 
 #include <algorithm>
@@ -144,13 +145,13 @@ void LineLexer::run() {
             fail(code::bad_line_number, "Bad format unsigned integer");
         word_value(w);
         // LinuxCNC 2.9's Fanuc-style subprogram call and return, as a line's first word.
-        if (u == 'M' && prog_.dialect == Dialect::linuxcnc && first_word_ && w.expr < 0 && (w.value == 98 || w.value == 99)) {
+        if (u == 'M' && prog_.dialect == Dialect::linuxcnc && first_word_ && w.expr < 0 && (w.value == written(M98) || w.value == written(M99))) {
             Statement st;
-            st.kind = w.value == 98 ? Stmt::m98_call : Stmt::m99_return;
+            st.kind = w.value == written(M98) ? Stmt::m98_call : Stmt::m99_return;
             st.column = w.column;
             prog_.add_statement(std::move(st));
             first_word_ = false;
-            if (w.value == 98) {  // the call is the statement; M99 stays a word for the main program
+            if (w.value == written(M98)) {  // the call is the statement; M99 stays a word for the main program
                 m98_ = true;
                 continue;
             }

@@ -9,7 +9,7 @@ struct ModalSnapshot {
     // mode, 8 coordinate system, 9 length offset, 10 retract, 11 path control, 13 spindle
     // mode, 14 arc distance, 15 lathe diameter, 16 G92 applied), -1 where unused.
     std::array<int, 17> g{};
-    // M codes by slot (2 spindle, 4 mist, 5 flood, 6 overrides, 7 adaptive feed, 8 feed
+    // M codes x 10 by slot (2 spindle, 4 mist, 5 flood, 6 overrides, 7 adaptive feed, 8 feed
     // hold); -1 where unused or (4, 5, 7, 8) where the restore leaves the slot alone.
     std::array<int, 9> m{};
     double feed = 0;   // program units per minute (G93: the inverse-time rate)

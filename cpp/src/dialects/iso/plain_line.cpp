@@ -4,6 +4,7 @@
 // else is left to it (test_plain_line.cpp compares the two on random lines).
 #include "toolcomp/program/decimal.hpp"
 
+#include "codes.hpp"
 #include "line_lexer.hpp"
 
 namespace toolcomp::iso {
@@ -35,7 +36,7 @@ bool lex_plain_line(std::string_view line, int line_no, Program& prog) {
         if (!run.plain()) break;
         k = run.end;
         const double v = decimal_value(run.m, run.frac);
-        if (u == 'M' && prog.dialect == Dialect::linuxcnc && (v == 98 || v == 99)) break;  // the lexer refuses them
+        if (u == 'M' && prog.dialect == Dialect::linuxcnc && (v == written(M98) || v == written(M99))) break;  // the lexer refuses them
         prog.add_word({u, negative ? -v : v, static_cast<int>(letter) + 1});
         first = false;
         while (k < n && is_blank(s[k])) ++k;

@@ -6,6 +6,8 @@
 
 #include "toolcomp/dialects/iso/lexer.hpp"
 
+#include "codes.hpp"
+
 namespace toolcomp::iso {
 
 namespace {
@@ -65,7 +67,7 @@ bool may_steer(std::string_view text) {
                 if (d < '0' || d > '9' || value > 1000) break;
                 value = value * 10 + (d - '0');
             }
-            if (value == 99) return true;
+            if (value * 10 == M99) return true;
         } else if ((c == 'P' || c == 'p') && line_has_contour_cycle(text, i)) {
             return true;
         }
