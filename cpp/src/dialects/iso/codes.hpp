@@ -52,6 +52,9 @@ constexpr int kUnknown = -1;      // not a code of this control
 int g_group(int code10, const ControlProfile& profile);
 int m_group(int code10, const ControlProfile& profile);
 
+// The canned cycles G73, G74, G81-G89.
+constexpr bool is_cycle(int code10) { return code10 == G73 || code10 == G74 || (code10 >= G81 && code10 <= G89); }
+
 // LinuxCNC's lathe profile cycles G70, G71, G71.1, G71.2, G72, G72.1, G72.2.
 constexpr bool is_profile_cycle(int code10) {
     return code10 == G70 || code10 == G71 || code10 == G71_1 || code10 == G71_2 || code10 == G72 ||

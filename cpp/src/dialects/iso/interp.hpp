@@ -103,10 +103,30 @@ public:
 
 private:
     // ---- block execution (interp.cpp) --------------------------------------------------
+    // ---- one block, step by step in the control's order (interp_execute.cpp) ----------
     bool execute(const BlockWords& bw);  // false after M2/M30
     static constexpr int kBlockEnded = -2;
     int execute_head(const BlockWords& bw);  // its motion, or kBlockEnded
     bool execute_tail(const BlockWords& bw, int motion_to_be);
+    static bool axes_are_data(const BlockWords& bw);
+    void end_cycle_by_g80(const BlockWords& bw);
+    int check_motion_words(const BlockWords& bw) const;  // the block's motion
+    void check_axis_letters(const BlockWords& bw) const;
+    void refuse_under_radius_comp(const BlockWords& bw);
+    void refuse_m_codes_under_comp(const BlockWords& bw) const;
+    void refuse_modes_under_comp(const BlockWords& bw, bool comp_before);
+    void set_feed(const BlockWords& bw);
+    void tool_change_codes(const BlockWords& bw);
+    bool spindle_codes(const BlockWords& bw);  // true: an M72 restore ended the block
+    void dwell_code(const BlockWords& bw);
+    void set_modes(const BlockWords& bw);
+    void set_path_control(const BlockWords& bw);
+    void axis_data_codes(const BlockWords& bw);
+    bool motion(const BlockWords& bw, int motion_to_be);  // false: a remapped motion's sub runs first
+    bool move(const BlockWords& bw, int motion_to_be);
+    bool stop_codes(const BlockWords& bw);  // false after M2/M30
+
+    // ---- the block's words (interp.cpp) ---------------------------------------------------
     int motion_of(const BlockWords& bw) const;
     bool ended_ = false;  // the program ended in the rest of a remapped code's block
     void check_words(const BlockWords& bw, int motion_to_be);
