@@ -20,6 +20,7 @@
 #include "../idle_watch.hpp"
 #include "toolcomp/program/source_files.hpp"
 #include "toolcomp/dialects/sinumerik/interpreter.hpp"
+#include "codes.hpp"
 #include "corner_sink.hpp"
 #include "frame_value.hpp"
 
@@ -118,18 +119,30 @@ struct BlockData {
     }
 };
 
+// A block's G functions by group (-1: none in the block), its M functions and keywords
+// (interp_execute.cpp).
+struct BlockCodes {
+    int motion = -1, plane = -1, comp = -1, corner = -1, dist = -1, units = -1, nonmodal = -1, workoffset = -1,
+        feedmode = -1;
+    bool cip = false, ct = false;  // CIP, CT
+    bool machine = false;          // G53, G153, SUPA
+    std::string frame_word;        // TRANS, ATRANS, ROT, AROT, SCALE, ASCALE, MIRROR, AMIRROR
+    int frame_column = 0;
+    bool m6 = false, stop = false, end = false, sub_end = false;  // M6; M0/M1; M2/M30; M17
+};
+
 struct Modal {
-    int motion = 0;  // 0 G0, 1 G1, 2 G2, 3 G3, 5 CIP, 6 CT
-    int feed_mode = 94;  // G94 mm/min, G95 mm/rev, G96 mm/rev at a constant cutting speed
+    int motion = G0;  // G0, G1, G2, G3, CIP, CT
+    int feed_mode = G94;  // G94 mm/min, G95 mm/rev, G96 mm/rev at a constant cutting speed
     Plane plane = Plane::xy;
     bool incremental = false;
     bool inch = false;       // G70 / G700: geometry in inches
     bool inch_feed = false;  // G700: feed too
     bool diameter = false;   // DIAMON
     int side = 0;            // G41 +1, G42 -1
-    int entry = -1;          // NORM / KONT (EntryStyle), -1 = the profile's
-    int outside = -1;        // G450 / G451 (OutsideCorner)
-    int gouge = -1;          // CDON / CDOF (GougeReaction)
+    std::optional<EntryStyle> entry;      // NORM / KONT; none: the profile's
+    std::optional<OutsideCorner> outside;  // G450 / G451
+    std::optional<GougeReaction> gouge;    // CDON / CDOF
     double disc = -1;        // DISC
     double offn = 0;         // OFFN, mm
     int settable = 0;        // the settable frame: 0 G500 (at power-on), 1-4 G54-G57, 5-99 G505-G599
@@ -245,8 +258,24 @@ private:
     void update_tool_offset();
     double radius_now() const;  // the active edge's radius + OFFN, mm
 
-    // ---- geometry (interp_motion.cpp) -------------------------------------------------------
+    // ---- one block, step by step in the control's order (interp_execute.cpp) ------------------
     void execute(BlockData& b, int first_column);
+    BlockCodes g_functions(const BlockData& b);
+    void blending_note(int g, int column);
+    void keyword_functions(const BlockData& b, BlockCodes& c, int first_column) const;
+    void m_functions(const BlockData& b, BlockCodes& c) const;
+    void set_feed_and_speed(const BlockData& b, const BlockCodes& c);
+    void tool_change(const BlockData& b, const BlockCodes& c, int first_column);
+    void set_plane_and_dimensions(const BlockData& b, const BlockCodes& c, int first_column);
+    void set_radius_comp(const BlockData& b, const BlockCodes& c, int first_column);
+    void frame_functions(const BlockData& b, const BlockCodes& c, int first_column);
+    bool motion(const BlockData& b, const BlockCodes& c, int first_column);  // true: the block moved
+    std::array<double, 3> rotary_targets(const BlockData& b) const;
+    void dwell(const BlockData& b, const BlockCodes& c, int first_column);
+    void check_unused_words(const BlockData& b, bool moved) const;
+    void stop_and_end(const BlockData& b, const BlockCodes& c);
+
+    // ---- geometry (interp_motion.cpp) -------------------------------------------------------
     double unit() const { return st_.inch ? kMmPerInch : 1.0; }
     Vec3 program_pos() const { return actual_.invert(pos_ - zero_shift_); }
     Vec3 end_point(const BlockData& b, bool machine) const;

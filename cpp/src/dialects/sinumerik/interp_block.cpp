@@ -196,7 +196,7 @@ void Interp::block(std::span<const Token> t) {
             fail(code::setal, "Alarm " + std::to_string(n) + " set by the program (SETAL)", x.column);
         }
         words = true;  // an address, G/M function, keyword or call: more than a computation
-        if (is_unsupported(k) || (x.is("G") && (x.value == 110 || x.value == 111 || x.value == 112)))
+        if (is_unsupported(k) || (x.is("G") && (x.value == G110 || x.value == G111 || x.value == G112)))
             fail(code::unsupported_word, (x.is("G") ? "G" + std::to_string(int_value(x.value)) : k) +
                                          " is not supported by toolcomp", x.column);
         // an address with its value, or with a text (T="DRILL"); SUB("abc", 5) is a call
@@ -290,7 +290,7 @@ void Interp::block(std::span<const Token> t) {
     // A block that moved nothing while TRC stays on (not the one that selects it, a stop or a
     // call): one of the "empty blocks" the control counts (alarm 10762).
     bool stop = false;
-    for (auto [m, column] : b.m) stop = stop || m == 0 || m == 1;
+    for (auto [m, column] : b.m) stop = stop || m == M0 || m == M1;
     if (words && moves_ == moves_before && comp_before && st_.side != 0 && call_name.empty() && !ended_ && !stop &&
         profile_.radius.count_blocks_without_motion)
         sink_.control({ControlKind::no_motion, line_, Vec3::Zero(), file()});

@@ -180,7 +180,7 @@ void Interp::programmable_offset(const BlockData& b, int g, int column) {
     FrameValue f = *pframe_;
     static constexpr char kAxes[3] = {'X', 'Y', 'Z'};
     for (int i = 0; i < 3; ++i)
-        if (b[kAxes[i]].set) (g == 58 ? f.tr : f.fi)[i] = b[kAxes[i]].v * unit();
+        if (b[kAxes[i]].set) (g == G58 ? f.tr : f.fi)[i] = b[kAxes[i]].v * unit();
     set_programmable(f.frame(), f);
 }
 

@@ -1,4 +1,4 @@
-// Execution of a Sinumerik block's words and its geometry: dimensions (G90/G91, AC()/IC(),
+// The geometry of a Sinumerik block (its steps in order are in interp_execute.cpp): dimensions (G90/G91, AC()/IC(),
 // G70/G71/G700/G710, DIAMON), the programmable frame (TRANS ROT SCALE MIRROR and the A...
 // forms), G53/G153/SUPA, straight moves, circles (centre I J K, CR=, AR=, CIP, CT, TURN=,
 // helices) and the cutter radius request (G40/G41/G42, NORM/KONT, G450/G451, DISC, CDON/CDOF,
@@ -99,8 +99,8 @@ Motion Interp::motion_(MotionKind kind, const Vec3& end) const {
 double Interp::feed_rate(const Vec3& end) const {
     const double nan = std::numeric_limits<double>::quiet_NaN();
     switch (st_.feed_mode) {
-        case 95: return speed_ > 0 ? feed_ * speed_ : nan;
-        case 96: {
+        case G95: return speed_ > 0 ? feed_ * speed_ : nan;
+        case G96: {
             const double rpm = css_speed(end.x());
             return std::isfinite(rpm) && rpm > 0 ? feed_ * rpm : nan;
         }
@@ -122,10 +122,10 @@ RadiusRequest Interp::radius_request() const {
         const int tip = int_value(active_->DP(2));
         r.orientation = static_cast<std::int8_t>(tip >= 0 && tip <= 9 ? tip : 0);
     }
-    if (st_.entry >= 0) r.entry = static_cast<EntryStyle>(st_.entry);
+    if (st_.entry) r.entry = st_.entry;
     if (r.entry == EntryStyle::around_start_when_behind) r.exit = ExitStyle::around_end_when_behind;
-    if (st_.outside >= 0) r.outside = static_cast<OutsideCorner>(st_.outside);
-    if (st_.gouge >= 0) r.gouge = static_cast<GougeReaction>(st_.gouge);
+    if (st_.outside) r.outside = st_.outside;
+    if (st_.gouge) r.gouge = st_.gouge;
     if (st_.disc >= 0) r.disc = static_cast<float>(st_.disc);
     return r;
 }
@@ -182,244 +182,6 @@ void Interp::frame_statement(const BlockData& b, const std::string& which, int c
     set_programmable(f, !additive ? std::optional<FrameValue>(c) : pframe_ ? chain(*pframe_, c) : std::nullopt);
 }
 
-void Interp::execute(BlockData& b, int first_column) {
-    // ---- G codes by group -----------------------------------------------------------------
-    int motion = -1, plane = -1, comp = -1, corner = -1, dist = -1, units = -1, nonmodal = -1, workoffset = -1,
-        feedmode = -1;
-    auto setg = [&](int& slot, int code, int column) {
-        if (slot >= 0 && slot != code)
-            fail(code::alarm_12190, "12190 G functions G" + std::to_string(slot) + " and G" + std::to_string(code) +
-                              " of the same group in one block", column);
-        slot = code;
-    };
-    for (auto [g, column] : b.g) {
-        switch (g) {
-            case 0: case 1: case 2: case 3: setg(motion, g, column); break;
-            case 17: case 18: case 19: setg(plane, g, column); break;
-            case 40: case 41: case 42: setg(comp, g, column); break;
-            case 450: case 451: setg(corner, g, column); break;
-            case 90: case 91: setg(dist, g, column); break;
-            case 70: case 71: case 700: case 710: setg(units, g, column); break;
-            case 4: case 9: case 53: case 153: case 25: case 26: case 58: case 59: setg(nonmodal, g, column); break;
-            case 500: case 54: case 55: case 56: case 57: setg(workoffset, g, column); break;
-            case 94: case 95: case 96: case 97: setg(feedmode, g, column); break;
-            case 60: case 64: case 601: case 602: case 603: break;
-            case 641: case 642: case 643: case 644: case 645:
-                if (!warned_blending_) {
-                    info(code::blending_not_modelled, "G" + std::to_string(g) +
-                         " corner rounding is a tolerance of the executed path; toolcomp returns the programmed path", column);
-                    warned_blending_ = true;
-                }
-                break;
-            default:
-                if (g >= 505 && g <= 599) {
-                    setg(workoffset, g, column);
-                    break;
-                }
-                fail(code::unsupported_g_code, "G" + std::to_string(g) + " is not supported by toolcomp", column);
-        }
-    }
-    bool cip = false, ct = false, machine = nonmodal == 53 || nonmodal == 153;
-    std::string frame_word;
-    int frame_column = 0;
-    for (const auto& [k, column] : b.keywords) {
-        if (k == "CIP") cip = true;
-        else if (k == "CT") ct = true;
-        else if (k == "SUPA") machine = true;
-        else if (k == "TRANS" || k == "ATRANS" || k == "ROT" || k == "AROT" || k == "SCALE" || k == "ASCALE" ||
-                 k == "MIRROR" || k == "AMIRROR") {
-            if (!frame_word.empty()) fail(code::alarm_12190, "12190 Two frame instructions in one block", column);
-            frame_word = k;
-            frame_column = column;
-        }
-    }
-    if ((cip || ct) && motion >= 0) fail(code::alarm_12190, "12190 CIP/CT and G" + std::to_string(motion) + " in one block", first_column);
-    if (cip && ct) fail(code::alarm_12190, "12190 CIP and CT in one block", first_column);
-
-    // ---- units first: the block's own values follow them ------------------------------------
-    if (units >= 0) {
-        st_.inch = units == 70 || units == 700;
-        st_.inch_feed = units == 700;
-    }
-    // ---- feed, speed, tools ------------------------------------------------------------------
-    if (b.has('F') && nonmodal != 4) feed_ = b['F'].v * (st_.inch_feed ? kMmPerInch : 1.0);
-    if (b.lims.set) {
-        if (!(b.lims.v > 0)) fail(code::unused_word, "LIMS= is the spindle speed limit of G96 (rev/min): above 0", b.lims.column);
-        lims_ = b.lims.v;
-    }
-    // ---- feed mode and spindle speed: G96's S is the cutting speed (m/min), else rev/min;
-    // G97 keeps the speed G96 had reached where the tool stands --------------------------------
-    if (feedmode == 97 && st_.feed_mode == 96) {
-        const double rpm = css_speed(pos_.x());
-        if (std::isfinite(rpm)) speed_ = rpm;
-    }
-    if (feedmode == 97) {
-        if (st_.feed_mode == 96) st_.feed_mode = 95;
-    } else if (feedmode >= 0) {
-        st_.feed_mode = feedmode;
-    }
-    if (b.has('S') && nonmodal != 4) {
-        if (b['S'].v < 0) fail(code::negative_spindle_speed, "Negative spindle speed S", b['S'].column);
-        (st_.feed_mode == 96 ? cutting_speed_ : speed_) = b['S'].v;
-    }
-    if (b.has('T')) select_tool(b);
-    bool m6 = false, stop = false, end = false, sub_end = false;
-    for (auto [m, column] : b.m) {
-        if (m == 6) m6 = true;
-        else if (m == 0 || m == 1) stop = true;
-        else if (m == 2 || m == 30) end = true;
-        else if (m == 17) sub_end = true;
-        else if (m < 0) fail(code::unsupported_m_code, "M" + std::to_string(m) + " is not an M function", column);
-    }
-    if (m6) {
-        if (st_.side != 0) fail(code::alarm_10750, "10750 Tool change with active TRC", first_column);
-        change_tool();
-    }
-    if (b.has('D')) {
-        const Value& d = b['D'];
-        if (d.v != std::floor(d.v) || d.v < 0) fail(code::alarm_17180, "17180 Illegal D number", d.column);
-        if (d.v > 32000) fail(code::alarm_17180, "17180 Illegal D number", d.column);
-        select_edge(int_value(d.v), d.column);
-    }
-    // ---- plane, dimensions ---------------------------------------------------------------------
-    if (plane >= 0) {
-        Plane p = plane == 17 ? Plane::xy : plane == 18 ? Plane::zx : Plane::yz;
-        if (p != st_.plane && st_.side != 0) fail(code::alarm_10757, "10757 Change of the compensation plane with active TRC", first_column);
-        st_.plane = p;
-        update_tool_offset();
-    }
-    if (dist >= 0) st_.incremental = dist == 91;
-    for (const auto& [k, column] : b.keywords) {
-        if (k == "DIAMON") st_.diameter = true, diam90_ = false;
-        else if (k == "DIAMOF") st_.diameter = false, diam90_ = false;
-        else if (k == "DIAM90") st_.diameter = false, diam90_ = true;
-        else if (k == "NORM") st_.entry = static_cast<int>(EntryStyle::perpendicular_to_next);
-        else if (k == "KONT") st_.entry = static_cast<int>(EntryStyle::around_start_when_behind);
-        else if (k == "CDON") st_.gouge = static_cast<int>(GougeReaction::skip);
-        else if (k == "CDOF" || k == "CDOF2") st_.gouge = static_cast<int>(GougeReaction::error);
-        // TCOABS: the holder angles $TC_CARR13/14 are the only source toolcomp models (TCOFR is refused).
-    }
-    if (corner >= 0) st_.outside = static_cast<int>(corner == 450 ? OutsideCorner::arc : OutsideCorner::intersection);
-    if (b.disc.set) {
-        if (b.disc.v < 0 || b.disc.v > 100) fail(code::alarm_14800, "14800 DISC value outside 0..100", b.disc.column);
-        st_.disc = b.disc.v;
-    }
-    if (b.offn.set) st_.offn = b.offn.v * unit();
-    if (b.tcarr.set) {
-        if (!(b.tcarr.v >= 0 && b.tcarr.v <= 99999)) fail(code::alarm_14153, "14153 TCARR= toolholder number out of range", b.tcarr.column);
-        tcarr_ = int_value(b.tcarr.v);
-        update_tool_offset();
-    }
-    // ---- radius compensation -------------------------------------------------------------------
-    if (comp >= 0) {
-        const int side = comp == 41 ? 1 : comp == 42 ? -1 : 0;
-        if (side != 0 && tool_ == 0)
-            fail(code::alarm_10750, "10750 Tool radius compensation activated without a tool number", first_column);
-        if (side != 0 && d_ == 0)
-            diags_.push_back({code::comp_d0, Severity::warning,
-                              "G" + std::to_string(comp) + " with D0: no tool radius compensation", {line_, first_column}});
-        if (side != 0 && (motion == 2 || motion == 3 || cip || ct || (motion < 0 && st_.motion >= 2)) && st_.side == 0)
-            fail(code::alarm_10753, "10753 TRC selection only possible in a linear block", first_column);
-        // G40 in a block that moves on a circle; G40 alone takes effect with the next move
-        const bool moves = b.has('X') || b.has('Y') || b.has('Z');
-        if (side == 0 && st_.side != 0 && (motion == 2 || motion == 3 || cip || ct || (motion < 0 && moves && st_.motion >= 2)))
-            fail(code::alarm_10754, "10754 TRC deselection only possible in a linear block", first_column);
-        if (side == 0 && st_.side != 0) sink_.control({ControlKind::radius_off, line_, Vec3::Zero(), file()});
-        st_.side = side;
-    }
-    // ---- frames and work offsets ---------------------------------------------------------------
-    // G500, G54..G57, G505..G599: the settable frame of that number ($P_UIFR[n], neutral until
-    // the program writes it: see interpreter.hpp).
-    if (workoffset >= 0) select_settable(workoffset == 500 ? 0 : workoffset < 500 ? workoffset - 53 : workoffset - 500);
-    const bool axes = b.has('X') || b.has('Y') || b.has('Z');
-    if (nonmodal == 58 || nonmodal == 59) {
-        if (!frame_word.empty() || motion >= 0)
-            fail(code::alarm_12190, "12190 G" + std::to_string(nonmodal) + " must be programmed in a block of its own", first_column);
-        programmable_offset(b, nonmodal, first_column);
-    } else if (!frame_word.empty()) {
-        if (motion >= 0) fail(code::alarm_12190, "12190 " + frame_word + " must be programmed in a block of its own", frame_column);
-        frame_statement(b, frame_word, frame_column);
-    } else if (b.rpl.set) {
-        fail(code::syntax_error, "RPL= without ROT or AROT", b.rpl.column);
-    }
-    // ---- motion --------------------------------------------------------------------------------
-    if (motion >= 0) st_.motion = motion;
-    if (cip) st_.motion = 5;
-    if (ct) st_.motion = 6;
-    const bool rotary = b.has('A') || b.has('B') || b.has('C');
-    const bool data_axes = !frame_word.empty() || nonmodal == 25 || nonmodal == 26 || nonmodal == 58 || nonmodal == 59;
-    const bool arc_words = b.has('I') || b.has('J') || b.has('K') || b.cr.set || b.ar.set || b.i1.set || b.j1.set ||
-                           b.k1.set || b.turn.set;
-    if (arc_words && st_.motion < 2)
-        fail(code::unused_word, "I, J, K, CR=, AR=, I1=, TURN= need G2, G3, CIP or CT", first_column);
-    if (nonmodal == 4) {
-        if (!b.has('F') && !b.has('S')) fail(code::dwell_missing, "G4 needs the dwell time F (seconds) or S (revolutions)", first_column);
-        // G4 stands in a block of its own: axis words beside it would be a move the control
-        // does not make.
-        for (const char a : {'X', 'Y', 'Z', 'A', 'B', 'C'})
-            if (b.has(a)) fail(code::alarm_12190, "12190 G4 must be programmed in a block of its own", b[a].column);
-        if (motion >= 0) fail(code::alarm_12190, "12190 G4 must be programmed in a block of its own", first_column);
-        // F seconds, S revolutions of the spindle at its speed (none counted when it stands).
-        const double seconds = b.has('F') ? b['F'].v : speed_ > 0 ? b['S'].v * 60 / speed_ : 0;
-        dwell_seconds_ += std::max(0.0, seconds);
-    } else if (!data_axes && (axes || rotary || (st_.motion >= 2 && arc_words))) {
-        corner_request(b, first_column);
-        std::array<double, 3> abc = abc_;
-        for (int i = 0; i < 3; ++i) {
-            const Value& v = b[static_cast<char>('A' + i)];
-            double& a = abc[static_cast<std::size_t>(i)];
-            if (!v.set) continue;
-            if (v.mod >= 3) a = modulo_target(a, v);
-            else a = (v.mod == 2 || (v.mod == 0 && st_.incremental)) ? a + v.v : v.v;
-        }
-        if (st_.motion >= 2) {
-            if (machine) fail(code::g53_motion, "G53/G153/SUPA only with G0 or G1", first_column);
-            Vec3 e = end_point(b, false);
-            abc_ = abc;
-            arc(b, e);
-        } else {
-            Vec3 e = end_point(b, machine);
-            Vec3 out = machine ? Vec3(e - work_origin_) : actual_.apply(e) + zero_shift_;
-            abc_ = abc;
-            if (st_.motion == 1 && !(feed_ > 0)) fail(code::alarm_10860, "10860 No feedrate programmed", first_column);
-            Motion m = motion_(st_.motion == 0 ? MotionKind::rapid : MotionKind::line, out);
-            if (machine) m.radius = RadiusRequest{};
-            const Vec2 d = in_plane((machine ? actual_.invert(out - zero_shift_) : e) - program_pos(), st_.plane);
-            if (d.norm() > 1e-12) last_tangent_ = d.normalized();
-            pos_ = out;
-            ++moves_;
-            sink_.push(m);
-        }
-    }
-    const bool moved = nonmodal != 4 && !data_axes && (axes || rotary || (st_.motion >= 2 && arc_words));
-    if ((b.rnd.set || b.chf.set || b.chr.set) && !moved)
-        fail(code::corner_without_element, "RND=, CHF= and CHR= go with a path move in their block",
-             (b.rnd.set ? b.rnd : b.chf.set ? b.chf : b.chr).column);
-    for (const char l : {'U', 'V', 'W', 'O', 'Q', 'E'})
-        if (b.has(l)) fail(code::unsupported_word, std::string(1, l) + " words are not supported by toolcomp", b[l].column);
-    if (b.has('N')) fail(code::syntax_error, "12080 Syntax error: a block number N must begin the block", b['N'].column);
-    // ---- stop, end -----------------------------------------------------------------------------
-    if (stop) sink_.control({ControlKind::stop, line_, Vec3::Zero(), file()});
-    bool ret_word = b.keyword("RET");
-    if (end && stack_.size() == 1) {
-        sink_.control({ControlKind::program_end, line_, Vec3::Zero(), file()});
-        st_.side = 0;
-        ended_ = true;
-        return;
-    }
-    if (end || sub_end || ret_word) {
-        if (stack_.size() == 1) {
-            if (sub_end || ret_word) {  // M17 / RET in a main program ends it too
-                sink_.control({ControlKind::program_end, line_, Vec3::Zero(), file()});
-                ended_ = true;
-            }
-            return;
-        }
-        Context& c = stack_.back();
-        c.pc = c.prog->blocks().size();  // ret() at the next step
-    }
-}
-
 void Interp::arc(const BlockData& b, const Vec3& end_prog) {
     const PlaneAxes ax = axes(st_.plane);
     const Vec3 s3 = program_pos();
@@ -427,7 +189,7 @@ void Interp::arc(const BlockData& b, const Vec3& end_prog) {
     Vec3 e3 = end_prog;
     Vec2 e = in_plane(e3, st_.plane);
     const bool end_given = b.has(kAxes[ax.a]) || b.has(kAxes[ax.b]);
-    int dir = st_.motion == 3 ? 1 : -1;
+    int dir = st_.motion == G3 ? 1 : -1;
     Vec2 c;
     const int first = b.has('X') ? b['X'].column : b.has('Y') ? b['Y'].column : b.has('Z') ? b['Z'].column : 0;
     const double tol = 0.01;  // MD21000 CIRCLE_ERROR_CONST
@@ -442,9 +204,9 @@ void Interp::arc(const BlockData& b, const Vec3& end_prog) {
         const bool centre = b.has(kCentre[ax.a]) || b.has(kCentre[ax.b]);
         const Value* extra = nullptr;
         const char* what = "";
-        if (st_.motion == 5 || st_.motion == 6) {  // CIP, CT: by points and tangent only
+        if (st_.motion == CIP || st_.motion == CT) {  // CIP, CT: by points and tangent only
             extra = b.cr.set ? &b.cr : b.ar.set ? &b.ar : centre ? &b[b.has(kCentre[ax.a]) ? kCentre[ax.a] : kCentre[ax.b]] : nullptr;
-            what = st_.motion == 5 ? "CIP" : "CT";
+            what = st_.motion == CIP ? "CIP" : "CT";
         } else if (b.cr.set && b.ar.set) {
             extra = &b.ar;
             what = "CR=";
@@ -452,7 +214,7 @@ void Interp::arc(const BlockData& b, const Vec3& end_prog) {
         if (extra)
             fail(code::alarm_14040, std::string("14040 ") + what + " and another definition of the circle (CR=, AR=, I, J, K) in one block",
                  extra->column);
-        if (st_.motion != 5 && (b.i1.set || b.j1.set || b.k1.set))
+        if (st_.motion != CIP && (b.i1.set || b.j1.set || b.k1.set))
             fail(code::alarm_14040, "14040 I1=, J1=, K1= (the intermediate point) belong to CIP", (b.i1.set ? b.i1 : b.j1.set ? b.j1 : b.k1).column);
     }
     auto centre_words = [&]() -> std::optional<Vec2> {
@@ -464,7 +226,7 @@ void Interp::arc(const BlockData& b, const Vec3& end_prog) {
         if (ax.b == 0 && cb.set && cb.mod == 1 && st_.diameter) vb /= 2;
         return Vec2((ca.set && ca.mod == 1) ? va : s.x() + va, (cb.set && cb.mod == 1) ? vb : s.y() + vb);
     };
-    if (st_.motion == 5) {  // CIP
+    if (st_.motion == CIP) {
         Vec3 m3 = s3;
         const Value* iv[3] = {&b.i1, &b.j1, &b.k1};
         for (int i = 0; i < 3; ++i) {
@@ -487,7 +249,7 @@ void Interp::arc(const BlockData& b, const Vec3& end_prog) {
         const double d = 2 * cross2(a, bb);
         c = s + Vec2(bb.y() * a.squaredNorm() - a.y() * bb.squaredNorm(), a.x() * bb.squaredNorm() - bb.x() * a.squaredNorm()) / d;
         dir = cr > 0 ? 1 : -1;
-    } else if (st_.motion == 6) {  // CT
+    } else if (st_.motion == CT) {
         if (!last_tangent_) fail(code::alarm_14040, "14040 CT needs a preceding move to be tangent to", first);
         const Vec2 n = left_normal(*last_tangent_);
         const Vec2 d = e - s;
