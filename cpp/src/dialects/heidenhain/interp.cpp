@@ -10,6 +10,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "codes.hpp"
 #include "interp.hpp"
 #include "toolcomp/tools/format_heidenhain.hpp"
 #include "toolcomp/program/input_limits.hpp"
@@ -113,35 +114,35 @@ void Interp::m_function(Tokens t, const Token& k) {
         if (m < 0) return;
     }
     switch (m) {
-        case 97: m97_ = true; break;
-        case 98: open_corner_ = true; break;
-        case 120: {
+        case M97: m97_ = true; break;
+        case M98: open_corner_ = true; break;
+        case M120: {
             const Token* la = find(t, "LA");
             lookahead_ = la && la->has_value ? int_value_truncated(la->value) : 0;
             if (lookahead_ > 99 || lookahead_ < 0) fail(code::bad_lookahead, "M120 LA allows 0 to 99 blocks", la->column);
             break;
         }
-        case 107: m107_ = true; break;
-        case 108: m107_ = false; break;
-        case 128: m128_ = true; break;
-        case 129: m128_ = false; break;
-        case 2: case 30: ended_ = true; break;  // end of the program (after this block's move)
-        case 140:  // retraction along the tool axis (line(): MB)
+        case M107: m107_ = true; break;
+        case M108: m107_ = false; break;
+        case M128: m128_ = true; break;
+        case M129: m128_ = false; break;
+        case M2: case M30: ended_ = true; break;  // end of the program (after this block's move)
+        case M140:  // retraction along the tool axis (line(): MB)
             if (!t[0].is("L")) fail(code::bad_word, "M140 acts in L blocks only (toolcomp)", k.column);
             break;
-        case 99:  // the cycle runs at the end of the block (execute); M89 ends
+        case M99:  // the cycle runs at the end of the block (execute); M89 ends
             cycle_call_pending_ = true;
             modal_call_ = false;
             break;
-        case 89:  // the modal cycle call: this block and every positioning block after it
+        case M89:  // the modal cycle call: this block and every positioning block after it
             if (profile_.m89_modal_cycle_call) cycle_call_pending_ = modal_call_ = true;
             break;
-        case 126: shortest_rotary_ = true; break;
-        case 127: shortest_rotary_ = false; break;
-        case 0: case 1: case 3: case 4: case 5: case 6: case 8: case 9: case 13: case 14:
-        case 90:
+        case M126: shortest_rotary_ = true; break;
+        case M127: shortest_rotary_ = false; break;
+        case M0: case M1: case M3: case M4: case M5: case M6: case M8: case M9: case M13: case M14:
+        case M90:
             break;  // machine functions without a geometric effect on the path
-        case 91: case 92:  // machine datums: the L block reads its coordinates from them
+        case M91: case M92:  // machine datums: the L block reads its coordinates from them
             if (!t[0].is("L"))
                 fail(code::bad_word, "M" + std::to_string(m) + " acts in L blocks only (toolcomp)", k.column);
             break;
