@@ -19,7 +19,7 @@ import sys
 import numpy as np
 
 import toolcomp as tc
-from toolcomp import cli_stream
+from toolcomp import cli_stream, export
 
 EXIT_OK, EXIT_ERRORS, EXIT_USAGE = 0, 1, 2
 
@@ -509,9 +509,8 @@ def cmd_export(args) -> int:
         for r in out.records:
             print(r.format(), file=sys.stderr)
         return EXIT_ERRORS
-    from toolcomp.export import to_gcode
     try:
-        text = to_gcode(out.result.path, args.to, comments=not args.no_comments,
+        text = export.to_gcode(out.result.path, args.to, comments=not args.no_comments,
                         tool_length=not args.no_tool_length)
     except ValueError as exc:
         raise UsageError(str(exc))
@@ -589,7 +588,7 @@ def build_parser() -> argparse.ArgumentParser:
                                    "controls without cutter compensation.")
     e.add_argument("program", metavar="PROGRAM")
     common(e)
-    e.add_argument("--to", choices=("linuxcnc", "fanuc", "grbl"), default="linuxcnc",
+    e.add_argument("--to", choices=export.DIALECTS, default="linuxcnc",
                    help="dialect of the written program (default: linuxcnc)")
     e.add_argument("-o", "--output", metavar="FILE", help="output file (default: stdout)")
     e.add_argument("--no-comments", action="store_true", help="leave out the (line N) comments")
