@@ -10,11 +10,14 @@ from __future__ import annotations
 import inspect
 import os
 from concurrent.futures import ThreadPoolExecutor
-from typing import Any, Iterable, List, Optional
+from typing import Any, Iterable, List, Optional, get_type_hints
 
 from . import run as _run  # defined before the package imports this module
 
-_RUN_KEYWORDS = {name: p for name, p in inspect.signature(_run).parameters.items() if p.kind is p.KEYWORD_ONLY}
+# run()'s keywords, their annotations evaluated (they are strings in __init__.py, names there)
+_RUN_TYPES = get_type_hints(_run)
+_RUN_KEYWORDS = {name: p.replace(annotation=_RUN_TYPES[name])
+                 for name, p in inspect.signature(_run).parameters.items() if p.kind is p.KEYWORD_ONLY}
 
 
 def cores() -> int:
@@ -75,12 +78,13 @@ def _signature() -> inspect.Signature:
     then the keywords of :func:`toolcomp.run` it passes on (taken from run, not written
     again)."""
     own = inspect.signature(run_many)
-    params = [p for p in own.parameters.values() if p.kind is not p.VAR_KEYWORD]
+    types = get_type_hints(run_many)
+    params = [p.replace(annotation=types[name]) for name, p in own.parameters.items() if p.kind is not p.VAR_KEYWORD]
     for name, p in _RUN_KEYWORDS.items():
         if name == "threads":  # chosen by run_many unless given
-            p = p.replace(default=None, annotation="Optional[bool]")
+            p = p.replace(default=None, annotation=Optional[bool])
         params.append(p)
-    return own.replace(parameters=params)
+    return own.replace(parameters=params, return_annotation=types["return"])
 
 
 run_many.__signature__ = _signature()  # type: ignore[attr-defined]
