@@ -11,11 +11,14 @@ import collections.abc as _abc
 import numbers as _numbers
 import os as _os
 import sys as _sys
+from typing import Any as _Any
 from typing import Callable as _Callable
+from typing import Dict as _Dict
 from typing import Iterable as _Iterable
 from typing import Mapping as _Mapping
 from typing import Optional as _Optional
 from typing import Sequence as _Sequence
+from typing import Tuple as _Tuple
 from typing import Union as _Union
 
 from . import _core
@@ -153,12 +156,12 @@ def run(program: _Union[Program, _FileName], tools: _Union[ToolTable, _FileName,
     These keywords are also those of :func:`iter_run` (but ``progress``, ``progress_every``,
     ``max_segments``, ``threads`` and ``probes``) and of :func:`run_many`.
     """
-    program, dialect, tools, options = _engine_options(**locals())
-    if isinstance(program, str):
+    dialect, tools, options = _engine_options(**locals())
+    if isinstance(program, (str, _os.PathLike)):
         # Read leniently: a syntax error is raised (or reported) when the run reaches its
         # line, as the control does, and never after M2/M30. A LinuxCNC / Fanuc file without
         # control flow is read piece by piece as it runs.
-        return _core.run_file(program, dialect, tools, **options)
+        return _core.run_file(_os.fspath(program), dialect, tools, **options)
     return _core.run(program, tools, **options)
 
 
@@ -187,36 +190,35 @@ def iter_run(program: _Union[Program, _FileName], tools: _Union[ToolTable, _File
     holds the segments before it; with ``strict=False`` it ends the stream and is in
     ``stream.diagnostics``. The returned :class:`PathStream` also gives ``blocks`` and
     ``files`` once it has ended; ``close()`` (or leaving a ``with`` block) stops the run."""
-    program, dialect, tools, options = _engine_options(**locals())
-    if isinstance(program, str):
-        return _core.iter_run_file(program, dialect, tools, **options)
+    dialect, tools, options = _engine_options(**locals())
+    if isinstance(program, (str, _os.PathLike)):
+        return _core.iter_run_file(_os.fspath(program), dialect, tools, **options)
     del options["piece_bytes"]  # a parsed Program is not read in pieces
     return _core.iter_run_program(program, tools, **options)
 
 
-def _engine_options(program, tools, *, dialect, units, **options):
+def _engine_options(program, tools, *, dialect, units,
+                    **options) -> _Tuple[_Optional[str], _Optional[ToolTable], _Dict[str, _Any]]:
     """The arguments of :func:`run` or :func:`iter_run` (their ``locals()`` on entry) as the
-    engine takes them: ``(program, dialect, tools, options)``, the program a Program or a
-    file name (str), the tool table read, the keywords checked and converted."""
+    engine takes them: ``(dialect, tools, options)``, the tool table read, the keywords
+    checked and converted."""
     for name, (least, most) in _COUNTS.items():
         if name in options:
             _whole_in(name, options[name], least, most)
-    if isinstance(program, _os.PathLike):
-        program = _os.fspath(program)
     tools = _tools_input(tools, units)
     options["search_path"] = _search_path_input(options["search_path"])
     options["parameters"] = _parameters_input(options["parameters"])
     machine = _machine.resolve(options["machine"])
     if isinstance(machine, str):  # "mill" / "lathe": the plain profile of that kind for the program's control
         if options["profile"] is None:
-            d = program.dialect if isinstance(program, Program) else _core.dialect_of_file(program, dialect)
+            d = program.dialect if isinstance(program, Program) else _core.dialect_of_file(_os.fspath(program), dialect)
             options["profile"] = ControlProfile(d, kind=machine)
         machine = None
     options["machine"] = machine
     options["start"] = _start_input(options["start"])
     if "probes" in options:
         options["probes"] = list(options["probes"])
-    return program, dialect, tools, options
+    return dialect, tools, options
 
 
 def _tools_input(tools, units):

@@ -58,7 +58,7 @@ def test_the_engine_takes_every_keyword_as_converted(entry, engine_file, engine_
     fn = getattr(tc, entry)
     defaults = {name: p.default for name, p in keywords(fn).items()}
     for program, engine in (("part.ngc", engine_file), (tc.Program.parse("G0 X1\nM2\n"), engine_program)):
-        program, dialect, tools, options = tc._engine_options(program, None, **defaults)
+        dialect, tools, options = tc._engine_options(program, None, **defaults)
         takes = set(engine_parameters(getattr(tc._core, engine)))
         if engine == "iter_run_program":
             options.pop("piece_bytes")  # as iter_run does: a Program is not read in pieces
