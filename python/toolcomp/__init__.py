@@ -79,7 +79,7 @@ _SearchPath = _Union[_FileName, _Iterable[_FileName]]
 _Parameters = _Union[_Mapping[int, float], _FileName, None]
 _Start = _Union[None, str, _Sequence[float]]
 
-# The keywords only one of the two takes; every other keyword of run() iter_run() takes too,
+# The keywords only one of the two takes; every other keyword of run(), iter_run() takes too,
 # with the same default and meaning. (The engine's stream has no progress callback and no
 # total to limit, keeps its look-ahead on its own thread and does not probe.)
 _ONLY = {"run": ("progress", "progress_every", "max_segments", "threads", "probes"),
