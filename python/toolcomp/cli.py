@@ -12,6 +12,7 @@ one is, 2 on usage errors (bad options, a program or table that cannot be read).
 from __future__ import annotations
 
 import argparse
+import inspect
 import json
 import os
 import sys
@@ -27,7 +28,7 @@ _DIALECT_TABLE = tc._core.dialect_table()  # the dialects and their suffixes
 DIALECTS = tuple(row["name"] for row in _DIALECT_TABLE)
 SUFFIX_DIALECTS = {s: row["name"] for row in _DIALECT_TABLE for s in row["suffixes"]}
 ERROR_SEVERITIES = ("error", "fatal")
-MAX_COUNTED_BYTES = 2**31  # Program.read's default max_bytes
+MAX_COUNTED_BYTES = inspect.signature(tc.run).parameters["max_bytes"].default  # a run's size limit
 
 
 class UsageError(Exception):

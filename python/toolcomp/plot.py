@@ -235,8 +235,8 @@ def segment_polylines(path, tolerance=DEFAULT_TOLERANCE):
 def segment_lengths(path, tolerance=DEFAULT_TOLERANCE):
     """Length in mm of every segment: lines exactly, arcs and helices exactly too.
 
-    The Path has no plane column, so the arc's plane and sweep are read off the points of
-    ``path.sample(tolerance)``: the plane is the one in which every sampled point is at the
+    ``path`` is a Path or a Path-like of columns (which may have no ``plane`` column), so
+    the arc's plane and sweep are read off the points of :func:`sample_path`: the plane is the one in which every sampled point is at the
     same distance from the centre, and the sweep is the sum of the angles the chords
     subtend there. Length = sqrt((r * sweep)^2 + rise^2). An arc whose plane cannot be
     told falls back to its chorded length (short by about tolerance / (3 r), relative).
