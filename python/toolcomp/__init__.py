@@ -11,11 +11,14 @@ import collections.abc as _abc
 import numbers as _numbers
 import os as _os
 import sys as _sys
+from typing import Any as _Any
 from typing import Callable as _Callable
+from typing import Dict as _Dict
 from typing import Iterable as _Iterable
 from typing import Mapping as _Mapping
 from typing import Optional as _Optional
 from typing import Sequence as _Sequence
+from typing import Tuple as _Tuple
 from typing import Union as _Union
 
 from . import _core
@@ -60,11 +63,31 @@ __all__ = [
 
 _sys.modules[__name__ + ".sinumerik"] = sinumerik  # type: ignore[assignment]  # `import toolcomp.sinumerik`
 
+# ---------------------------------------------------------------------------------------
+# The options of a run
+#
+# run(), iter_run() and run_many() take one set of keywords: run()'s signature and docstring
+# are where each is defined and documented; iter_run() writes the ones it shares out again
+# (help(), IDEs and type checkers see them), tests/python/test_run_options.py checks that
+# they agree with run()'s, and run_many() passes its keywords on to run(). Every keyword is
+# checked and converted into what the engine takes in one place, _engine_options().
+# ---------------------------------------------------------------------------------------
+
 # What run() and iter_run() take: a file name is a str or an os.PathLike.
 _FileName = _Union[str, "_os.PathLike[str]"]
 _SearchPath = _Union[_FileName, _Iterable[_FileName]]
 _Parameters = _Union[_Mapping[int, float], _FileName, None]
 _Start = _Union[None, str, _Sequence[float]]
+
+# The keywords only one of the two takes; every other keyword of run(), iter_run() takes too,
+# with the same default and meaning. (The engine's stream has no progress callback and no
+# total to limit, keeps its look-ahead on its own thread and does not probe.)
+_ONLY = {"run": ("progress", "progress_every", "max_segments", "threads", "probes"),
+         "iter_run": ("chunk", "piece_bytes")}
+
+# Counts and sizes: (least, most or None). A whole number in that range, or TypeError/ValueError.
+_COUNTS = {"progress_every": (1, None), "max_segments": (1, None), "max_bytes": (1, None),
+           "max_line_length": (1, None), "chunk": (1, None), "piece_bytes": (1, 2**30)}
 
 
 def run(program: _Union[Program, _FileName], tools: _Union[ToolTable, _FileName, None] = None, *,
@@ -122,34 +145,111 @@ def run(program: _Union[Program, _FileName], tools: _Union[ToolTable, _FileName,
     segments (about 120 bytes each) stops at the block that crossed it (``memory_limit``;
     with ``strict=False`` the path up to it is returned). ``ControlProfile.block_limit`` and
     ``call_depth_limit`` bound executed blocks and nested calls. A run that exhausts the
-    memory anyway raises ``ProgramError`` ``out_of_memory``.
+    memory anyway raises ``ProgramError`` ``out_of_memory``. A count or size that is no
+    whole number raises TypeError, one below 1 ValueError.
 
     ``threads``: a run puts its overcut watch, and the reading of the next piece of a program
     file, on threads of their own (the other core). ``threads=False`` keeps everything on the
     calling thread, for batches whose runs keep every core busy anyway (:func:`run_many` does
     this when its workers and programs are at least as many as the cores). The result is the same either way.
+
+    These keywords are also those of :func:`iter_run` (but ``progress``, ``progress_every``,
+    ``max_segments``, ``threads`` and ``probes``) and of :func:`run_many`.
     """
-    _whole_at_least("max_segments", max_segments, 1)
-    _whole_at_least("max_bytes", max_bytes, 1)
-    _whole_at_least("max_line_length", max_line_length, 1)
-    _whole_at_least("progress_every", progress_every, 1)
-    tools, search_path, parameters = _run_inputs(tools, units, search_path, parameters)
-    machine, profile = _machine_inputs(machine, profile, program, dialect)
+    dialect, tools, options = _engine_options(**locals())
     if isinstance(program, (str, _os.PathLike)):
         # Read leniently: a syntax error is raised (or reported) when the run reaches its
         # line, as the control does, and never after M2/M30. A LinuxCNC / Fanuc file without
         # control flow is read piece by piece as it runs.
-        return _core.run_file(_os.fspath(program), dialect, tools, strict=strict, block_delete=block_delete,
-                              profile=profile, progress=progress, progress_every=progress_every,
-                              search_path=search_path, parameters=parameters, max_segments=max_segments,
-                              max_bytes=max_bytes, max_line_length=max_line_length, threads=threads,
-                              follow_links=follow_links, machine=machine, probes=list(probes),
-                              start=_start_input(start))
-    return _core.run(program, tools, strict=strict, block_delete=block_delete, profile=profile,
-                     progress=progress, progress_every=progress_every, search_path=search_path,
-                     parameters=parameters, max_segments=max_segments, threads=threads,
-                     follow_links=follow_links, max_bytes=max_bytes, max_line_length=max_line_length,
-                     machine=machine, probes=list(probes), start=_start_input(start))
+        return _core.run_file(_os.fspath(program), dialect, tools, **options)
+    return _core.run(program, tools, **options)
+
+
+def iter_run(program: _Union[Program, _FileName], tools: _Union[ToolTable, _FileName, None] = None, *,
+             chunk: int = 1_000_000, dialect: _Optional[str] = None, strict: bool = True, block_delete: bool = False,
+             profile: _Optional[ControlProfile] = None, units: str = "mm", search_path: _SearchPath = (),
+             parameters: _Parameters = None, max_bytes: int = 2**31, max_line_length: int = 2**20,
+             piece_bytes: int = 1 << 20, follow_links: bool = False,
+             machine: _Union[Machine, _FileName, None] = None, start: _Start = None) -> PathStream:
+    """Run ``program`` like :func:`run` and yield its compensated path in chunks of ``chunk``
+    segments (:class:`Path` objects; the last may be shorter). The chunks joined are the
+    ``path`` that :func:`run` returns, segment for segment: the compensation look-ahead runs
+    on across chunk boundaries. The programmed path is not kept.
+
+    The keywords are :func:`run`'s, with their defaults and meaning, but ``progress`` (read
+    ``stream.blocks_read`` while it runs), ``progress_every``, ``max_segments`` (a stream has
+    no total), ``threads`` and ``probes``; and ``chunk`` and ``piece_bytes``.
+
+    Memory: the run goes on in a thread of its own, at most one chunk ahead of the loop. A
+    LinuxCNC or Fanuc program file without control flow (no O-words, GOTO, loops, program
+    numbers or M99: CAM output) is read ``piece_bytes`` at a time (1 to 2**30), so memory
+    does not grow with its length; other programs (and Heidenhain, Sinumerik) are read whole,
+    up to ``max_bytes``, their path still streamed.
+
+    Errors: with ``strict=True`` the run's error is raised by the loop after the chunk that
+    holds the segments before it; with ``strict=False`` it ends the stream and is in
+    ``stream.diagnostics``. The returned :class:`PathStream` also gives ``blocks`` and
+    ``files`` once it has ended; ``close()`` (or leaving a ``with`` block) stops the run."""
+    dialect, tools, options = _engine_options(**locals())
+    if isinstance(program, (str, _os.PathLike)):
+        return _core.iter_run_file(_os.fspath(program), dialect, tools, **options)
+    del options["piece_bytes"]  # a parsed Program is not read in pieces
+    return _core.iter_run_program(program, tools, **options)
+
+
+def _engine_options(program, tools, *, dialect, units,
+                    **options) -> _Tuple[_Optional[str], _Optional[ToolTable], _Dict[str, _Any]]:
+    """The arguments of :func:`run` or :func:`iter_run` (their ``locals()`` on entry) as the
+    engine takes them: ``(dialect, tools, options)``, the tool table read, the keywords
+    checked and converted."""
+    for name, (least, most) in _COUNTS.items():
+        if name in options:
+            _whole_in(name, options[name], least, most)
+    tools = _tools_input(tools, units)
+    options["search_path"] = _search_path_input(options["search_path"])
+    options["parameters"] = _parameters_input(options["parameters"])
+    machine = _machine.resolve(options["machine"])
+    if isinstance(machine, str):  # "mill" / "lathe": the plain profile of that kind for the program's control
+        if options["profile"] is None:
+            d = program.dialect if isinstance(program, Program) else _core.dialect_of_file(_os.fspath(program), dialect)
+            options["profile"] = ControlProfile(d, kind=machine)
+        machine = None
+    options["machine"] = machine
+    options["start"] = _start_input(options["start"])
+    if "probes" in options:
+        options["probes"] = list(options["probes"])
+    return dialect, tools, options
+
+
+def _tools_input(tools, units):
+    """run()'s tools as the engine takes them: a ToolTable (a path read with ``units``) or None.
+    A table comes back as it is: :func:`run_many` reads a path once for all its programs."""
+    if isinstance(tools, (str, _os.PathLike)):
+        tools = ToolTable.read(_os.fspath(tools), units=units)
+    return tools
+
+
+def _search_path_input(search_path):
+    """run()'s search_path as the engine takes it: a list of directory names (str)."""
+    if isinstance(search_path, (str, bytes, _os.PathLike)):
+        search_path = [search_path]
+    search_path = [_os.fsdecode(d) for d in search_path]
+    if any(d == "" for d in search_path):
+        raise ValueError("search_path: an empty directory name would mean the working directory, which a run "
+                         "never searches; name the directory (e.g. '.')")
+    return search_path
+
+
+def _parameters_input(parameters):
+    """run()'s parameters as the engine takes them: {int: float} (a .var file read)."""
+    if isinstance(parameters, (str, _os.PathLike)):
+        from .params import read_var
+
+        parameters = read_var(parameters)
+    if parameters is not None and not isinstance(parameters, _abc.Mapping):
+        raise TypeError("parameters must be a {number: value} mapping or the path of a .var file, not "
+                        f"{type(parameters).__name__}")
+    return {int(k): float(v) for k, v in (parameters or {}).items()}
 
 
 def _start_input(start):
@@ -166,85 +266,15 @@ def _start_input(start):
     return xyz
 
 
-def _whole_at_least(name, value, least):
-    """A count or size argument: a whole number (not a bool, not 1.5), at least `least`."""
+def _whole_in(name, value, least, most=None):
+    """A count or size argument: a whole number (not a bool, not 1.5), at least ``least``
+    (and at most ``most``)."""
     if isinstance(value, bool) or not isinstance(value, _numbers.Integral):
         raise TypeError(f"{name} must be a whole number, not {value!r}")
     if value < least:
         raise ValueError(f"{name} must be at least {least}, not {value}")
-
-
-def _machine_inputs(machine, profile, program, dialect):
-    """run()'s machine: a Machine (from a preset name or a file), or with the shorthand
-    'mill' / 'lathe' the profile of that kind for the program's control."""
-    if isinstance(machine, str) and machine in ("mill", "lathe"):
-        if profile is None:
-            d = program.dialect if isinstance(program, Program) else _core.dialect_of_file(_os.fspath(program), dialect)
-            profile = ControlProfile(d, kind=machine)
-        return None, profile
-    return _machine.resolve(machine), profile
-
-
-def _run_inputs(tools, units, search_path, parameters):
-    """run()'s and iter_run()'s tools, search path and parameters as the engine takes them."""
-    if isinstance(tools, (str, _os.PathLike)):
-        tools = ToolTable.read(_os.fspath(tools), units=units)
-    if isinstance(search_path, (str, bytes, _os.PathLike)):
-        search_path = [search_path]
-    search_path = [_os.fsdecode(d) for d in search_path]
-    if any(d == "" for d in search_path):
-        raise ValueError("search_path: an empty directory name would mean the working directory, which a run "
-                         "never searches; name the directory (e.g. '.')")
-    if isinstance(parameters, (str, _os.PathLike)):
-        from .params import read_var
-
-        parameters = read_var(parameters)
-    if parameters is not None and not isinstance(parameters, _abc.Mapping):
-        raise TypeError("parameters must be a {number: value} mapping or the path of a .var file, not "
-                        f"{type(parameters).__name__}")
-    parameters = {int(k): float(v) for k, v in (parameters or {}).items()}
-    return tools, search_path, parameters
-
-
-def iter_run(program: _Union[Program, _FileName], tools: _Union[ToolTable, _FileName, None] = None, *,
-             chunk: int = 1_000_000, dialect: _Optional[str] = None, strict: bool = True, block_delete: bool = False,
-             profile: _Optional[ControlProfile] = None, units: str = "mm", search_path: _SearchPath = (),
-             parameters: _Parameters = None, max_bytes: int = 2**31, max_line_length: int = 2**20,
-             piece_bytes: int = 1 << 20, follow_links: bool = False,
-             machine: _Union[Machine, _FileName, None] = None, start: _Start = None) -> PathStream:
-    """Run ``program`` like :func:`run` and yield its compensated path in chunks of ``chunk``
-    segments (:class:`Path` objects; the last may be shorter). The chunks joined are the
-    ``path`` that :func:`run` returns, segment for segment: the compensation look-ahead runs
-    on across chunk boundaries. The programmed path is not kept.
-
-    Memory: the run goes on in a thread of its own, at most one chunk ahead of the loop. A
-    LinuxCNC or Fanuc program file without control flow (no O-words, GOTO, loops, program
-    numbers or M99: CAM output) is read ``piece_bytes`` at a time, so memory does not grow
-    with its length; other programs (and Heidenhain, Sinumerik) are read whole, up to
-    ``max_bytes``, their path still streamed; ``max_bytes`` and ``max_line_length`` bound the
-    files it calls too, and ``follow_links`` and ``start`` are :func:`run`'s. ``max_segments`` does not apply.
-
-    Errors: with ``strict=True`` the run's error is raised by the loop after the chunk that
-    holds the segments before it; with ``strict=False`` it ends the stream and is in
-    ``stream.diagnostics``. The returned :class:`PathStream` also gives ``blocks`` and
-    ``files`` once it has ended; ``close()`` (or leaving a ``with`` block) stops the run."""
-    _whole_at_least("chunk", chunk, 1)
-    _whole_at_least("piece_bytes", piece_bytes, 1)
-    _whole_at_least("max_bytes", max_bytes, 1)
-    _whole_at_least("max_line_length", max_line_length, 1)
-    if piece_bytes > 2**30:
-        raise ValueError("piece_bytes must be from 1 to 2**30 (1 GiB)")
-    tools, search_path, parameters = _run_inputs(tools, units, search_path, parameters)
-    machine, profile = _machine_inputs(machine, profile, program, dialect)
-    if isinstance(program, (str, _os.PathLike)):
-        return _core.iter_run_file(_os.fspath(program), dialect, tools, strict=strict, block_delete=block_delete,
-                                   profile=profile, search_path=search_path, parameters=parameters, chunk=chunk,
-                                   piece_bytes=piece_bytes, max_bytes=max_bytes, max_line_length=max_line_length,
-                                   follow_links=follow_links, machine=machine, start=_start_input(start))
-    return _core.iter_run_program(program, tools, strict=strict, block_delete=block_delete, profile=profile,
-                                  search_path=search_path, parameters=parameters, chunk=chunk, max_bytes=max_bytes,
-                                  max_line_length=max_line_length, follow_links=follow_links, machine=machine,
-                                  start=_start_input(start))
+    if most is not None and value > most:
+        raise ValueError(f"{name} must be from {least} to {most}, not {value}")
 
 
 from . import plot as _plot  # noqa: E402  (cheap: matplotlib is imported when something is drawn)

@@ -12,6 +12,7 @@ one is, 2 on usage errors (bad options, a program or table that cannot be read).
 from __future__ import annotations
 
 import argparse
+import inspect
 import json
 import os
 import sys
@@ -19,7 +20,7 @@ import sys
 import numpy as np
 
 import toolcomp as tc
-from toolcomp import cli_stream
+from toolcomp import cli_stream, export
 
 EXIT_OK, EXIT_ERRORS, EXIT_USAGE = 0, 1, 2
 
@@ -27,7 +28,7 @@ _DIALECT_TABLE = tc._core.dialect_table()  # the dialects and their suffixes
 DIALECTS = tuple(row["name"] for row in _DIALECT_TABLE)
 SUFFIX_DIALECTS = {s: row["name"] for row in _DIALECT_TABLE for s in row["suffixes"]}
 ERROR_SEVERITIES = ("error", "fatal")
-MAX_COUNTED_BYTES = 2**31  # Program.read's default max_bytes
+MAX_COUNTED_BYTES = inspect.signature(tc.run).parameters["max_bytes"].default  # a run's size limit
 
 
 class UsageError(Exception):
@@ -112,8 +113,8 @@ def _check_readable(path, what):
         raise UsageError(f"{what} '{path}' is not readable")
 
 
-def _read_tools(tc, path, units):
-    """The table at ``path``, its lengths in ``units`` (None: the table's own)."""
+def _read_tools(path, units):
+    """The table at ``path``, its lengths in ``units`` (None: ToolTable.read's default)."""
     return tc.ToolTable.read(path) if units is None else tc.ToolTable.read(path, units=units)
 
 
@@ -220,7 +221,7 @@ def execute(program_file, tools_file=None, dialect=None, units_table=None, searc
     tools = None
     if tools_file is not None:
         try:
-            tools = _read_tools(tc, tools_file, units_table)
+            tools = _read_tools(tools_file, units_table)
         except tc.Error as exc:
             out.records.append(Record.of(exc, tools_file, "error"))
             return out
@@ -233,7 +234,7 @@ def execute(program_file, tools_file=None, dialect=None, units_table=None, searc
         run_kwargs["start"] = start
     if machine is not None:
         try:
-            run_kwargs["machine"] = machine if machine in ("mill", "lathe") else tc.machine.resolve(machine)
+            run_kwargs["machine"] = tc.machine.resolve(machine)
         except tc.Error as exc:
             out.records.append(Record.of(exc, machine, "error"))
             return out
@@ -246,7 +247,7 @@ def execute(program_file, tools_file=None, dialect=None, units_table=None, searc
             out.records.append(Record.of(exc, parameters, "error"))
             return out
     if not whole_path and cli_stream.streams(program_file):
-        return cli_stream.execute_streamed(tc, out, program_file, dialect, run_kwargs,
+        return cli_stream.execute_streamed(out, program_file, dialect, run_kwargs,
                                            lambda blocks: _progress_bar(blocks, force=progress), csv)
 
     try:
@@ -290,12 +291,8 @@ def _block_count(program, program_file, blocks=None):
     if blocks is not None:
         return int(blocks)
     if program is not None:
-        for get in (lambda p: p.block_count, len):
-            try:
-                return int(get(program))
-            except (AttributeError, TypeError):
-                pass
-    # No program object (it could not be read) or no count: lines with content, read in
+        return len(program)
+    # No program object (it could not be read): lines with content, read in
     # chunks (a file refused as too large or with a huge line is never held whole); 0 for
     # what is no regular file or over the engine's default size limit.
     try:
@@ -316,8 +313,6 @@ def _block_count(program, program_file, blocks=None):
 
 def summarize(out: Outcome) -> dict:
     """The run summary as plain data (what --json writes)."""
-    from toolcomp.plot import path_size, segment_lengths
-
     res = out.result
     summary = {
         "program": out.program_file,
@@ -331,19 +326,13 @@ def summarize(out: Outcome) -> dict:
         segs, tools, length = out.totals.segments(), sorted(out.totals.tools), out.totals.lengths()
     elif res is not None:
         path = res.path
-        segs["nominal"] = path_size(res.nominal)
-        segs["compensated"] = path_size(path)
+        segs["nominal"] = len(res.nominal)
+        segs["compensated"] = len(path)
         if segs["compensated"]:
-            segs["generated"] = int(np.count_nonzero(np.asarray(path.generated)))
-            tools = sorted(int(t) for t in np.unique(np.asarray(path.tool)))
-            if hasattr(path, "length"):  # the engine's exact arc/helix lengths, O(N)
-                total, feed = path.length(True), path.length(False)
-                length = {"feed": float(feed), "rapid": max(0.0, float(total - feed))}
-            else:
-                kind = np.asarray(path.kind)
-                lengths = segment_lengths(path)
-                length = {"feed": float(lengths[kind != 0].sum()),
-                          "rapid": float(lengths[kind == 0].sum())}
+            segs["generated"] = int(np.count_nonzero(path.generated))
+            tools = sorted(int(t) for t in np.unique(path.tool))
+            total, feed = path.length(True), path.length(False)  # arcs and helices exact
+            length = {"feed": float(feed), "rapid": max(0.0, float(total - feed))}
     summary["segments"] = segs
     summary["tools"] = tools
     summary["length_mm"] = length
@@ -417,10 +406,8 @@ class CsvWriter:
         return tc._core._csv_header
 
     def add(self, path) -> None:
-        from toolcomp.plot import path_size
-
         self._open()
-        n = path_size(path) if path is not None else 0
+        n = len(path) if path is not None else 0
         core = tc._core
         # A block of rows at a time: the text of a whole path would take many times its memory.
         for a in range(0, n, CSV_ROWS_AT_ONCE):
@@ -485,9 +472,7 @@ def cmd_run(args) -> int:
         if out.result is None:
             print(f"toolcomp: no path to plot for {args.program}", file=sys.stderr)
         else:
-            from toolcomp.plot import path_size
-
-            progress = _plot_progress(path_size(out.result.path), force=args.progress)
+            progress = _plot_progress(len(out.result.path), force=args.progress)
             try:
                 from toolcomp.plot import save_plot
                 save_plot(out.result, args.plot, title=os.path.basename(args.program), progress=progress)
@@ -525,9 +510,8 @@ def cmd_export(args) -> int:
         for r in out.records:
             print(r.format(), file=sys.stderr)
         return EXIT_ERRORS
-    from toolcomp.export import to_gcode
     try:
-        text = to_gcode(out.result.path, args.to, comments=not args.no_comments,
+        text = export.to_gcode(out.result.path, args.to, comments=not args.no_comments,
                         tool_length=not args.no_tool_length)
     except ValueError as exc:
         raise UsageError(str(exc))
@@ -605,7 +589,7 @@ def build_parser() -> argparse.ArgumentParser:
                                    "controls without cutter compensation.")
     e.add_argument("program", metavar="PROGRAM")
     common(e)
-    e.add_argument("--to", choices=("linuxcnc", "fanuc", "grbl"), default="linuxcnc",
+    e.add_argument("--to", choices=export.DIALECTS, default="linuxcnc",
                    help="dialect of the written program (default: linuxcnc)")
     e.add_argument("-o", "--output", metavar="FILE", help="output file (default: stdout)")
     e.add_argument("--no-comments", action="store_true", help="leave out the (line N) comments")

@@ -15,6 +15,8 @@ import os
 
 import numpy as np
 
+import toolcomp as tc
+
 STREAM_MIN_BYTES = 64 * 2**20  # about 3.5 million CAM blocks: Paths of about 800 MB
 STREAM_CHUNK = 250_000         # segments summed at a time (about 30 MB)
 
@@ -41,8 +43,8 @@ class PathTotals:
         if not n:
             return
         self.compensated += n
-        self.generated += int(np.count_nonzero(np.asarray(path.generated)))
-        self.tools.update(int(t) for t in np.unique(np.asarray(path.tool)))
+        self.generated += int(np.count_nonzero(path.generated))
+        self.tools.update(int(t) for t in np.unique(path.tool))
         self.total += float(path.length(True))
         self.feed += float(path.length(False))
 
@@ -53,7 +55,7 @@ class PathTotals:
         return {"feed": self.feed, "rapid": max(0.0, self.total - self.feed)}
 
 
-def execute_streamed(tc, out, program_file, dialect, run_kwargs, progress_bar, csv=None):
+def execute_streamed(out, program_file, dialect, run_kwargs, progress_bar, csv=None):
     """``cli.execute`` for a large program: fills ``out`` (records, dialect, blocks, totals;
     blocks stay None for a program with a syntax error: the summary counts its lines, as for
     a whole run). `progress_bar(total)` makes a bar (or None) for a program of `total` blocks.

@@ -7,11 +7,10 @@ import sys
 
 
 def _read(path, units):
-    import toolcomp as tc
     from toolcomp.cli import _check_readable, _read_tools
 
     _check_readable(path, "tool table")
-    return _read_tools(tc, path, units)
+    return _read_tools(path, units)
 
 
 def _table_error(path, exc) -> int:

@@ -71,7 +71,7 @@ def _svg(paths: List[Any], colours: List[str]) -> str:
 
 
 def _diagnostic_row(d) -> str:
-    where = f"{d.line}" + (f" ({_esc(d.file)})" if getattr(d, "file", "") else "")
+    where = f"{d.line}" + (f" ({_esc(d.file)})" if d.file else "")
     return (f"<tr><td>{_esc(d.severity)}</td><td><code>{_esc(d.code)}</code></td><td>{where}</td>"
             f"<td>{_esc(d.message)}</td></tr>")
 

@@ -48,7 +48,7 @@ import math
 import os
 import re
 import sys
-from typing import Any, Dict, List, Optional, Tuple
+from typing import Any, Dict, List, Optional, Tuple, Union
 
 from . import _core
 from ._errors import ParseError
@@ -473,11 +473,12 @@ def preset(name: str) -> "_core.Machine":
     return read(os.path.join(_PRESETS, name + ".toml"))
 
 
-def resolve(machine) -> Optional["_core.Machine"]:
-    """What run(), iter_run() and run_many() take as machine=: a Machine, a preset name, the
-    path of a machine file (.toml), 'mill' or 'lathe' (the control's plain machine of that
-    kind, the former shorthand), or None."""
-    if machine is None or isinstance(machine, _core.Machine):
+def resolve(machine) -> Union["_core.Machine", str, None]:
+    """What run(), iter_run() and run_many() take as machine=, as they give it to the engine:
+    a Machine (as it is, or read from a preset name or the path of a machine file, .toml),
+    None, or 'mill' / 'lathe' as they are (the control's plain profile of that kind, the
+    former shorthand: it depends on the program's control, so run() makes it)."""
+    if machine is None or isinstance(machine, _core.Machine) or machine in ("mill", "lathe"):
         return machine
     if isinstance(machine, os.PathLike) or (isinstance(machine, str) and machine.endswith(".toml")):
         return read(machine)

@@ -22,7 +22,7 @@ def plot_result_3d(result, ax=None, show_nominal=True, tolerance=None, title=Non
     everything = []
 
     jobs = []
-    nominal = getattr(result, "nominal", None)
+    nominal = result.nominal
     if show_nominal and nominal is not None and path_size(nominal):
         drawn = _Drawing(nominal, (0, 1, 2), tolerance)
         jobs.append(("programmed path", drawn, drawn.columns[0] != RAPID,

@@ -21,7 +21,6 @@ from __future__ import annotations
 import os
 import pathlib
 import re
-import sys
 from typing import Dict, Optional
 
 import pytest
@@ -31,10 +30,8 @@ _HEADER = re.compile(r"toolcomp:\s*(.*?)\s*\)?\s*$", re.IGNORECASE)
 
 
 def _toml(path: pathlib.Path) -> dict:
-    if sys.version_info >= (3, 11):
-        import tomllib
-    else:  # pragma: no cover
-        import tomli as tomllib
+    from .machine import tomllib  # the standard library's, or tomli before Python 3.11
+
     with open(path, "rb") as f:
         return tomllib.load(f)
 

@@ -121,7 +121,7 @@ def assert_no_gouge(res: "_core.Result", contour, radius: float, *, tol: float =
     arcs, arcs in other planes as chords within ``tolerance`` mm. Only moves with
     compensation on are checked; the first one that comes too close (in path order) is
     reported with its line and the point where it comes closest."""
-    path = res.path if hasattr(res, "path") else res
+    path = res.path if hasattr(res, "path") else res  # a Result, or a Path given directly
     radius, tol = _check("radius", radius, positive=True), _check("tol", tol)
     tolerance = _check("tolerance", tolerance, positive=True)
     c = _polyline(contour)
