@@ -100,7 +100,7 @@ inline void same_plain_reading(std::string_view text, Dialect d) {
         pos = nl + 1;
         Program fast, slow;
         fast.dialect = slow.dialect = d;
-        if (!iso::lex_plain_line(line, 1, fast)) {
+        if (!iso::lex_line_fast(line, 1, fast)) {
             if (fast.size() != 0 || fast.word_count() != 0) throw std::logic_error("plain line: a refused line left words");
             continue;
         }

@@ -1,6 +1,6 @@
 #include "toolcomp/path.hpp"
 
-#include "toolcomp/compensation/three_d.hpp"
+#include "toolcomp/compensation/normal_offset.hpp"
 
 #include <algorithm>
 #include <bit>

@@ -56,9 +56,9 @@ public:
         const std::size_t n = path_.size();
         check_jumps(n);
         out_.reserve(48 * n + 64);
-        if (style_.dialect == GcodeStyle::Dialect::fanuc) out_ += "%\n";
+        if (style_.target == GcodeStyle::Target::fanuc) out_ += "%\n";
         out_ += "G21 G90 G94 G40 G17";
-        if (style_.dialect == GcodeStyle::Dialect::linuxcnc) out_ += " G91.1";
+        if (style_.target == GcodeStyle::Target::linuxcnc) out_ += " G91.1";
         out_ += '\n';
         if (n > 0) {
             const P3 pos = start(0);
@@ -73,7 +73,7 @@ public:
             }
         }
         for (std::size_t i = 0; i < n; ++i) segment(i);
-        out_ += style_.dialect == GcodeStyle::Dialect::fanuc ? "M30\n%\n" : "M2\n";
+        out_ += style_.target == GcodeStyle::Target::fanuc ? "M30\n%\n" : "M2\n";
         return std::move(out_);
     }
 
@@ -185,7 +185,7 @@ private:
         const P3 c = centre(i);
         const int a = kPlaneAxes[plane_][0], b = kPlaneAxes[plane_][1], h = kPlaneAxes[plane_][2];
         const int turns = path_.turns(i);
-        const bool linuxcnc = style_.dialect == GcodeStyle::Dialect::linuxcnc;
+        const bool linuxcnc = style_.target == GcodeStyle::Target::linuxcnc;
         // Without P the turns are full circles first, the third axis shared out by angle.
         P3 p = s;
         const int circles = linuxcnc ? 0 : std::max(0, turns);

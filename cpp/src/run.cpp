@@ -9,7 +9,7 @@
 
 #include "pipeline.hpp"
 #include "start.hpp"
-#include "unchanged_path.hpp"
+#include "shared_path.hpp"
 #include "program/program_source.hpp"
 
 #include "control/travel.hpp"
@@ -113,7 +113,7 @@ private:
 // The programmed Path's SegmentLimit, telling the compensated side what it stored.
 class Programmed : public MotionSink {
 public:
-    Programmed(MotionSink& limit, const Path& path, UnchangedPath& unchanged)
+    Programmed(MotionSink& limit, const Path& path, SharedPath& unchanged)
         : limit_(limit), path_(path), unchanged_(unchanged) {}
     void push(const Motion& m) override {
         const std::size_t before = path_.size();
@@ -126,7 +126,7 @@ public:
 private:
     MotionSink& limit_;
     const Path& path_;
-    UnchangedPath& unchanged_;
+    SharedPath& unchanged_;
 };
 
 // The compensation stages know a move's file by its index only (Motion::file): the name,
@@ -251,8 +251,8 @@ Result run_main(const Program& program, const ToolTable* tools, const RunOptions
                              : options.machine ? options.machine->profile
                                                : profile_for(program.dialect);
     // The compensated path is stored only once it differs from the programmed one
-    // (unchanged_path.hpp); its reservation is address space until then.
-    UnchangedPath unchanged(res.nominal, res.path, std::min(2 * expected, options.max_segments));
+    // (shared_path.hpp); its reservation is address space until then.
+    SharedPath unchanged(res.nominal, res.path, std::min(2 * expected, options.max_segments));
     SegmentLimit nominal_limit(res.nominal, options.max_segments, "programmed");
     Programmed nominal(nominal_limit, res.nominal, unchanged);
     SegmentLimit compensated(unchanged, options.max_segments, "compensated");

@@ -14,11 +14,11 @@ void bind_path_text(py::module_& m) {
         [](const Path& p, const std::string& dialect, int digits, bool comments, bool tool_length) {
             GcodeStyle style;
             if (dialect == "linuxcnc")
-                style.dialect = GcodeStyle::Dialect::linuxcnc;
+                style.target = GcodeStyle::Target::linuxcnc;
             else if (dialect == "fanuc")
-                style.dialect = GcodeStyle::Dialect::fanuc;
+                style.target = GcodeStyle::Target::fanuc;
             else if (dialect == "grbl")
-                style.dialect = GcodeStyle::Dialect::grbl;
+                style.target = GcodeStyle::Target::grbl;
             else
                 throw py::value_error("unknown export dialect '" + dialect + "' (expected one of linuxcnc, fanuc, grbl)");
             style.digits = digits;

@@ -6,7 +6,7 @@
 
 #include <pybind11/numpy.h>
 
-#include "toolcomp/compensation/three_d.hpp"
+#include "toolcomp/compensation/normal_offset.hpp"
 #include "toolcomp/run.hpp"
 #include "toolcomp/tools/tool_table.hpp"
 

@@ -17,8 +17,8 @@ namespace toolcomp {
 // `digits` decimals, is that of the segment's start is left out (X always stays); F and the
 // rotary axes are modal. `comments`: "(line N)" before the blocks of each source line.
 struct GcodeStyle {
-    enum class Dialect { linuxcnc, fanuc, grbl };
-    Dialect dialect = Dialect::linuxcnc;
+    enum class Target { linuxcnc, fanuc, grbl };  // the control the program is written for
+    Target target = Target::linuxcnc;
     int digits = 6;  // 0..30
     bool comments = true;
     bool tool_length = true;

@@ -5,7 +5,7 @@
 // the Path run() returns. The programmed path is not kept.
 //
 // A LinuxCNC / Fanuc file is read a piece (about 1 MB of whole lines) at a time when nothing
-// in it steers across blocks (iso::may_steer: no O-words, GOTO, loops, program numbers, M99):
+// in it steers across blocks (iso::has_control_flow: no O-words, GOTO, loops, program numbers, M99):
 // memory stays the same whatever the program's length. A program that has them, and every
 // Heidenhain or Sinumerik program, is read and parsed whole; its path is still streamed.
 #include <atomic>

@@ -1,6 +1,6 @@
 #include "toolcomp/compensation/surface.hpp"
 
-#include "toolcomp/compensation/three_d.hpp"
+#include "toolcomp/compensation/normal_offset.hpp"
 
 namespace toolcomp {
 

@@ -23,7 +23,7 @@ ProgramSource::ProgramSource(const std::string& path, Dialect dialect, const Rea
     if (!whole) {
         pieces_.emplace(path, piece_bytes, limits.max_line_length, cr_ends_line(dialect));
         for (std::string_view t = pieces_->next(); !t.empty() && !whole; t = pieces_->next()) {
-            whole = iso::may_steer(t);
+            whole = iso::has_control_flow(t);
             if (check_) check_();
         }
     }

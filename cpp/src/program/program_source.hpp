@@ -1,6 +1,6 @@
 #pragma once
 // The main program of a run from a file: read and parsed whole, or, for a LinuxCNC / Fanuc
-// file in which nothing steers across blocks (iso::may_steer), piece by piece: then memory
+// file in which nothing steers across blocks (iso::has_control_flow), piece by piece: then memory
 // for the program stays that of two pieces (about `piece_bytes` of text each: the next one is
 // read and parsed in another thread while the run works through the current one) whatever
 // its length.

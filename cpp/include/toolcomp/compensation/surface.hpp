@@ -1,6 +1,6 @@
 #pragma once
 // The 3D compensation stage: moves with a surface normal (Heidenhain LN) end displaced by
-// ΔPT = ΔR2·N − (ΔR − ΔR2)·w (three_d.hpp); the next move starts where that one ended.
+// ΔPT = ΔR2·N − (ΔR − ΔR2)·w (normal_offset.hpp); the next move starts where that one ended.
 #include "toolcomp/motion/motion.hpp"
 
 namespace toolcomp {

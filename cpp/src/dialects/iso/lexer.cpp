@@ -297,7 +297,7 @@ Program PieceParser::parse(std::string_view text, Program prog) {
             // LinuxCNC reads at most 252 characters a line (a CR of a CRLF end counts).
             if (dialect_ == Dialect::linuxcnc && line.size() > 252)
                 throw ParseError(code::line_too_long, "Command too long", {line_no_, 253});
-            if (!lex_plain_line(line, line_no_, prog)) LineLexer(line, line_no_, prog, buffers).run();
+            if (!lex_line_fast(line, line_no_, prog)) LineLexer(line, line_no_, prog, buffers).run();
         } catch (const ParseError& e) {
             if (strict_) throw;
             // The block of the failing line, if it was begun (a line refused for its length

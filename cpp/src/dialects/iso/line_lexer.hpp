@@ -38,10 +38,10 @@ inline bool is_word_letter(char u, Dialect d) {
 
 // A line of address words with plain numbers ("G1 X10.5 Y-2 F600": letters, signs, digits,
 // points, blanks between words), read straight from the source text into a block of `prog`:
-// what LineLexer makes of it, without its normalising pass (plain_line.cpp). False, with
+// what LineLexer makes of it, without its normalising pass (fast_line.cpp). False, with
 // nothing added, for every other line (comments, parameters, expressions, O-words, blanks
 // within a word, anything LineLexer refuses): LineLexer reads those.
-bool lex_plain_line(std::string_view line, int line_no, Program& prog);
+bool lex_line_fast(std::string_view line, int line_no, Program& prog);
 
 // The normalised text of a line and its maps, reused from line to line (no allocation per
 // line on million-block programs).

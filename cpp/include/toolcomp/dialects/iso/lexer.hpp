@@ -20,7 +20,7 @@ Program parse(std::string_view text, Dialect dialect, std::string name = "<strin
 // numbers, GOTO, WHILE DO (all written with a letter O outside a comment) or an M99 (which
 // runs a main program again from its top). Conservative: "yes" may be wrong, "no" is not.
 // A streamed run reads a program without them piece by piece, and one with them whole.
-bool may_steer(std::string_view text);
+bool has_control_flow(std::string_view text);
 
 // The same for a text read piece by piece (a file too large to hold): each piece is whole
 // lines and becomes a Program of its own. Line numbers, the "%" delimiters and the last line

@@ -1,7 +1,7 @@
 // The ISO lexer's fast path: most blocks of a CAM program are address words with plain
 // numbers, which need none of LineLexer's machinery (blanks dropped into a buffer of their
 // own, column maps, expressions). The same words, values and columns as LineLexer; anything
-// else is left to it (test_plain_line.cpp compares the two on random lines).
+// else is left to it (test_fast_line.cpp compares the two on random lines).
 #include "toolcomp/program/decimal.hpp"
 
 #include "codes.hpp"
@@ -9,7 +9,7 @@
 
 namespace toolcomp::iso {
 
-bool lex_plain_line(std::string_view line, int line_no, Program& prog) {
+bool lex_line_fast(std::string_view line, int line_no, Program& prog) {
     const char* const s = line.data();
     const std::size_t n = line.size();
     std::size_t k = 0;

@@ -1,4 +1,4 @@
-// The ISO lexer's fast path (lex_plain_line) against the general lexer (LineLexer): on every
+// The ISO lexer's fast path (lex_line_fast) against the general lexer (LineLexer): on every
 // line the fast path takes, the same block, words, values (bit for bit) and columns; on every
 // other line, nothing added. Random lines near the plain grammar, and hand-picked ones.
 #include <catch2/catch.hpp>
@@ -11,7 +11,7 @@
 #include "toolcomp/program/diagnostic.hpp"
 
 using namespace toolcomp;
-using toolcomp::iso::lex_plain_line;
+using toolcomp::iso::lex_line_fast;
 
 namespace {
 
@@ -35,7 +35,7 @@ bool general(const std::string& line, Program& p) {
 void same_reading(const std::string& line, Dialect d, int& plain) {
     INFO("line '" << line << "', dialect " << static_cast<int>(d));
     Program fast = empty(d), slow = empty(d);
-    if (!lex_plain_line(line, 7, fast)) {
+    if (!lex_line_fast(line, 7, fast)) {
         CHECK(fast.size() == 0);
         CHECK(fast.word_count() == 0);
         return;
@@ -99,7 +99,7 @@ TEST_CASE("plain lines: the fast path reads what the general lexer reads, on ran
 
 TEST_CASE("plain lines: hand-picked readings") {
     Program p = empty(Dialect::linuxcnc);
-    REQUIRE(lex_plain_line("G1 X10.5 y-2 F600\r", 3, p));
+    REQUIRE(lex_line_fast("G1 X10.5 y-2 F600\r", 3, p));
     REQUIRE(p.size() == 1);
     const auto w = p.words(p.blocks()[0]);
     REQUIRE(w.size() == 4);
@@ -110,7 +110,7 @@ TEST_CASE("plain lines: hand-picked readings") {
     CHECK((w[3].letter == 'F' && w[3].value == 600 && w[3].column == 14));
 
     Program q = empty(Dialect::linuxcnc);
-    REQUIRE(lex_plain_line("N10G1X1Y.5", 1, q));
+    REQUIRE(lex_line_fast("N10G1X1Y.5", 1, q));
     CHECK(q.word_count() == 4);
 
     // Left to the general lexer, with nothing added.
@@ -119,14 +119,14 @@ TEST_CASE("plain lines: hand-picked readings") {
                              "G1 X12345678901234567", "IF[#1GT2]GOTO5", "G1 X1 $", "G1 X1e"}) {
         Program r = empty(Dialect::fanuc);
         INFO(line);
-        CHECK_FALSE(lex_plain_line(line, 1, r));
+        CHECK_FALSE(lex_line_fast(line, 1, r));
         CHECK(r.size() == 0);
         CHECK(r.word_count() == 0);
     }
     // U, V and W are words on Fanuc and the 9/Series; on LinuxCNC U and W only (read in a lathe
     // cycle's profile, refused elsewhere when the block runs), not V.
     Program f = empty(Dialect::fanuc), l = empty(Dialect::linuxcnc);
-    CHECK(lex_plain_line("G1 U1 V2 W-2", 1, f));
-    CHECK(lex_plain_line("G1 U1 W-2", 2, l));
-    CHECK_FALSE(lex_plain_line("G1 V1", 3, l));
+    CHECK(lex_line_fast("G1 U1 V2 W-2", 1, f));
+    CHECK(lex_line_fast("G1 U1 W-2", 2, l));
+    CHECK_FALSE(lex_line_fast("G1 V1", 3, l));
 }

@@ -5,7 +5,7 @@
 
 #include <Eigen/Geometry>
 
-#include "toolcomp/compensation/three_d.hpp"
+#include "toolcomp/compensation/normal_offset.hpp"
 
 using namespace toolcomp;
 

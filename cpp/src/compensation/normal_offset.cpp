@@ -1,4 +1,4 @@
-#include "toolcomp/compensation/three_d.hpp"
+#include "toolcomp/compensation/normal_offset.hpp"
 
 #include <cmath>
 #include <limits>

@@ -1,4 +1,4 @@
-// may_steer: a byte scan (no parsing) for what makes a program's blocks depend on each
+// has_control_flow: a byte scan (no parsing) for what makes a program's blocks depend on each
 // other beyond the modal state: any letter O outside a parenthesised comment, M99, or a P
 // on a line with G70-G73 (a lathe cycle reading the blocks N<P> .. N<Q>).
 #include <algorithm>
@@ -42,7 +42,7 @@ bool line_has_contour_cycle(std::string_view text, std::size_t i) {
 }
 }  // namespace
 
-bool may_steer(std::string_view text) {
+bool has_control_flow(std::string_view text) {
     bool comment = false;
     for (std::size_t i = 0; i < text.size(); ++i) {
         // Outside a comment, runs without such a byte are passed over whole.

@@ -1,4 +1,4 @@
-// iso::may_steer: which texts a streamed run must read whole (hand-picked cases, and random
+// iso::has_control_flow: which texts a streamed run must read whole (hand-picked cases, and random
 // texts against a byte-by-byte scan).
 #include <catch2/catch.hpp>
 
@@ -8,24 +8,24 @@
 
 #include "toolcomp/dialects/iso/lexer.hpp"
 
-using toolcomp::iso::may_steer;
+using toolcomp::iso::has_control_flow;
 
-TEST_CASE("may_steer: O-words, GOTO, loops, program numbers and M99 need the whole text") {
-    CHECK(may_steer("o100 sub\n"));
-    CHECK(may_steer("G1 X1\nO1000\nG1 X2\n"));
-    CHECK(may_steer("IF [#1 GT 2] GOTO 10\n"));
-    CHECK(may_steer("WHILE [#1 LT 5] DO 1\n"));
-    CHECK(may_steer("M99\n"));
-    CHECK(may_steer("m 0 9 9\n"));
-    CHECK(may_steer("#<_tool_o> = 1\n"));  // conservative: a letter o anywhere outside a comment
+TEST_CASE("has_control_flow: O-words, GOTO, loops, program numbers and M99 need the whole text") {
+    CHECK(has_control_flow("o100 sub\n"));
+    CHECK(has_control_flow("G1 X1\nO1000\nG1 X2\n"));
+    CHECK(has_control_flow("IF [#1 GT 2] GOTO 10\n"));
+    CHECK(has_control_flow("WHILE [#1 LT 5] DO 1\n"));
+    CHECK(has_control_flow("M99\n"));
+    CHECK(has_control_flow("m 0 9 9\n"));
+    CHECK(has_control_flow("#<_tool_o> = 1\n"));  // conservative: a letter o anywhere outside a comment
 }
 
-TEST_CASE("may_steer: straight CAM text streams") {
-    CHECK_FALSE(may_steer("G21 G90 (TOOL ONE, O-RING GROOVE)\nG1 X1 Y2 F100\n"));
-    CHECK_FALSE(may_steer("G1 X1 (a comment (O) ends at its first parenthesis\nG1 X2\n"));
-    CHECK_FALSE(may_steer("M98 P1000\nM9\nM990\nM30\n"));  // a call of a file and other M codes
-    CHECK_FALSE(may_steer("#1 = [#1 + 2]\nIF [#1 GT 2] THEN #2 = 1\nG1 X#1\n"));
-    CHECK_FALSE(may_steer(""));
+TEST_CASE("has_control_flow: straight CAM text streams") {
+    CHECK_FALSE(has_control_flow("G21 G90 (TOOL ONE, O-RING GROOVE)\nG1 X1 Y2 F100\n"));
+    CHECK_FALSE(has_control_flow("G1 X1 (a comment (O) ends at its first parenthesis\nG1 X2\n"));
+    CHECK_FALSE(has_control_flow("M98 P1000\nM9\nM990\nM30\n"));  // a call of a file and other M codes
+    CHECK_FALSE(has_control_flow("#1 = [#1 + 2]\nIF [#1 GT 2] THEN #2 = 1\nG1 X#1\n"));
+    CHECK_FALSE(has_control_flow(""));
 }
 
 namespace {
@@ -58,7 +58,7 @@ bool may_steer_bytewise(std::string_view text) {
 }
 }  // namespace
 
-TEST_CASE("may_steer: passing over runs of bytes finds what the byte-by-byte scan finds") {
+TEST_CASE("has_control_flow: passing over runs of bytes finds what the byte-by-byte scan finds") {
     // Texts of CAM lines with, now and then, a comment, an M code or a letter O, at every
     // offset against the 32-byte runs, the special bytes also at the runs' edges.
     std::mt19937 rng(7);
@@ -73,7 +73,7 @@ TEST_CASE("may_steer: passing over runs of bytes finds what the byte-by-byte sca
         INFO(text);
         const bool want = may_steer_bytewise(text);
         steer += want;
-        REQUIRE(may_steer(text) == want);
+        REQUIRE(has_control_flow(text) == want);
     }
     CHECK(steer > 2000);  // both answers are met often
     CHECK(steer < 18000);

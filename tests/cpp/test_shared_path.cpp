@@ -1,4 +1,4 @@
-// UnchangedPath and the Path prefix it starts from: the compensated path stored once it
+// SharedPath and the Path prefix it starts from: the compensated path stored once it
 // differs from the programmed one is, row for row, the Path the same segments pushed into an
 // empty Path give.
 #include <catch2/catch.hpp>
@@ -6,7 +6,7 @@
 #include <cstring>
 #include <vector>
 
-#include "../../cpp/src/unchanged_path.hpp"
+#include "../../cpp/src/shared_path.hpp"
 #include "toolcomp/path.hpp"
 
 using namespace toolcomp;
@@ -68,7 +68,7 @@ TEST_CASE("Path prefix: the first rows stored as the whole stores them; pushing 
 }
 
 namespace {
-// Runs `steps` through an UnchangedPath: for each programmed segment, what the stages emit
+// Runs `steps` through an SharedPath: for each programmed segment, what the stages emit
 // after it is stored (the same segment, another, none, two). Returns the compensated Path
 // (the programmed one when unchanged) and checks it against the emitted segments pushed into
 // an empty Path.
@@ -78,7 +78,7 @@ struct Step {
 };
 bool run_steps(const std::vector<Step>& steps) {
     Path nominal, path, expected;
-    UnchangedPath unchanged(nominal, path, 4096);
+    SharedPath unchanged(nominal, path, 4096);
     for (const Step& s : steps) {
         nominal.push(segment_no(s.programmed));
         unchanged.programmed(segment_no(s.programmed));
@@ -95,7 +95,7 @@ bool run_steps(const std::vector<Step>& steps) {
 }
 }  // namespace
 
-TEST_CASE("UnchangedPath: stored once while every segment passes unchanged, else the emitted segments") {
+TEST_CASE("SharedPath: stored once while every segment passes unchanged, else the emitted segments") {
     std::vector<Step> all_same;
     for (int i = 0; i < 900; ++i) all_same.push_back({i, {i}});
     CHECK(run_steps(all_same));

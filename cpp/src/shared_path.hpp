@@ -15,10 +15,10 @@
 
 namespace toolcomp {
 
-class UnchangedPath : public MotionSink {
+class SharedPath : public MotionSink {
 public:
     // `room`: segments to reserve in `path` once it takes its own.
-    UnchangedPath(const Path& nominal, Path& path, std::size_t room) : nominal_(nominal), path_(path), room_(room) {}
+    SharedPath(const Path& nominal, Path& path, std::size_t room) : nominal_(nominal), path_(path), room_(room) {}
 
     // The programmed Path has stored `m` (the stages are given it next).
     void programmed(const Motion& m) {
