@@ -36,7 +36,7 @@ Ctl ctl_of(std::string_view k) {
 // The first statement of a block, after its number and label.
 std::span<const Token> statements(std::span<const Token> t) {
     std::size_t i = 0;
-    while (i < t.size() && (t[i].key == "N" || t[i].key == ":")) ++i;
+    while (i < t.size() && (t[i].is("N") || t[i].is(":"))) ++i;
     return t.subspan(i);
 }
 }  // namespace
@@ -80,21 +80,21 @@ const ProgramInfo& Interp::info_of(const Program& p) {
     for (std::size_t i = 0; i < blocks.size(); ++i) {
         auto all = p.tokens(blocks[i]);
         for (const Token& t : all) {
-            if (t.key == "N" && t.text.empty() && std::fabs(t.value) < 1e15)  // block number (N=1EX308 is none)
+            if (t.is("N") && t.text.empty() && std::fabs(t.value) < 1e15)  // block number (N=1EX308 is none)
                 info->numbers.emplace(static_cast<long>(t.value), i);
-            if (t.key == ":") info->labels.emplace(t.text, i);
+            if (t.is(":")) info->labels.emplace(t.text, i);
         }
         auto t = statements(all);
         if (t.empty()) continue;
-        if (t[0].key == "PROC" && t.size() > 1 && t[1].key == "PROCARGS")
+        if (t[0].is("PROC") && t.size() > 1 && t[1].is("PROCARGS"))
             info->formals = parse_formals(t[1].text, blocks[i].line, t[1].column);
         Ctl k = ctl_of(t[0].key);
-        if (t[0].key == "REPEATB" || (k == ctl_repeat && t.size() > 1)) k = ctl_section;  // not a REPEAT/UNTIL loop
+        if (t[0].is("REPEATB") || (k == ctl_repeat && t.size() > 1)) k = ctl_section;  // not a REPEAT/UNTIL loop
         if (k == ctl_if) {
             bool jump = false;
-            for (const Token& x : t) jump |= x.key.rfind("GOTO", 0) == 0;
+            for (const Token& x : t) jump |= x.key.starts_with("GOTO");
             if (jump) k = ctl_jump;
-        } else if (t[0].key.rfind("GOTO", 0) == 0 || t[0].key == "CASE") {
+        } else if (t[0].key.starts_with("GOTO") || t[0].is("CASE")) {
             k = ctl_jump;
         }
         if (k != ctl_none && (t[0].has_value || ((k == ctl_if || k == ctl_while || k == ctl_until || k == ctl_for) &&

@@ -131,69 +131,74 @@ void Interp::block(std::span<const Token> t) {
     for (const Token& raw : t) {
         const Token& x = raw.is("AX") ? (axis_word = axis_address(raw)) : raw;
         const std::string& k = x.key;
-        if (x.is("=")) {
-            assign(x);
-            continue;
-        }
-        if (x.is("FRAME=")) {
-            frame_assign(x);
-            continue;
-        }
-        if (x.is("GETTCOR") || x.is("SETTCOR") || x.is("LENTOAX")) {
-            value_call(x);
-            continue;
-        }
-        if (x.is("MSG")) {  // MSG("text" << R1): the text as the control shows it
-            std::string m = x.text;
-            if (m.find_first_not_of(" \t") == std::string::npos) {
-                m.clear();
-            } else {
-                try {
-                    m = eval_string(expr::parse_all(m, expr::sinumerik_syntax()), x.column);
-                } catch (const expr::SyntaxError&) {  // a form toolcomp does not read: the text as written
-                    if (m.size() >= 2 && m.front() == '"' && m.back() == '"') m = m.substr(1, m.size() - 2);
-                }
+        // X, G, F ...: a single letter is none of the statements and calls below (each name has
+        // two letters or more, "=" is no letter), the common word of a CAM block past them at once.
+        const bool address = k.size() == 1 && k[0] >= 'A' && k[0] <= 'Z';
+        if (!address) {
+            if (x.is("=")) {
+                assign(x);
+                continue;
             }
-            info(code::message, m, x.column);
-            continue;
-        }
-        if (x.is("MCALL")) {
-            mcall = true;
-            words = true;
-            continue;
-        }
-        if (k == "HOLES1" || k == "HOLES2" || k == "CYCLE801") {
-            if (pattern || drill) fail(code::alarm_12010, "12010 Two subprogram calls in one block", x.column);
-            pattern.emplace(k, x.text != k ? x.text : std::string());
-            words = true;
-            continue;
-        }
-        if (drilling_cycle_name(k)) {
-            if (drill) fail(code::alarm_12010, "12010 Two subprogram calls in one block", x.column);
-            drill.emplace(k, cycle_arguments(k, x.text != k ? x.text : std::string(), x.column));
-            words = true;
-            continue;
-        }
-        if (mcall && (is_unsupported(k) || !is_keyword(k)) && !x.has_value && x.expr < 0 && k.size() > 1)
-            fail(code::unsupported_word, "MCALL " + k + ": toolcomp calls the drilling cycles CYCLE81-CYCLE89 and CYCLE840 modally", x.column);
-        if (x.is("CALL")) {  // CALL / PCALL / EXTCALL "path": the program the lexer named
-            if (!call_name.empty()) fail(code::alarm_12010, "12010 Two subprogram calls in one block", x.column);
-            words = true;
-            call_name = x.text;
-            call_column = x.column;
-            continue;
-        }
-        if (x.is("CYCLE832") || x.is("WORKPIECE") || x.is("CYCLE800") || x.is("GROUP_BEGIN") || x.is("GROUP_END") ||
-            x.is("SETMS") || x.is("EXTERN")) {
-            no_path_call(x);
-            continue;
-        }
-        if (x.is("SYNACT"))
-            fail(code::unsupported_word, "Synchronized actions (" + x.text.substr(0, x.text.find(' ')) +
-                                             " ... DO ...) are not supported by toolcomp", x.column);
-        if (x.is("SETAL")) {
-            const long n = std::lround(eval_text(x.text, x.column));
-            fail(code::setal, "Alarm " + std::to_string(n) + " set by the program (SETAL)", x.column);
+            if (x.is("FRAME=")) {
+                frame_assign(x);
+                continue;
+            }
+            if (x.is("GETTCOR") || x.is("SETTCOR") || x.is("LENTOAX")) {
+                value_call(x);
+                continue;
+            }
+            if (x.is("MSG")) {  // MSG("text" << R1): the text as the control shows it
+                std::string m = x.text;
+                if (m.find_first_not_of(" \t") == std::string::npos) {
+                    m.clear();
+                } else {
+                    try {
+                        m = eval_string(expr::parse_all(m, expr::sinumerik_syntax()), x.column);
+                    } catch (const expr::SyntaxError&) {  // a form toolcomp does not read: the text as written
+                        if (m.size() >= 2 && m.front() == '"' && m.back() == '"') m = m.substr(1, m.size() - 2);
+                    }
+                }
+                info(code::message, m, x.column);
+                continue;
+            }
+            if (x.is("MCALL")) {
+                mcall = true;
+                words = true;
+                continue;
+            }
+            if (k == "HOLES1" || k == "HOLES2" || k == "CYCLE801") {
+                if (pattern || drill) fail(code::alarm_12010, "12010 Two subprogram calls in one block", x.column);
+                pattern.emplace(k, x.text != k ? x.text : std::string());
+                words = true;
+                continue;
+            }
+            if (drilling_cycle_name(k)) {
+                if (drill) fail(code::alarm_12010, "12010 Two subprogram calls in one block", x.column);
+                drill.emplace(k, cycle_arguments(k, x.text != k ? x.text : std::string(), x.column));
+                words = true;
+                continue;
+            }
+            if (mcall && (is_unsupported(k) || !is_keyword(k)) && !x.has_value && x.expr < 0 && k.size() > 1)
+                fail(code::unsupported_word, "MCALL " + k + ": toolcomp calls the drilling cycles CYCLE81-CYCLE89 and CYCLE840 modally", x.column);
+            if (x.is("CALL")) {  // CALL / PCALL / EXTCALL "path": the program the lexer named
+                if (!call_name.empty()) fail(code::alarm_12010, "12010 Two subprogram calls in one block", x.column);
+                words = true;
+                call_name = x.text;
+                call_column = x.column;
+                continue;
+            }
+            if (x.is("CYCLE832") || x.is("WORKPIECE") || x.is("CYCLE800") || x.is("GROUP_BEGIN") || x.is("GROUP_END") ||
+                x.is("SETMS") || x.is("EXTERN")) {
+                no_path_call(x);
+                continue;
+            }
+            if (x.is("SYNACT"))
+                fail(code::unsupported_word, "Synchronized actions (" + x.text.substr(0, x.text.find(' ')) +
+                                                 " ... DO ...) are not supported by toolcomp", x.column);
+            if (x.is("SETAL")) {
+                const long n = std::lround(eval_text(x.text, x.column));
+                fail(code::setal, "Alarm " + std::to_string(n) + " set by the program (SETAL)", x.column);
+            }
         }
         words = true;  // an address, G/M function, keyword or call: more than a computation
         if (is_unsupported(k) || (x.is("G") && (x.value == G110 || x.value == G111 || x.value == G112)))
