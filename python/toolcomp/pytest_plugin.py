@@ -7,13 +7,15 @@ Configure the folder in ``pyproject.toml``::
     tools = "nc/tools.tbl"    # default tool table (optional)
     dialect = "linuxcnc"      # default dialect (optional; otherwise from each suffix)
     machine = "haas-mill"     # the machine (optional): a preset or a machine file (.toml)
+    start = "machine_zero"    # where the axes stand (optional): "machine_zero" or [x, y, z] mm
     fail_on_warnings = false
 
 (or the ini options ``toolcomp_programs``, ``toolcomp_tools``, ``toolcomp_dialect``). A
-``toolcomp.toml`` in a sub-folder overrides ``tools``, ``dialect``, ``machine`` and
+``toolcomp.toml`` in a sub-folder overrides ``tools``, ``dialect``, ``machine``, ``start`` and
 ``fail_on_warnings`` for the programs in it (paths relative to that file), and a program's
-own header line ``(toolcomp: tools=lathe.tbl dialect=fanuc machine=haas-lathe)`` (or with ``;``)
-overrides both. Each program runs once; it fails with its diagnostics as
+own header line ``(toolcomp: tools=lathe.tbl dialect=fanuc machine=haas-lathe start=0,0,50)``
+(or with ``;``) overrides both. ``start`` is :func:`toolcomp.run`'s: without it, the machine's
+start, else where the program first sends each axis. Each program runs once; it fails with its diagnostics as
 ``file:line:column: severity code message``.
 """
 from __future__ import annotations
@@ -62,6 +64,7 @@ def _settings(config) -> Optional[dict]:
                   "dialect": s.get("dialect"),
                   "machine": str((root / s["machine"]).resolve()) if _is_file_option("machine", s.get("machine", ""))
                   else s.get("machine"),
+                  "start": s.get("start"),
                   "fail_on_warnings": bool(s.get("fail_on_warnings", False))}
     config._toolcomp_settings = result
     return result
@@ -101,6 +104,8 @@ def _options(path: pathlib.Path, base: dict) -> dict:
                 opts[k] = str((folder / v).resolve()) if _is_file_option(k, v) else v
     for k, v in _header(path).items():
         opts[k] = str((path.parent / v).resolve()) if _is_file_option(k, v) else v
+    if isinstance(opts.get("start"), str) and opts["start"] != "machine_zero":  # a header's "x,y,z"
+        opts["start"] = [float(v) for v in opts["start"].split(",")]
     if isinstance(opts.get("fail_on_warnings"), str):
         opts["fail_on_warnings"] = opts["fail_on_warnings"].lower() in ("1", "true", "yes")
     return opts
@@ -132,7 +137,8 @@ class NCProgramItem(pytest.Item):
         path = pathlib.Path(self.path)
         opts = _options(path.resolve(), _settings(self.config))
         dialect = opts.get("dialect") or SUFFIXES[path.suffix.lower()]
-        res = tc.run(str(path), tools=opts.get("tools"), dialect=dialect, strict=False, machine=opts.get("machine"))
+        res = tc.run(str(path), tools=opts.get("tools"), dialect=dialect, strict=False, machine=opts.get("machine"),
+                     start=opts.get("start"))
         bad = [d for d in res.diagnostics
                if d.severity == "error" or (opts.get("fail_on_warnings") and d.severity == "warning")]
         if bad:

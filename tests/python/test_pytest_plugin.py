@@ -54,6 +54,24 @@ def test_a_header_line_overrides_the_folder(tmp_path):
     assert "without_table.ngc:" in r.stdout and "warning" in r.stdout
 
 
+def test_where_the_axes_start(tmp_path):
+    # X travel -5..200 mm: an incremental first move of X-10 leaves it from machine zero (an
+    # error), not from X100 (the folder's start) nor from X50 (a program's own header).
+    (tmp_path / "pyproject.toml").write_text('[tool.toolcomp]\nprograms = "nc/"\nstart = "machine_zero"\n')
+    nc = tmp_path / "nc"
+    (nc / "from100").mkdir(parents=True)
+    (nc / "m.toml").write_text('control = "linuxcnc"\nkind = "mill"\n[travel]\nx = [-5, 200]\ny = [-100, 100]\n'
+                               'z = [-100, 100]\n')
+    body = "(toolcomp: machine=m.toml%s)\nG21 G91 G0 X-10\nG90 G1 X20 F100\nM2\n"
+    (nc / "from_zero.ngc").write_text(body % "")
+    (nc / "from_header.ngc").write_text(body % " start=50,0,0")
+    (nc / "from100" / "toolcomp.toml").write_text("start = [100, 0, 0]\n")
+    (nc / "from100" / "p.ngc").write_text(body.replace("m.toml", "../m.toml") % "")
+    r = run_pytest(tmp_path)
+    assert "1 failed, 2 passed" in r.stdout, r.stdout
+    assert "nc/from_zero.ngc:2:" in r.stdout
+
+
 def test_no_configuration_no_items(tmp_path):
     (tmp_path / "a.ngc").write_text(GOUGE)
     r = run_pytest(tmp_path)
