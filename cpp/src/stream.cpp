@@ -147,7 +147,7 @@ void PathStream::produce() {
     };
     auto pipeline = [&](const Program& p) {
         // Files read whole: the main file only, until the end (pieces tell each file opened).
-        if (!dialect_row(p.dialect).read_in_pieces) live.push_back(p.name);
+        if (!dialect_row(p.dialect).read_in_pieces()) live.push_back(p.name);
         const ControlProfile profile = run.profile ? *run.profile
                                        : run.machine ? run.machine->profile
                                                      : profile_for(p.dialect);

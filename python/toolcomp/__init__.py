@@ -160,7 +160,7 @@ def run(program: _Union[Program, _FileName], tools: _Union[ToolTable, _FileName,
     if isinstance(program, (str, _os.PathLike)):
         # Read leniently: a syntax error is raised (or reported) when the run reaches its
         # line, as the control does, and never after M2/M30. A LinuxCNC / Fanuc file without
-        # control flow is read piece by piece as it runs.
+        # control flow (and a Sinumerik one) is read piece by piece as it runs.
         return _core.run_file(_os.fspath(program), dialect, tools, **options)
     return _core.run(program, tools, **options)
 
@@ -181,10 +181,11 @@ def iter_run(program: _Union[Program, _FileName], tools: _Union[ToolTable, _File
     no total), ``threads`` and ``probes``; and ``chunk`` and ``piece_bytes``.
 
     Memory: the run goes on in a thread of its own, at most one chunk ahead of the loop. A
-    LinuxCNC or Fanuc program file without control flow (no O-words, GOTO, loops, program
-    numbers or M99: CAM output) is read ``piece_bytes`` at a time (1 to 2**30), so memory
-    does not grow with its length; other programs (and Heidenhain, Sinumerik) are read whole,
-    up to ``max_bytes``, their path still streamed.
+    LinuxCNC, Fanuc or Sinumerik program file without control flow (CAM output: no O-words,
+    GOTO, loops, program numbers or M99; no labels, jumps, control structures, PROC or DEFINE)
+    is read ``piece_bytes`` at a time (1 to 2**30), so memory does not grow with its length;
+    other programs (and Heidenhain's) are read whole, up to ``max_bytes``, their path still
+    streamed.
 
     Errors: with ``strict=True`` the run's error is raised by the loop after the chunk that
     holds the segments before it; with ``strict=False`` it ends the stream and is in

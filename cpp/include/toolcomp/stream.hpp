@@ -4,10 +4,10 @@
 // most; the compensation look-ahead runs on across chunk boundaries, so the chunks joined are
 // the Path run() returns. The programmed path is not kept.
 //
-// A LinuxCNC / Fanuc file is read a piece (about 1 MB of whole lines) at a time when nothing
-// in it steers across blocks (iso::has_control_flow: no O-words, GOTO, loops, program numbers, M99):
-// memory stays the same whatever the program's length. A program that has them, and every
-// Heidenhain or Sinumerik program, is read and parsed whole; its path is still streamed.
+// A LinuxCNC, Fanuc or Sinumerik file is read a piece (about 1 MB of whole lines) at a time
+// when nothing in it steers across blocks (its dialect's has_control_flow: no O-words, GOTO,
+// loops, labels ...): memory stays the same whatever the program's length. A program that has
+// them, and every Heidenhain program, is read and parsed whole; its path is still streamed.
 #include <atomic>
 #include <chrono>
 #include <condition_variable>

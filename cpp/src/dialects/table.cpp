@@ -63,6 +63,8 @@ void interpret_sinumerik(const DialectRun& r) {
     s.search = search_of(o);
     s.machine = o.machine.get();
     s.start = o.start;
+    s.next_piece = r.hooks.next_piece;
+    s.file_opened = r.hooks.file_opened;
     sinumerik::interpret(r.program, r.tools, p, s, r.sink, r.diagnostics, &r.out);
 }
 
@@ -73,12 +75,39 @@ void interpret_heidenhain(const DialectRun& r) {
                           o.block_delete, o.start);
 }
 
+// ---- reading a file a piece at a time ------------------------------------------------------
+template <typename Parser>
+class Pieces : public PieceReader {
+public:
+    explicit Pieces(Parser p) : p_(std::move(p)) {}
+    Program parse(std::string_view piece, Program into) override { return p_.parse(piece, std::move(into)); }
+    bool done() const override { return p_.done(); }
+
+private:
+    Parser p_;
+};
+std::unique_ptr<PieceReader> iso_pieces(Dialect d, std::string name, bool strict, std::size_t piece_bytes) {
+    return std::make_unique<Pieces<iso::PieceParser>>(iso::PieceParser(d, std::move(name), strict, piece_bytes));
+}
+std::unique_ptr<PieceReader> sinumerik_pieces(Dialect, std::string name, bool strict, std::size_t piece_bytes) {
+    return std::make_unique<Pieces<sinumerik::PieceParser>>(sinumerik::PieceParser(std::move(name), strict, piece_bytes));
+}
+
 constexpr DialectRow kDialects[] = {
-    {Dialect::linuxcnc, "linuxcnc", {"ngc", ""}, false, true, true, parse_iso<Dialect::linuxcnc>, interpret_iso},
-    {Dialect::fanuc, "fanuc", {"nc", "tap"}, true, true, true, parse_iso<Dialect::fanuc>, interpret_iso},
-    {Dialect::sinumerik, "sinumerik", {"mpf", "spf"}, true, false, false, parse_sinumerik, interpret_sinumerik},
-    {Dialect::heidenhain, "heidenhain", {"h", ""}, true, false, false, parse_heidenhain, interpret_heidenhain},
-    {Dialect::rockwell, "rockwell", {"", ""}, true, true, true, parse_iso<Dialect::rockwell>, interpret_iso},
+    {.dialect = Dialect::linuxcnc, .name = "linuxcnc", .suffixes = {"ngc", ""}, .cr_ends_line = false,
+     .interpreter_checks_travel = true, .parse = parse_iso<Dialect::linuxcnc>, .interpret = interpret_iso,
+     .has_control_flow = iso::has_control_flow, .pieces = iso_pieces},
+    {.dialect = Dialect::fanuc, .name = "fanuc", .suffixes = {"nc", "tap"}, .cr_ends_line = true,
+     .interpreter_checks_travel = true, .parse = parse_iso<Dialect::fanuc>, .interpret = interpret_iso,
+     .has_control_flow = iso::has_control_flow, .pieces = iso_pieces},
+    {.dialect = Dialect::sinumerik, .name = "sinumerik", .suffixes = {"mpf", "spf"}, .cr_ends_line = true,
+     .interpreter_checks_travel = false, .parse = parse_sinumerik, .interpret = interpret_sinumerik,
+     .has_control_flow = sinumerik::has_control_flow, .pieces = sinumerik_pieces},
+    {.dialect = Dialect::heidenhain, .name = "heidenhain", .suffixes = {"h", ""}, .cr_ends_line = true,
+     .interpreter_checks_travel = false, .parse = parse_heidenhain, .interpret = interpret_heidenhain},
+    {.dialect = Dialect::rockwell, .name = "rockwell", .suffixes = {"", ""}, .cr_ends_line = true,
+     .interpreter_checks_travel = true, .parse = parse_iso<Dialect::rockwell>, .interpret = interpret_iso,
+     .has_control_flow = iso::has_control_flow, .pieces = iso_pieces},
 };
 
 std::string lower(std::string_view s) {

@@ -4,6 +4,7 @@
 // dialects/ and one row in table.cpp; the run, streaming, program reading and (through
 // toolcomp._core.dialect_table) the command line and the pytest plugin read this table.
 #include <array>
+#include <memory>
 #include <span>
 #include <string>
 #include <string_view>
@@ -13,6 +14,16 @@
 #include "toolcomp/program/dialect.hpp"
 
 namespace toolcomp {
+
+// A dialect's reading of a program file a piece at a time (whole lines each,
+// program/file_pieces.hpp): each piece's Program goes on where the one before ended.
+class PieceReader {
+public:
+    virtual ~PieceReader() = default;
+    // `into`: a Program no longer needed, whose memory the piece reuses.
+    virtual Program parse(std::string_view piece, Program into) = 0;
+    virtual bool done() const = 0;  // later text is not part of the program (a closing %, an error)
+};
 
 // What a run hands a dialect's interpreter.
 struct DialectRun {
@@ -32,15 +43,19 @@ struct DialectRow {
     std::array<std::string_view, 2> suffixes;  // lower case, without the dot; "" unused
     // A lone CR ends a line (LinuxCNC reads up to LF only, as rs274 does).
     bool cr_ends_line;
-    // A file without control flow is read and parsed a piece at a time as it runs (CAM
-    // output of any length in bounded memory); else the file is read whole.
-    bool read_in_pieces;
     // The interpreter checks a machine's travel limits itself (ISO: its moves are in work
     // coordinates under offsets the program changes). Else its moves are in the machine's
     // axes less the work origin, and the run checks them as they come (control/travel.hpp).
     bool interpreter_checks_travel;
     Program (*parse)(std::string_view text, std::string name, bool strict);
     void (*interpret)(const DialectRun& run);
+    // A file in which `has_control_flow` finds nothing is read and parsed a piece at a time as
+    // it runs (CAM output of any length in bounded memory), by `pieces`; the interpreter then
+    // tells each file it enters (PipelineHooks::file_opened). Without them (nullptr) a file is
+    // read whole.
+    bool (*has_control_flow)(std::string_view text) = nullptr;
+    std::unique_ptr<PieceReader> (*pieces)(Dialect, std::string name, bool strict, std::size_t piece_bytes) = nullptr;
+    bool read_in_pieces() const { return pieces != nullptr; }
 };
 
 std::span<const DialectRow> dialect_table();

@@ -5,7 +5,6 @@
 
 #include <utility>
 
-#include "../dialects/table.hpp"
 #include "toolcomp/program/input_limits.hpp"
 
 namespace toolcomp {
@@ -19,11 +18,12 @@ ProgramSource::ProgramSource(const std::string& path, Dialect dialect, const Rea
         throw ParseError(code::input_too_large, "Cannot read program file '" + path + "': it is " + byte_count_text(size) +
                                                 ", more than the limit of " + byte_count_text(limits.max_bytes) +
                                                 " (max_bytes)");
-    bool whole = !dialect_row(dialect).read_in_pieces;
+    const DialectRow& row = dialect_row(dialect);
+    bool whole = !row.read_in_pieces();
     if (!whole) {
         pieces_.emplace(path, piece_bytes, limits.max_line_length, cr_ends_line(dialect));
         for (std::string_view t = pieces_->next(); !t.empty() && !whole; t = pieces_->next()) {
-            whole = iso::has_control_flow(t);
+            whole = row.has_control_flow(t);
             if (check_) check_();
         }
     }
@@ -36,9 +36,9 @@ ProgramSource::ProgramSource(const std::string& path, Dialect dialect, const Rea
         return;
     }
     pieces_->rewind();
-    parser_.emplace(dialect, path, /*strict=*/false, piece_bytes);
+    parser_ = row.pieces(dialect, path, /*strict=*/false, piece_bytes);
     const std::string_view t = pieces_->next();
-    current_ = parser_->parse(t);
+    current_ = parser_->parse(t, Program());
     blocks_ = current_.size();
     estimate_ = t.empty() ? 0 : static_cast<std::size_t>(static_cast<double>(blocks_) * static_cast<double>(size) /
                                                          static_cast<double>(t.size()));

@@ -1,6 +1,7 @@
 #pragma once
-// The main program of a run from a file: read and parsed whole, or, for a LinuxCNC / Fanuc
-// file in which nothing steers across blocks (iso::has_control_flow), piece by piece: then memory
+// The main program of a run from a file: read and parsed whole, or, for a file in which
+// nothing steers across blocks (its dialect's has_control_flow: dialects/table.hpp), piece
+// by piece: then memory
 // for the program stays that of two pieces (about `piece_bytes` of text each: the next one is
 // read and parsed in another thread while the run works through the current one) whatever
 // its length.
@@ -11,8 +12,8 @@
 #include <optional>
 #include <string>
 
+#include "../dialects/table.hpp"
 #include "file_pieces.hpp"
-#include "toolcomp/dialects/iso/lexer.hpp"
 #include "toolcomp/run.hpp"
 
 namespace toolcomp {
@@ -48,7 +49,7 @@ private:
     void read_ahead();
 
     std::optional<FilePieces> pieces_;
-    std::optional<iso::PieceParser> parser_;
+    std::unique_ptr<PieceReader> parser_;
     Program current_;
     Program spare_;  // the piece before current_, to be parsed over by the next read-ahead
     std::size_t blocks_ = 0, estimate_ = 0;

@@ -181,7 +181,7 @@ std::string Interp::eval_string(const expr::Expr& e, int column) {
 double Interp::value_of(const Token& t) { return t.expr >= 0 ? eval(t.expr, t.column) : t.value; }
 
 void Interp::run() {
-    stack_.push_back(Context{&main_, &info_of(main_), 0, {}, false, 0, 0, files_.index(main_.name)});
+    stack_.push_back(Context{&main_, &info_of(main_), 0, {}, false, 0, 0, file_index(main_.name)});
     // A PROC run as the main program: its parameters as omitted ones (0, "", VAR ones too)
     for (const Formal& f : stack_.back().info->formals) {
         Variable v;
@@ -203,7 +203,36 @@ void Interp::run() {
         throw;
     }
     sink_.finish();
-    if (const auto& e = main_.syntax_error) throw ParseError(e->code, e->message, e->pos);
+    // Read whole, a program's syntax error is raised after M30 too: the pieces after the end
+    // are read for it.
+    while (next_main_piece()) {
+    }
+    if (const auto& e = stack_.front().prog->syntax_error) throw ParseError(e->code, e->message, e->pos);
+}
+
+// Path::files index of a program, told to InterpretOptions::file_opened when it is new.
+int Interp::file_index(const std::string& name) {
+    const std::size_t known = files_.names().size();
+    const int i = files_.index(name);
+    if (files_.names().size() > known && opts_.file_opened) opts_.file_opened(name);
+    return i;
+}
+
+// The main program's next piece (InterpretOptions::next_piece), in place of the one run
+// through; false at the end of the program, or after a piece that ended with a syntax error.
+bool Interp::next_main_piece() {
+    Context& c = stack_.front();
+    if (!opts_.next_piece || pieces_ended_ || c.prog->syntax_error) return false;
+    const Program* next = opts_.next_piece();
+    if (!next) {
+        pieces_ended_ = true;
+        return false;
+    }
+    infos_.erase(next);  // the pieces take turns in the same Program objects
+    c.prog = next;
+    c.info = &info_of(*next);
+    c.pc = 0;
+    return true;
 }
 
 bool Interp::step() {
@@ -219,6 +248,7 @@ bool Interp::step() {
         c.sections.pop_back();
     }
     if (c.pc >= blocks.size()) {
+        if (stack_.size() == 1 && next_main_piece()) return true;
         if (c.prog->syntax_error && stack_.size() > 1) {  // at the end of a called file: that file's line
             const auto& e = *c.prog->syntax_error;
             throw ParseError(e.code, e.message, {e.pos.line, e.pos.column, c.prog->name});
@@ -470,7 +500,7 @@ void Interp::call(const std::string& name, int passes, int column, const std::st
     }
     const ProgramInfo& callee = info_of(*p);
     std::map<std::string, Variable> locals = bind_arguments(name, callee, args, column);
-    stack_.push_back(Context{p, &callee, 0, std::move(locals), false, 0, 0, files_.index(p->name)});
+    stack_.push_back(Context{p, &callee, 0, std::move(locals), false, 0, 0, file_index(p->name)});
     stack_.back().passes_left = passes - 1;
     stack_.back().call_line = line_;
     std::vector<std::string> given = args.find_first_not_of(" \t") == std::string::npos ? std::vector<std::string>{}

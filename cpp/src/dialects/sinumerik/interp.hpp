@@ -190,6 +190,9 @@ private:
     // ---- execution (interp.cpp) ----------------------------------------------------------
     const ProgramInfo& info_of(const Program& p);
     bool step();  // executes one block; false when the main program ended
+    bool next_main_piece();
+    int file_index(const std::string& name);
+    bool pieces_ended_ = false;  // the main program's last piece is the one in stack_.front()
     void block(std::span<const Token> t);
     bool control(std::span<const Token> t, std::uint8_t kind);  // true when the block was a control statement
     void jump(const Token& t);

@@ -646,7 +646,7 @@ bool is_address(std::string_view n) {
     return false;
 }
 
-namespace {
+namespace detail {
 
 bool word_char(char c) { return ascii_alpha(c) || ascii_digit(c) || c == '_' || c == '$'; }
 
@@ -720,45 +720,54 @@ private:
     std::vector<std::pair<std::string, std::string>> list_;
 };
 
-}  // namespace
+}  // namespace detail
 
-Program parse(std::string_view text, std::string name, bool strict) {
-    Program prog;
-    prog.name = std::move(name);
+PieceParser::PieceParser(std::string name, bool strict, std::size_t piece_bytes)
+    : name_(std::move(name)), strict_(strict), piece_bytes_(piece_bytes), macros_(std::make_unique<detail::Macros>()) {}
+PieceParser::~PieceParser() = default;
+PieceParser::PieceParser(PieceParser&&) noexcept = default;
+PieceParser& PieceParser::operator=(PieceParser&&) noexcept = default;
+
+Program PieceParser::parse(std::string_view text, Program prog) {
+    prog.clear();
+    prog.name = name_;
     prog.dialect = Dialect::sinumerik;
-    text = skip_bom(text);
+    if (first_) text = skip_bom(text);
+    first_ = false;
     // At most a token per 4 characters on CAM lines ("G1 X95 Y7.5 I0 J2.5": 5 in 20), about a
     // block per 24: the tokens' strings are not all moved again when the vector grows (pages
-    // reserved and never written are not memory taken).
-    prog.reserve(text.size() / 24 + 1, 0, text.size() / 4 + 16);
+    // reserved and never written are not memory taken). Pieces: room for a whole piece.
+    const std::size_t room = std::max(text.size(), piece_bytes_);
+    prog.reserve(room / 24 + 1, 0, room / 4 + 16);
     std::size_t pos = 0;
-    int line = 0;
-    Macros macros;
-    while (pos <= text.size()) {
+    while (pos <= text.size() && !done_) {
         std::size_t end = pos;
         while (end < text.size() && text[end] != '\n' && text[end] != '\r') ++end;
-        ++line;
+        if (end == text.size() && pos == end && piece_bytes_ > 0) break;  // a piece ends with its line end
+        const int line = ++line_;
         std::string_view l = text.substr(pos, end - pos);
         if (l.find('\0') != std::string_view::npos) {
             ParseError e(code::syntax_error, "NUL character in the program text", {line, static_cast<int>(l.find('\0')) + 1});
-            if (strict) throw e;
+            if (strict_) throw e;
             prog.syntax_error = e.diagnostic();
+            done_ = true;
             break;
         }
         const std::size_t before = prog.size();
         std::string expanded;
         try {
-            if (macros.define(l, line)) {
+            if (macros_->define(l, line)) {
                 if (end >= text.size()) break;
                 pos = end + ((text[end] == '\r' && end + 1 < text.size() && text[end + 1] == '\n') ? 2 : 1);
                 continue;
             }
-            if (!macros.empty()) l = expanded = macros.expand(l, line);
+            if (!macros_->empty()) l = expanded = macros_->expand(l, line);
             LineLexer(l, line, prog).run();
         } catch (const ParseError& e) {
             if (prog.size() > before) prog.drop_last_block();
-            if (strict) throw;
+            if (strict_) throw;
             prog.syntax_error = e.diagnostic();
+            done_ = true;
             break;
         }
         if (prog.size() > before) prog.last_line = line;
@@ -766,6 +775,10 @@ Program parse(std::string_view text, std::string name, bool strict) {
         pos = end + ((text[end] == '\r' && end + 1 < text.size() && text[end + 1] == '\n') ? 2 : 1);
     }
     return prog;
+}
+
+Program parse(std::string_view text, std::string name, bool strict) {
+    return PieceParser(std::move(name), strict).parse(text);
 }
 
 }  // namespace toolcomp::sinumerik

@@ -47,6 +47,11 @@ struct InterpretOptions {
     int max_call_depth = 16;                    // program levels (main program included)
     const Machine* machine = nullptr;           // builder M codes (control/machine.hpp)
     std::optional<Vec3> start;                  // the axes at the start, machine coordinates (mm)
+    // The main program read a piece at a time (program_source.hpp): the next piece when the
+    // run is through the one before, nullptr at the end. The pieces hold no control flow
+    // (has_control_flow), so each is run on its own.
+    std::function<const Program*()> next_piece;
+    std::function<void(const std::string&)> file_opened;  // each program file as the run enters it first
 };
 
 // `out` (optional) receives the main program's name and each subprogram file's, in the

@@ -27,6 +27,8 @@
 // * Block number: key "N", value. Label: key ":", text = the label.
 // Syntax errors are ParseError "syntax_error" with line and column.
 #include <array>
+#include <cstddef>
+#include <memory>
 #include <string>
 #include <string_view>
 
@@ -35,6 +37,42 @@
 namespace toolcomp::sinumerik {
 
 Program parse(std::string_view text, std::string name = "<string>", bool strict = true);
+
+namespace detail {
+class Macros;
+}
+
+// A program file read a piece at a time (whole lines each: program/file_pieces.hpp): each
+// piece's Program goes on with the line numbers and the DEFINE macros of the pieces before.
+// parse() above is a text read as one piece.
+class PieceParser {
+public:
+    // `piece_bytes`: the size pieces grow to (room is reserved for that much), 0 for a text
+    // parsed whole.
+    PieceParser(std::string name, bool strict, std::size_t piece_bytes = 0);
+    ~PieceParser();
+    PieceParser(PieceParser&&) noexcept;
+    PieceParser& operator=(PieceParser&&) noexcept;
+    // `into`: a Program no longer needed, whose memory the piece reuses.
+    Program parse(std::string_view piece, Program into = {});
+    // A syntax error was met (lenient): later text is not part of the program.
+    bool done() const { return done_; }
+
+private:
+    std::string name_;
+    bool strict_;
+    std::size_t piece_bytes_;
+    bool first_ = true, done_ = false;
+    int line_ = 0;
+    std::unique_ptr<detail::Macros> macros_;
+};
+
+// Whether the blocks of `text` may depend on each other beyond the modal state, so that a
+// run must read the whole program before it starts: a control structure or jump (IF, ELSE,
+// WHILE, FOR, LOOP, REPEAT, UNTIL, CASE, GOTO...), a label or main block number (':'), a
+// PROC header, or a DEFINE (a macro may stand for any of them). A scan of the bytes outside
+// ';' comments for runs of letters (so "N10IF" has IF): "yes" may be wrong, "no" is not.
+bool has_control_flow(std::string_view text);
 
 // The address names whose "NAME=value" is a word of the block rather than a variable
 // assignment (single letters, and CR, AR, TURN, DISC, OFFN, RPL, I1, J1, K1 ...).
