@@ -2,15 +2,37 @@
 
 Measures parse and run of generated CAM-like programs (lines and arcs, G17, tool length
 offset) through the Python API, LinuxCNC's rs274 on the same program when it is installed,
-and tc.compensate_3d on CAM points. Sizes: TOOLCOMP_BENCH_BLOCKS (default 1,000,000),
-TOOLCOMP_BENCH_POINTS (default 10,000,000); TOOLCOMP_BENCH_LINEAR (default 10: a program ten
-times as long, to see that time grows linearly; 0 or 1 to skip); TOOLCOMP_BENCH_STREAM_BLOCKS
-(default 50,000,000: tc.iter_run over a program file of that many blocks, about 0.9 GB, written
-to the temporary directory; 0 to skip). Peak memory of one run and of the stream are measured
-in a fresh interpreter each. Also a 1M-block Heidenhain
-L/CR program, the same contour for a Sinumerik 840D, and a LinuxCNC program that computes it
-in an o-while loop. Plotting: res.plot() and savefig of the G42 program's paths, TOOLCOMP_BENCH_PLOT_SEGMENTS
-compensated segments (default 1,000,000; 0 to skip), in a fresh interpreter.
+and tc.compensate_3d on CAM points. Sections, in order (each prints its elapsed time):
+
+  iso        the LinuxCNC contour with G42.1 and without compensation: parse, run, export,
+             tc.run(file), rs274
+  dialects   the same contour with radius compensation as ISO (LinuxCNC), Sinumerik 840D and
+             Heidenhain Klartext: parse, run, total and tc.run(file) ns/block, peak memory of
+             tc.run(file) in a fresh process, each over ISO's
+  loop       a LinuxCNC program that computes the contour in an o-while loop
+  batch      8 programs one by one and with run_many
+  memory     peak RSS of one ISO tc.run(file) against its Path columns
+  plot       res.plot() and savefig of the G42 program's paths
+  linearity  tc.run(file) of a program TOOLCOMP_BENCH_LINEAR times as long against the 1x one,
+             each dialect with compensation and ISO without, interleaved rounds in fresh processes
+  stream     tc.iter_run over a long program file of each dialect: time and peak RSS
+  3d         tc.compensate_3d of CAM points
+
+Environment (sizes in blocks):
+  TOOLCOMP_BENCH_BLOCKS        programs' size (default 1,000,000)
+  TOOLCOMP_BENCH_LINEAR        the linearity factor (default 10; 0 or 1 to skip)
+  TOOLCOMP_BENCH_ROUNDS        rounds of the fresh-process runs, dialects and linearity (default 3)
+  TOOLCOMP_BENCH_STREAM_BLOCKS the streamed file's size (default 50,000,000, about 0.9 GB of
+                               ISO, written to the temporary directory; 0 to skip)
+  TOOLCOMP_BENCH_STREAM_OTHER_BLOCKS  the same for Sinumerik and Heidenhain (default: as
+                               TOOLCOMP_BENCH_STREAM_BLOCKS; 0 to skip). iter_run reads their
+                               files whole: the run is skipped, with the reason, when its
+                               memory, estimated from a TOOLCOMP_BENCH_BLOCKS-block stream,
+                               would exceed 80 % of MemAvailable
+  TOOLCOMP_BENCH_PLOT_SEGMENTS compensated segments plotted (default 1,000,000; 0 to skip)
+  TOOLCOMP_BENCH_POINTS        compensate_3d points (default 10,000,000)
+  TOOLCOMP_BENCH_SECTIONS      the sections to run, comma-separated (default all)
+Peak memory is measured in a fresh interpreter for each run (VmHWM).
 """
 import contextlib
 import os
@@ -118,8 +140,11 @@ def write_rows(path, head, row, foot, n_blocks, numbered=False):
         buf = []
         for i in range(rows):
             y = i * 0.001
-            ys = [y + dy for dy in _ROW_Y]
-            buf.append(fmt % (tuple(v for j, yj in enumerate(ys) for v in (k + j, yj)) if numbered else tuple(ys)))
+            if numbered:  # (line number, y) for each block
+                args = tuple(v for j, dy in enumerate(_ROW_Y) for v in (k + j, y + dy))
+            else:
+                args = tuple(y + dy for dy in _ROW_Y)
+            buf.append(fmt % args)
             k += 6
             if len(buf) == 10000:
                 f.write("".join(buf))
