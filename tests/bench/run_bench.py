@@ -2,23 +2,48 @@
 
 Measures parse and run of generated CAM-like programs (lines and arcs, G17, tool length
 offset) through the Python API, LinuxCNC's rs274 on the same program when it is installed,
-and tc.compensate_3d on CAM points. Sizes: TOOLCOMP_BENCH_BLOCKS (default 1,000,000),
-TOOLCOMP_BENCH_POINTS (default 10,000,000); TOOLCOMP_BENCH_LINEAR (default 10: a program ten
-times as long, to see that time grows linearly; 0 or 1 to skip); TOOLCOMP_BENCH_STREAM_BLOCKS
-(default 50,000,000: tc.iter_run over a program file of that many blocks, about 0.9 GB, written
-to the temporary directory; 0 to skip). Peak memory of one run and of the stream are measured
-in a fresh interpreter each. Also a 1M-block Heidenhain
-L/CR program, the same contour for a Sinumerik 840D, and a LinuxCNC program that computes it
-in an o-while loop. Plotting: res.plot() and savefig of the G42 program's paths, TOOLCOMP_BENCH_PLOT_SEGMENTS
-compensated segments (default 1,000,000; 0 to skip), in a fresh interpreter.
+and tc.compensate_3d on CAM points. Sections, in order (each prints its elapsed time):
+
+  iso        the LinuxCNC contour with G42.1 and without compensation: parse, run, export,
+             tc.run(file), rs274
+  dialects   the same contour with radius compensation as ISO (LinuxCNC), Sinumerik 840D and
+             Heidenhain Klartext: parse, run, total and tc.run(file) ns/block, peak memory of
+             tc.run(file) in a fresh process, each over ISO's
+  loop       a LinuxCNC program that computes the contour in an o-while loop
+  batch      8 programs one by one and with run_many
+  memory     peak RSS of one ISO tc.run(file) against its Path columns
+  plot       res.plot() and savefig of the G42 program's paths
+  linearity  tc.run(file) of a program TOOLCOMP_BENCH_LINEAR times as long against the 1x one,
+             each dialect with compensation and ISO without, interleaved rounds in fresh processes
+  stream     tc.iter_run over a long program file of each dialect: time and peak RSS
+  3d         tc.compensate_3d of CAM points
+
+Environment (sizes in blocks):
+  TOOLCOMP_BENCH_BLOCKS        programs' size (default 1,000,000)
+  TOOLCOMP_BENCH_LINEAR        the linearity factor (default 10; 0 or 1 to skip)
+  TOOLCOMP_BENCH_ROUNDS        rounds of the fresh-process runs, dialects and linearity (default 3)
+  TOOLCOMP_BENCH_STREAM_BLOCKS the streamed file's size (default 50,000,000, about 0.9 GB of
+                               ISO, written to the temporary directory; 0 to skip)
+  TOOLCOMP_BENCH_STREAM_OTHER_BLOCKS  the same for Sinumerik and Heidenhain (default: as
+                               TOOLCOMP_BENCH_STREAM_BLOCKS; 0 to skip). iter_run reads their
+                               files whole: the run is skipped, with the reason, when its
+                               memory, estimated from a TOOLCOMP_BENCH_BLOCKS-block stream,
+                               would exceed 80 % of MemAvailable
+  TOOLCOMP_BENCH_PLOT_SEGMENTS compensated segments plotted (default 1,000,000; 0 to skip)
+  TOOLCOMP_BENCH_POINTS        compensate_3d points (default 10,000,000)
+  TOOLCOMP_BENCH_SECTIONS      the sections to run, comma-separated (default all)
+Peak memory is measured in a fresh interpreter for each run (VmHWM).
 """
+import contextlib
 import os
 import resource
 import shutil
+import statistics
 import subprocess
 import sys
 import tempfile
 import time
+from typing import Callable, NamedTuple, Optional, Tuple
 
 import toolcomp as tc
 
@@ -30,6 +55,15 @@ _ISO_ROW = ("G1 X100 Y%.3f", "G1 X100 Y%.3f", "G1 X95 Y%.3f", "G3 X95 Y%.3f I0 J
             "G2 X5 Y%.3f I0 J-3.5")
 _KLARTEXT_ROW = ("L X+100 Y%+.3f", "L X+100 Y%+.3f", "L X+95 Y%+.3f", "CR X+95 Y%+.3f R+2.5 DR+", "L X+5 Y%+.3f",
                  "CR X+5 Y%+.3f R+3.5 DR-")
+
+
+# The lines before and after the rows: tool (r = 1 mm), approach, compensation on and off.
+_KLARTEXT_HEAD = ("BEGIN PGM BENCH MM", "TOOL DEF 1 L+0 R+1", "TOOL CALL 1 Z S1000", "L X+0 Y+0 Z+5 R0 FMAX",
+                  "L Z-1 F600", "L X+0 Y+0 RR F600")
+_KLARTEXT_FOOT = ("L X-10 Y-10 R0", "END PGM BENCH MM")
+_SINUMERIK_HEAD = ("$TC_DP1[1,1]=120", "$TC_DP3[1,1]=50", "$TC_DP6[1,1]=1", "T1 D1 M6", "G17 G90 G71",
+                   "G0 X0 Y0 Z5", "G1 Z-1 F600", "G42")
+_SINUMERIK_FOOT = ("G40 G1 X-10 Y-10", "M30")
 
 
 def contour_rows(n_blocks, row):
@@ -56,19 +90,13 @@ def generate(n_blocks, comp):
 
 def generate_heidenhain(n_blocks):
     """The same contour in Klartext: L and CR blocks, RR with a tool of R1 (1 mm)."""
-    out = ["BEGIN PGM BENCH MM", "TOOL DEF 1 L+0 R+1", "TOOL CALL 1 Z S1000", "L X+0 Y+0 Z+5 R0 FMAX",
-           "L Z-1 F600", "L X+0 Y+0 RR F600"]
-    out += contour_rows(n_blocks, _KLARTEXT_ROW)
-    out += ["L X-10 Y-10 R0", "END PGM BENCH MM"]
+    out = list(_KLARTEXT_HEAD) + contour_rows(n_blocks, _KLARTEXT_ROW) + list(_KLARTEXT_FOOT)
     return "".join(f"{i} {b}\n" for i, b in enumerate(out)), n_blocks // 6 * 6
 
 
 def generate_sinumerik(n_blocks):
     """The same contour for a Sinumerik 840D: tool data in $TC_DP, G42 with a tool of r = 1 mm."""
-    out = ["$TC_DP1[1,1]=120", "$TC_DP3[1,1]=50", "$TC_DP6[1,1]=1", "T1 D1 M6", "G17 G90 G71",
-           "G0 X0 Y0 Z5", "G1 Z-1 F600", "G42"]
-    out += contour_rows(n_blocks, _ISO_ROW)
-    out += ["G40 G1 X-10 Y-10", "M30"]
+    out = list(_SINUMERIK_HEAD) + contour_rows(n_blocks, _ISO_ROW) + list(_SINUMERIK_FOOT)
     return "\n".join(out) + "\n", n_blocks // 6 * 6
 
 
@@ -100,10 +128,64 @@ def write_program(path, n_blocks, comp=True):
     return rows * 6
 
 
+def write_rows(path, head, row, foot, n_blocks, numbered=False):
+    """Lines `head`, the contour rows of n_blocks // 6 rows in the six formats of `row`
+    (as contour_rows), lines `foot`, written straight to a file 10,000 rows at a time; with
+    ``numbered`` every line starts with its number from 0 (Klartext). Returns the rows' blocks."""
+    rows = n_blocks // 6
+    fmt = "".join(("%d " if numbered else "") + f + "\n" for f in row)
+    with open(path, "w", buffering=1 << 22) as f:
+        f.write("".join((f"{i} " if numbered else "") + line + "\n" for i, line in enumerate(head)))
+        k = len(head)  # the number of the row's first line
+        buf = []
+        for i in range(rows):
+            y = i * 0.001
+            if numbered:  # (line number, y) for each block
+                args = tuple(v for j, dy in enumerate(_ROW_Y) for v in (k + j, y + dy))
+            else:
+                args = tuple(y + dy for dy in _ROW_Y)
+            buf.append(fmt % args)
+            k += 6
+            if len(buf) == 10000:
+                f.write("".join(buf))
+                buf.clear()
+        f.write("".join(buf) + "".join((f"{k + i} " if numbered else "") + line + "\n" for i, line in enumerate(foot)))
+    return rows * 6
+
+
+def write_heidenhain(path, n_blocks):
+    """generate_heidenhain(n_blocks) written straight to a file."""
+    return write_rows(path, _KLARTEXT_HEAD, _KLARTEXT_ROW, _KLARTEXT_FOOT, n_blocks, numbered=True)
+
+
+def write_sinumerik(path, n_blocks):
+    """generate_sinumerik(n_blocks) written straight to a file."""
+    return write_rows(path, _SINUMERIK_HEAD, _ISO_ROW, _SINUMERIK_FOOT, n_blocks)
+
+
+def check_writers():
+    """The file writers write what the generators return (small programs, compared byte for
+    byte): the dialects' figures are of the same geometry. Raises if they do not."""
+    with tempfile.TemporaryDirectory() as d:
+        path = os.path.join(d, "check")
+        for n in (0, 5, 6, 61, 120_000):
+            for name, write, text in (("ISO", lambda p, n: write_program(p, n), generate(n, True)[0]),
+                                      ("Heidenhain", write_heidenhain, generate_heidenhain(n)[0]),
+                                      ("Sinumerik", write_sinumerik, generate_sinumerik(n)[0])):
+                write(path, n)
+                with open(path) as f:
+                    if f.read() != text:
+                        raise RuntimeError(f"bench: the {name} file writer and its generator differ at {n} blocks")
+
+
 # Run in a fresh interpreter so that its peak RSS is that of one run: tc.run on a file (both
 # Paths kept) or tc.iter_run over it (chunks dropped as they come). The peak is the kernel's
 # VmHWM of the child's own address space (getrusage's ru_maxrss would carry the parent's
-# over the exec).
+# over the exec); `base` is VmHWM after the imports and the tool table, before the run.
+# argv: the directory to import from, the program file, "run" or "stream", and a JSON object
+# of options: "dialect" (None: from the suffix), "tools" ([table text, format], or None when
+# the program defines its tools), "max_bytes" and "max_segments" (run()'s limits, raised for
+# large programs).
 _CHILD = r"""
 import json, sys, time
 sys.path.insert(0, sys.argv[1])
@@ -113,14 +195,16 @@ def hwm():
     with open("/proc/self/status") as f:
         return next(int(l.split()[1]) for l in f if l.startswith("VmHWM")) / 1024
 
-tools = tc.ToolTable.parse("T1 P1 Z50 D6\n", "linuxcnc")
+opts = json.loads(sys.argv[4])
+tools = tc.ToolTable.parse(*opts["tools"]) if opts["tools"] else None
+limits = dict(dialect=opts["dialect"], max_bytes=opts["max_bytes"])
 base = hwm()
 t = time.perf_counter()
 if sys.argv[3] == "run":
-    res = tc.run(sys.argv[2], tools)
+    res = tc.run(sys.argv[2], tools, max_segments=opts["max_segments"], **limits)
     segments, blocks, columns = len(res.path), res.blocks, res.path.nbytes + res.nominal.nbytes
 else:
-    stream = tc.iter_run(sys.argv[2], tools, chunk=1_000_000)
+    stream = tc.iter_run(sys.argv[2], tools, chunk=1_000_000, **limits)
     segments = sum(len(c) for c in stream)
     blocks, columns = stream.blocks, 0
 seconds = time.perf_counter() - t
@@ -128,12 +212,20 @@ print(json.dumps(dict(seconds=seconds, segments=segments, blocks=blocks, columns
                       peak=hwm())))
 """
 
+ISO_TOOLS = ("T1 P1 Z50 D6\n", "linuxcnc")  # the ISO programs' tool table: T1, 6 mm, 50 mm long
 
-def child(path, mode):
+
+def child(path, mode, dialect=None, tools=ISO_TOOLS):
+    """_CHILD on the program file `path` in a fresh interpreter: its figures as a dict
+    (seconds, segments, blocks, columns in bytes, base and peak VmHWM in MB). `tools` is
+    (table text, format) or None."""
     import json
 
-    out = subprocess.run([sys.executable, "-c", _CHILD, os.path.dirname(os.path.abspath(__file__)), path, mode],
-                         check=True, capture_output=True, text=True)
+    size = os.path.getsize(path)
+    opts = dict(dialect=dialect, tools=tools, max_bytes=max(2**31, size + 1),
+                max_segments=max(20_000_000, size // 4))  # a segment per 4 bytes: more than any bench program makes
+    out = subprocess.run([sys.executable, "-c", _CHILD, os.path.dirname(os.path.abspath(__file__)), path, mode,
+                          json.dumps(opts)], check=True, capture_output=True, text=True)
     return json.loads(out.stdout)
 
 
@@ -149,20 +241,6 @@ def bench_memory(n):
           f"(interpreter and numpy {r['base']:.0f} MB) for {cols:.0f} MB of Path columns; "
           f"target 1.5 x columns + 64 MB = {target:.0f} MB ({r['peak'] / target:.2f} of it); "
           f"{r['seconds']:.2f} s, {r['seconds'] / r['blocks'] * 1e9:.0f} ns/block read + parse + run")
-
-
-def bench_stream(n):
-    """tc.iter_run over a file of n blocks (chunks of 1M segments): time and peak RSS."""
-    with tempfile.TemporaryDirectory() as d:
-        path = os.path.join(d, "stream.ngc")
-        t = time.perf_counter()
-        write_program(path, n)
-        size = os.path.getsize(path)
-        gen = time.perf_counter() - t
-        r = child(path, "stream")
-    print(f"streaming      : tc.iter_run over {r['blocks']:,} blocks ({size / 2**30:.2f} GiB file, written in "
-          f"{gen:.0f} s): {r['segments']:,} segments in {r['seconds']:.1f} s, "
-          f"{r['seconds'] / r['blocks'] * 1e9:.0f} ns/block, peak RSS {r['peak']:.0f} MB")
 
 
 # res.plot() and savefig in a fresh interpreter: pyplot imported first (a notebook has it),
@@ -319,22 +397,174 @@ def bench_other(label, text, blocks, dialect, tools):
     del res, prog
 
 
-def bench_linear(n, factor):
-    """Time of tc.run on a program file `factor` times as long, against the 1x file (no
-    compensation; the file is read piece by piece as it runs). Each run is in a new process,
-    as a user's script meets it: in one process the column cache keeps the 1x run's columns
-    warm for its next round and maps the 10x run's anew (warm against cold)."""
-    with tempfile.TemporaryDirectory() as d:
-        small, big = os.path.join(d, "small.ngc"), os.path.join(d, "big.ngc")
-        write_program(small, n, comp=False)
-        write_program(big, n * factor, comp=False)
-        best = {"small": float("inf"), "big": float("inf")}
-        for _ in range(5):
-            for name, path in (("small", small), ("big", big)):
-                best[name] = min(best[name], child(path, "run")["seconds"])  # a new process: fresh memory
-    print(f"linearity      : {n * factor:,} blocks take {best['big'] / best['small']:.1f} x the time of {n:,} "
-          f"({best['small']:.2f} s, {best['big']:.2f} s; tc.run on files, no compensation, each in a new "
-          f"process; best of 5, in turn)")
+# ---- the three dialects side by side ------------------------------------------------------
+
+class Dialect(NamedTuple):
+    """A dialect's version of the contour program with radius compensation (r = 1 mm)."""
+    name: str
+    program: str  # what the program is
+    dialect: str  # tc's dialect name
+    suffix: str
+    write: Callable[[str, int], int]  # write(path, n_blocks) -> motion blocks written
+    tools: Optional[Tuple[str, str]]  # (table text, format) given to the run; None: the program's own
+    read_whole: bool  # iter_run reads the file whole (not piece by piece)
+
+
+DIALECTS = (
+    Dialect("ISO", "LinuxCNC, G42.1 D2, tool table T1", "linuxcnc", ".ngc", write_program, ISO_TOOLS, False),
+    Dialect("Sinumerik", "840D, G42, $TC_DP tool data", "sinumerik", ".mpf", write_sinumerik, None, True),
+    Dialect("Heidenhain", "Klartext L/CR, RR, TOOL DEF", "heidenhain", ".h", write_heidenhain, None, True),
+)
+ISO_NO_COMP = Dialect("ISO no comp", "LinuxCNC, no compensation", "linuxcnc", ".ngc",
+                      lambda path, n: write_program(path, n, comp=False), ISO_TOOLS, False)
+
+
+def run_child(d, path, mode="run"):
+    """child() with the dialect's name and tool table."""
+    return child(path, mode, d.dialect, d.tools)
+
+
+def mem_available_mb():
+    """MemAvailable of /proc/meminfo, MB."""
+    with open("/proc/meminfo") as f:
+        return next(int(l.split()[1]) for l in f if l.startswith("MemAvailable")) / 1024
+
+
+def fits(peak_mb, what):
+    """None if `peak_mb` of memory is at most 80 % of MemAvailable now (the rest for the
+    machine's other work), else the reason to skip `what`."""
+    avail = mem_available_mb()
+    if peak_mb <= 0.8 * avail:
+        return None
+    return (f"skipped {what}: it would need about {peak_mb / 1024:.1f} GB, more than 80 % of the "
+            f"{avail / 1024:.1f} GB available (MemAvailable)")
+
+
+def bench_dialects(n, rounds):
+    """ISO, Sinumerik and Heidenhain on the same contour of n blocks with radius compensation.
+    Each program file is written by its streaming writer; in this process, Program.parse of
+    its text and tc.run of the Program (best of 2 each); then tc.run(file) of each in a fresh
+    interpreter, `rounds` rounds with the dialects in turn: the median time, and the median
+    peak memory of the run (VmHWM after the run less VmHWM before it, as _CHILD measures) with
+    the size of its two Paths' columns. The ratios are each dialect's figure over ISO's."""
+    check_writers()
+    rows = {}
+    with tempfile.TemporaryDirectory() as td:
+        paths = {}
+        for d in DIALECTS:
+            paths[d.name] = os.path.join(td, "bench" + d.suffix)
+            blocks = d.write(paths[d.name], n)
+        for d in DIALECTS:
+            with open(paths[d.name]) as f:
+                text = f.read()
+            tools = tc.ToolTable.parse(*d.tools) if d.tools else None
+            t_parse, prog = best_of(lambda: tc.Program.parse(text, dialect=d.dialect), repeat=2)
+            t_run, res = best_of(lambda: tc.run(prog, tools=tools), repeat=2)
+            rows[d.name] = dict(parse=t_parse, run=t_run, mb=len(text) / 2**20, segments=len(res.path),
+                                compensated=int((res.path.side != 0).sum()), warnings=len(res.diagnostics),
+                                file=[], peak=[], base=[], columns=(res.path.nbytes + res.nominal.nbytes) / 2**20)
+            del text, prog, res
+        for _ in range(rounds):
+            for d in DIALECTS:
+                r = run_child(d, paths[d.name])
+                rows[d.name]["file"].append(r["seconds"])
+                rows[d.name]["peak"].append(r["peak"] - r["base"])
+                rows[d.name]["base"].append(r["base"])
+    ns = lambda t: t / blocks * 1e9  # noqa: E731
+    for r in rows.values():
+        r["file"], r["peak"] = statistics.median(r["file"]), statistics.median(r["peak"])
+    iso = rows["ISO"]
+    print(f"dialects       : the contour with radius compensation (r = 1 mm), {blocks:,} motion blocks each; "
+          f"parse and run in this process (best of 2), tc.run(file) and its peak memory in a fresh process "
+          f"(median of {rounds}, dialects in turn; peak = VmHWM over the "
+          f"{statistics.median(iso['base']):.0f} MB of interpreter and numpy)")
+    print(f"  {'':<11}{'file':>6}{'parse':>10}{'run':>10}{'total':>10}{'x ISO':>7}{'run(file)':>11}{'x ISO':>7}"
+          f"{'peak':>8}{'x ISO':>7}{'columns':>9}  program")
+    print(f"  {'':<11}{'MB':>6}{'ns/block':>10}{'ns/block':>10}{'ns/block':>10}{'':>7}{'ns/block':>11}{'':>7}"
+          f"{'MB':>8}{'':>7}{'MB':>9}")
+    for d in DIALECTS:
+        r = rows[d.name]
+        total = r["parse"] + r["run"]
+        print(f"  {d.name:<11}{r['mb']:6.1f}{ns(r['parse']):10.0f}{ns(r['run']):10.0f}{ns(total):10.0f}"
+              f"{total / (iso['parse'] + iso['run']):7.2f}{ns(r['file']):11.0f}{r['file'] / iso['file']:7.2f}"
+              f"{r['peak']:8.0f}{r['peak'] / iso['peak']:7.2f}{r['columns']:9.0f}  {d.program}")
+    print("  " + "; ".join(f"{d.name} {rows[d.name]['segments']:,} segments, {rows[d.name]['compensated']:,} "
+                           f"compensated, {rows[d.name]['warnings']:,} warnings" for d in DIALECTS))
+
+
+def short(n):
+    """1M for 1,000,000; other counts with thousands separators."""
+    return f"{n // 10**6}M" if n and n % 10**6 == 0 else f"{n:,}"
+
+
+def bench_linearity(n, factor, rounds):
+    """tc.run on a program file of n * factor blocks against one of n blocks, each dialect with
+    radius compensation (and ISO without it): every run in a fresh interpreter, as a user's
+    script meets it (in one process the column cache would keep the small run's columns warm),
+    in interleaved rounds (n, n * factor, n, n * factor, ...) so that a slow spell of the
+    machine falls on both sizes. Prints the median of the per-round ratios with their range,
+    the median times and the large run's peak memory. The large run is skipped when the small
+    run's memory over the interpreter's, times `factor`, would not fit (fits())."""
+    big_n = n * factor
+    print(f"linearity      : tc.run(file) of {big_n:,} against {n:,} blocks, each run in a fresh process, "
+          f"{rounds} interleaved rounds ({short(n)}, {short(big_n)}, {short(n)}, ...); ratio of the times: "
+          f"median of the rounds' (min..max); times: medians; peak MB: the large run's, over the interpreter")
+    print(f"  {'':<13}{'ratio':>7}{'range':>14}{'small s':>9}{'large s':>9}{'ns/block':>15}{'peak MB':>9}")
+    for d in DIALECTS + (ISO_NO_COMP,):
+        with tempfile.TemporaryDirectory() as td:
+            small, big = os.path.join(td, "small" + d.suffix), os.path.join(td, "big" + d.suffix)
+            blocks = d.write(small, n)
+            first = run_child(d, small)
+            skip = fits(first["base"] + (first["peak"] - first["base"]) * factor, f"{big_n:,} blocks")
+            if skip:
+                print(f"  {d.name:<13}{skip}")
+                continue
+            big_blocks = d.write(big, big_n)
+            t_small, t_big, peak = [], [], []
+            for i in range(rounds):
+                r = first if i == 0 else run_child(d, small)
+                t_small.append(r["seconds"])
+                r = run_child(d, big)
+                t_big.append(r["seconds"])
+                peak.append(r["peak"] - r["base"])
+        ratios = [b / s for s, b in zip(t_small, t_big)]
+        m_small, m_big = statistics.median(t_small), statistics.median(t_big)
+        per_block = f"{m_small / blocks * 1e9:.0f} / {m_big / big_blocks * 1e9:.0f}"
+        print(f"  {d.name:<13}{statistics.median(ratios):7.2f}{f'{min(ratios):.2f}..{max(ratios):.2f}':>14}"
+              f"{m_small:9.2f}{m_big:9.2f}{per_block:>15}{statistics.median(peak):9.0f}")
+
+
+def bench_stream(n, d=DIALECTS[0], probe=1_000_000):
+    """tc.iter_run over a file of n blocks of dialect `d` (chunks of 1M segments) in a fresh
+    interpreter: time and peak RSS. A dialect whose file iter_run reads whole is first
+    streamed at `probe` blocks; its peak memory over the interpreter's, scaled to n blocks,
+    says whether the n-block run fits (fits()); if not it is skipped with the reason."""
+    with tempfile.TemporaryDirectory() as td:
+        path = os.path.join(td, "stream" + d.suffix)
+        note = ""
+        if d.read_whole and n > probe:
+            d.write(path, probe)
+            r = run_child(d, path, "stream")
+            estimate = r["base"] + (r["peak"] - r["base"]) * n / probe
+            note = (f" (read whole; estimated {estimate:.0f} MB from {probe:,} blocks: {r['peak']:.0f} MB, "
+                    f"{r['seconds'] / r['blocks'] * 1e9:.0f} ns/block)")
+            skip = fits(estimate, f"{n:,} blocks")
+            size = os.path.getsize(path) * n / probe
+            if not skip and size > 0.9 * shutil.disk_usage(td).free:
+                skip = f"skipped {n:,} blocks: the file, about {size / 2**30:.1f} GiB, would not fit on {td}'s disk"
+            if skip:
+                print(f"streaming {d.name:<11}: tc.iter_run over {probe:,} blocks: {r['seconds']:.1f} s, "
+                      f"{r['seconds'] / r['blocks'] * 1e9:.0f} ns/block, peak RSS {r['peak']:.0f} MB "
+                      f"(the file is read whole); {skip}")
+                return
+        t = time.perf_counter()
+        d.write(path, n)
+        size = os.path.getsize(path)
+        gen = time.perf_counter() - t
+        r = run_child(d, path, "stream")
+    print(f"streaming {d.name:<11}: tc.iter_run over {r['blocks']:,} blocks ({size / 2**20:,.0f} MB file, written in "
+          f"{gen:.0f} s): {r['segments']:,} segments in {r['seconds']:.1f} s, "
+          f"{r['seconds'] / r['blocks'] * 1e9:.0f} ns/block, peak RSS {r['peak']:.0f} MB{note}")
 
 
 def bench_batch(n, tools):
@@ -369,30 +599,10 @@ def bench_batch(n, tools):
           + (f", {t_one / t_many:.2f} x over 1 core" if t_one else "") + " (best of 4, in turn)")
 
 
-def main():
-    n = int(os.environ.get("TOOLCOMP_BENCH_BLOCKS", "1000000"))
-    tools = tc.ToolTable.parse("T1 P1 Z50 D6\n", "linuxcnc")
-    bench_program(n, True, tools)
-    bench_program(n, False, tools)
-    bench_other("Heidenhain L/CR with RR", *generate_heidenhain(n), "heidenhain", None)
-    bench_other("Sinumerik G1/G2/G3 with G42", *generate_sinumerik(n), "sinumerik", None)
-    bench_other("LinuxCNC o-while loop with G42.1", *generate_loops(n), "linuxcnc", tools)
-    bench_batch(n, tools)
-    bench_memory(n)
-    plotted = int(os.environ.get("TOOLCOMP_BENCH_PLOT_SEGMENTS", "1000000"))
-    if plotted > 0:
-        bench_plot(plotted)
-    factor = int(os.environ.get("TOOLCOMP_BENCH_LINEAR", "10"))
-    if factor > 1:
-        bench_linear(n, factor)
-    streamed = int(os.environ.get("TOOLCOMP_BENCH_STREAM_BLOCKS", "50000000"))
-    if streamed > 0:
-        bench_stream(streamed)
-
-    # 3D compensation of CAM points (one core).
+def bench_3d(m):
+    """tc.compensate_3d of m random CAM points and normals (one core), ball and toroid, best of 3."""
     import numpy as np
 
-    m = int(os.environ.get("TOOLCOMP_BENCH_POINTS", "10000000"))
     rng = np.random.default_rng(1)
     pts = rng.normal(size=(m, 3))
     nrm = rng.normal(size=(m, 3))
@@ -401,6 +611,72 @@ def main():
     t_torus, _ = best_of(lambda: tc.compensate_3d(pts, nrm, R=3, R2=1, DR=-0.1, DR2=-0.05, out=out))
     print(f"compensate_3d  : {m:,} points: ball {t_ball:.3f} s ({m / t_ball / 1e6:.0f} M/s), "
           f"toroid {t_torus:.3f} s ({m / t_torus / 1e6:.0f} M/s)")
+
+
+SECTIONS = ("iso", "dialects", "loop", "batch", "memory", "plot", "linearity", "stream", "3d")
+
+
+@contextlib.contextmanager
+def section(name, chosen):
+    """Runs the body if `name` is among the chosen sections, then prints its elapsed time."""
+    if name not in chosen:
+        yield False
+        return
+    t = time.perf_counter()
+    yield True
+    print(f"  [{name}: {time.perf_counter() - t:.0f} s]")
+
+
+def env_int(name, default):
+    return int(os.environ.get(name, str(default)))
+
+
+def main():
+    sys.stdout.reconfigure(line_buffering=True)  # each figure as it comes, under make too
+    n = env_int("TOOLCOMP_BENCH_BLOCKS", 1_000_000)
+    rounds = max(1, env_int("TOOLCOMP_BENCH_ROUNDS", 3))
+    chosen = os.environ.get("TOOLCOMP_BENCH_SECTIONS", ",".join(SECTIONS)).replace(" ", "").split(",")
+    unknown = set(chosen) - set(SECTIONS)
+    if unknown:
+        sys.exit(f"TOOLCOMP_BENCH_SECTIONS: unknown {', '.join(sorted(unknown))} (sections: {', '.join(SECTIONS)})")
+    tools = tc.ToolTable.parse(*ISO_TOOLS)
+    start = time.perf_counter()
+    with section("iso", chosen) as on:
+        if on:
+            bench_program(n, True, tools)
+            bench_program(n, False, tools)
+    with section("dialects", chosen) as on:
+        if on:
+            bench_dialects(n, rounds)
+    with section("loop", chosen) as on:
+        if on:
+            bench_other("LinuxCNC o-while loop with G42.1", *generate_loops(n), "linuxcnc", tools)
+    with section("batch", chosen) as on:
+        if on:
+            bench_batch(n, tools)
+    with section("memory", chosen) as on:
+        if on:
+            bench_memory(n)
+    plotted = env_int("TOOLCOMP_BENCH_PLOT_SEGMENTS", 1_000_000)
+    with section("plot", chosen if plotted > 0 else ()) as on:
+        if on:
+            bench_plot(plotted)
+    factor = env_int("TOOLCOMP_BENCH_LINEAR", 10)
+    with section("linearity", chosen if factor > 1 else ()) as on:
+        if on:
+            bench_linearity(n, factor, rounds)
+    streamed = env_int("TOOLCOMP_BENCH_STREAM_BLOCKS", 50_000_000)
+    streamed_other = env_int("TOOLCOMP_BENCH_STREAM_OTHER_BLOCKS", streamed)
+    with section("stream", chosen) as on:
+        if on:
+            for d in DIALECTS:
+                blocks = streamed if d.name == "ISO" else streamed_other
+                if blocks > 0:
+                    bench_stream(blocks, d, probe=min(n, blocks))
+    with section("3d", chosen) as on:
+        if on:
+            bench_3d(env_int("TOOLCOMP_BENCH_POINTS", 10_000_000))
+    print(f"  [total: {time.perf_counter() - start:.0f} s]")
     return 0
 
 
