@@ -11,7 +11,6 @@ import collections.abc as _abc
 import numbers as _numbers
 import os as _os
 import sys as _sys
-from typing import Any as _Any
 from typing import Callable as _Callable
 from typing import Iterable as _Iterable
 from typing import Mapping as _Mapping
@@ -251,9 +250,9 @@ def iter_run(program: _Union[Program, _FileName], tools: _Union[ToolTable, _File
 from . import plot as _plot  # noqa: E402  (cheap: matplotlib is imported when something is drawn)
 
 
-def _result_plot(self: Result, ax: _Any = None, plane: str = "xy", show_nominal: bool = True,
-                 tolerance: _Optional[float] = None, title: _Optional[str] = None, legend: bool = True,
-                 color_by: str = "tool") -> _Any:
+def _result_plot(self: Result, ax: object = None, plane: str = "xy", show_nominal: bool = True,
+                 tolerance: float | None = None, title: str | None = None, legend: bool = True,
+                 color_by: str = "tool") -> object:
     return _plot.plot_result(self, ax=ax, plane=plane, show_nominal=show_nominal, tolerance=tolerance,
                              title=title, legend=legend, color_by=color_by)
 
@@ -270,14 +269,14 @@ ToolTable._repr_html_ = _display.table_html
 Diagnostic._repr_html_ = _display.diagnostic_html
 
 
-def _table_to_pandas(self: ToolTable) -> _Any:
+def _table_to_pandas(self: ToolTable) -> object:
     """One row per cutting edge (pandas DataFrame); see :mod:`toolcomp.table_frames`."""
     from .table_frames import to_pandas
 
     return to_pandas(self)
 
 
-def _table_from_pandas(df: _Any, base: _Optional[ToolTable] = None, units: str = "mm") -> ToolTable:
+def _table_from_pandas(df: object, base: ToolTable | None = None, units: str = "mm") -> ToolTable:
     """A ToolTable from a DataFrame (edits written over a copy of ``base`` if given)."""
     from .table_frames import from_pandas
 
