@@ -8,6 +8,7 @@
 #   make fuzz    libFuzzer targets (fuzz/) for FUZZ_SECONDS each, ASan+UBSan (installs clang)
 #   make test-sanitize  C++ and Python tests against an ASan+UBSan build (build/sanitize)
 #   make docs    the documentation site (Sphinx) in build/docs/html
+#   make stub    regenerate python/toolcomp/_core.pyi from the built module
 SHELL      := /bin/bash
 PYTHON     ?= python3
 VENV       := .venv
@@ -17,7 +18,7 @@ APT_PKGS   := g++ libeigen3-dev catch2 ninja-build
 ORACLE_PKGS:= linuxcnc-uspace
 FUZZ_PKGS  := clang libclang-rt-dev
 
-.PHONY: all build test demo oracle bench clean bootstrap fuzz test-sanitize docs
+.PHONY: all build test demo oracle bench clean bootstrap fuzz test-sanitize docs stub
 
 all: build
 
@@ -35,7 +36,8 @@ $(VENV)/.stamp: build/.apt-stamp pyproject.toml
 	test -x $(PY) || $(PYTHON) -m venv $(VENV)
 	$(PY) -m pip install -q --upgrade pip
 	$(PY) -m pip install -q "scikit-build-core>=0.10" "pybind11>=2.13" cmake ninja
-	$(PY) -m pip install -q "numpy>=1.21" pytest hypothesis "shapely>=2" nbclient nbformat ipykernel matplotlib pandas tqdm "dask[distributed]" mypy
+	$(PY) -m pip install -q "numpy>=1.21" pytest hypothesis "shapely>=2" nbclient nbformat ipykernel matplotlib pandas tqdm "dask[distributed]" mypy \
+	  "pybind11-stubgen==3.0.0"
 	@touch $@
 
 bootstrap: $(VENV)/.stamp
@@ -167,6 +169,13 @@ test-sanitize: bootstrap
 	  || { cat $(SAN_DIR)/logs/report* 2>/dev/null; exit 1; }
 	@if ls $(SAN_DIR)/logs/report* >/dev/null 2>&1; then cat $(SAN_DIR)/logs/report*; \
 	  echo "test-sanitize: sanitizer reports above"; exit 1; fi
+
+# ---- type stub ---------------------------------------------------------------------------
+# python/toolcomp/_core.pyi is generated from the built module (its signatures and the
+# docstrings of the /// comments) by python/tools/gen_stub.py with pybind11-stubgen, and
+# committed. tests/python/test_stub.py fails while it differs from what this target writes.
+stub: build
+	$(PY) python/tools/gen_stub.py
 
 # ---- documentation ---------------------------------------------------------------------
 # The Sphinx site in build/docs/html: the Markdown pages of doc/, the notebooks of notebooks/

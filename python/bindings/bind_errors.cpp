@@ -1,6 +1,8 @@
 // Diagnostics, and C++ toolcomp::Error translated to the Python classes of toolcomp._errors.
 #include "bindings.hpp"
 
+#include <pybind11/typing.h>
+
 #include "toolcomp/program/codes.hpp"
 #include "toolcomp/program/diagnostic.hpp"
 
@@ -37,27 +39,32 @@ const char* class_name(ErrorKind k) {
 }  // namespace
 
 void bind_errors(py::module_& m) {
-    py::class_<Diagnostic>(m, "Diagnostic",
-                            "A message from the engine: stable code, severity, text and source position.")
+    py::class_<Diagnostic>(m, "Diagnostic", pydoc::Diagnostic)
         .def(py::init([](std::string code, const std::string& severity, std::string message, int line, int column,
                          std::string file) {
                  return Diagnostic{std::move(code), severity_from(severity), std::move(message), {line, column, std::move(file)}};
              }),
              py::arg("code"), py::arg("severity"), py::arg("message"), py::arg("line") = 0, py::arg("column") = 0,
              py::arg("file") = std::string())
-        .def_readonly("code", &Diagnostic::code,
-                      "stable machine-readable code, snake_case (e.g. 'arc_end_off_circle')")
+        .def_readonly("code", &Diagnostic::code, pydoc::Diagnostic_code)
         .def_property_readonly("severity", [](const Diagnostic& d) { return severity_name(d.severity); },
-                               "'info', 'warning' or 'error'")
+                               pydoc::Diagnostic_severity)
         .def_property_readonly("message", [](const Diagnostic& d) { return text(d.message); },
-                      "human-readable message (the control's own text where it has one)")
-        .def_property_readonly("line", [](const Diagnostic& d) { return d.pos.line; },
-                               "source line, 1-based; 0 when not tied to a line")
-        .def_property_readonly("column", [](const Diagnostic& d) { return d.pos.column; },
-                               "source column, 1-based; 0 for the whole line")
+                      pydoc::Diagnostic_message)
+        /// @pydoc Diagnostic.line
+        /// source line, 1-based; 0 when not tied to a line
+        .def_property_readonly("line", [](const Diagnostic& d) { return d.pos.line; }, pydoc::Diagnostic_line)
+        /// @pydoc Diagnostic.column
+        /// source column, 1-based; 0 for the whole line
+        .def_property_readonly("column", [](const Diagnostic& d) { return d.pos.column; }, pydoc::Diagnostic_column)
+        /// @pydoc Diagnostic.file
+        /// the called program or subprogram file the line is in; None for the main program
         .def_property_readonly(
-            "file", [](const Diagnostic& d) -> py::object { return d.pos.file.empty() ? py::none() : py::object(text(d.pos.file)); },
-            "the called program or subprogram file the line is in; None for the main program")
+            "file",
+            [](const Diagnostic& d) -> py::typing::Optional<py::str> {
+                return d.pos.file.empty() ? py::none() : py::object(text(d.pos.file));
+            },
+            pydoc::Diagnostic_file)
         .def("__repr__", [](const Diagnostic& d) {
             return "Diagnostic(code='" + d.code + "', severity='" + severity_name(d.severity) + "', message=" +
                    py::repr(text(d.message)).cast<std::string>() + ", line=" + std::to_string(d.pos.line) +
@@ -68,6 +75,9 @@ void bind_errors(py::module_& m) {
                    a.pos.line == b.pos.line && a.pos.column == b.pos.column && a.pos.file == b.pos.file;
         });
 
+    /// @pydoc diagnostic_codes
+    /// The catalogue of diagnostic codes: [{'code', 'kind' (the Error class), 'severity',
+    /// 'alarm', 'text'}, ...]
     m.def(
         "diagnostic_codes",
         [] {
@@ -83,7 +93,7 @@ void bind_errors(py::module_& m) {
             }
             return rows;
         },
-        "The catalogue of diagnostic codes: [{'code', 'kind' (the Error class), 'severity', 'alarm', 'text'}, ...]");
+        pydoc::diagnostic_codes);
 
     py::register_exception_translator([](std::exception_ptr p) {
         try {

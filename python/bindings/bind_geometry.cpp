@@ -21,6 +21,11 @@ std::span<const Vec2> as_points(const Points& a, const char* name) {
 }  // namespace
 
 void bind_geometry(py::module_& m) {
+    /// @pydoc _nearest_segments
+    /// For each element p0[i]..p1[i] (a segment, or where turn[i] is not 0 an arc about
+    /// centers[i]: +1 counter-clockwise, -1 clockwise, +-2 a whole circle), its distance to
+    /// the nearest segment q0[j]q1[j] and the point of the element where it is taken, where
+    /// that distance is below `limit` (inf and 0 elsewhere).
     m.def(
         "_nearest_segments",
         [](const Points& p0, const Points& p1, const Points& q0, const Points& q1, double limit,
@@ -58,9 +63,5 @@ void bind_geometry(py::module_& m) {
             return py::make_tuple(dist, at);
         },
         py::arg("p0"), py::arg("p1"), py::arg("q0"), py::arg("q1"), py::arg("limit"), py::arg("centers") = py::none(),
-        py::arg("turn") = py::none(),
-        "For each element p0[i]..p1[i] (a segment, or where turn[i] is not 0 an arc about centers[i]: "
-        "+1 counter-clockwise, -1 clockwise, +-2 a whole circle), its distance to the nearest segment "
-        "q0[j]q1[j] and the point of the element where it is taken, where that distance is below `limit` "
-        "(inf and 0 elsewhere).");
+        py::arg("turn") = py::none(), pydoc::_nearest_segments);
 }

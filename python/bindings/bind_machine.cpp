@@ -52,7 +52,7 @@ auto triple_set(const char* name, Triple Machine::*f) {
 }  // namespace
 
 void bind_machine(py::module_& m) {
-    py::class_<MachineCode>(m, "MachineCode", "A builder M code: what it does for the path, and its name.")
+    py::class_<MachineCode>(m, "MachineCode", pydoc::MachineCode)
         .def(py::init([](const std::string& action, std::string name, std::string words, std::string program,
                          std::string argspec) {
                  return MachineCode{action_from(action), std::move(name), std::move(words), std::move(program),
@@ -62,17 +62,11 @@ void bind_machine(py::module_& m) {
              py::arg("argspec") = "")
         .def_property(
             "action", [](const MachineCode& c) { return action_name(c.action); },
-            [](MachineCode& c, const std::string& a) { c.action = action_from(a); },
-            "nothing, coolant_on, coolant_off, spindle_cw, spindle_ccw, spindle_stop, program_stop, optional_stop, "
-            "program_end, tool_change or subprogram")
-        .def_readwrite("name", &MachineCode::name, "what the builder calls it")
-        .def_readwrite("words", &MachineCode::words,
-                       "the letters it reads in its block (\"P\" for Haas M59 P1133), taken out of the block")
-        .def_readwrite("program", &MachineCode::program,
-                       "subprogram: the program it runs (LinuxCNC a sub's name, Fanuc an O number)")
-        .def_readwrite("argspec", &MachineCode::argspec,
-                       "LinuxCNC subprogram: REMAP's argspec, the words the sub gets as #<p> locals (upper case "
-                       "required, lower case optional; '@' as #1, #2, ...; '>' a feed, '^' a spindle speed)")
+            [](MachineCode& c, const std::string& a) { c.action = action_from(a); }, pydoc::MachineCode_action)
+        .def_readwrite("name", &MachineCode::name, pydoc::MachineCode_name)
+        .def_readwrite("words", &MachineCode::words, pydoc::MachineCode_words)
+        .def_readwrite("program", &MachineCode::program, pydoc::MachineCode_program)
+        .def_readwrite("argspec", &MachineCode::argspec, pydoc::MachineCode_argspec)
         .def("__eq__", [](const MachineCode& a, const MachineCode& b) {
             return a.action == b.action && a.name == b.name && a.words == b.words && a.program == b.program &&
                    a.argspec == b.argspec;
@@ -85,10 +79,10 @@ void bind_machine(py::module_& m) {
                    (c.argspec.empty() ? std::string() : ", argspec='" + c.argspec + "'") + ")";
         });
 
-    py::class_<Machine>(m, "Machine",
-                        "A machine: a control (its ControlProfile) plus what its builder configured: M codes, "
-                        "work origin, G28/G30 and tool change positions, axis travel, rates. Lengths in mm, "
-                        "machine coordinates. Machine.read / Machine.preset / machine.write: see toolcomp.machine.")
+    py::class_<Machine>(m, "Machine", pydoc::Machine)
+        /// @pydoc Machine.__init__
+        /// The plain machine of a control: its profile, no builder codes, machine zero
+        /// at program zero.
         .def(py::init([](const std::string& control, const std::string& kind, std::optional<std::string> name) {
                  if (kind != "mill" && kind != "lathe")
                      throw py::value_error("kind is 'mill' or 'lathe', not '" + kind + "'");
@@ -97,18 +91,18 @@ void bind_machine(py::module_& m) {
                  return mc;
              }),
              py::arg("control") = "linuxcnc", py::arg("kind") = "mill", py::arg("name") = py::none(),
-             "The plain machine of a control: its profile, no builder codes, machine zero at program zero.")
+             pydoc::Machine___init__)
         .def_readwrite("name", &Machine::name)
         .def_property_readonly("control", [](const Machine& mc) { return std::string(dialect_name(mc.control)); },
-                               "the control's dialect: 'linuxcnc', 'fanuc', 'sinumerik', 'heidenhain' or 'rockwell'")
-        .def_readonly("kind", &Machine::kind, "MachineKind: mill or lathe")
+                               pydoc::Machine_control)
+        .def_readonly("kind", &Machine::kind, pydoc::Machine_kind)
         .def_property(
             "profile", [](const Machine& mc) { return mc.profile; },
             [](Machine& mc, const ControlProfile& p) {
                 if (p.kind != mc.kind) throw py::value_error("the profile is of another kind of machine");
                 mc.profile = p;
             },
-            "the ControlProfile runs on this machine use (a copy: set it back after changing fields)")
+            pydoc::Machine_profile)
         .def_property(
             "m_codes", [](const Machine& mc) { return mc.m_codes; },
             [](Machine& mc, const std::map<int, MachineCode>& codes) {
@@ -118,7 +112,7 @@ void bind_machine(py::module_& m) {
                         throw py::value_error("M" + std::to_string(n) + " cannot be declared: the control fixes it");
                 mc.m_codes = codes;
             },
-            "builder M codes: {number: MachineCode} (a copy: set it back after changing it)")
+            pydoc::Machine_m_codes)
         .def_property(
             "g_codes",
             [](const Machine& mc) {
@@ -136,23 +130,19 @@ void bind_machine(py::module_& m) {
                 }
                 mc.g_codes = std::move(by10);
             },
-            "LinuxCNC's remapped G codes: {88.6: MachineCode('subprogram', program=..., argspec=...)} (a copy)")
-        .def_readwrite("machine_data", &Machine::machine_data,
-                       "Sinumerik machine and setting data programs read: {'$MN_SCALING_VALUE_INCH': 25.4} (a copy)")
-        .def_readwrite("cycles", &Machine::cycles,
-                       "Heidenhain builder cycles: {392: MachineCode('nothing', 'ATC')}: accepted, their Q parameters "
-                       "set, no motion (a copy)")
+            pydoc::Machine_g_codes)
+        .def_readwrite("machine_data", &Machine::machine_data, pydoc::Machine_machine_data)
+        .def_readwrite("cycles", &Machine::cycles, pydoc::Machine_cycles)
         .def_property("work_origin", triple_get(&Machine::work_origin),
-                      triple_set("work_origin", &Machine::work_origin), "where program zero (G54) lies in machine coordinates, (x, y, z) mm")
+                      triple_set("work_origin", &Machine::work_origin), pydoc::Machine_work_origin)
         .def_property("g28", triple_get(&Machine::g28),
-                      triple_set("g28", &Machine::g28), "the G28 position in machine coordinates, (x, y, z) mm")
+                      triple_set("g28", &Machine::g28), pydoc::Machine_g28)
+        /// @pydoc Machine.g30
+        /// the G30 position in machine coordinates, (x, y, z) mm
         .def_property("g30", triple_get(&Machine::g30),
-                      triple_set("g30", &Machine::g30), "the G30 position in machine coordinates, (x, y, z) mm")
-        .def_property("start", triple_get(&Machine::start), triple_set("start", &Machine::start),
-                      "where the axes stand when a program starts, machine coordinates, (x, y, z) mm (default: "
-                      "the machine's zero)")
-        .def_property("m92", triple_get(&Machine::m92), triple_set("m92", &Machine::m92),
-                      "Heidenhain: the additional machine datum (M92) in machine coordinates, (x, y, z) mm")
+                      triple_set("g30", &Machine::g30), pydoc::Machine_g30)
+        .def_property("start", triple_get(&Machine::start), triple_set("start", &Machine::start), pydoc::Machine_start)
+        .def_property("m92", triple_get(&Machine::m92), triple_set("m92", &Machine::m92), pydoc::Machine_m92)
         .def_property(
             "tool_change", [](const Machine& mc) { return mc.tool_change; },
             [](Machine& mc, const OptTriple& v) {
@@ -160,7 +150,7 @@ void bind_machine(py::module_& m) {
                     if (x && !std::isfinite(*x)) throw py::value_error("tool_change must hold finite numbers or None");
                 mc.tool_change = v;
             },
-            "where M6 sends each axis first, machine coordinates (x, y, z), None: that axis stays")
+            pydoc::Machine_tool_change)
         .def_property(
             "travel",
             [](const Machine& mc) {
@@ -175,18 +165,19 @@ void bind_machine(py::module_& m) {
                     mc.travel[i] = {t[i].first, t[i].second};
                 }
             },
-            "axis travel ((xmin, xmax), (ymin, ymax), (zmin, zmax)) in machine coordinates, mm; +-inf: no limit")
-        .def_readwrite("spindles", &Machine::spindles, "spindles, 1 to 8 (LinuxCNC [TRAJ]SPINDLES): $0 .. $n-1")
-        .def_readwrite("travel_limit_warning", &Machine::travel_limit_warning,
-                       "a move beyond the travel is a warning (True) or an error that stops the run (False)")
+            pydoc::Machine_travel)
+        .def_readwrite("spindles", &Machine::spindles, pydoc::Machine_spindles)
+        .def_readwrite("travel_limit_warning", &Machine::travel_limit_warning, pydoc::Machine_travel_limit_warning)
         .def_property("rapid_rate", triple_get(&Machine::rapid_rate),
-                      triple_set("rapid_rate", &Machine::rapid_rate), "rapid traverse of each axis, mm/min (0: not given)")
+                      triple_set("rapid_rate", &Machine::rapid_rate), pydoc::Machine_rapid_rate)
+        /// @pydoc Machine.max_feed
+        /// the highest feed of each axis, mm/min (0: not given)
         .def_property("max_feed", triple_get(&Machine::max_feed),
-                      triple_set("max_feed", &Machine::max_feed), "the highest feed of each axis, mm/min (0: not given)")
-        .def_readwrite("tool_change_time", &Machine::tool_change_time,
-                       "seconds a tool change takes, chip to chip (0: not given), for Result.cycle_time")
-        .def("check", [](const Machine& mc) { check_machine(mc); },
-             "raise ValueError naming the field of a value the machine cannot have")
+                      triple_set("max_feed", &Machine::max_feed), pydoc::Machine_max_feed)
+        .def_readwrite("tool_change_time", &Machine::tool_change_time, pydoc::Machine_tool_change_time)
+        /// @pydoc Machine.check
+        /// raise ValueError naming the field of a value the machine cannot have
+        .def("check", [](const Machine& mc) { check_machine(mc); }, pydoc::Machine_check)
         .def("__repr__", [](const Machine& mc) {
             return "Machine(" + py::repr(py::str(mc.name)).cast<std::string>() + ", control='" +
                    std::string(dialect_name(mc.control)) + "', kind='" +

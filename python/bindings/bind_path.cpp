@@ -34,7 +34,7 @@ py::array view(py::handle owner, const Column<T>& v, std::size_t n, std::size_t 
 
 // Rows written out by the Path when asked for (starts(), centers(), feeds()): kept with it.
 template <std::span<const double> (Path::*rows)() const, int width>
-py::object written(py::object self) {
+py::array written(py::object self) {
     const Path& p = self.cast<const Path&>();
     std::span<const double> v;
     {
@@ -95,53 +95,33 @@ auto column(Column<T> Path::*member, std::size_t width) {
 
 void bind_path(py::module_& m) {
     py::class_<Path, std::shared_ptr<Path>>(
-        m, "Path",
-        "N path segments as read-only numpy column views (no copies): lengths in mm, angles in degrees, "
-        "positions in program coordinates (work offsets not added, tool length offset in `tool_offset`).")
-        .def("__len__", &Path::size, "number of segments")
-        .def_property_readonly("kind", column(&Path::kind, 1),
-                               "motion type of each segment, uint8 (N,): RAPID 0, LINE 1, ARC_CW 2, ARC_CCW 3")
-        .def_property_readonly("start", &written<&Path::starts, 3>,
-                               "start point of each segment, float64 (N, 3), mm, program coordinates (written "
-                               "out at the first access: stored, a segment starts where the one before ended)")
-        .def_property_readonly("end", column(&Path::end, 3),
-                               "end point of each segment, float64 (N, 3), mm, program coordinates")
-        .def_property_readonly("center", &written<&Path::centers, 3>,
-                               "arc centre, float64 (N, 3), mm, program coordinates; NaN for rapids and lines "
-                               "(written out at the first access: only arcs' are stored)")
-        .def_property_readonly("nbytes", &Path::bytes,
-                               "bytes the columns hold as stored (start and center once written out included)")
-        .def_property_readonly("abc", column3(&Path::abc),
-                               "rotary axes A B C at the segment end, float64 (N, 3), degrees")
-        .def_property_readonly("line", column(&Path::line, 1),
-                               "source line of the block, int32 (N,), 1-based; an inserted corner piece carries "
-                               "the line of the block after the corner")
-        .def_property_readonly("file", column1(&Path::file),
-                               "file of the block, int32 (N,): index into `files` (0 = the main program)")
-        .def_readonly("files", &Path::files,
-                      "names of the files segments come from: the main program, then each called program or "
-                      "subprogram file in the order the run entered it")
-        .def_property_readonly("tool", column1(&Path::tool), "number of the tool in the spindle, int32 (N,)")
-        .def_property_readonly("feed", &written<&Path::feeds, 1>,
-                               "feed rate, float64 (N,), mm/min; NaN for rapids (written out at the first access: "
-                               "stored where it changes)")
-        .def_property_readonly("side", column(&Path::side, 1),
-                               "cutter radius compensation, int8 (N,): +1 left (G41/RL), -1 right (G42/RR), 0 off")
+        m, "Path", pydoc::Path)
+        .def("__len__", &Path::size, pydoc::Path_size)
+        .def_property_readonly("kind", column(&Path::kind, 1), pydoc::Path_kind)
+        .def_property_readonly("start", &written<&Path::starts, 3>, pydoc::Path_starts)
+        .def_property_readonly("end", column(&Path::end, 3), pydoc::Path_end)
+        .def_property_readonly("center", &written<&Path::centers, 3>, pydoc::Path_centers)
+        .def_property_readonly("nbytes", &Path::bytes, pydoc::Path_bytes)
+        .def_property_readonly("abc", column3(&Path::abc), pydoc::Path_abc)
+        .def_property_readonly("line", column(&Path::line, 1), pydoc::Path_line)
+        .def_property_readonly("file", column1(&Path::file), pydoc::Path_file)
+        .def_readonly("files", &Path::files, pydoc::Path_files)
+        .def_property_readonly("tool", column1(&Path::tool), pydoc::Path_tool)
+        .def_property_readonly("feed", &written<&Path::feeds, 1>, pydoc::Path_feeds)
+        .def_property_readonly("side", column(&Path::side, 1), pydoc::Path_side)
         .def_property_readonly("generated",
                                [](py::object self) {
                                    const Path& p = self.cast<const Path&>();
                                    return view(self, p.generated, p.size(), 1, py::dtype("bool"));
                                },
-                               "bool (N,): True where a compensation stage inserted the segment (corner arcs, "
-                               "extension blocks)")
-        .def_property_readonly("tool_offset", column3(&Path::tool_offset),
-                               "active tool length offset, float64 (N, 3), mm (X Y Z)")
-        .def_property_readonly("work_offset", column3(&Path::work_offset),
-                               "where the work coordinates lie in the machine's, float64 (N, 3), mm: machine_end = "
-                               "end + work_offset + tool_offset (with a work_rotation, the end rotated first)")
-        .def_property_readonly("work_rotation", column1(&Path::work_rotation),
-                               "rotation of the work coordinates about Z, float64 (N,), degrees (LinuxCNC G10 L2 R); "
-                               "0 elsewhere")
+                               pydoc::Path_generated)
+        .def_property_readonly("tool_offset", column3(&Path::tool_offset), pydoc::Path_tool_offset)
+        .def_property_readonly("work_offset", column3(&Path::work_offset), pydoc::Path_work_offset)
+        .def_property_readonly("work_rotation", column1(&Path::work_rotation), pydoc::Path_work_rotation)
+        /// @pydoc Path.machine_end
+        /// end point of each segment in machine coordinates, float64 (N, 3), mm: the
+        /// spindle's gauge point, as the control's machine position shows it (a new
+        /// array at each access)
         .def_property_readonly(
             "machine_end",
             [](const Path& p) {
@@ -153,14 +133,13 @@ void bind_path(py::module_& m) {
                 py::capsule c(v, [](void* x) { delete static_cast<std::vector<double>*>(x); });
                 return py::array_t<double>({static_cast<py::ssize_t>(p.size()), py::ssize_t(3)}, v->data(), c);
             },
-            "end point of each segment in machine coordinates, float64 (N, 3), mm: the spindle's gauge point, "
-            "as the control's machine position shows it (a new array at each access)")
-        .def_property_readonly("plane", column1(&Path::plane),
-                               "working plane of each segment: 0 XY (G17), 1 ZX (G18), 2 YZ (G19)")
-        .def_property_readonly("turns", column1(&Path::turns), "arcs: extra full turns (LinuxCNC P word - 1)")
-        .def_property_readonly("normal", column3(&Path::normal),
-                               "surface normal of 3D-compensated segments (Heidenhain LN), unit length; NaN elsewhere")
-        .def_property_readonly("tool_axis", column3(&Path::tool_axis), "unit tool axis (tip towards the spindle)")
+            pydoc::Path_machine_end)
+        .def_property_readonly("plane", column1(&Path::plane), pydoc::Path_plane)
+        /// @pydoc Path.turns
+        /// arcs: extra full turns (LinuxCNC P word - 1)
+        .def_property_readonly("turns", column1(&Path::turns), pydoc::Path_turns)
+        .def_property_readonly("normal", column3(&Path::normal), pydoc::Path_normal)
+        .def_property_readonly("tool_axis", column3(&Path::tool_axis), pydoc::Path_tool_axis)
         .def(
             "contact_points",
             [](const Path& p, double r, double r2) {
@@ -171,9 +150,7 @@ void bind_path(py::module_& m) {
                 py::capsule c(v, [](void* x) { delete static_cast<std::vector<double>*>(x); });
                 return py::array_t<double>({static_cast<py::ssize_t>(p.size()), py::ssize_t(3)}, v->data(), c);
             },
-            py::arg("r"), py::arg("r2"),
-            "Where a tool of radius r and corner radius r2 at the segment ends touches the surface (segments "
-            "with a normal; NaN elsewhere), (N, 3) mm.")
+            py::arg("r"), py::arg("r2"), pydoc::Path_contact_points)
         .def(
             "sample",
             [](const Path& p, double tolerance) {
@@ -191,10 +168,13 @@ void bind_path(py::module_& m) {
                 py::array_t<std::int64_t> b({n}, seg->data(), sc);
                 return py::make_tuple(a, b);
             },
-            py::arg("tolerance") = 0.01,
-            "The path as an (M, 3) polyline with arcs chorded within `tolerance` mm, and the index of the "
-            "segment each point belongs to.")
-        .def("length", &Path::length, py::arg("include_rapids") = true, "Path length in mm (arcs exact).")
+            py::arg("tolerance") = 0.01, pydoc::Path_sample)
+        .def("length", &Path::length, py::arg("include_rapids") = true, pydoc::Path_length)
+        /// @pydoc Path.duration
+        /// Seconds each segment takes on the machine the path was run on: rapids at its
+        /// rapid rates (10 m/min per axis where it gives none), feed moves at their
+        /// feed, slowed where an axis would pass its max_feed; no acceleration
+        /// (doc/cycle-time.md). NaN for a feed move without a positive feed.
         .def_property_readonly(
             "duration",
             [](const Path& p) {
@@ -206,11 +186,7 @@ void bind_path(py::module_& m) {
                 py::capsule c(v, [](void* x) { delete static_cast<std::vector<double>*>(x); });
                 return py::array_t<double>({static_cast<py::ssize_t>(v->size())}, v->data(), c);
             },
-            "Seconds each segment takes on the machine the path was run on: rapids at its rapid rates (10 m/min "
-            "per axis where it gives none), feed moves at their feed, slowed where an axis would pass its "
-            "max_feed; no acceleration (doc/cycle-time.md). NaN for a feed move without a positive feed.")
-        .def_property_readonly("tool_changes", &tool_changes,
-                               "how often the tool changes along the path (a first tool counts: the run starts with "
-                               "none)")
+            pydoc::Path_duration)
+        .def_property_readonly("tool_changes", &tool_changes, pydoc::tool_changes)
         .def("__repr__", [](const Path& p) { return "Path(" + std::to_string(p.size()) + " segments)"; });
 }

@@ -34,9 +34,7 @@ StreamOptions stream_options(bool strict, bool block_delete, std::optional<Contr
 
 void bind_stream(py::module_& m) {
     py::class_<PathStream, std::shared_ptr<PathStream>>(
-        m, "PathStream",
-        "Iterator over a run's compensated path in chunks (Path objects); see toolcomp.iter_run. After the "
-        "last chunk: diagnostics, blocks, files.")
+        m, "PathStream", pydoc::PathStream)
         .def("__iter__", [](py::object self) { return self; })
         .def("__next__",
              [](PathStream& s) {
@@ -61,25 +59,23 @@ void bind_stream(py::module_& m) {
         .def("close", [](PathStream& s) {
             py::gil_scoped_release nogil;
             s.close();
-        }, "stop the run; chunks not taken are dropped")
+        }, pydoc::PathStream_close)
         .def("__enter__", [](py::object self) { return self; })
         .def("__exit__", [](PathStream& s, py::args) {
             py::gil_scoped_release nogil;
             s.close();
         })
-        .def_property_readonly("diagnostics", &PathStream::diagnostics,
-                               "warnings of the run (and with strict=False its error), once the stream has ended")
-        .def_property_readonly("blocks", &PathStream::blocks, "blocks read, once the stream has ended")
-        .def_property_readonly("blocks_read", &PathStream::blocks_read,
-                               "blocks read so far (updated every 65536 blocks, and at the end), for a progress bar")
+        .def_property_readonly("diagnostics", &PathStream::diagnostics, pydoc::PathStream_diagnostics)
+        .def_property_readonly("blocks", &PathStream::blocks, pydoc::PathStream_blocks)
+        .def_property_readonly("blocks_read", &PathStream::blocks_read, pydoc::PathStream_blocks_read)
         .def_property_readonly("dialect", [](const PathStream& s) { return std::string(dialect_name(s.dialect())); },
-                               "the dialect the program is read in: 'linuxcnc', 'fanuc', 'sinumerik', 'heidenhain' "
-                               "or 'rockwell'")
+                               pydoc::PathStream_dialect)
         .def_property_readonly("programmed_segments", &PathStream::programmed_segments,
-                               "segments of the programmed path so far (counted, not kept)")
-        .def_property_readonly("files", &PathStream::files,
-                               "the files segments came from (Path.file indexes it), once the stream has ended");
+                               pydoc::PathStream_programmed_segments)
+        .def_property_readonly("files", &PathStream::files, pydoc::PathStream_files);
 
+    /// @pydoc iter_run_file
+    /// A PathStream over a program file (see toolcomp.iter_run).
     m.def(
         "iter_run_file",
         [](const std::string& path, std::optional<std::string> dialect, const ToolTable* tools, bool strict,
@@ -98,8 +94,9 @@ void bind_stream(py::module_& m) {
         py::arg("path"), py::arg("dialect"), py::arg("tools"), py::arg("strict"), py::arg("block_delete"),
         py::arg("profile"), py::arg("search_path"), py::arg("parameters"), py::arg("chunk"), py::arg("piece_bytes"),
         py::arg("max_bytes"), py::arg("max_line_length"), py::arg("follow_links") = false,
-        py::arg("machine") = py::none(), py::arg("start") = py::none(),
-        "A PathStream over a program file (see toolcomp.iter_run).");
+        py::arg("machine") = py::none(), py::arg("start") = py::none(), pydoc::iter_run_file);
+    /// @pydoc iter_run_program
+    /// A PathStream over a parsed Program (see toolcomp.iter_run).
     m.def(
         "iter_run_program",
         [](std::shared_ptr<Program> program, const ToolTable* tools, bool strict, bool block_delete,
@@ -116,5 +113,5 @@ void bind_stream(py::module_& m) {
         py::arg("search_path"), py::arg("parameters"), py::arg("chunk"),
         py::arg("max_bytes") = kDefaultMaxProgramBytes, py::arg("max_line_length") = kDefaultMaxLineLength,
         py::arg("follow_links") = false, py::arg("machine") = py::none(), py::arg("start") = py::none(),
-        "A PathStream over a parsed Program (see toolcomp.iter_run).");
+        pydoc::iter_run_program);
 }

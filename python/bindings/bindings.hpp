@@ -9,6 +9,10 @@
 #include "toolcomp/geometry/vec.hpp"
 #include "toolcomp/tools/tool_table.hpp"
 
+// pydoc::NAME: the docstrings, generated at build time from the /// comments of the headers
+// and of the binding files (python/tools/gen_docstrings.py; doc/developing.md).
+#include "pydoc.hpp"
+
 namespace py = pybind11;
 
 // What the engine reads with the GIL released is its own copy, taken while the GIL is held:
@@ -28,6 +32,7 @@ void bind_path(py::module_& m);
 void bind_path_text(py::module_& m);
 void bind_geometry(py::module_& m);
 void bind_run(py::module_& m);
+void bind_run_calls(py::module_& m);  // run(), run_file(): after bind_machine (their signatures name Machine)
 void bind_machine(py::module_& m);
 void bind_stream(py::module_& m);
 void bind_tools(py::module_& m);

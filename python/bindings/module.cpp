@@ -6,8 +6,10 @@
 
 void bind_sinumerik(py::module_& m);  // bind_sinumerik.cpp: the submodule _core.sinumerik
 
+/// @pydoc _core
+/// toolcomp core: CNC program interpreter and tool compensation engine
 PYBIND11_MODULE(_core, m) {
-    m.doc() = "toolcomp core: CNC program interpreter and tool compensation engine";
+    m.doc() = pydoc::_core;
     m.attr("__version__") = TOOLCOMP_VERSION;
     m.attr("RAPID") = static_cast<int>(toolcomp::MotionKind::rapid);
     m.attr("LINE") = static_cast<int>(toolcomp::MotionKind::line);
@@ -21,6 +23,7 @@ PYBIND11_MODULE(_core, m) {
     bind_geometry(m);
     bind_run(m);
     bind_machine(m);
+    bind_run_calls(m);
     bind_stream(m);
     bind_sinumerik(m);
 }

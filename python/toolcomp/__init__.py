@@ -281,8 +281,9 @@ def _whole_in(name, value, least, most=None):
 from . import plot as _plot  # noqa: E402  (cheap: matplotlib is imported when something is drawn)
 
 
-def _result_plot(self, ax=None, plane="xy", show_nominal=True, tolerance=None, title=None, legend=True,
-                 color_by="tool"):
+def _result_plot(self: Result, ax: object = None, plane: str = "xy", show_nominal: bool = True,
+                 tolerance: float | None = None, title: str | None = None, legend: bool = True,
+                 color_by: str = "tool") -> object:
     return _plot.plot_result(self, ax=ax, plane=plane, show_nominal=show_nominal, tolerance=tolerance,
                              title=title, legend=legend, color_by=color_by)
 
@@ -299,21 +300,21 @@ ToolTable._repr_html_ = _display.table_html
 Diagnostic._repr_html_ = _display.diagnostic_html
 
 
-def _table_to_pandas(self):
+def _table_to_pandas(self: ToolTable) -> object:
     """One row per cutting edge (pandas DataFrame); see :mod:`toolcomp.table_frames`."""
     from .table_frames import to_pandas
 
     return to_pandas(self)
 
 
-def _table_from_pandas(df, base=None, units="mm"):
+def _table_from_pandas(df: object, base: ToolTable | None = None, units: str = "mm") -> ToolTable:
     """A ToolTable from a DataFrame (edits written over a copy of ``base`` if given)."""
     from .table_frames import from_pandas
 
     return from_pandas(df, base=base, units=units)
 
 
-def _table_diff(self, other, tol=0.0):
+def _table_diff(self: ToolTable, other: ToolTable, tol: float = 0.0) -> list:
     """What changes from this table to ``other``: a list of (tool, edge, field, old, new)."""
     from .table_frames import diff
 

@@ -352,7 +352,7 @@ def parse(text: str, path: Optional[str] = None) -> "_core.Machine":
     return m
 
 
-def read(path) -> "_core.Machine":
+def read(path: str | os.PathLike[str]) -> "_core.Machine":
     """A Machine from a machine file (TOML)."""
     path = os.fspath(path)
     if os.path.exists(path) and not os.path.isfile(path):
@@ -451,7 +451,7 @@ def dumps(m: "_core.Machine") -> str:
     return "\n".join(lines) + "\n"
 
 
-def write(m: "_core.Machine", path) -> None:
+def write(m: "_core.Machine", path: str | os.PathLike[str]) -> None:
     """Write the machine file, replaced atomically (never half written; a link and the
     file's permissions are kept)."""
     replace_text(path, dumps(m), suffix=".toml")

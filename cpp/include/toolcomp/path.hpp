@@ -25,28 +25,49 @@
 
 namespace toolcomp {
 
+/// N path segments as read-only numpy column views (no copies): lengths in mm, angles in
+/// degrees, positions in program coordinates (work offsets not added, tool length offset in
+/// `tool_offset`).
 class Path : public MotionSink {
     static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 public:
+    /// motion type of each segment, uint8 (N,): RAPID 0, LINE 1, ARC_CW 2, ARC_CCW 3
     Column<std::uint8_t> kind;
+    /// end point of each segment, float64 (N, 3), mm, program coordinates
     Column<double> end;                   // 3 per segment
+    /// active tool length offset, float64 (N, 3), mm (X Y Z)
     Vec3Column tool_offset{0, 0, 0};
     // machine = Rz(work_rotation) * end + work_offset + tool_offset (Motion::work_offset).
+    /// where the work coordinates lie in the machine's, float64 (N, 3), mm: machine_end =
+    /// end + work_offset + tool_offset (with a work_rotation, the end rotated first)
     Vec3Column work_offset{0, 0, 0};
-    UniformColumn<double, 1> work_rotation;  // degrees
-    Vec3Column abc{0, 0, 0};              // degrees
+    /// rotation of the work coordinates about Z, float64 (N,), degrees (LinuxCNC G10 L2 R);
+    /// 0 elsewhere
+    UniformColumn<double, 1> work_rotation;
+    /// rotary axes A B C at the segment end, float64 (N, 3), degrees
+    Vec3Column abc{0, 0, 0};
+    /// surface normal of 3D-compensated segments (Heidenhain LN), unit length; NaN elsewhere
     Vec3Column normal{kNaN, kNaN, kNaN};  // unit surface normal (3D compensation)
+    /// unit tool axis (tip towards the spindle)
     Vec3Column tool_axis{0, 0, 1};
+    /// source line of the block, int32 (N,), 1-based; an inserted corner piece carries the
+    /// line of the block after the corner
     Column<std::int32_t> line;
+    /// number of the tool in the spindle, int32 (N,)
     UniformColumn<std::int32_t, 1> tool, turns;
     RunColumn<double> feed;  // mm/min, NaN for rapids: kept as runs of one value
+    /// cutter radius compensation, int8 (N,): +1 left (G41/RL), -1 right (G42/RR), 0 off
     Column<std::int8_t> side;
+    /// working plane of each segment: 0 XY (G17), 1 ZX (G18), 2 YZ (G19)
     UniformColumn<std::uint8_t, 1> plane;
+    /// bool (N,): True where a compensation stage inserted the segment (corner arcs,
+    /// extension blocks)
     Column<std::uint8_t> generated;  // bool as byte
+    /// file of the block, int32 (N,): index into `files` (0 = the main program)
     UniformColumn<std::int32_t, 1> file;  // index into `files` of the file the block is in
-    // The files segments come from: the main program first, then each called program or
-    // subprogram file in the order the run first entered it.
+    /// names of the files segments come from: the main program, then each called program or
+    /// subprogram file in the order the run entered it
     std::vector<std::string> files;
     // The rates of the machine the path was run on, for the time it takes (Path.duration).
     MachineRates rates;
@@ -59,6 +80,7 @@ public:
     Path(Path&&) = default;
     Path& operator=(Path&&) = default;
 
+    /// number of segments
     std::size_t size() const { return kind.size(); }
     void reserve(std::size_t n);
     // reserve(n), or where the system refuses (an address-space limit, `ulimit -v`, strict
@@ -84,18 +106,30 @@ public:
     Vec3 center_at(std::size_t i) const;
     // Every segment's start point, resp. centre (3 per segment), feed: written out at the
     // first call and kept with the Path (thread-safe; a push() drops them).
+    /// start point of each segment, float64 (N, 3), mm, program coordinates (written out at
+    /// the first access: stored, a segment starts where the one before ended)
     std::span<const double> starts() const;
+    /// arc centre, float64 (N, 3), mm, program coordinates; NaN for rapids and lines
+    /// (written out at the first access: only arcs' are stored)
     std::span<const double> centers() const;
+    /// feed rate, float64 (N,), mm/min; NaN for rapids (written out at the first access:
+    /// stored where it changes)
     std::span<const double> feeds() const;
     // Bytes the columns hold (as stored, and what starts()/centers()/feeds() wrote out).
+    /// bytes the columns hold as stored (start and center once written out included)
     std::size_t bytes() const;
 
     // Polyline with arcs chorded within `tolerance` (mm). The first point is the start of
     // segment 0; every point carries the index of the segment it ends.
+    /// The path as an (M, 3) polyline with arcs chorded within `tolerance` mm, and the
+    /// index of the segment each point belongs to.
     void sample(double tolerance, std::vector<double>& points, std::vector<std::int64_t>& seg) const;
+    /// Path length in mm (arcs exact).
     double length(bool include_rapids = true) const;
     // Where a tool of radius r and corner radius r2 touches the surface at the end of each
     // segment with a surface normal (3D compensation); NaN rows elsewhere. mm.
+    /// Where a tool of radius r and corner radius r2 at the segment ends touches the
+    /// surface (segments with a normal; NaN elsewhere), (N, 3) mm.
     void contact_points(double r, double r2, std::vector<double>& out) const;
 
 private:

@@ -89,21 +89,41 @@ struct RunOptions {
     bool share_unchanged_path = false;
 };
 
+/// The outcome of run(): programmed and compensated paths, diagnostics and block count.
 struct Result {
-    Path nominal;  // the programmed path (what the interpreter produced)
+    /// the programmed Path (what the interpreter produced, before compensation)
+    Path nominal;
+    /// the compensated Path (after the compensation stages); the `nominal` Path itself when
+    /// no stage changed a segment (a program without compensation: stored once)
     Path path;     // after the compensation stages (empty when path_is_nominal)
     // The compensated path is `nominal`, segment for segment (RunOptions::share_unchanged_path).
     bool path_is_nominal = false;
     const Path& compensated() const { return path_is_nominal ? nominal : path; }
+    /// list of Diagnostic (info and warnings; with strict=False also the error that stopped
+    /// the run)
     std::vector<Diagnostic> diagnostics;
+    /// number of blocks in the program
     std::size_t blocks = 0;
+    /// the workpiece blank the program declares (Heidenhain BLK FORM), ((min), (max)) in
+    /// mm, or None
     std::optional<Blank> blank;  // the workpiece blank the program declares (mm), if any
+    /// numbered parameters set at the end of the run, {number: value} (LinuxCNC, Fanuc;
+    /// vacant Fanuc variables and LinuxCNC zeros left out)
     std::map<int, double> parameters;  // numbered parameters set at the end (LinuxCNC, Fanuc)
+    /// the tool table as the program left it when it edited it (LinuxCNC G10 L1: the run's
+    /// copy; the table passed in is never changed), else None
     std::optional<ToolTable> tools;    // the tool table as the program left it, when it edited it (G10 L1)
+    /// seconds the program dwells: G4 (LinuxCNC P seconds, Fanuc P milliseconds or X/U
+    /// seconds, Sinumerik F seconds or S revolutions), the dwells of LinuxCNC/Fanuc canned
+    /// cycles (G82, G86, G88, G89 P), Heidenhain CYCL DEF 9
     double dwell_seconds = 0;          // the dwells the run made (G4, the cycles' dwells)
+    /// True when no diagnostic has severity 'error'
     bool ok() const;
     // Seconds the program takes on the run's machine: its compensated path's segments, its
     // dwells and its tool changes (analysis/cycle_time.hpp).
+    /// seconds the program takes on the run's machine: path.duration summed, the dwells
+    /// (dwell_time) and path.tool_changes times the machine's tool_change_time; an estimate
+    /// without acceleration (doc/cycle-time.md)
     double cycle_time() const;
 };
 

@@ -34,6 +34,8 @@ struct StreamOptions {
     ReadLimits read;                    // max_bytes: for a program read whole; every called file too
 };
 
+/// Iterator over a run's compensated path in chunks (Path objects); see toolcomp.iter_run.
+/// After the last chunk: diagnostics, blocks, files.
 class PathStream {
 public:
     // A program file (dialect from the suffix unless given), or a parsed program.
@@ -48,18 +50,25 @@ public:
     std::optional<Path> next();
     // Waits at most `timeout` for a chunk or the end: true when next() would not wait.
     bool wait_for(std::chrono::milliseconds timeout);
-    // Stops the run (the chunks not taken are dropped).
+    /// stop the run; chunks not taken are dropped
     void close();
 
     // When the stream has ended: warnings (and, strict=false, the error), blocks read, the
     // files segments came from (Path::file indexes it; each chunk has the files known then).
+    /// warnings of the run (and with strict=False its error), once the stream has ended
     std::vector<Diagnostic> diagnostics() const;
+    /// blocks read, once the stream has ended
     std::size_t blocks() const;
+    /// the files segments came from (Path.file indexes it), once the stream has ended
     std::vector<std::string> files() const;
     // At any time: blocks read so far (every RunOptions::progress_every blocks), and segments
     // of the programmed path so far (counted, not kept).
+    /// the dialect the program is read in: 'linuxcnc', 'fanuc', 'sinumerik', 'heidenhain'
+    /// or 'rockwell'
     Dialect dialect() const { return program_ ? program_->dialect : *dialect_; }  // the program's
+    /// blocks read so far (updated every 65536 blocks, and at the end), for a progress bar
     std::size_t blocks_read() const { return blocks_read_.load(std::memory_order_relaxed); }
+    /// segments of the programmed path so far (counted, not kept)
     std::size_t programmed_segments() const { return programmed_.load(std::memory_order_relaxed); }
 
 private:

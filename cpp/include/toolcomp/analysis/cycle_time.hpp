@@ -21,6 +21,7 @@ std::vector<double> segment_seconds(const Path& path, const MachineRates& rates)
 // How often the tool in the spindle changes along the path: each time the tool column
 // changes from one segment to the next, and once before the first segment when it has a
 // tool (the run starts with none).
+/// how often the tool changes along the path (a first tool counts: the run starts with none)
 std::size_t tool_changes(const Path& path);
 
 }  // namespace toolcomp

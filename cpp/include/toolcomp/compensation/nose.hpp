@@ -6,8 +6,11 @@
 
 namespace toolcomp {
 
+/// Numbering of lathe tool tip directions (orientation 0..9).
 enum class TipConvention {
-    linuxcnc = 0,  // LinuxCNC: 1 (-X,+Z), 2 (-X,-Z), 3 (+X,-Z), 4 (+X,+Z), 5 +Z, 6 -X, 7 -Z, 8 +X
+    /// LinuxCNC: 1 (-X,+Z), 2 (-X,-Z), 3 (+X,-Z), 4 (+X,+Z), 5 +Z, 6 -X, 7 -Z, 8 +X; 0 and 9 centre
+    linuxcnc = 0,
+    /// Fanuc/Haas: as linuxcnc with the sign of X flipped (1<->4, 2<->3, 6<->8)
     fanuc = 1,     // Fanuc/Haas: the same with the sign of X flipped (1<->4, 2<->3, 6<->8)
 };
 

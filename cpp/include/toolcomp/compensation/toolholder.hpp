@@ -29,27 +29,42 @@
 
 namespace toolcomp {
 
+/// Rodrigues rotation, right-hand rule, degrees; a zero axis gives v
 Vec3 rotate_about_axis(const Vec3& v, const Vec3& axis, double angle_deg);
 
+/// Toolholder with orientation capability ($TC_CARRn[m]); angles in degrees
 struct Toolholder {
+    /// $TC_CARR1..3 (a copy on read; assign a new vector)
     Vec3 l1 = Vec3::Zero(), l2 = Vec3::Zero(), l3 = Vec3::Zero(), l4 = Vec3::Zero();
+    /// $TC_CARR7..9
     Vec3 v1 = Vec3::Zero(), v2 = Vec3::Zero();
-    double alpha1 = 0, alpha2 = 0;    // $TC_CARR13/14
+    /// $TC_CARR13
+    double alpha1 = 0, alpha2 = 0;
+    /// $TC_CARR21
     std::string axis1, axis2;         // $TC_CARR21/22 (identifiers only)
     char kind = 'T';                  // $TC_CARR23: 'T', 'P', 'M'
-    double offset1 = 0, offset2 = 0;  // $TC_CARR24/25
-    std::array<double, 4> hirth{};    // $TC_CARR26..29
-    std::array<double, 4> limits{};   // $TC_CARR30..33
-    std::string name;                 // $TC_CARR34
-    std::array<double, 6> user{};     // $TC_CARR35..40
+    /// $TC_CARR24
+    double offset1 = 0, offset2 = 0;
+    /// $TC_CARR26..29 (stored, not used)
+    std::array<double, 4> hirth{};
+    /// $TC_CARR30..33 (stored, not used)
+    std::array<double, 4> limits{};
+    /// $TC_CARR34
+    std::string name;
+    /// $TC_CARR35..40
+    std::array<double, 6> user{};
 
     // $TC_CARRn = value for the numeric fields n = 1..20, 24..33, 35..40; 41..65 (fine
     // offsets) are not modelled. Throws CompensationError("toolholder_bad_field") otherwise.
+    /// $TC_CARRn = value for n = 1..20, 24..33, 35..40
     void set(int n, double value);
     // The text fields 21, 22, 23 (kinematic type, case-insensitive) and 34.
+    /// $TC_CARRn = text for n = 21, 22, 23, 34
     void set_text(int n, std::string_view value);
 
+    /// alpha1 + offset1
     double angle1() const { return alpha1 + offset1; }
+    /// alpha2 + offset2
     double angle2() const { return alpha2 + offset2; }
 };
 
@@ -67,13 +82,20 @@ Vec3 table_zero_offset(const Toolholder& h);
 // both types so that the vectors used match the seed's table (T: l1 l2 l3; M: l1 l2):
 //   l1 = JOINT_OFFSET, l2 = BASE_TOOL, l3 = JOINT_OFFSET_PART, l4 = PART_OFFSET,
 //   v1 = AXIS1, v2 = AXIS2, type 24 -> 'T', type 56 -> 'M' [U for type 24].
+/// Generic 5-axis transformation data (TRAFO_TYPE 24 or 56)
 struct Trafo5Data {
-    int type = 24;  // MD24100 TRAFO_TYPE_n: 24 or 56
-    Vec3 base_tool = Vec3::Zero();          // MD24550 TRAFO5_BASE_TOOL
-    Vec3 joint_offset = Vec3::Zero();       // MD24560 TRAFO5_JOINT_OFFSET
-    Vec3 joint_offset_part = Vec3::Zero();  // MD24558 TRAFO5_JOINT_OFFSET_PART
-    Vec3 part_offset = Vec3::Zero();        // TRAFO5_PART_OFFSET
-    Vec3 axis1 = Vec3::Zero(), axis2 = Vec3::Zero();  // TRAFO5_AXIS1/2
+    /// MD24100 TRAFO_TYPE_n: 24 or 56
+    int type = 24;
+    /// MD24550 TRAFO5_BASE_TOOL
+    Vec3 base_tool = Vec3::Zero();
+    /// MD24560 TRAFO5_JOINT_OFFSET
+    Vec3 joint_offset = Vec3::Zero();
+    /// MD24558 TRAFO5_JOINT_OFFSET_PART
+    Vec3 joint_offset_part = Vec3::Zero();
+    /// TRAFO5_PART_OFFSET
+    Vec3 part_offset = Vec3::Zero();
+    /// TRAFO5_AXIS1
+    Vec3 axis1 = Vec3::Zero(), axis2 = Vec3::Zero();
 };
 
 // The equivalent toolholder at axis positions a1, a2 (degrees). Throws

@@ -21,9 +21,13 @@ struct SourcePos {
     int file_index = -1;
 };
 
+/// A message from the engine: stable code, severity, text and source position.
 struct Diagnostic {
+    /// stable machine-readable code, snake_case (e.g. 'arc_end_off_circle')
     std::string code;
+    /// 'info', 'warning' or 'error'
     Severity severity = Severity::error;
+    /// human-readable message (the control's own text where it has one)
     std::string message;
     SourcePos pos;
 };

@@ -95,9 +95,13 @@ struct Blank {
     int axis = 2;  // tool axis 0 X, 1 Y, 2 Z
 };
 
+/// A parsed part program (blocks of words) in one dialect; create it with Program.read or
+/// Program.parse.
 class Program {
 public:
-    std::string name;  // file name, or "<string>"
+    /// file name, or "<string>" (or the name given to parse)
+    std::string name;
+    /// dialect name: 'linuxcnc', 'fanuc', 'sinumerik', 'heidenhain' or 'rockwell'
     Dialect dialect = Dialect::linuxcnc;
     // How the text ended: '%' delimiters seen (opening / closing), and the last line with
     // content (for "program ended without M2/M30" errors).
@@ -106,10 +110,13 @@ public:
     // A program parsed leniently keeps the blocks before its first syntax error and the
     // error itself, which the interpreter raises when execution reaches that line (a
     // control reports a bad line only when it gets there: never after M2).
+    /// the first syntax error of a leniently parsed program (a Diagnostic; raised when a
+    /// run reaches its line), or None
     std::optional<Diagnostic> syntax_error;
     std::optional<Blank> blank;
     bool inch = false;  // conversational programs declare their unit (BEGIN PGM ... INCH)
 
+    /// number of blocks
     std::size_t size() const { return blocks_.size(); }
     const Column<Block>& blocks() const { return blocks_; }
     std::span<const Word> words(const Block& b) const {
@@ -122,6 +129,7 @@ public:
     std::span<const Statement> statements(const Block& b) const {
         return {statements_.data() + b.first_statement, b.statement_count};
     }
+    /// number of words in all blocks
     std::size_t word_count() const { return words_.size(); }
     const expr::Expr& expression(std::int32_t i) const { return exprs_[static_cast<std::size_t>(i)]; }
 

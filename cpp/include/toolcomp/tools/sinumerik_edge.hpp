@@ -23,34 +23,52 @@
 
 namespace toolcomp::sinumerik {
 
+/// One cutting edge $TC_DPn[t,d] (n = 1..25) with the setup ($TC_ECP) and sum ($TC_SCP) offsets
+/// of its active DL set. Values are copies, not references into a table.
 struct SinumerikEdge {
+    /// writable float64 (25,) view: dp[i] is $TC_DP(i+1)
     std::array<double, 25> dp{};   // $TC_DP1..25
+    /// writable float64 (25,) view: ecp[i] is $TC_ECP(i+1) (setup offsets, active DL)
     std::array<double, 25> ecp{};  // $TC_ECP1..25 (setup offsets, active DL)
+    /// writable float64 (25,) view: scp[i] is $TC_SCP(i+1) (sum offsets, active DL)
     std::array<double, 25> scp{};  // $TC_SCP1..25 (sum offsets, active DL)
+    /// number of the stored DL set
     int dl = 1;                    // number of the stored DL set (for GETTCOR's _DL check)
 
     // $TC_DPn, n = 1..25; throws ToolTableError("sinumerik_bad_dp") otherwise.
+    /// $TC_DPn, n = 1..25
     double DP(int n) const;
     double& DP(int n);
+    /// $TC_ECPn, n = 1..25
     double ECP(int n) const;
+    /// $TC_SCPn, n = 1..25
     double SCP(int n) const;
 
-    int type() const;  // DP1 rounded to an integer
+    /// DP1 rounded to an integer
+    int type() const;
     // Total length L_i, i = 1..3 (adapter DP21..23 included); throws for other i.
+    /// total length L_i (i = 1..3): geometry + wear (+ sum/setup offsets) + adapter
     double length(int i, double wear_sign = 1.0) const;
     // Total radius, with an optional OFFN allowance.
+    /// total radius DP6 + wear (+ sum/setup offsets) + OFFN
     double radius(double wear_sign = 1.0, double offn = 0.0) const;
 
     bool operator==(const SinumerikEdge&) const = default;
 };
 
 // True for turning and grinding tools (types 400..599); everything else maps like milling.
+/// True for turning and grinding tools (types 400..599)
 bool is_turning_type(int tool_type);
 
+/// SD42940 TOOL_LENGTH_CONST, SD42950 TOOL_LENGTH_TYPE, SD42930 WEAR_SIGN
 struct SinumerikLengthSettings {
-    int tool_length_const = 0;  // SD42940: 0, 17, 18, 19, -17, -18, -19
-    int tool_length_type = 0;   // SD42950: 0 by tool type, 1 always milling, 2 always turning
-    bool wear_sign_inverted = false;  // SD42930 WEAR_SIGN != 0
+    /// SD42940: 0, 17, 18, 19, -17, -18, -19
+    int tool_length_const = 0;
+    /// SD42950: 0 by tool type, 1 always milling, 2 always turning
+    int tool_length_type = 0;
+    /// SD42930 WEAR_SIGN != 0
+    bool wear_sign_inverted = false;
+    /// +1.0, or -1.0 when inverted
     double wear_sign() const { return wear_sign_inverted ? -1.0 : 1.0; }
 };
 
@@ -86,6 +104,7 @@ SinumerikEdgeMap parse_tc_dp(std::string_view text, int max_t = 32000, int max_d
 
 // The same form back, ordered by (t, d): DP1 always, other DP/ECP/SCP values when non-zero,
 // shortest round-trip numbers. parse_tc_dp(write_tc_dp(m)) == m (the `dl` field excepted).
+/// {(t, d): Edge} back to '$TC_DPn[t,d]=value' lines, ordered by (t, d)
 std::string write_tc_dp(const SinumerikEdgeMap& edges);
 
 }  // namespace toolcomp::sinumerik

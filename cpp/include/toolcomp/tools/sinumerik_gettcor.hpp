@@ -43,14 +43,22 @@ enum GettcorStatus : int {
     gettcor_bad_coord = -9,         // ':' not followed by a valid coordinate-system letter
 };
 
+/// Tool environment for GETTCOR: plane, length settings, MD20360 diameter bits
 struct GettcorSettings {
+    /// 17, 18 or 19
     Plane plane = Plane::xy;            // active plane of the tool environment
+    /// LengthSettings (a copy on read)
     SinumerikLengthSettings lengths;    // SD42940 / SD42950 / SD42930
-    bool geometry_diameter = false;     // MD20360 bit 1 [U]
-    bool wear_diameter = false;         // MD20360 bit 0 [U]
+    /// MD20360 bit 1
+    bool geometry_diameter = false;
+    /// MD20360 bit 0
+    bool wear_diameter = false;
+    /// 0 = X, 1 = Y, 2 = Z
     int transverse_axis = 0;            // geometry-axis index of the transverse axis (X)
+    /// MD18116 MM_NUM_TOOL_ENV
     int tool_env_memory = 0;            // MD18116 MM_NUM_TOOL_ENV; no environments are stored
 
+    /// MD20360 TOOL_PARAMETER_DEF_MASK: bit 0 wear, bit 1 geometry in diameter
     void set_parameter_def_mask(unsigned mask) {
         wear_diameter = (mask & 1u) != 0;
         geometry_diameter = (mask & 2u) != 0;

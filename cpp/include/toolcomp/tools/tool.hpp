@@ -12,23 +12,39 @@
 
 namespace toolcomp {
 
+/// One cutting edge (D number) of a tool. Lengths in mm, angles in degrees.
 struct CuttingEdge {
+    /// D number / offset number
     int number = 1;                      // D number / offset number (1 for single-edge tools)
+    /// X Y Z tool length vector, mm (read-only float64 (3,) view; assign a new vector)
     Eigen::Vector3d length{0, 0, 0};     // X Y Z offsets (tool length vector), mm
-    std::array<double, 3> rotary{0, 0, 0};  // A B C offsets, degrees
-    std::array<double, 3> uvw{0, 0, 0};  // U V W offsets, mm
+    /// A B C offsets, degrees
+    std::array<double, 3> rotary{0, 0, 0};
+    /// U V W offsets, mm
+    std::array<double, 3> uvw{0, 0, 0};
+    /// cutter / nose radius, mm
     double radius = 0;                   // cutter/nose radius, mm (LinuxCNC D is the DIAMETER)
-    double corner_radius = 0;            // R2, mm
+    /// corner radius R2, mm
+    double corner_radius = 0;
+    /// X Y Z wear, mm
     Eigen::Vector3d length_wear{0, 0, 0};  // wear deltas, added to length
-    double radius_wear = 0;              // added to radius
-    double corner_radius_wear = 0;       // added to corner_radius
+    /// radius wear, mm, added to radius
+    double radius_wear = 0;
+    /// corner radius wear, mm, added to corner_radius
+    double corner_radius_wear = 0;
+    /// lathe tip number 0-9 as in the table
     int orientation = 0;                 // lathe tip number 0-9 exactly as the table gives it
-    double front_angle = 0;              // degrees
-    double back_angle = 0;               // degrees
+    /// front angle, degrees
+    double front_angle = 0;
+    /// back angle, degrees
+    double back_angle = 0;
 
-    Eigen::Vector3d effective_length() const;  // length + length_wear
-    double effective_radius() const;           // radius + radius_wear
-    double effective_corner_radius() const;    // corner_radius + corner_radius_wear
+    /// length + length_wear
+    Eigen::Vector3d effective_length() const;
+    /// radius + radius_wear
+    double effective_radius() const;
+    /// corner_radius + corner_radius_wear, mm
+    double effective_corner_radius() const;
 
     friend bool operator==(const CuttingEdge& a, const CuttingEdge& b);
     friend bool operator!=(const CuttingEdge& a, const CuttingEdge& b) { return !(a == b); }
@@ -39,18 +55,27 @@ struct CuttingEdge {
 enum class ToolShape { end_mill, toroid, ball };
 ToolShape tool_shape(const CuttingEdge& e);
 
+/// A tool with one or more cutting edges (values, not references into a table).
 struct Tool {
+    /// tool number (T), >= 0
     int number = 0;
+    /// tool changer pocket number, >= 0
     int pocket = 0;
+    /// tool name
     std::string name;
+    /// comment text of the table entry
     std::string comment;
+    /// the cutting edges (a tuple of copies; assign a new sequence to change them)
     std::vector<CuttingEdge> edges{CuttingEdge{}};  // at least one; edge numbers unique
 
     // The edge with D number `d`; throws ToolTableError("tool_no_such_edge") if absent.
+    /// a copy of the edge with D number d
     const CuttingEdge& edge(int d = 1) const;
     CuttingEdge& edge(int d = 1);
+    /// whether the tool has an edge with D number d
     bool has_edge(int d) const;
     // Insert or replace the edge with e.number (kept sorted by insertion order).
+    /// insert or replace the edge with edge.number
     void set_edge(const CuttingEdge& e);
 
     friend bool operator==(const Tool& a, const Tool& b);

@@ -32,6 +32,8 @@ struct TableSource {
 };
 }  // namespace detail
 
+/// Tool table; reads and writes LinuxCNC .tbl, CSV, JSON and Heidenhain TOOL.T losslessly.
+/// Tools are stored in mm and degrees; `units` is the unit of the file.
 class ToolTable {
 public:
     ToolTable() = default;
@@ -41,18 +43,23 @@ public:
     // Mutable access; keep the number unchanged (use remove + set to renumber).
     Tool* find(int number);
     // Throws ToolTableError("table_no_such_tool") when absent.
+    /// a copy of tool `number`; raises ToolTableError when absent
     const Tool& at(int number) const;
     bool contains(int number) const { return find(number) != nullptr; }
     // Insert, or replace the tool with the same number (keeps its place in the file).
     // Validates with validate_tool().
+    /// insert, or replace the tool with the same number
     void set(Tool t);
     // Removes the tool if present; returns whether it was.
+    /// remove a tool; returns whether it was there
     bool remove(int number);
+    /// a tuple of copies of the tools, in file order
     const std::vector<Tool>& tools() const { return tools_; }
     std::size_t size() const { return tools_.size(); }
     bool empty() const { return tools_.empty(); }
 
     // The length unit of the file: numbers are converted from/to it on read/write.
+    /// length unit of the file: 'mm' or 'inch' (changing it rewrites every tool on write)
     LengthUnit units() const { return units_; }
     void set_units(LengthUnit u) { units_ = u; }
 
