@@ -31,6 +31,12 @@ void interpret_only(const Program& program, const ToolTable* tools, const RunOpt
 // What start.hpp runs of a program file: its first piece and on, read again.
 std::function<void(const RunOptions&, MotionSink&)> beginning_of_file(const std::string& path, Dialect dialect,
                                                                       const ToolTable* tools, const ReadLimits& limits);
+// The same of `src`'s file: the Program already read when it was read whole (read once,
+// not again for each look at its beginning), else beginning_of_file.
+class ProgramSource;
+std::function<void(const RunOptions&, MotionSink&)> beginning_of(const ProgramSource& src, const std::string& path,
+                                                                 Dialect dialect, const ToolTable* tools,
+                                                                 const ReadLimits& limits);
 
 // Memory exhausted anywhere in a run (a Path's columns, a called file's text, the
 // interpreter's state) is the run's error with a stable code, ProgramError("out_of_memory"),

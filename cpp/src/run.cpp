@@ -191,6 +191,12 @@ Beginning beginning_of_file(const std::string& path, Dialect dialect, const Tool
     };
 }
 
+Beginning beginning_of(const ProgramSource& src, const std::string& path, Dialect dialect, const ToolTable* tools,
+                       const ReadLimits& limits) {
+    if (src.in_pieces()) return beginning_of_file(path, dialect, tools, limits);
+    return [&src, tools](const RunOptions& o, MotionSink& sink) { interpret_only(src.first(), tools, o, sink, {}); };
+}
+
 void run_pipeline(const Program& program, const ToolTable* tools, const RunOptions& options,
                   const ControlProfile& profile, MotionSink& nominal, MotionSink& compensated,
                   std::vector<Diagnostic>& diagnostics, iso::InterpretOutput& out, const PipelineHooks& hooks) {
@@ -294,8 +300,8 @@ namespace {
 Result run_file_main(const std::string& path, std::optional<Dialect> dialect, const ToolTable* tools,
                      const RunOptions& run_options) {
     const Dialect d = dialect_of_file(path, dialect);
-    const RunOptions options = with_start(run_options, beginning_of_file(path, d, tools, run_options.limits));
-    ProgramSource src(path, d, options.limits, kPieceBytes, /*limit_pieces=*/true, {}, options.threads);
+    ProgramSource src(path, d, run_options.limits, kPieceBytes, /*limit_pieces=*/true, {}, run_options.threads);
+    const RunOptions options = with_start(run_options, beginning_of(src, path, d, tools, run_options.limits));
     PipelineHooks hooks;
     hooks.next_piece = src.next_piece();
     try {

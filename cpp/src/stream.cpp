@@ -129,13 +129,12 @@ void PathStream::produce() {
     PipelineHooks hooks;
     RunOptions run = options_.run;  // its progress also tells blocks_read()
     const ToolTable* tools = tools_ ? &*tools_ : nullptr;
-    try {
-        run = with_start(run, program_ ? Beginning([&](const RunOptions& o, MotionSink& sink) {
-                                  interpret_only(*program_, tools, o, sink, {});
-                              })
-                                       : beginning_of_file(path_, *dialect_, tools, options_.read));
-    } catch (...) {  // an option the run refuses: the run says so
-    }
+    auto settle_start = [&](const Beginning& beginning) {
+        try {
+            run = with_start(run, beginning);
+        } catch (...) {  // an option the run refuses: the run says so
+        }
+    };
     run.progress = [this, user = options_.run.progress](std::size_t n) {
         blocks_read_.store(n, std::memory_order_relaxed);
         if (user) user(n);
@@ -156,11 +155,13 @@ void PathStream::produce() {
     try {
         if (program_) {
             blocks = program_->size();
+            settle_start([&](const RunOptions& o, MotionSink& sink) { interpret_only(*program_, tools, o, sink, {}); });
             pipeline(*program_);
         } else {
             ProgramSource src(path_, *dialect_, options_.read, options_.piece_bytes, /*limit_pieces=*/false, [&] {
                 if (cancelled()) throw Cancelled{};
             }, run.threads);
+            settle_start(beginning_of(src, path_, *dialect_, tools, options_.read));
             hooks.next_piece = src.next_piece();
             try {
                 pipeline(src.first());

@@ -41,6 +41,7 @@ public:
     const Program& first() const { return current_; }
     // For the interpreter (iso::InterpretOptions::next_piece); empty when read whole.
     std::function<const Program*()> next_piece();
+    bool in_pieces() const { return parser_ != nullptr; }
     std::size_t blocks() const { return blocks_; }  // blocks read so far
     // Blocks the whole file may hold, from the size of the file and the first piece.
     std::size_t estimated_blocks() const { return estimate_; }
