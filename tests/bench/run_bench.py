@@ -412,7 +412,7 @@ class Dialect(NamedTuple):
 
 DIALECTS = (
     Dialect("ISO", "LinuxCNC, G42.1 D2, tool table T1", "linuxcnc", ".ngc", write_program, ISO_TOOLS, False),
-    Dialect("Sinumerik", "840D, G42, $TC_DP tool data", "sinumerik", ".mpf", write_sinumerik, None, True),
+    Dialect("Sinumerik", "840D, G42, $TC_DP tool data", "sinumerik", ".mpf", write_sinumerik, None, False),
     Dialect("Heidenhain", "Klartext L/CR, RR, TOOL DEF", "heidenhain", ".h", write_heidenhain, None, True),
 )
 ISO_NO_COMP = Dialect("ISO no comp", "LinuxCNC, no compensation", "linuxcnc", ".ngc",
