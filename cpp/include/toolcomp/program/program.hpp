@@ -69,8 +69,15 @@ struct Token {
     int column = 0;
     std::int32_t expr = -1;  // a computed value: index of its expression (Program::expression)
 
-    // key == k, lengths first (std::string == "literal" calls strlen and memcmp).
-    bool is(std::string_view k) const noexcept { return std::string_view(key) == k; }
+    // key == k, lengths first, byte by byte: with `k` a literal the loop unrolls into a few
+    // compares (std::string == "literal" calls strlen and memcmp; string_view == still calls
+    // memcmp, a call a word for the one-letter keys of every block).
+    bool is(std::string_view k) const noexcept {
+        if (key.size() != k.size()) return false;
+        for (std::size_t i = 0; i < k.size(); ++i)
+            if (key[i] != k[i]) return false;
+        return true;
+    }
 };
 
 struct Comment {
