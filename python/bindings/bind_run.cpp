@@ -342,10 +342,12 @@ void bind_run(py::module_& m) {
         .def_readonly("parameters", &Result::parameters, pydoc::Result_parameters)
         .def_property_readonly(
             "blank",
-            [](const Result& r) -> py::object {
-                if (!r.blank) return py::none();
-                auto t = [](const Vec3& v) { return py::make_tuple(v.x(), v.y(), v.z()); };
-                return py::make_tuple(t(r.blank->min), t(r.blank->max));
+            [](const Result& r) {
+                using Xyz = std::tuple<double, double, double>;
+                std::optional<std::tuple<Xyz, Xyz>> out;
+                auto t = [](const Vec3& v) { return Xyz(v.x(), v.y(), v.z()); };
+                if (r.blank) out.emplace(t(r.blank->min), t(r.blank->max));
+                return out;
             },
             pydoc::Result_blank)
         .def("__repr__", [](const Result& r) {

@@ -35,7 +35,7 @@ StreamOptions stream_options(bool strict, bool block_delete, std::optional<Contr
 void bind_stream(py::module_& m) {
     py::class_<PathStream, std::shared_ptr<PathStream>>(
         m, "PathStream", pydoc::PathStream)
-        .def("__iter__", [](py::object self) { return self; })
+        .def("__iter__", [](std::shared_ptr<PathStream> self) { return self; })
         .def("__next__",
              [](PathStream& s) {
                  // Waits in slices, so that Ctrl-C (KeyboardInterrupt) is seen while a chunk is made.
@@ -60,7 +60,7 @@ void bind_stream(py::module_& m) {
             py::gil_scoped_release nogil;
             s.close();
         }, pydoc::PathStream_close)
-        .def("__enter__", [](py::object self) { return self; })
+        .def("__enter__", [](std::shared_ptr<PathStream> self) { return self; })
         .def("__exit__", [](PathStream& s, py::args) {
             py::gil_scoped_release nogil;
             s.close();

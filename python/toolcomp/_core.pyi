@@ -1772,7 +1772,7 @@ class Result:
             
         """
     @property
-    def blank(self) -> typing.Any:
+    def blank(self) -> tuple[tuple[float, float, float], tuple[float, float, float]] | None:
         """
         the workpiece blank the program declares (Heidenhain BLK FORM), ((min), (max)) in mm, or None
         """
@@ -2068,11 +2068,11 @@ class PathStream:
     """
     Iterator over a run's compensated path in chunks (Path objects); see toolcomp.iter_run. After the last chunk: diagnostics, blocks, files.
     """
-    def __enter__(self) -> typing.Any:
+    def __enter__(self) -> PathStream:
         ...
     def __exit__(self, *args) -> None:
         ...
-    def __iter__(self) -> typing.Any:
+    def __iter__(self) -> PathStream:
         ...
     def __next__(self) -> Path:
         ...
