@@ -112,3 +112,16 @@ def test_a_syntax_error_after_m30_is_raised_as_when_read_whole(tmp_path):
         with pytest.raises(tc.ParseError) as e:
             run()
         assert e.value.line == 604
+
+
+def test_check_file_reads_pieces_as_parse_reads_the_whole(tmp_path):
+    text = pocket(200)
+    f = write(tmp_path, "CHECK.MPF", text)
+    assert tc.Program.check_file(f) == len(tc.Program.parse(text, dialect="sinumerik"))
+    # a macro defined early is known in later pieces; a syntax error after M30 is found
+    bad = "G1 X1 F100\n" * 5000 + "DEFINE STEP AS G1\nSTEP X2\nM30\nG1 X=(((\n"
+    g = write(tmp_path, "BAD.MPF", bad)
+    for check in (lambda: tc.Program.check_file(g), lambda: tc.Program.parse(bad, dialect="sinumerik")):
+        with pytest.raises(tc.ParseError) as e:
+            check()
+        assert e.value.line == 5004
