@@ -118,10 +118,15 @@ def test_check_file_reads_pieces_as_parse_reads_the_whole(tmp_path):
     text = pocket(200)
     f = write(tmp_path, "CHECK.MPF", text)
     assert tc.Program.check_file(f) == len(tc.Program.parse(text, dialect="sinumerik"))
-    # a macro defined early is known in later pieces; a syntax error after M30 is found
-    bad = "G1 X1 F100\n" * 5000 + "DEFINE STEP AS G1\nSTEP X2\nM30\nG1 X=(((\n"
+    # A macro defined in the second piece (the first is 64 kB) is known in the third: its
+    # text, a syntax error, is met where it is used (line 18002).
+    bad = "G1 X1 F100\n" * 8000 + "DEFINE OOPS AS X=(((\n" + "G1 X1 F100\n" * 10000 + "OOPS\nM30\n"
     g = write(tmp_path, "BAD.MPF", bad)
-    for check in (lambda: tc.Program.check_file(g), lambda: tc.Program.parse(bad, dialect="sinumerik")):
-        with pytest.raises(tc.ParseError) as e:
-            check()
-        assert e.value.line == 5004
+    # A syntax error after M30 is found too.
+    h = write(tmp_path, "AFTER.MPF", "G1 X1 F100\n" * 20000 + "M30\nG1 X=(((\n")
+    for f, line in ((g, 18002), (h, 20002)):
+        text = open(f).read()
+        for check in (lambda: tc.Program.check_file(f), lambda: tc.Program.parse(text, dialect="sinumerik")):
+            with pytest.raises(tc.ParseError) as e:
+                check()
+            assert e.value.line == line
