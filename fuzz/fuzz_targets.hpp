@@ -137,11 +137,58 @@ inline Outcome heidenhain_parse(const std::uint8_t* data, std::size_t size) {
     return ok_or_error([&] { (void)heidenhain::parse(text, "<fuzz>", strict); });
 }
 
-// Sinumerik 840D front end; the last byte's low bit parses leniently.
+// A Sinumerik text read in pieces of whole lines (at least `piece` bytes each) must give the
+// blocks, tokens and syntax error of the text parsed whole (both leniently): the line numbers
+// and DEFINE macros go on across pieces. A difference is a bug (std::logic_error).
+// Token::param is an expression's index in assignments ("=", "FRAME=": the target's) and in
+// value calls (1 + the target's, 0 when not assigned), and each piece numbers its expressions
+// from 0: there only whether there is one is compared.
+inline bool same_param(const Token& a, const Token& b) {
+    if (a.key == "=" || a.key == "FRAME=") return true;
+    if (a.key.size() > 1 && !a.text.empty()) return (a.param > 0) == (b.param > 0);
+    return a.param == b.param;
+}
+inline bool same_token(const Token& a, const Token& b) {
+    return a.key == b.key && a.text == b.text && std::memcmp(&a.value, &b.value, sizeof(double)) == 0 &&
+           a.has_value == b.has_value && a.sign_only == b.sign_only && same_param(a, b) && a.column == b.column &&
+           (a.expr < 0) == (b.expr < 0);
+}
+inline void same_sinumerik_in_pieces(std::string_view text, std::size_t piece) {
+    const Program whole = sinumerik::parse(text, "<fuzz>", /*strict=*/false);
+    sinumerik::PieceParser parser("<fuzz>", /*strict=*/false, piece);
+    std::size_t block = 0;
+    Program last;
+    for (std::size_t pos = 0; pos < text.size() && !parser.done();) {
+        std::size_t end = text.find('\n', std::min(text.size(), pos + piece - 1));
+        end = end == std::string_view::npos ? text.size() : end + 1;
+        last = parser.parse(text.substr(pos, end - pos), std::move(last));
+        pos = end;
+        for (std::size_t i = 0; i < last.size(); ++i, ++block) {
+            if (block >= whole.size()) throw std::logic_error("sinumerik pieces: more blocks than the whole text");
+            const Block& a = whole.blocks()[block];
+            const Block& b = last.blocks()[i];
+            const auto ta = whole.tokens(a), tb = last.tokens(b);
+            bool same = a.line == b.line && a.block_delete == b.block_delete && ta.size() == tb.size();
+            for (std::size_t k = 0; same && k < ta.size(); ++k) same = same_token(ta[k], tb[k]);
+            if (!same) throw std::logic_error("sinumerik pieces: block " + std::to_string(block) + " differs");
+        }
+    }
+    if (block != whole.size()) throw std::logic_error("sinumerik pieces: fewer blocks than the whole text");
+    const auto& ea = whole.syntax_error;
+    const auto& eb = last.syntax_error;
+    if (ea.has_value() != eb.has_value() || (ea && (ea->code != eb->code || ea->pos.line != eb->pos.line ||
+                                                    ea->pos.column != eb->pos.column)))
+        throw std::logic_error("sinumerik pieces: the syntax error differs");
+}
+
+// Sinumerik 840D front end; the last byte's low bit parses leniently, the first byte sets the
+// size of the pieces the text is also read in.
 inline Outcome sinumerik_parse(const std::uint8_t* data, std::size_t size) {
     const std::string_view text = as_text(data, size);
     const bool strict = size == 0 || (data[size - 1] & 1) == 0;
-    return ok_or_error([&] { (void)sinumerik::parse(text, "<fuzz>", strict); });
+    const Outcome o = ok_or_error([&] { (void)sinumerik::parse(text, "<fuzz>", strict); });
+    same_sinumerik_in_pieces(text, 1 + (size ? data[0] % 64 : 0));
+    return o;
 }
 
 // ---- the whole pipeline -----------------------------------------------------------------
