@@ -145,7 +145,7 @@ inline Outcome heidenhain_parse(const std::uint8_t* data, std::size_t size) {
 // from 0: there only whether there is one is compared.
 inline bool same_param(const Token& a, const Token& b) {
     if (a.key == "=" || a.key == "FRAME=") return true;
-    if (a.key.size() > 1 && !a.text.empty()) return (a.param > 0) == (b.param > 0);
+    if (sinumerik::is_value_call(a.key)) return (a.param > 0) == (b.param > 0);
     return a.param == b.param;
 }
 inline bool same_token(const Token& a, const Token& b) {

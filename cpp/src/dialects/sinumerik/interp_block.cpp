@@ -143,7 +143,7 @@ void Interp::block(std::span<const Token> t) {
                 frame_assign(x);
                 continue;
             }
-            if (x.is("GETTCOR") || x.is("SETTCOR") || x.is("LENTOAX")) {
+            if (is_value_call(x.key)) {
                 value_call(x);
                 continue;
             }

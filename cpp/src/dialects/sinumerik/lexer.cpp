@@ -17,8 +17,6 @@ bool condition_keyword(std::string_view k) { return k == "IF" || k == "WHILE" ||
 bool jump_keyword(std::string_view k) { return k == "GOTOF" || k == "GOTOB" || k == "GOTO" || k == "GOTOC"; }
 // Synchronized actions run beside the program in the interpolation cycle.
 bool synchronized_action(std::string_view k) { return k == "WHENEVER" || k == "WHEN" || k == "EVERY" || k == "FROM"; }
-// Calls whose result may be assigned ("R1=GETTCOR(...)").
-bool value_call(std::string_view k) { return k == "GETTCOR" || k == "SETTCOR" || k == "LENTOAX"; }
 
 // A channel's axis or spindle name as a machine datum's index: X, Y, Z, A, B, C, U, V, W (with
 // digits: X1, the machine axes), AX1, SP1, S1.
@@ -564,7 +562,7 @@ private:
         if (i_ < s_.size() && ident_start(s_[i_])) {
             std::string fn = ident();
             skip();
-            if (value_call(fn) && i_ < s_.size() && s_[i_] == '(') {
+            if (is_value_call(fn) && i_ < s_.size() && s_[i_] == '(') {
                 t.key = fn;
                 t.text = parenthesised();
                 t.param = target + 1;
@@ -645,6 +643,8 @@ bool is_address(std::string_view n) {
         if (m == n) return true;
     return false;
 }
+
+bool is_value_call(std::string_view n) { return n == "GETTCOR" || n == "SETTCOR" || n == "LENTOAX"; }
 
 namespace detail {
 

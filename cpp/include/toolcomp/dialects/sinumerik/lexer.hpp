@@ -78,6 +78,10 @@ bool has_control_flow(std::string_view text);
 // assignment (single letters, and CR, AR, TURN, DISC, OFFN, RPL, I1, J1, K1 ...).
 bool is_address(std::string_view upper_name);
 
+// Calls whose result may be assigned ("R1=GETTCOR(...)"): GETTCOR, SETTCOR, LENTOAX. Such a
+// token's param is 1 + the target expression's index (0 when the result is not assigned).
+bool is_value_call(std::string_view upper_name);
+
 // Names with digits that are one keyword, not an address and a number ("CDOF2", not CDOF = 2;
 // "DIAM90"). Every keyword of the interpreter that holds a digit must be here (checked where
 // the interpreter lists its keywords).
