@@ -32,6 +32,29 @@ TEST_CASE("sinumerik has_control_flow: CAM text streams") {
     CHECK_FALSE(has_control_flow(""));
 }
 
+// CAM lines of lone letters are passed over 32 bytes at a time: what matters is found at any
+// place, across the edges of those runs, and a comment or string opened in one run goes on.
+TEST_CASE("sinumerik has_control_flow: found at every offset of long CAM text") {
+    const std::string cam = "G1 X100.25 Y-2.5 F1200\nG3 X95 Y7 I0 J2.5\n";  // 40 bytes a pair of lines
+    std::string text;
+    for (int i = 0; i < 8; ++i) text += cam;
+    REQUIRE_FALSE(has_control_flow(text));
+    for (std::size_t at = 0; at <= text.size(); ++at) {
+        INFO("at byte " << at);
+        const std::string before = text.substr(0, at), after = text.substr(at);
+        CHECK(has_control_flow(before + "\nGOTOF E\n" + after));
+        CHECK(has_control_flow(before + " if " + after));  // lower case
+        CHECK(has_control_flow(before + ":" + after));
+        CHECK_FALSE(has_control_flow(before + "X" + after));  // a lone letter more
+        CHECK_FALSE(has_control_flow(before + "\n; GOTOF E:\n" + after));  // a comment line
+        CHECK_FALSE(has_control_flow(before + "\nMSG(\"" + std::string(40, 'A') + "\")\n" + after));
+        // A comment to the end of the line hides a jump written 40 bytes later on that line.
+        CHECK_FALSE(has_control_flow(before + ";" + std::string(40, ' ') + "GOTOF E\n" + after));
+        // A string does not hide a jump (only ';' comments do).
+        CHECK(has_control_flow(before + "\"" + std::string(40, ' ') + "\" GOTOB A\n" + after));
+    }
+}
+
 TEST_CASE("sinumerik PieceParser: pieces go on with the line numbers, macros and syntax error") {
     using toolcomp::sinumerik::PieceParser;
     const std::string a = "DEFINE FEED AS F500\nG1 X1 FEED\n", b = "\nG1 X2 FEED\n", c = "G1 X=(((\nG1 X3\n";

@@ -177,10 +177,14 @@ double metric_coarse_pitch(double size) {
 
 // The thread's pitch in program units per revolution: PIT in the unit _PTAB / _PITA names
 // (0: the program's, 1: mm, 2: threads per inch, 3: inch), or the metric size MPIT.
+[[noreturn]] void wrong_pitch(const std::string& name, const std::string& what) {
+    refuse(code::alarm_61001, "61001 Thread pitch wrong (" + name + ": " + what + ")");
+}
+
 double thread_pitch(const std::string& name, double mpit, double pit, double ptab, const Setting& s) {
     const bool inch = s.unit != 1;
     const double in = 25.4 / s.unit;  // one inch in program units
-    auto wrong = [&](const std::string& what) { refuse(code::alarm_61001, "61001 Thread pitch wrong (" + name + ": " + what + ")"); };
+    auto wrong = [&](const std::string& what) { wrong_pitch(name, what); };
     if (ptab == 0) {
         if (pit == 0 && mpit == 0) wrong("neither PIT nor MPIT");
         if (mpit == 0) return std::fabs(pit);
@@ -193,7 +197,7 @@ double thread_pitch(const std::string& name, double mpit, double pit, double pta
     if (ptab == 1) return std::fabs(pit) / s.unit;
     if (ptab == 2) return in / std::fabs(pit);
     if (ptab == 3) return std::fabs(pit) * in;
-    wrong("_PTAB " + shortest_number(ptab));
+    wrong_pitch(name, "_PTAB " + shortest_number(ptab));
 }
 
 // CYCLE84(RTP, RFP, SDIS, DP, DPR, DTB, SDAC, MPIT, PIT, POSS, SST, SST1, _AXN, _PTAB,

@@ -189,6 +189,14 @@ void check_line_lengths(std::string_view text, std::size_t max_line_length, bool
     const std::size_t n = text.size();
     std::size_t pos = 0;
     for (;;) {
+        // The lines that start within max_line_length + 1 bytes of pos and end there (at the
+        // last line end in those bytes) are short enough: passed over in one look.
+        if (n - pos <= max_line_length) return;
+        if (const void* last = memrchr(b + pos, '\n', max_line_length + 1)) {
+            pos = static_cast<std::size_t>(static_cast<const char*>(last) - b) + 1;
+            continue;
+        }
+        // The line at pos has no end within them: its length without the CRs before its end.
         const void* hit = std::memchr(b + pos, '\n', n - pos);
         const std::size_t end = hit ? static_cast<std::size_t>(static_cast<const char*>(hit) - b) : n;
         std::size_t content_end = end;  // CRs right before the "\n" belong to the line end

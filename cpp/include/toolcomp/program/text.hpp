@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <string>
 #include <string_view>
 
@@ -32,7 +33,9 @@ inline std::size_t line_ends(std::string_view text) {
 // Returns the length of the part decided: from there on, call again with more text.
 inline std::size_t cr_line_ends_to_lf(char* text, std::size_t n, bool at_end) {
     for (std::size_t i = 0; i < n; ++i) {
-        if (text[i] != '\r') continue;
+        const void* cr = std::memchr(text + i, '\r', n - i);
+        if (!cr) return n;
+        i = static_cast<std::size_t>(static_cast<const char*>(cr) - text);
         std::size_t j = i;
         while (j < n && text[j] == '\r') ++j;
         if (j == n && !at_end) return i;

@@ -138,7 +138,6 @@ void LineLexer::run() {
             fail(code::bad_character, "Bad character '" + shown + "' used");
         }
         Word w{u, 0, col()};
-        const std::size_t word_start = i_;
         ++i_;
         // LinuxCNC reads a line number as unsigned digits
         if (u == 'N' && prog_.dialect == Dialect::linuxcnc && i_ < s_.size() && (s_[i_] == '+' || s_[i_] == '-'))

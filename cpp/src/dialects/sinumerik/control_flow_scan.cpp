@@ -22,6 +22,21 @@ bool steering(std::string_view upper_word) {
     return false;
 }
 
+// Whether 32 bytes from p (and the one after them) may hold what the scan looks for: a ':',
+// ';' or '"', or two letters in a row (every steering word has two or more). A CAM line ("G1
+// X100 Y2.5") has only lone letters. The loop is one the compiler vectorises.
+constexpr std::size_t kRun = 32;
+bool may_matter(const char* p) {
+    unsigned any = 0;
+    for (std::size_t k = 0; k < kRun; ++k) {
+        const auto c = static_cast<unsigned char>(p[k]), d = static_cast<unsigned char>(p[k + 1]);
+        const bool lc = static_cast<unsigned char>((c | 0x20) - 'a') < 26 || c == '_';
+        const bool ld = static_cast<unsigned char>((d | 0x20) - 'a') < 26 || d == '_';
+        any |= static_cast<unsigned>(lc & ld) | (c == ':') | (c == ';') | (c == '"');
+    }
+    return any != 0;
+}
+
 }  // namespace
 
 bool has_control_flow(std::string_view text) {
@@ -29,6 +44,10 @@ bool has_control_flow(std::string_view text) {
     std::size_t n = 0;  // letters of the run so far (a run longer than the longest keyword: none)
     bool comment = false, quoted = false;  // after ';' (not in a string); inside "..."
     for (std::size_t i = 0; i <= text.size(); ++i) {
+        // Outside comments and strings, with no letter run going on, runs of lone letters
+        // are passed over whole.
+        while (n == 0 && !comment && !quoted && i % kRun == 0 && text.size() - i > kRun && !may_matter(text.data() + i))
+            i += kRun;
         const char c = i < text.size() ? text[i] : '\n';
         const bool letter = !comment && (ascii_alpha(c) || c == '_');
         if (letter) {

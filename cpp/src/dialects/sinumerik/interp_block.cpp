@@ -201,7 +201,7 @@ void Interp::block(std::span<const Token> t) {
             }
         }
         words = true;  // an address, G/M function, keyword or call: more than a computation
-        if (is_unsupported(k) || (x.is("G") && (x.value == G110 || x.value == G111 || x.value == G112)))
+        if (is_unsupported(k) || (x.is("G") && (x.value == static_cast<double>(G110) || x.value == static_cast<double>(G111) || x.value == static_cast<double>(G112))))
             fail(code::unsupported_word, (x.is("G") ? "G" + std::to_string(int_value(x.value)) : k) +
                                          " is not supported by toolcomp", x.column);
         // an address with its value, or with a text (T="DRILL"); SUB("abc", 5) is a call
