@@ -70,3 +70,20 @@ TEST_CASE("sinumerik PieceParser: pieces go on with the line numbers, macros and
     CHECK(third.syntax_error->pos.line == 5);
     CHECK(p.done());
 }
+
+// Program::control_statements: set when a block begins with a statement that steers (after its
+// number and label), so that the interpreter indexes the structure; CAM text runs without.
+TEST_CASE("sinumerik parse: control_statements marks a block that begins with a steering statement") {
+    using toolcomp::sinumerik::parse;
+    for (const char* text : {"N10 IF R1==1\nENDIF\n", "L1: WHILE R1<2\nR1=R1+1\nENDWHILE\n", "G1 X1\nN20 gotof END\nEND: M30\n",
+                             "PROC SUB(REAL A)\nM17\n", "CASE R1 OF 1 GOTOF A DEFAULT GOTOF B\nA:\nB:\n",
+                             "REPEATB L1 P=2\n", "LOOP\nENDLOOP\n", "FOR R1=1 TO 2\nENDFOR\n", "REPEAT\nUNTIL R1==1\n"}) {
+        INFO(text);
+        CHECK(parse(text, "p", false).control_statements);
+    }
+    for (const char* text : {"G1 X1 Y2\nG2 X3 Y4 CR=5\n", "N10 G1 X1 ; IF in a comment\n", "R1=R1+1 ENDIFX=1\n",
+                             "MSG(\"GOTOF\")\n", "DEF REAL A\nT1 D1\nM30\n"}) {
+        INFO(text);
+        CHECK_FALSE(parse(text, "p", false).control_statements);
+    }
+}

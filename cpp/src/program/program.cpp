@@ -26,11 +26,17 @@ void Program::drop_last_block() {
 void Program::clear() {
     Column<Block> blocks = std::move(blocks_);
     Column<Word> words = std::move(words_);
+    std::vector<Token> tokens = std::move(tokens_);
+    std::vector<Comment> comments = std::move(comments_);
     *this = Program();
     blocks.clear();
     words.clear();
+    tokens.clear();
+    comments.clear();
     blocks_ = std::move(blocks);
     words_ = std::move(words);
+    tokens_ = std::move(tokens);
+    comments_ = std::move(comments);
 }
 
 }  // namespace toolcomp

@@ -122,6 +122,9 @@ public:
     std::optional<Diagnostic> syntax_error;
     std::optional<Blank> blank;
     bool inch = false;  // conversational programs declare their unit (BEGIN PGM ... INCH)
+    // A block begins with a statement that steers (Sinumerik: IF, WHILE, GOTOF, CASE, PROC
+    // ...): the interpreter indexes the program's control structure before it runs it.
+    bool control_statements = false;
 
     /// number of blocks
     std::size_t size() const { return blocks_.size(); }
@@ -176,7 +179,7 @@ public:
     void drop_expressions_from(std::size_t n) { exprs_.erase(exprs_.begin() + static_cast<std::ptrdiff_t>(n), exprs_.end()); }
     // Removes the last block (a front end that failed half-way through it).
     void drop_last_block();
-    // An empty program again, whose block and word columns keep their memory: a file read
+    // An empty program again, whose blocks, words, tokens and comments keep their memory: a file read
     // piece by piece parses each piece into the Program of the piece before last, into pages
     // already written (fresh pages cost the kernel's zeroing, and a grown column a copy).
     void clear();

@@ -73,18 +73,13 @@ const ProgramInfo& Interp::info_of(const Program& p) {
     auto& slot = infos_[&p];
     if (slot) return *slot;
     auto info = std::make_unique<ProgramInfo>();
+    if (!p.control_statements) return *(slot = std::move(info));  // nothing to index
     const auto& blocks = p.blocks();
     info->partner.assign(blocks.size(), 0);
     info->kind.assign(blocks.size(), ctl_none);
     std::vector<std::size_t> open;
     for (std::size_t i = 0; i < blocks.size(); ++i) {
-        auto all = p.tokens(blocks[i]);
-        for (const Token& t : all) {
-            if (t.is("N") && t.text.empty() && std::fabs(t.value) < 1e15)  // block number (N=1EX308 is none)
-                info->numbers.emplace(static_cast<long>(t.value), i);
-            if (t.is(":")) info->labels.emplace(t.text, i);
-        }
-        auto t = statements(all);
+        auto t = statements(p.tokens(blocks[i]));
         if (t.empty()) continue;
         if (t[0].is("PROC") && t.size() > 1 && t[1].is("PROCARGS"))
             info->formals = parse_formals(t[1].text, blocks[i].line, t[1].column);
@@ -267,7 +262,7 @@ bool Interp::step() {
     if (opts_.progress && executed_ % opts_.progress_every == 0) opts_.progress(executed_);
     auto t = statements(c.prog->tokens(b));
     if (t.empty()) return true;
-    const std::uint8_t kind = c.info->kind[here];
+    const std::uint8_t kind = c.info->kind.empty() ? ctl_none : c.info->kind[here];
     if (kind != ctl_none) {
         c.executable_seen = true;
         control(t, kind);

@@ -39,11 +39,9 @@ struct Formal {
 };
 
 struct ProgramInfo {
-    std::vector<Formal> formals;                // PROC name(...)'s parameters
-    std::map<std::string, std::size_t> labels;  // label -> block index
-    std::map<long, std::size_t> numbers;        // N number -> first block index
-    std::vector<std::size_t> partner;           // IF->ELSE/ENDIF, ELSE->ENDIF, WHILE<->ENDWHILE, ...
-    std::vector<std::uint8_t> kind;             // the block's control statement (Ctl)
+    std::vector<Formal> formals;       // PROC name(...)'s parameters
+    std::vector<std::size_t> partner;  // IF->ELSE/ENDIF, ELSE->ENDIF, WHILE<->ENDWHILE, ...
+    std::vector<std::uint8_t> kind;    // the block's control statement (Ctl)
 };
 
 enum Ctl : std::uint8_t { ctl_none, ctl_if, ctl_else, ctl_endif, ctl_while, ctl_endwhile, ctl_for, ctl_endfor,
