@@ -5,6 +5,7 @@
 // Every function returns Outcome::ok when the input went through and Outcome::error when it
 // was rejected with a toolcomp::Error, the documented way to refuse input. Anything else
 // (another exception, a sanitizer report, a crash, a hang) is a bug.
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -130,12 +131,6 @@ inline Outcome iso_parse(const std::uint8_t* data, std::size_t size) {
     return o;
 }
 
-// Heidenhain conversational front end; the last byte's low bit parses leniently.
-inline Outcome heidenhain_parse(const std::uint8_t* data, std::size_t size) {
-    const std::string_view text = as_text(data, size);
-    const bool strict = size == 0 || (data[size - 1] & 1) == 0;
-    return ok_or_error([&] { (void)heidenhain::parse(text, "<fuzz>", strict); });
-}
 
 // A Sinumerik text read in pieces of whole lines (at least `piece` bytes each) must give the
 // blocks, tokens and syntax error of the text parsed whole (both leniently): the line numbers
@@ -153,32 +148,101 @@ inline bool same_token(const Token& a, const Token& b) {
            a.has_value == b.has_value && a.sign_only == b.sign_only && same_param(a, b) && a.column == b.column &&
            (a.expr < 0) == (b.expr < 0);
 }
+// `text` cut into pieces of whole lines (each at least `piece` bytes, up to the next line
+// end, the last maybe without one), as a file is read (program/file_pieces.hpp): f(piece)
+// for each while it returns true.
+template <typename F>
+void for_each_piece(std::string_view text, std::size_t piece, F&& f) {
+    for (std::size_t pos = 0; pos < text.size();) {
+        std::size_t end = text.find('\n', std::min(text.size(), pos + piece - 1));
+        end = end == std::string_view::npos ? text.size() : end + 1;
+        if (!f(text.substr(pos, end - pos))) return;
+        pos = end;
+    }
+}
+
+// The blocks of the pieces, in turn, against those of the text parsed whole.
+class SameBlocks {
+public:
+    SameBlocks(const Program& whole, const char* what) : whole_(whole), what_(what) {}
+    template <typename SameToken>
+    void piece(const Program& p, SameToken&& same_token) {
+        for (std::size_t i = 0; i < p.size(); ++i, ++block_) {
+            if (block_ >= whole_.size()) throw std::logic_error(std::string(what_) + ": more blocks than the whole text");
+            const Block& a = whole_.blocks()[block_];
+            const Block& b = p.blocks()[i];
+            const auto ta = whole_.tokens(a), tb = p.tokens(b);
+            bool same = a.line == b.line && a.block_delete == b.block_delete && ta.size() == tb.size();
+            for (std::size_t k = 0; same && k < ta.size(); ++k) same = same_token(ta[k], tb[k]);
+            if (!same) throw std::logic_error(std::string(what_) + ": block " + std::to_string(block_) + " differs");
+        }
+    }
+    // The last piece: all blocks seen, the same syntax error.
+    void last(const Program& p) const {
+        if (block_ != whole_.size()) throw std::logic_error(std::string(what_) + ": fewer blocks than the whole text");
+        const auto& ea = whole_.syntax_error;
+        const auto& eb = p.syntax_error;
+        if (ea.has_value() != eb.has_value() || (ea && (ea->code != eb->code || ea->pos.line != eb->pos.line ||
+                                                        ea->pos.column != eb->pos.column)))
+            throw std::logic_error(std::string(what_) + ": the syntax error differs");
+    }
+
+private:
+    const Program& whole_;
+    const char* what_;
+    std::size_t block_ = 0;
+};
+
 inline void same_sinumerik_in_pieces(std::string_view text, std::size_t piece) {
     const Program whole = sinumerik::parse(text, "<fuzz>", /*strict=*/false);
     sinumerik::PieceParser parser("<fuzz>", /*strict=*/false, piece);
-    std::size_t block = 0;
+    SameBlocks same(whole, "sinumerik pieces");
     Program last;
-    for (std::size_t pos = 0; pos < text.size() && !parser.done();) {
-        std::size_t end = text.find('\n', std::min(text.size(), pos + piece - 1));
-        end = end == std::string_view::npos ? text.size() : end + 1;
-        last = parser.parse(text.substr(pos, end - pos), std::move(last));
-        pos = end;
-        for (std::size_t i = 0; i < last.size(); ++i, ++block) {
-            if (block >= whole.size()) throw std::logic_error("sinumerik pieces: more blocks than the whole text");
-            const Block& a = whole.blocks()[block];
-            const Block& b = last.blocks()[i];
-            const auto ta = whole.tokens(a), tb = last.tokens(b);
-            bool same = a.line == b.line && a.block_delete == b.block_delete && ta.size() == tb.size();
-            for (std::size_t k = 0; same && k < ta.size(); ++k) same = same_token(ta[k], tb[k]);
-            if (!same) throw std::logic_error("sinumerik pieces: block " + std::to_string(block) + " differs");
-        }
+    for_each_piece(text, piece, [&](std::string_view t) {
+        last = parser.parse(t, std::move(last));
+        same.piece(last, same_token);
+        return !parser.done();
+    });
+    same.last(last);
+}
+
+// The same of a Klartext text: line numbers, the unit and the blank go on across pieces, a
+// block continued with '~' past a piece's end is read with the next one, and the frame's
+// errors (BEGIN PGM, END PGM missing) are found at END PGM or at the end.
+inline bool same_heidenhain_token(const Token& a, const Token& b) {
+    return a.key == b.key && a.text == b.text && std::memcmp(&a.value, &b.value, sizeof(double)) == 0 &&
+           a.has_value == b.has_value && a.sign_only == b.sign_only && a.param == b.param && a.column == b.column &&
+           a.expr == b.expr;
+}
+inline void same_heidenhain_in_pieces(std::string_view text, std::size_t piece) {
+    const Program whole = heidenhain::parse(text, "<fuzz>", /*strict=*/false);
+    heidenhain::PieceParser parser("<fuzz>", /*strict=*/false, piece);
+    SameBlocks same(whole, "heidenhain pieces");
+    Program last;
+    for_each_piece(text, piece, [&](std::string_view t) {
+        last = parser.parse(t, std::move(last));
+        same.piece(last, same_heidenhain_token);
+        return !parser.done();
+    });
+    if (!parser.done()) {
+        last = parser.end(std::move(last));
+        same.piece(last, same_heidenhain_token);
     }
-    if (block != whole.size()) throw std::logic_error("sinumerik pieces: fewer blocks than the whole text");
-    const auto& ea = whole.syntax_error;
-    const auto& eb = last.syntax_error;
-    if (ea.has_value() != eb.has_value() || (ea && (ea->code != eb->code || ea->pos.line != eb->pos.line ||
-                                                    ea->pos.column != eb->pos.column)))
-        throw std::logic_error("sinumerik pieces: the syntax error differs");
+    same.last(last);
+    if (last.inch != whole.inch || last.last_line != whole.last_line || last.blank.has_value() != whole.blank.has_value() ||
+        (last.blank && (last.blank->min != whole.blank->min || last.blank->max != whole.blank->max ||
+                        last.blank->axis != whole.blank->axis)))
+        throw std::logic_error("heidenhain pieces: the unit, the blank or the last line differs");
+}
+
+// Heidenhain conversational front end; the last byte's low bit parses leniently, the first
+// byte sets the size of the pieces the text is also read in.
+inline Outcome heidenhain_parse(const std::uint8_t* data, std::size_t size) {
+    const std::string_view text = as_text(data, size);
+    const bool strict = size == 0 || (data[size - 1] & 1) == 0;
+    const Outcome o = ok_or_error([&] { (void)heidenhain::parse(text, "<fuzz>", strict); });
+    same_heidenhain_in_pieces(text, 1 + (size ? data[0] % 64 : 0));
+    return o;
 }
 
 // Sinumerik 840D front end; the last byte's low bit parses leniently, the first byte sets the

@@ -33,10 +33,8 @@ void bind_program(py::module_& m) {
         /// @pydoc Program.check_file
         /// Read a program file through as Program.read(strict=True) does, without
         /// keeping it: returns its number of blocks, or raises its first syntax error,
-        /// wherever it is (also after M2/M30). LinuxCNC, Fanuc and 9/Series files are
-        /// read a piece at a time, in bounded memory and without a size limit (as
-        /// iter_run reads them); Heidenhain and Sinumerik files are read whole (up to 2
-        /// GiB).
+        /// wherever it is (also after M2/M30). The file is read a piece at a time, in
+        /// bounded memory and without a size limit (as iter_run reads it).
         .def_static(
             "check_file",
             [](const py::object& path_like, std::optional<std::string> dialect, std::size_t max_line_length) {

@@ -159,8 +159,8 @@ def run(program: _Union[Program, _FileName], tools: _Union[ToolTable, _FileName,
     dialect, tools, options = _engine_options(**locals())
     if isinstance(program, (str, _os.PathLike)):
         # Read leniently: a syntax error is raised (or reported) when the run reaches its
-        # line, as the control does, and never after M2/M30. A LinuxCNC / Fanuc file without
-        # control flow (and a Sinumerik one) is read piece by piece as it runs.
+        # line, as the control does, and never after M2/M30. A file without control flow
+        # (LinuxCNC, Fanuc, Sinumerik, Heidenhain) is read piece by piece as it runs.
         return _core.run_file(_os.fspath(program), dialect, tools, **options)
     return _core.run(program, tools, **options)
 
@@ -181,11 +181,10 @@ def iter_run(program: _Union[Program, _FileName], tools: _Union[ToolTable, _File
     no total), ``threads`` and ``probes``; and ``chunk`` and ``piece_bytes``.
 
     Memory: the run goes on in a thread of its own, at most one chunk ahead of the loop. A
-    LinuxCNC, Fanuc or Sinumerik program file without control flow (CAM output: no O-words,
-    GOTO, loops, program numbers or M99; no labels, jumps, control structures, PROC or DEFINE)
-    is read ``piece_bytes`` at a time (1 to 2**30), so memory does not grow with its length;
-    other programs (and Heidenhain's) are read whole, up to ``max_bytes``, their path still
-    streamed.
+    program file without control flow (CAM output: no O-words, GOTO, loops, program numbers or
+    M99; no labels, jumps, control structures, PROC or DEFINE; no LBL, FN 9-12 jumps or CYCL
+    DEF 14) is read ``piece_bytes`` at a time (1 to 2**30), so memory does not grow with its
+    length; other programs are read whole, up to ``max_bytes``, their path still streamed.
 
     Errors: with ``strict=True`` the run's error is raised by the loop after the chunk that
     holds the segments before it; with ``strict=False`` it ends the stream and is in

@@ -354,7 +354,7 @@ class Program:
     @staticmethod
     def check_file(path: typing.Any, dialect: str | None = None, *, max_line_length: typing.SupportsInt | typing.SupportsIndex = 1048576) -> int:
         """
-        Read a program file through as Program.read(strict=True) does, without keeping it: returns its number of blocks, or raises its first syntax error, wherever it is (also after M2/M30). LinuxCNC, Fanuc and 9/Series files are read a piece at a time, in bounded memory and without a size limit (as iter_run reads them); Heidenhain and Sinumerik files are read whole (up to 2 GiB).
+        Read a program file through as Program.read(strict=True) does, without keeping it: returns its number of blocks, or raises its first syntax error, wherever it is (also after M2/M30). The file is read a piece at a time, in bounded memory and without a size limit (as iter_run reads it).
         """
     @staticmethod
     def parse(text: str, dialect: str = 'linuxcnc', name: str = '<string>', strict: bool = True, *, max_line_length: typing.SupportsInt | typing.SupportsIndex = 1048576) -> Program:

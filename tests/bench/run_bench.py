@@ -413,7 +413,7 @@ class Dialect(NamedTuple):
 DIALECTS = (
     Dialect("ISO", "LinuxCNC, G42.1 D2, tool table T1", "linuxcnc", ".ngc", write_program, ISO_TOOLS, False),
     Dialect("Sinumerik", "840D, G42, $TC_DP tool data", "sinumerik", ".mpf", write_sinumerik, None, False),
-    Dialect("Heidenhain", "Klartext L/CR, RR, TOOL DEF", "heidenhain", ".h", write_heidenhain, None, True),
+    Dialect("Heidenhain", "Klartext L/CR, RR, TOOL DEF", "heidenhain", ".h", write_heidenhain, None, False),
 )
 ISO_NO_COMP = Dialect("ISO no comp", "LinuxCNC, no compensation", "linuxcnc", ".ngc",
                       lambda path, n: write_program(path, n, comp=False), ISO_TOOLS, False)

@@ -32,8 +32,8 @@ Program parse_program(std::string_view text, Dialect dialect, std::string name =
 Program read_program(const std::string& path, std::optional<Dialect> dialect = std::nullopt, bool strict = true,
                      const ReadLimits& limits = {});
 // Reads a program file through as read_program(strict) does, a piece at a time and without
-// keeping it (LinuxCNC, Fanuc, 9/Series, Sinumerik: no max_bytes, as for a stream;
-// Heidenhain is read whole, as a run reads it): its number of blocks, or the first syntax error
+// keeping it (every dialect: no max_bytes, as for a stream): its number of blocks, or the
+// first syntax error
 // anywhere in the file (ParseError), also after M2/M30. (program/check_file.cpp)
 std::size_t check_program_file(const std::string& path, std::optional<Dialect> dialect = std::nullopt,
                                const ReadLimits& limits = {});
@@ -136,7 +136,7 @@ inline constexpr std::size_t kPieceBytes = std::size_t{1} << 20;
 // syntax error is raised when the run reaches its line); `limits` apply to it and to every
 // file it calls (they replace options.limits). A file in which nothing steers across blocks
 // (its dialect's has_control_flow, dialects/table.hpp: CAM output of LinuxCNC, Fanuc,
-// 9/Series, Sinumerik) is read and parsed a piece at a time as it runs, so only the Paths
+// 9/Series, Sinumerik, Heidenhain) is read and parsed a piece at a time as it runs, so only the Paths
 // grow with its length.
 Result run_file(const std::string& path, std::optional<Dialect> dialect, const ToolTable* tools,
                 const RunOptions& options = {}, const ReadLimits& limits = {});

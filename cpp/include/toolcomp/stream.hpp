@@ -4,10 +4,10 @@
 // most; the compensation look-ahead runs on across chunk boundaries, so the chunks joined are
 // the Path run() returns. The programmed path is not kept.
 //
-// A LinuxCNC, Fanuc or Sinumerik file is read a piece (about 1 MB of whole lines) at a time
-// when nothing in it steers across blocks (its dialect's has_control_flow: no O-words, GOTO,
-// loops, labels ...): memory stays the same whatever the program's length. A program that has
-// them, and every Heidenhain program, is read and parsed whole; its path is still streamed.
+// A program file is read a piece (about 1 MB of whole lines) at a time when nothing in it
+// steers across blocks (its dialect's has_control_flow: no O-words, GOTO, loops, labels ...):
+// memory stays the same whatever the program's length. A program that has them is read and
+// parsed whole; its path is still streamed.
 #include <atomic>
 #include <chrono>
 #include <condition_variable>

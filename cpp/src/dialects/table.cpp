@@ -72,7 +72,7 @@ void interpret_heidenhain(const DialectRun& r) {
     const RunOptions& o = r.options;
     heidenhain::interpret(r.program, r.tools, r.profile, r.sink, r.diagnostics, o.progress,
                           o.progress_every ? o.progress_every : 1, search_of(o), &r.out, o.machine.get(),
-                          o.block_delete, o.start);
+                          o.block_delete, o.start, {r.hooks.next_piece, r.hooks.file_opened});
 }
 
 // ---- reading a file a piece at a time ------------------------------------------------------
@@ -82,6 +82,12 @@ public:
     explicit Pieces(Parser p) : p_(std::move(p)) {}
     Program parse(std::string_view piece, Program into) override { return p_.parse(piece, std::move(into)); }
     bool done() const override { return p_.done(); }
+    std::optional<Program> end(Program into) override {
+        if constexpr (requires { p_.end(std::move(into)); })
+            return p_.end(std::move(into));
+        else
+            return std::nullopt;
+    }
 
 private:
     Parser p_;
@@ -89,25 +95,35 @@ private:
 std::unique_ptr<PieceReader> iso_pieces(Dialect d, std::string name, bool strict, std::size_t piece_bytes) {
     return std::make_unique<Pieces<iso::PieceParser>>(iso::PieceParser(d, std::move(name), strict, piece_bytes));
 }
+std::unique_ptr<PieceReader> heidenhain_pieces(Dialect, std::string name, bool strict, std::size_t piece_bytes) {
+    return std::make_unique<Pieces<heidenhain::PieceParser>>(heidenhain::PieceParser(std::move(name), strict, piece_bytes));
+}
 std::unique_ptr<PieceReader> sinumerik_pieces(Dialect, std::string name, bool strict, std::size_t piece_bytes) {
     return std::make_unique<Pieces<sinumerik::PieceParser>>(sinumerik::PieceParser(std::move(name), strict, piece_bytes));
+}
+
+// Scans of each piece alike, wherever it is in the file.
+template <bool (*Scan)(std::string_view)>
+bool any_piece(std::string_view text, bool) {
+    return Scan(text);
 }
 
 constexpr DialectRow kDialects[] = {
     {.dialect = Dialect::linuxcnc, .name = "linuxcnc", .suffixes = {"ngc", ""}, .cr_ends_line = false,
      .interpreter_checks_travel = true, .parse = parse_iso<Dialect::linuxcnc>, .interpret = interpret_iso,
-     .has_control_flow = iso::has_control_flow, .pieces = iso_pieces},
+     .has_control_flow = any_piece<iso::has_control_flow>, .pieces = iso_pieces},
     {.dialect = Dialect::fanuc, .name = "fanuc", .suffixes = {"nc", "tap"}, .cr_ends_line = true,
      .interpreter_checks_travel = true, .parse = parse_iso<Dialect::fanuc>, .interpret = interpret_iso,
-     .has_control_flow = iso::has_control_flow, .pieces = iso_pieces},
+     .has_control_flow = any_piece<iso::has_control_flow>, .pieces = iso_pieces},
     {.dialect = Dialect::sinumerik, .name = "sinumerik", .suffixes = {"mpf", "spf"}, .cr_ends_line = true,
      .interpreter_checks_travel = false, .parse = parse_sinumerik, .interpret = interpret_sinumerik,
-     .has_control_flow = sinumerik::has_control_flow, .pieces = sinumerik_pieces},
+     .has_control_flow = any_piece<sinumerik::has_control_flow>, .pieces = sinumerik_pieces},
     {.dialect = Dialect::heidenhain, .name = "heidenhain", .suffixes = {"h", ""}, .cr_ends_line = true,
-     .interpreter_checks_travel = false, .parse = parse_heidenhain, .interpret = interpret_heidenhain},
+     .interpreter_checks_travel = false, .parse = parse_heidenhain, .interpret = interpret_heidenhain,
+     .has_control_flow = heidenhain::has_control_flow, .pieces = heidenhain_pieces},
     {.dialect = Dialect::rockwell, .name = "rockwell", .suffixes = {"", ""}, .cr_ends_line = true,
      .interpreter_checks_travel = true, .parse = parse_iso<Dialect::rockwell>, .interpret = interpret_iso,
-     .has_control_flow = iso::has_control_flow, .pieces = iso_pieces},
+     .has_control_flow = any_piece<iso::has_control_flow>, .pieces = iso_pieces},
 };
 
 std::string lower(std::string_view s) {

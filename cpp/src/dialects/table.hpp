@@ -5,6 +5,7 @@
 // toolcomp._core.dialect_table) the command line and the pytest plugin read this table.
 #include <array>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -23,6 +24,9 @@ public:
     // `into`: a Program no longer needed, whose memory the piece reuses.
     virtual Program parse(std::string_view piece, Program into) = 0;
     virtual bool done() const = 0;  // later text is not part of the program (a closing %, an error)
+    // The end of the file, unless done(): a last Program (without blocks, or with a block held
+    // back) when the end itself tells something (Heidenhain: END PGM missing), else nothing.
+    virtual std::optional<Program> end(Program) { return std::nullopt; }
 };
 
 // What a run hands a dialect's interpreter.
@@ -53,7 +57,8 @@ struct DialectRow {
     // it runs (CAM output of any length in bounded memory), by `pieces`; the interpreter then
     // tells each file it enters (PipelineHooks::file_opened). Without them (nullptr) a file is
     // read whole.
-    bool (*has_control_flow)(std::string_view text) = nullptr;
+    // `start`: the text is the file's first piece (read before the run starts).
+    bool (*has_control_flow)(std::string_view text, bool start) = nullptr;
     std::unique_ptr<PieceReader> (*pieces)(Dialect, std::string name, bool strict, std::size_t piece_bytes) = nullptr;
     bool read_in_pieces() const { return pieces != nullptr; }
 };

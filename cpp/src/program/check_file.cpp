@@ -22,6 +22,8 @@ std::size_t check_program_file(const std::string& path, std::optional<Dialect> d
         piece = parser->parse(t, std::move(piece));
         blocks += piece.size();
     }
+    if (!parser->done())
+        if (std::optional<Program> last = parser->end(std::move(piece))) blocks += last->size();
     return blocks;
 }
 

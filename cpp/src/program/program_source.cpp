@@ -22,8 +22,9 @@ ProgramSource::ProgramSource(const std::string& path, Dialect dialect, const Rea
     bool whole = !row.read_in_pieces();
     if (!whole) {
         pieces_.emplace(path, piece_bytes, limits.max_line_length, cr_ends_line(dialect));
-        for (std::string_view t = pieces_->next(); !t.empty() && !whole; t = pieces_->next()) {
-            whole = row.has_control_flow(t);
+        bool start = true;
+        for (std::string_view t = pieces_->next(); !t.empty() && !whole; t = pieces_->next(), start = false) {
+            whole = row.has_control_flow(t, start);
             if (check_) check_();
         }
     }
@@ -39,6 +40,8 @@ ProgramSource::ProgramSource(const std::string& path, Dialect dialect, const Rea
     parser_ = row.pieces(dialect, path, /*strict=*/false, piece_bytes);
     const std::string_view t = pieces_->next();
     current_ = parser_->parse(t, Program());
+    if (t.empty() && !parser_->done())  // an empty file
+        if (std::optional<Program> last = parser_->end(Program())) current_ = std::move(*last);
     blocks_ = current_.size();
     estimate_ = t.empty() ? 0 : static_cast<std::size_t>(static_cast<double>(blocks_) * static_cast<double>(size) /
                                                          static_cast<double>(t.size()));
@@ -58,7 +61,7 @@ void ProgramSource::read_ahead() {
                         [this, into = std::move(spare_)]() mutable -> std::optional<Program> {
                             if (parser_->done()) return std::nullopt;
                             const std::string_view t = pieces_->next();
-                            if (t.empty()) return std::nullopt;
+                            if (t.empty()) return parser_->end(std::move(into));
                             return parser_->parse(t, std::move(into));
                         });
 }

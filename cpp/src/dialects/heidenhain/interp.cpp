@@ -409,21 +409,31 @@ void Interp::check_q(int n, int column) const {
 // n, back at LBL 0), section repeats (CALL LBL n REP m), FN 9..12 jumps, program calls (CALL
 // PGM); bounded by the profile's block limit.
 void Interp::run() {
-    run_blocks(prog_, 0);
+    // A main program read in pieces: each piece's blocks in turn; after its end (END PGM,
+    // M2/M30) the pieces left are read for a syntax error, raised as when the file is read
+    // whole.
+    const Program* main = &prog_;
+    bool more = run_blocks(*main, 0);  // false when the run ended (M2/M30)
+    while (pieces_.next_piece && !main->syntax_error) {  // a syntax error ends the pieces
+        const Program* next = pieces_.next_piece();
+        if (!next) break;
+        main = next;
+        if (more) more = run_blocks(*main, 0);
+    }
     settle_pending();
     if (approach_) throw ProgramError(code::approach_without_contour, "APPR needs a contour element after it", {approach_->line, 0});
     if (pending_) {
         sink_.push(*pending_);
         pending_.reset();
     }
-    if (const auto& e = prog_.syntax_error) throw ParseError(e->code, e->message, e->pos);
+    if (const auto& e = main->syntax_error) throw ParseError(e->code, e->message, e->pos);
     sink_.control({ControlKind::program_end, line_, Vec3::Zero(), file_});
     sink_.finish();
 }
 
 bool Interp::run_blocks(const Program& prog, int depth) {
     const int caller_file = file_;
-    file_ = files_.index(prog.name);
+    file_ = file_index(prog.name);
     struct Restore {
         int& f;
         int v;
@@ -548,6 +558,13 @@ bool Interp::run_blocks(const Program& prog, int depth) {
     return true;
 }
 
+int Interp::file_index(const std::string& name) {
+    const std::size_t known = files_.names().size();
+    const int i = files_.index(name);
+    if (files_.names().size() > known && pieces_.file_opened) pieces_.file_opened(name);
+    return i;
+}
+
 namespace {
 constexpr int kMaxProgramCallDepth = 100;  // CALL PGM nesting (endless recursion guard)
 
@@ -664,8 +681,10 @@ void Interp::call_program(Tokens t, int depth) {
 void interpret(const Program& program, const ToolTable* tools, const ControlProfile& profile, MotionSink& sink,
                std::vector<Diagnostic>& diagnostics, const std::function<void(std::size_t)>& progress,
                std::size_t progress_every, const SearchPath& search,
-               InterpretOutput* out, const Machine* machine, bool block_delete, const std::optional<Vec3>& start) {
+               InterpretOutput* out, const Machine* machine, bool block_delete, const std::optional<Vec3>& start,
+               const PieceHooks& pieces) {
     Interp interp(program, tools, profile, sink, diagnostics, search);
+    interp.read_in_pieces(pieces);
     interp.set_machine(machine);
     if (start) interp.set_start(*start);
     interp.skip_marked_blocks(block_delete);

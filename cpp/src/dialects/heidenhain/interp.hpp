@@ -33,6 +33,7 @@ public:
     void set_machine(const Machine* m);
     void set_start(const Vec3& machine);  // the axes at the start, machine coordinates (mm)
     void skip_marked_blocks(bool on) { block_delete_ = on; }  // the block skip '/'
+    void read_in_pieces(PieceHooks hooks) { pieces_ = std::move(hooks); }
     void run();
     const std::vector<std::string>& files() const { return files_.names(); }
     double dwell_seconds() const { return dwell_seconds_; }
@@ -116,6 +117,8 @@ private:
     // Runs the blocks of one program (the main program, or one called with CALL PGM at
     // nesting depth `depth`) with its own labels; false when the run ends (M2/M30 seen).
     bool run_blocks(const Program& p, int depth);
+    PieceHooks pieces_;
+    int file_index(const std::string& name);  // Path::files index, told to pieces_.file_opened when new
     // CALL PGM name: the program is looked up in the search path only and run inline.
     void call_program(Tokens t, int depth);
     std::string find_program(const std::string& name, int column) const;

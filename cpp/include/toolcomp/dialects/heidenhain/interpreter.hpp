@@ -20,6 +20,15 @@ class ToolTable;
 
 namespace toolcomp::heidenhain {
 
+// The main program read a piece at a time (program/program_source.hpp): `next_piece` gives
+// the next piece when the run is through the one before, nullptr at the end (the pieces hold
+// no labels or jumps: has_control_flow, so each is run on its own); `file_opened` is told
+// each program file as the run enters it first (the main program's too).
+struct PieceHooks {
+    std::function<const Program*()> next_piece;
+    std::function<void(const std::string&)> file_opened;
+};
+
 // `progress` (optional) is called with the blocks executed so far every `progress_every`.
 // `search`: the directories where CALL PGM looks for the called program (`name`, or
 // `name.h` when the name has no suffix), in order; no other place is searched, and with an
@@ -33,6 +42,7 @@ void interpret(const Program& program, const ToolTable* tools, const ControlProf
                std::size_t progress_every = 1 << 16, const SearchPath& search = {},
                InterpretOutput* out = nullptr, const Machine* machine = nullptr,
                bool block_delete = false,  // skip the blocks marked '/'
-               const std::optional<Vec3>& start = std::nullopt);  // the axes at the start, machine coordinates (mm)
+               const std::optional<Vec3>& start = std::nullopt,  // the axes at the start, machine coordinates (mm)
+               const PieceHooks& pieces = {});
 
 }  // namespace toolcomp::heidenhain
