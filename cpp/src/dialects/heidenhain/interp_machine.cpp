@@ -27,7 +27,7 @@ void Interp::set_start(const Vec3& machine) { pos_ = machine / unit_ - work_orig
 void Interp::machine_datum_end(Tokens t, Vec3& end) const {
     int datum = 0;
     for (std::size_t i = 1; i < t.size(); ++i)
-        if (t[i].is("M") && t[i].has_value && (t[i].value == M91 || t[i].value == M92)) {
+        if (t[i].is("M") && t[i].has_value && (t[i].value == static_cast<double>(M91) || t[i].value == static_cast<double>(M92))) {
             if (datum) fail(code::bad_word, "M91 and M92 in one block", t[i].column);
             datum = static_cast<int>(t[i].value);
         }
@@ -50,7 +50,7 @@ void Interp::retract(Tokens t) {
     const Token* mb = find(t, "MB");
     bool m140 = false;
     const bool builder = machine_ && machine_->m_code(140);  // the machine's own M140 instead
-    for (const Token& k : t) m140 = m140 || (k.is("M") && k.has_value && k.value == M140 && !builder);
+    for (const Token& k : t) m140 = m140 || (k.is("M") && k.has_value && k.value == static_cast<double>(M140) && !builder);
     if (!mb && !m140) return;
     if (!mb) fail(code::bad_word, "M140 needs MB (a distance or MAX)", t[0].column);
     if (!m140) fail(code::bad_word, "MB without M140", mb->column);
