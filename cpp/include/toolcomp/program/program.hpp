@@ -12,6 +12,7 @@
 #include "toolcomp/column.hpp"
 #include "toolcomp/program/dialect.hpp"
 #include "toolcomp/program/expr.hpp"
+#include "toolcomp/program/short_text.hpp"
 #include "toolcomp/geometry/vec.hpp"
 #include "toolcomp/program/diagnostic.hpp"
 
@@ -59,26 +60,28 @@ struct Statement {
 // optional number ("X+10" -> key "X", value 10; "DR-" -> key "DR", sign -1, no value; "RL";
 // "1"; a quoted name).
 struct Token {
-    std::string key;         // upper case letters (empty for a plain number or a name)
+    ShortText key;           // upper case letters (empty for a plain number or a name)
+    ShortText text;          // a quoted name, without the quotes; the text of a Q statement
     double value = 0;        // the number, or ±1 for a bare sign ("DR+")
-    bool has_value = false;  // a number was written
-    bool sign_only = false;  // "DR+" / "DR-"
-    std::string text;        // a quoted name, without the quotes; the text of a Q statement
     int param = 0;           // Heidenhain: a Q parameter in place of the number (X+Q5): its number + 1
                              // (0: none); Sinumerik: see its lexer
     int column = 0;
     std::int32_t expr = -1;  // a computed value: index of its expression (Program::expression)
+    bool has_value = false;  // a number was written
+    bool sign_only = false;  // "DR+" / "DR-"
 
     // key == k, lengths first, byte by byte: with `k` a literal the loop unrolls into a few
     // compares (std::string == "literal" calls strlen and memcmp; string_view == still calls
     // memcmp, a call a word for the one-letter keys of every block).
     bool is(std::string_view k) const noexcept {
         if (key.size() != k.size()) return false;
+        const char* d = key.data();
         for (std::size_t i = 0; i < k.size(); ++i)
-            if (key[i] != k[i]) return false;
+            if (d[i] != k[i]) return false;
         return true;
     }
 };
+static_assert(sizeof(Token) <= 56, "a million-block program holds millions of tokens");
 
 struct Comment {
     std::string text;  // without the delimiters

@@ -64,7 +64,7 @@ void Interp::refuse_words(Tokens t, std::initializer_list<std::string_view> name
     for (std::size_t i = from; i < t.size(); ++i)
         for (std::string_view n : names)
             if (t[i].key == n)
-                fail(code::bad_word, std::string(n) + " is not read in " + (t[0].key == "APPR" || t[0].key == "DEP" ? t[0].key + " " + t[1].key : t[0].key) +
+                fail(code::bad_word, std::string(n) + " is not read in " + (t[0].key == "APPR" || t[0].key == "DEP" ? t[0].key + " " + t[1].key : t[0].key.str()) +
                                      " blocks: " + why,
                      t[i].column);
 }
@@ -343,7 +343,7 @@ bool Interp::execute(Tokens t) {
     else if (k0 == "M" || k0 == "F" || k0 == "S") {  // a block of machine functions only
         for (const Token& k : t)
             if (!(k.is("M") || k.is("F") || k.is("S") || k.is("FMAX")) || (!k.has_value && !k.is("FMAX")))
-                fail(code::bad_word, (k.key.empty() ? std::string("A number") : k.key) + " is not read in a block of M functions",
+                fail(code::bad_word, (k.key.empty() ? std::string("A number") : k.key.str()) + " is not read in a block of M functions",
                      k.column);
         modal_words(t, 0);
     }
@@ -641,7 +641,7 @@ std::string Interp::find_program(const std::string& name, int column) const {
 // called file and its index in Path::files.
 void Interp::call_program(Tokens t, int depth) {
     const Token* name = t.size() > 2 ? &t[2] : nullptr;
-    std::string text = name ? (!name->text.empty() ? name->text : name->key) : std::string();
+    std::string text = name ? (!name->text.empty() ? name->text.str() : name->key.str()) : std::string();
     if (name && text.empty() && name->has_value) text = std::to_string(static_cast<long long>(name->value));
     if (text.empty()) fail(code::call_pgm_bad_name, "CALL PGM needs a program name", t[0].column);
     if (depth + 1 > kMaxProgramCallDepth)

@@ -67,7 +67,7 @@ void Interp::cycle(Tokens t) {
     }
     std::string what = "CYCL";
     for (std::size_t i = 1; i < t.size() && (t[i].key.empty() ? t[i].has_value : !t[i].has_value && t[i].key[0] != 'Q'); ++i)
-        what += " " + (t[i].key.empty() ? shortest_number(t[i].value) : t[i].key);  // CYCL DEF 251 RECTANGULAR POCKET
+        what += " " + (t[i].key.empty() ? shortest_number(t[i].value) : t[i].key.str());  // CYCL DEF 251 RECTANGULAR POCKET
     fail(code::unsupported_block, what + " is not supported by toolcomp yet", t[0].column);
 }
 
@@ -101,7 +101,7 @@ std::map<int, double> Interp::cycle_parameters(Tokens t) const {
         const bool parameter = k.key.size() >= 2 && k.key[0] == 'Q' && k.key.find_first_not_of("0123456789", 1) == std::string::npos;
         if (!parameter) {
             if (k.has_value || k.key.empty())
-                fail(code::bad_word, (k.key.empty() ? std::string("A number") : k.key) + " is not read in a cycle definition",
+                fail(code::bad_word, (k.key.empty() ? std::string("A number") : k.key.str()) + " is not read in a cycle definition",
                      k.column);
             continue;
         }

@@ -48,7 +48,7 @@ double Interp::call_feed(Tokens t, std::size_t from) {
         else if (k.is("M") && k.has_value) m_function(t, k);
         else if (std::find(std::begin(kAxis), std::end(kAxis), k.key) == std::end(kAxis) &&
                  std::find(std::begin(kIncAxis), std::end(kIncAxis), k.key) == std::end(kIncAxis))
-            fail(code::bad_word, (k.key.empty() ? std::string("A number") : k.key) + " is not read in CYCL CALL " + t[2].key +
+            fail(code::bad_word, (k.key.empty() ? std::string("A number") : k.key.str()) + " is not read in CYCL CALL " + t[2].key +
                                      " blocks",
                  k.column);
     }
@@ -95,7 +95,7 @@ void Interp::pattern_def(Tokens t) {
     while (i < t.size()) {
         const Token& head = t[i];
         if (i + 1 >= t.size() || !t[i + 1].is("("))
-            fail(code::bad_word, "PATTERN DEF: " + (head.key.empty() ? std::string("a number") : head.key) +
+            fail(code::bad_word, "PATTERN DEF: " + (head.key.empty() ? std::string("a number") : head.key.str()) +
                                      " where a pattern (POS, ROW, PAT, CIRC, PITCHCIRC) with its values in parentheses "
                                      "belongs",
                  head.column);
@@ -123,7 +123,7 @@ void Interp::pattern_item(const Token& head, Tokens v) {
         fail(code::bad_word, "PATTERN DEF: unknown pattern '" + kind + "'", head.column);
     for (const Token& k : v)
         if (std::find(allowed.begin(), allowed.end(), k.key) == allowed.end() || !k.has_value)
-            fail(code::bad_word, (k.key.empty() ? std::string("A number") : k.key) + " is not read in a " + kind + " pattern",
+            fail(code::bad_word, (k.key.empty() ? std::string("A number") : k.key.str()) + " is not read in a " + kind + " pattern",
                  k.column);
     auto get = [&](std::string_view key, std::optional<double> otherwise = std::nullopt) {
         if (const auto x = number(v, key)) return *x;

@@ -32,7 +32,7 @@ void Interp::working_plane(Tokens t) {
         if (k.is("A") || k.is("B") || k.is("C")) {
             if (k.has_value && k.value != 0) fail(code::unsupported_block, tilt("CYCL DEF 19", k), k.column);
         } else if (!(k.is("F") || k.is("FMAX") || k.is("MB") || (!k.has_value && t[2].value == 19))) {
-            fail(code::bad_word, (k.key.empty() ? std::string("A number") : k.key) + " is not read in CYCL DEF 19", k.column);
+            fail(code::bad_word, (k.key.empty() ? std::string("A number") : k.key.str()) + " is not read in CYCL DEF 19", k.column);
         }
     }
     untilted_plane();
@@ -66,7 +66,7 @@ void Interp::plane_function(Tokens t) {
         } else if (std::find(after.begin(), after.end(), k.key) != after.end()) {
             turns |= k.is("MOVE") || k.is("TURN");
         } else {
-            fail(code::bad_word, (k.key.empty() ? std::string("A number") : k.key) + " is not read in PLANE " + kind,
+            fail(code::bad_word, (k.key.empty() ? std::string("A number") : k.key.str()) + " is not read in PLANE " + kind,
                  k.column);
         }
     }
@@ -93,7 +93,7 @@ void Interp::function_block(Tokens t) {
         return;
     }
     if (t.size() < 2 || !t[1].is("TCPM")) {
-        const std::string what = t.size() >= 2 ? t[1].key : std::string();
+        const std::string what = t.size() >= 2 ? t[1].key.str() : std::string();
         fail(code::unsupported_block, "FUNCTION " + what + " is not supported by toolcomp yet", t[0].column);
     }
     for (std::size_t i = 2; i < t.size(); ++i) {
@@ -109,7 +109,7 @@ void Interp::function_block(Tokens t) {
                                              "reference the tool tip)",
                  k.column);
         else
-            fail(code::bad_word, (k.key.empty() ? std::string("A number") : k.key) + " is not read in FUNCTION TCPM",
+            fail(code::bad_word, (k.key.empty() ? std::string("A number") : k.key.str()) + " is not read in FUNCTION TCPM",
                  k.column);
     }
     m128_ = true;

@@ -63,7 +63,7 @@ void Interp::datum_shift(Tokens t) {
         }
         if (axis || (naming_line(t) && !k.has_value)) continue;  // 7.0 DATUM SHIFT: the cycle's name
         fail(code::unsupported_word,
-             (k.key.empty() ? std::string("A number") : k.key) + " in CYCL DEF 7: toolcomp shifts the datum by X, Y, Z values "
+             (k.key.empty() ? std::string("A number") : k.key.str()) + " in CYCL DEF 7: toolcomp shifts the datum by X, Y, Z values "
                                                          "(IX, IY, IZ); datum tables are not read",
              k.column);
     }
@@ -82,7 +82,7 @@ void Interp::mirror_image(Tokens t) {
         int axis = -1;
         for (int a = 0; a < 3; ++a)
             if (k.is(kAxis[a]) && !k.has_value) axis = a;
-        if (axis < 0) fail(code::bad_word, (k.key.empty() ? std::string("A number") : k.key) + " is not read in CYCL DEF 8 (the axes to mirror: X Y)", k.column);
+        if (axis < 0) fail(code::bad_word, (k.key.empty() ? std::string("A number") : k.key.str()) + " is not read in CYCL DEF 8 (the axes to mirror: X Y)", k.column);
         if (axis == tool_axis) fail(code::unsupported_word, "CYCL DEF 8: mirroring the tool axis is not supported by toolcomp", k.column);
         next.mirror[static_cast<std::size_t>(axis)] = true;
     }
@@ -138,7 +138,7 @@ void Interp::axis_scaling(Tokens t) {
             if (k.key.size() == 3 && k.key.starts_with("CC") && k.key[2] == kAxis[a][0] && k.has_value)
                 next.axis_scale_centre[a] = k.value, read = true;
         }
-        if (!read) fail(code::bad_word, (k.key.empty() ? std::string("A number") : k.key) + " is not read in CYCL DEF 26", k.column);
+        if (!read) fail(code::bad_word, (k.key.empty() ? std::string("A number") : k.key.str()) + " is not read in CYCL DEF 26", k.column);
     }
     transform(next, t[0].column);
 }

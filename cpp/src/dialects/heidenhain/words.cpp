@@ -109,7 +109,7 @@ void check_path_words(std::span<const Token> t, int line) {
     for (const Function& g : kFunctions)
         if (t[0].key == g.name) f = &g;
     if (!f) return;
-    auto fn = [&] { return f->first == 2 && t.size() > 1 ? t[0].key + " " + t[1].key : t[0].key; };  // for messages
+    auto fn = [&] { return f->first == 2 && t.size() > 1 ? t[0].key + " " + t[1].key : t[0].key.str(); };  // for messages
     std::array<int, 21> seen{};
     for (std::size_t i = f->first; i < t.size(); ++i) {
         const Token& k = t[i];

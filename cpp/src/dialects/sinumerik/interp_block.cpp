@@ -130,7 +130,7 @@ void Interp::block(std::span<const Token> t) {
     Token axis_word;  // AX[axis]=value as the address of that axis
     for (const Token& raw : t) {
         const Token& x = raw.is("AX") ? (axis_word = axis_address(raw)) : raw;
-        const std::string& k = x.key;
+        const ShortText& k = x.key;
         // X, G, F ...: a single letter is none of the statements and calls below (each name has
         // two letters or more, "=" is no letter), the common word of a CAM block past them at once.
         const bool address = k.size() == 1 && k[0] >= 'A' && k[0] <= 'Z';
@@ -168,13 +168,13 @@ void Interp::block(std::span<const Token> t) {
             }
             if (k == "HOLES1" || k == "HOLES2" || k == "CYCLE801") {
                 if (pattern || drill) fail(code::alarm_12010, "12010 Two subprogram calls in one block", x.column);
-                pattern.emplace(k, x.text != k ? x.text : std::string());
+                pattern.emplace(k, x.text != k ? x.text.str() : std::string());
                 words = true;
                 continue;
             }
             if (drilling_cycle_name(k)) {
                 if (drill) fail(code::alarm_12010, "12010 Two subprogram calls in one block", x.column);
-                drill.emplace(k, cycle_arguments(k, x.text != k ? x.text : std::string(), x.column));
+                drill.emplace(k, cycle_arguments(k, x.text != k ? x.text.str() : std::string(), x.column));
                 words = true;
                 continue;
             }
@@ -202,7 +202,7 @@ void Interp::block(std::span<const Token> t) {
         }
         words = true;  // an address, G/M function, keyword or call: more than a computation
         if (is_unsupported(k) || (x.is("G") && (x.value == static_cast<double>(G110) || x.value == static_cast<double>(G111) || x.value == static_cast<double>(G112))))
-            fail(code::unsupported_word, (x.is("G") ? "G" + std::to_string(int_value(x.value)) : k) +
+            fail(code::unsupported_word, (x.is("G") ? "G" + std::to_string(int_value(x.value)) : k.str()) +
                                          " is not supported by toolcomp", x.column);
         // an address with its value, or with a text (T="DRILL"); SUB("abc", 5) is a call
         if (x.has_value || x.expr >= 0 || (!x.text.empty() && x.text.front() == '"' && is_address(k))) {
@@ -253,7 +253,7 @@ void Interp::block(std::span<const Token> t) {
                      : x.is("OFFN") ? &b.offn : x.is("RPL") ? &b.rpl : x.is("I1") ? &b.i1 : x.is("J1") ? &b.j1
                      : x.is("K1") ? &b.k1 : x.is("TCARR") ? &b.tcarr : x.is("LIMS") ? &b.lims : x.is("RND") ? &b.rnd
                      : x.is("CHF") ? &b.chf : x.is("CHR") ? &b.chr : nullptr;
-            if (!v) fail(code::unsupported_word, (x.text.empty() || x.text[0] == '"' ? k + "=" : x.text) + " is not supported by toolcomp", x.column);
+            if (!v) fail(code::unsupported_word, (x.text.empty() || x.text[0] == '"' ? k + "=" : x.text.str()) + " is not supported by toolcomp", x.column);
             if (v->set) fail(code::alarm_12010, "12010 Address " + k + " programmed too often", x.column);
             *v = Value{true, value_of(x), x.param, x.column};
             continue;
@@ -273,7 +273,7 @@ void Interp::block(std::span<const Token> t) {
         // its arguments if it has them: NAME(1, , R5).
         if (!call_name.empty()) fail(code::alarm_12010, "12010 Two subprogram calls in one block", x.column);
         call_name = k;
-        call_args = x.text != k ? x.text : std::string();
+        call_args = x.text != k ? x.text.str() : std::string();
         call_column = x.column;
     }
     for (char c : taken) b[c].set = false;

@@ -194,8 +194,8 @@ private:
         w.key.assign(1, ascii_upper(s_[start]));
         w.value = v;
         w.has_value = true;
-        w.text = w.key;
-        w.text.append(s_.substr(start + 1, j - start - 1));
+        w.text.assign(s_.substr(start, j - start));
+        w.text[0] = w.key[0];
         i_ = p;
         return true;
     }
@@ -486,7 +486,7 @@ private:
             i_ = p;
             Token& w = prog_.new_token();  // filled in place (a failure later drops the block)
             w.column = column;
-            w.key.assign(name, 0, letters);
+            w.key.assign(std::string_view(name).substr(0, letters));
             w.value = v;
             w.has_value = true;
             if (glued && !digits_only) {
