@@ -130,3 +130,24 @@ def test_check_file_reads_pieces_as_parse_reads_the_whole(tmp_path):
             with pytest.raises(tc.ParseError) as e:
                 check()
             assert e.value.line == line
+
+
+def test_an_inch_program_in_pieces_is_the_program_read_whole(tmp_path):
+    # A Mastercam-style inch program (G70: geometry in inches; the tool data in the machine's
+    # metric basic system, r = 0.125 mm): 8000 steps of 1 inch, 160 kB, so that the file is
+    # read in several pieces (a read takes 64 kB at least).
+    rows = "".join(f"N{100 + 20 * i} G1 X{i + 1:.4f}\nN{110 + 20 * i} G1 Y{i + 1:.4f}\n" for i in range(4000))
+    text = ("%_N_STEPS_MPF\n; Mastercam 840D post, inch\n$TC_DP1[1,1]=120\n$TC_DP6[1,1]=0.125\n"
+            "N10 G70 G90 G17 G94\nN20 T1 D1 M6\nN30 G0 X-0.5 Y-0.5 Z0.2\nN40 G1 Z-0.05 F20.\n"
+            "N50 G41 G1 X0. Y0.\n" + rows + "N90000 G40 G1 X4002. Y3999.\nN90010 M30\n")
+    f = write(tmp_path, "STEPS.MPF", text)
+    whole = tc.run(tc.Program.parse(text, dialect="sinumerik", name=f))
+    # In mm: left of the first step (0, 0)-(25.4, 0) by 0.125, up to where the equidistant of
+    # the step up (x = 25.4 - 0.125) meets it.
+    first = int(np.flatnonzero(np.asarray(whole.path.side) != 0)[0])
+    np.testing.assert_allclose(whole.path.end[first][:2], [0, 0.125], atol=1e-9)
+    np.testing.assert_allclose(whole.path.end[first + 1][:2], [25.275, 0.125], atol=1e-9)
+    assert len(text) > 2 * (1 << 16)
+    for piece in (1, 64, 4096):
+        assert_same(whole.path, list(tc.iter_run(f, chunk=53, piece_bytes=piece)))
+    assert_same(whole.path, [tc.run(f).path])
