@@ -262,7 +262,7 @@ bool Interp::step() {
     if (opts_.progress && executed_ % opts_.progress_every == 0) opts_.progress(executed_);
     auto t = statements(c.prog->tokens(b));
     if (t.empty()) return true;
-    const std::uint8_t kind = c.info->kind.empty() ? ctl_none : c.info->kind[here];
+    const std::uint8_t kind = c.info->kind.empty() ? std::uint8_t{ctl_none} : c.info->kind[here];
     if (kind != ctl_none) {
         c.executable_seen = true;
         control(t, kind);

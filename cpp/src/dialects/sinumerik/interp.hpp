@@ -117,6 +117,15 @@ struct BlockData {
     }
 };
 
+// What a block calls besides its addresses (interp_block.cpp).
+struct BlockCalls {
+    std::string name, args;  // a subprogram: by name (with its arguments), L<n>, CALL "path"
+    int column = 0;
+    bool mcall = false;  // MCALL in this block: the cycle after it is called modally
+    std::optional<std::pair<std::string, std::vector<double>>> drill;  // CYCLE8x called here
+    std::optional<std::pair<std::string, std::string>> pattern;        // HOLES1/2, CYCLE801 called here
+};
+
 // A block's G functions by group (-1: none in the block), its M functions and keywords
 // (interp_execute.cpp).
 struct BlockCodes {
@@ -192,6 +201,7 @@ private:
     int file_index(const std::string& name);
     bool pieces_ended_ = false;  // the main program's last piece is the one in stack_.front()
     void block(std::span<const Token> t);
+    bool statement_or_call(const Token& x, BlockCalls& calls, bool& words);
     bool control(std::span<const Token> t, std::uint8_t kind);  // true when the block was a control statement
     void jump(const Token& t);
     void section_repeat(std::span<const Token> t);  // REPEAT label [label] P=n, REPEATB label P=n

@@ -103,6 +103,79 @@ Token Interp::axis_address(const Token& t) {
     return a;
 }
 
+// A word that is no address (a name of two letters or more, or "="): an assignment, a call of
+// a value, MSG, a drilling cycle or hole pattern, MCALL, CALL, a call that makes no path, or a
+// statement toolcomp refuses. True when it took the word (else it is a keyword or names a
+// subprogram: block() reads it as such).
+bool Interp::statement_or_call(const Token& x, BlockCalls& calls, bool& words) {
+    const ShortText& k = x.key;
+    if (x.is("=")) {
+        assign(x);
+        return true;
+    }
+    if (x.is("FRAME=")) {
+        frame_assign(x);
+        return true;
+    }
+    if (is_value_call(x.key)) {
+        value_call(x);
+        return true;
+    }
+    if (x.is("MSG")) {  // MSG("text" << R1): the text as the control shows it
+        std::string m = x.text;
+        if (m.find_first_not_of(" \t") == std::string::npos) {
+            m.clear();
+        } else {
+            try {
+                m = eval_string(expr::parse_all(m, expr::sinumerik_syntax()), x.column);
+            } catch (const expr::SyntaxError&) {  // a form toolcomp does not read: the text as written
+                if (m.size() >= 2 && m.front() == '"' && m.back() == '"') m = m.substr(1, m.size() - 2);
+            }
+        }
+        info(code::message, m, x.column);
+        return true;
+    }
+    if (x.is("MCALL")) {
+        calls.mcall = true;
+        words = true;
+        return true;
+    }
+    if (k == "HOLES1" || k == "HOLES2" || k == "CYCLE801") {
+        if (calls.pattern || calls.drill) fail(code::alarm_12010, "12010 Two subprogram calls in one block", x.column);
+        calls.pattern.emplace(k, x.text != k ? x.text.str() : std::string());
+        words = true;
+        return true;
+    }
+    if (drilling_cycle_name(k)) {
+        if (calls.drill) fail(code::alarm_12010, "12010 Two subprogram calls in one block", x.column);
+        calls.drill.emplace(k, cycle_arguments(k, x.text != k ? x.text.str() : std::string(), x.column));
+        words = true;
+        return true;
+    }
+    if (calls.mcall && (is_unsupported(k) || !is_keyword(k)) && !x.has_value && x.expr < 0 && k.size() > 1)
+        fail(code::unsupported_word, "MCALL " + k + ": toolcomp calls the drilling cycles CYCLE81-CYCLE89 and CYCLE840 modally", x.column);
+    if (x.is("CALL")) {  // CALL / PCALL / EXTCALL "path": the program the lexer named
+        if (!calls.name.empty()) fail(code::alarm_12010, "12010 Two subprogram calls in one block", x.column);
+        words = true;
+        calls.name = x.text;
+        calls.column = x.column;
+        return true;
+    }
+    if (x.is("CYCLE832") || x.is("WORKPIECE") || x.is("CYCLE800") || x.is("GROUP_BEGIN") || x.is("GROUP_END") ||
+        x.is("SETMS") || x.is("EXTERN")) {
+        no_path_call(x);
+        return true;
+    }
+    if (x.is("SYNACT"))
+        fail(code::unsupported_word, "Synchronized actions (" + x.text.substr(0, x.text.find(' ')) +
+                                         " ... DO ...) are not supported by toolcomp", x.column);
+    if (x.is("SETAL")) {
+        const long n = std::lround(eval_text(x.text, x.column));
+        fail(code::setal, "Alarm " + std::to_string(n) + " set by the program (SETAL)", x.column);
+    }
+    return false;
+}
+
 void Interp::block(std::span<const Token> t) {
     Context& c = stack_.back();
     if (t[0].is("DEF")) {
@@ -122,11 +195,7 @@ void Interp::block(std::span<const Token> t) {
     BlockData b;
     std::string taken;  // letters the machine's builder codes of the block read
     bool words = false;
-    std::string call_name, call_args;
-    int call_column = 0;
-    bool mcall = false;  // MCALL in this block: the cycle after it is called modally
-    std::optional<std::pair<std::string, std::vector<double>>> drill;  // CYCLE8x called here
-    std::optional<std::pair<std::string, std::string>> pattern;        // HOLES1/2, CYCLE801 called here
+    BlockCalls calls;
     Token axis_word;  // AX[axis]=value as the address of that axis
     for (const Token& raw : t) {
         const Token& x = raw.is("AX") ? (axis_word = axis_address(raw)) : raw;
@@ -134,72 +203,7 @@ void Interp::block(std::span<const Token> t) {
         // X, G, F ...: a single letter is none of the statements and calls below (each name has
         // two letters or more, "=" is no letter), the common word of a CAM block past them at once.
         const bool address = k.size() == 1 && k[0] >= 'A' && k[0] <= 'Z';
-        if (!address) {
-            if (x.is("=")) {
-                assign(x);
-                continue;
-            }
-            if (x.is("FRAME=")) {
-                frame_assign(x);
-                continue;
-            }
-            if (is_value_call(x.key)) {
-                value_call(x);
-                continue;
-            }
-            if (x.is("MSG")) {  // MSG("text" << R1): the text as the control shows it
-                std::string m = x.text;
-                if (m.find_first_not_of(" \t") == std::string::npos) {
-                    m.clear();
-                } else {
-                    try {
-                        m = eval_string(expr::parse_all(m, expr::sinumerik_syntax()), x.column);
-                    } catch (const expr::SyntaxError&) {  // a form toolcomp does not read: the text as written
-                        if (m.size() >= 2 && m.front() == '"' && m.back() == '"') m = m.substr(1, m.size() - 2);
-                    }
-                }
-                info(code::message, m, x.column);
-                continue;
-            }
-            if (x.is("MCALL")) {
-                mcall = true;
-                words = true;
-                continue;
-            }
-            if (k == "HOLES1" || k == "HOLES2" || k == "CYCLE801") {
-                if (pattern || drill) fail(code::alarm_12010, "12010 Two subprogram calls in one block", x.column);
-                pattern.emplace(k, x.text != k ? x.text.str() : std::string());
-                words = true;
-                continue;
-            }
-            if (drilling_cycle_name(k)) {
-                if (drill) fail(code::alarm_12010, "12010 Two subprogram calls in one block", x.column);
-                drill.emplace(k, cycle_arguments(k, x.text != k ? x.text.str() : std::string(), x.column));
-                words = true;
-                continue;
-            }
-            if (mcall && (is_unsupported(k) || !is_keyword(k)) && !x.has_value && x.expr < 0 && k.size() > 1)
-                fail(code::unsupported_word, "MCALL " + k + ": toolcomp calls the drilling cycles CYCLE81-CYCLE89 and CYCLE840 modally", x.column);
-            if (x.is("CALL")) {  // CALL / PCALL / EXTCALL "path": the program the lexer named
-                if (!call_name.empty()) fail(code::alarm_12010, "12010 Two subprogram calls in one block", x.column);
-                words = true;
-                call_name = x.text;
-                call_column = x.column;
-                continue;
-            }
-            if (x.is("CYCLE832") || x.is("WORKPIECE") || x.is("CYCLE800") || x.is("GROUP_BEGIN") || x.is("GROUP_END") ||
-                x.is("SETMS") || x.is("EXTERN")) {
-                no_path_call(x);
-                continue;
-            }
-            if (x.is("SYNACT"))
-                fail(code::unsupported_word, "Synchronized actions (" + x.text.substr(0, x.text.find(' ')) +
-                                                 " ... DO ...) are not supported by toolcomp", x.column);
-            if (x.is("SETAL")) {
-                const long n = std::lround(eval_text(x.text, x.column));
-                fail(code::setal, "Alarm " + std::to_string(n) + " set by the program (SETAL)", x.column);
-            }
-        }
+        if (!address && statement_or_call(x, calls, words)) continue;
         words = true;  // an address, G/M function, keyword or call: more than a computation
         if (is_unsupported(k) || (x.is("G") && (x.value == static_cast<double>(G110) || x.value == static_cast<double>(G111) || x.value == static_cast<double>(G112))))
             fail(code::unsupported_word, (x.is("G") ? "G" + std::to_string(int_value(x.value)) : k.str()) +
@@ -230,8 +234,8 @@ void Interp::block(std::span<const Token> t) {
                     continue;
                 }
                 if (l == 'L' && x.text.size() > 1 && x.expr < 0) {  // L10: subprogram call
-                    call_name = x.text;
-                    call_column = x.column;
+                    calls.name = x.text;
+                    calls.column = x.column;
                     continue;
                 }
                 if (l == 'T' && !x.text.empty() && x.text.front() == '"') {
@@ -271,24 +275,24 @@ void Interp::block(std::span<const Token> t) {
             fail(code::syntax_error, k + " must begin its block", x.column);
         // Anything else names a subprogram (found on the search path, or an error there), with
         // its arguments if it has them: NAME(1, , R5).
-        if (!call_name.empty()) fail(code::alarm_12010, "12010 Two subprogram calls in one block", x.column);
-        call_name = k;
-        call_args = x.text != k ? x.text.str() : std::string();
-        call_column = x.column;
+        if (!calls.name.empty()) fail(code::alarm_12010, "12010 Two subprogram calls in one block", x.column);
+        calls.name = k;
+        calls.args = x.text != k ? x.text.str() : std::string();
+        calls.column = x.column;
     }
     for (char c : taken) b[c].set = false;
-    if (b.has('P') && call_name.empty())
+    if (b.has('P') && calls.name.empty())
         fail(code::unused_word, "P (the passes of a subprogram call) without a call in the block", b['P'].column);
     const std::size_t moves_before = moves_;
     const bool comp_before = st_.side != 0;
-    if (mcall && !drill) modal_call_.reset();  // MCALL alone ends the modal call
+    if (calls.mcall && !calls.drill) modal_call_.reset();  // MCALL alone ends the modal call
     execute(b, t[0].column);
-    if (drill && mcall) {
-        modal_call_ = ModalCall{drill->first, drill->second};
-    } else if (drill) {
-        drilling_cycle(drill->first, drill->second, t[0].column);
-    } else if (pattern) {
-        hole_pattern(pattern->first, pattern->second, t[0].column);
+    if (calls.drill && calls.mcall) {
+        modal_call_ = ModalCall{calls.drill->first, calls.drill->second};
+    } else if (calls.drill) {
+        drilling_cycle(calls.drill->first, calls.drill->second, t[0].column);
+    } else if (calls.pattern) {
+        hole_pattern(calls.pattern->first, calls.pattern->second, t[0].column);
     } else if (modal_call_ && (b.has('X') || b.has('Y') || b.has('Z')) && moves_ > moves_before) {
         drilling_cycle(modal_call_->name, modal_call_->args, t[0].column);  // after the block's move
     }
@@ -296,16 +300,16 @@ void Interp::block(std::span<const Token> t) {
     // call): one of the "empty blocks" the control counts (alarm 10762).
     bool stop = false;
     for (auto [m, column] : b.m) stop = stop || m == M0 || m == M1;
-    if (words && moves_ == moves_before && comp_before && st_.side != 0 && call_name.empty() && !ended_ && !stop &&
+    if (words && moves_ == moves_before && comp_before && st_.side != 0 && calls.name.empty() && !ended_ && !stop &&
         profile_.radius.count_blocks_without_motion)
         sink_.control({ControlKind::no_motion, line_, Vec3::Zero(), file()});
-    if (!call_name.empty() && !ended_) {
+    if (!calls.name.empty() && !ended_) {
         int passes = 1;
         if (b.has('P')) {
             passes = int_value(b['P'].v);
             if (passes < 1 || passes > 9999) fail(code::alarm_14770, "14770 Number of passes P out of range 1..9999", b['P'].column);
         }
-        call(call_name, passes, call_column, call_args);
+        call(calls.name, passes, calls.column, calls.args);
     }
 }
 
