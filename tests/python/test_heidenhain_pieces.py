@@ -8,9 +8,7 @@ import numpy as np
 import pytest
 
 import toolcomp as tc
-
-COLUMNS = ("kind", "start", "end", "center", "abc", "line", "file", "tool", "feed", "side", "generated",
-           "tool_offset", "plane", "turns")
+from same_path import assert_same
 
 
 def contour(groups, unit=1.0, tilde_every=1):
@@ -59,13 +57,6 @@ def write(tmp_path, name, text):
     p = tmp_path / name
     p.write_bytes(text.encode())
     return str(p)
-
-
-def assert_same(path, chunks):
-    assert sum(len(c) for c in chunks) == len(path)
-    for c in COLUMNS:
-        joined = np.concatenate([np.asarray(getattr(x, c)) for x in chunks])
-        np.testing.assert_array_equal(joined, np.asarray(getattr(path, c)), err_msg=c)  # NaN equals NaN
 
 
 def diagnostics(res):

@@ -9,10 +9,9 @@ import numpy as np
 import pytest
 
 import toolcomp as tc
+from same_path import assert_same
 
 TOOLS = tc.ToolTable.parse("T1 P1 Z50 D6\nT2 P2 Z40 D10\n", "linuxcnc")
-COLUMNS = ("kind", "start", "end", "center", "abc", "line", "file", "tool", "feed", "side", "generated",
-           "tool_offset", "plane", "turns", "normal", "tool_axis")
 
 
 def contour(rows, comp="G42.1 D2"):
@@ -30,18 +29,6 @@ def write(tmp_path, name, text):
     p = tmp_path / name
     p.write_text(text)
     return str(p)
-
-
-def joined(chunks):
-    assert chunks, "no chunks"
-    return {c: np.concatenate([getattr(x, c) for x in chunks]) for c in COLUMNS}
-
-
-def assert_same(path, chunks):
-    cols = joined(chunks)
-    assert len(cols["kind"]) == len(path)
-    for c in COLUMNS:
-        np.testing.assert_array_equal(cols[c], getattr(path, c), err_msg=c)  # NaN equals NaN here
 
 
 @pytest.mark.parametrize("chunk,piece", [(1, 7), (5, 64), (777, 1000), (10**6, 4 << 20)])

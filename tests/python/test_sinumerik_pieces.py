@@ -7,9 +7,7 @@ import numpy as np
 import pytest
 
 import toolcomp as tc
-
-COLUMNS = ("kind", "start", "end", "center", "abc", "line", "file", "tool", "feed", "side", "generated",
-           "tool_offset", "plane", "turns")
+from same_path import assert_same
 
 
 def pocket(rows):
@@ -38,13 +36,6 @@ def write(tmp_path, name, text):
     p = tmp_path / name
     p.write_text(text)
     return str(p)
-
-
-def assert_same(path, chunks):
-    assert sum(len(c) for c in chunks) == len(path)
-    for c in COLUMNS:
-        joined = np.concatenate([np.asarray(getattr(x, c)) for x in chunks])
-        np.testing.assert_array_equal(joined, np.asarray(getattr(path, c)), err_msg=c)  # NaN equals NaN
 
 
 @pytest.mark.parametrize("piece", [1, 37, 500, 1 << 20])
