@@ -193,17 +193,33 @@ private:
     std::size_t block_ = 0;
 };
 
-inline void same_sinumerik_in_pieces(std::string_view text, std::size_t piece) {
-    const Program whole = sinumerik::parse(text, "<fuzz>", /*strict=*/false);
-    sinumerik::PieceParser parser("<fuzz>", /*strict=*/false, piece);
-    SameBlocks same(whole, "sinumerik pieces");
+// `text` read by `parser` in pieces against `whole`, the text parsed whole: the blocks and
+// tokens of each piece (`same_token`), and the syntax error of the last. A parser with end()
+// (Heidenhain: a held-back block, the frame's check) is given the file's end. Returns the
+// last piece's Program.
+template <typename Parser, typename SameToken>
+Program read_in_pieces(const Program& whole, Parser& parser, std::string_view text, std::size_t piece,
+                       const char* what, SameToken same_token) {
+    SameBlocks same(whole, what);
     Program last;
     for_each_piece(text, piece, [&](std::string_view t) {
         last = parser.parse(t, std::move(last));
         same.piece(last, same_token);
         return !parser.done();
     });
+    if constexpr (requires { parser.end(Program{}); }) {
+        if (!parser.done()) {
+            last = parser.end(std::move(last));
+            same.piece(last, same_token);
+        }
+    }
     same.last(last);
+    return last;
+}
+
+inline void same_sinumerik_in_pieces(std::string_view text, std::size_t piece) {
+    sinumerik::PieceParser parser("<fuzz>", /*strict=*/false, piece);
+    read_in_pieces(sinumerik::parse(text, "<fuzz>", /*strict=*/false), parser, text, piece, "sinumerik pieces", same_token);
 }
 
 // The same of a Klartext text: line numbers, the unit and the blank go on across pieces, a
@@ -217,18 +233,7 @@ inline bool same_heidenhain_token(const Token& a, const Token& b) {
 inline void same_heidenhain_in_pieces(std::string_view text, std::size_t piece) {
     const Program whole = heidenhain::parse(text, "<fuzz>", /*strict=*/false);
     heidenhain::PieceParser parser("<fuzz>", /*strict=*/false, piece);
-    SameBlocks same(whole, "heidenhain pieces");
-    Program last;
-    for_each_piece(text, piece, [&](std::string_view t) {
-        last = parser.parse(t, std::move(last));
-        same.piece(last, same_heidenhain_token);
-        return !parser.done();
-    });
-    if (!parser.done()) {
-        last = parser.end(std::move(last));
-        same.piece(last, same_heidenhain_token);
-    }
-    same.last(last);
+    const Program last = read_in_pieces(whole, parser, text, piece, "heidenhain pieces", same_heidenhain_token);
     if (last.inch != whole.inch || last.last_line != whole.last_line || last.blank.has_value() != whole.blank.has_value() ||
         (last.blank && (last.blank->min != whole.blank->min || last.blank->max != whole.blank->max ||
                         last.blank->axis != whole.blank->axis)))
