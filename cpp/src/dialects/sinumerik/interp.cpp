@@ -17,30 +17,6 @@
 
 namespace toolcomp::sinumerik {
 
-namespace {
-Ctl ctl_of(std::string_view k) {
-    if (k == "IF") return ctl_if;
-    if (k == "ELSE") return ctl_else;
-    if (k == "ENDIF") return ctl_endif;
-    if (k == "WHILE") return ctl_while;
-    if (k == "ENDWHILE") return ctl_endwhile;
-    if (k == "FOR") return ctl_for;
-    if (k == "ENDFOR") return ctl_endfor;
-    if (k == "REPEAT") return ctl_repeat;
-    if (k == "UNTIL") return ctl_until;
-    if (k == "LOOP") return ctl_loop;
-    if (k == "ENDLOOP") return ctl_endloop;
-    return ctl_none;
-}
-
-// The first statement of a block, after its number and label.
-std::span<const Token> statements(std::span<const Token> t) {
-    std::size_t i = 0;
-    while (i < t.size() && (t[i].is("N") || t[i].is(":"))) ++i;
-    return t.subspan(i);
-}
-}  // namespace
-
 Interp::Interp(const Program& prog, const ToolTable* tools, const ControlProfile& profile, const InterpretOptions& opts,
                MotionSink& sink, std::vector<Diagnostic>& diags)
     : main_(prog), tools_(tools), profile_(profile), opts_(opts), corners_(sink), sink_(corners_), diags_(diags) {

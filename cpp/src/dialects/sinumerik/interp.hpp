@@ -21,6 +21,7 @@
 #include "toolcomp/program/source_files.hpp"
 #include "toolcomp/dialects/sinumerik/interpreter.hpp"
 #include "codes.hpp"
+#include "control_statements.hpp"
 #include "corner_sink.hpp"
 #include "frame_value.hpp"
 
@@ -43,10 +44,6 @@ struct ProgramInfo {
     std::vector<std::size_t> partner;  // IF->ELSE/ENDIF, ELSE->ENDIF, WHILE<->ENDWHILE, ...
     std::vector<std::uint8_t> kind;    // the block's control statement (Ctl)
 };
-
-enum Ctl : std::uint8_t { ctl_none, ctl_if, ctl_else, ctl_endif, ctl_while, ctl_endwhile, ctl_for, ctl_endfor,
-                          ctl_repeat, ctl_until, ctl_loop, ctl_endloop, ctl_jump,
-                          ctl_section };  // REPEAT label [label] P=n, REPEATB label P=n
 
 struct Variable {
     std::vector<double> v;

@@ -1,4 +1,5 @@
 #include "toolcomp/dialects/sinumerik/lexer.hpp"
+#include "control_statements.hpp"
 #include "frame_value.hpp"
 #include "toolcomp/program/codes.hpp"
 #include "toolcomp/program/text.hpp"
@@ -644,17 +645,6 @@ bool is_address(std::string_view n) {
     return false;
 }
 
-bool is_control_statement(std::string_view n) {
-    static constexpr std::array<std::string_view, 14> steering = {
-        "IF", "ELSE", "ENDIF", "WHILE", "ENDWHILE", "FOR", "ENDFOR", "REPEAT", "REPEATB", "UNTIL", "LOOP", "ENDLOOP",
-        "CASE", "PROC"};
-    if (n.size() < 2) return false;
-    if (n.starts_with("GOTO")) return true;  // as the interpreter takes them (GOTOS too)
-    for (std::string_view k : steering)
-        if (k == n) return true;
-    return false;
-}
-
 bool is_value_call(std::string_view n) { return n == "GETTCOR" || n == "SETTCOR" || n == "LENTOAX"; }
 
 namespace detail {
@@ -775,11 +765,8 @@ Program PieceParser::parse(std::string_view text, Program prog) {
             if (!macros_->empty()) l = expanded = macros_->expand(l, line);
             LineLexer(l, line, prog).run();
             if (prog.size() > before && !prog.control_statements) {
-                for (const Token& t : prog.tokens(prog.blocks().back())) {
-                    if (t.is("N") || t.is(":")) continue;
-                    prog.control_statements = is_control_statement(t.key);
-                    break;
-                }
+                const auto t = statements(prog.tokens(prog.blocks().back()));
+                prog.control_statements = !t.empty() && is_control_statement(t[0].key);
             }
         } catch (const ParseError& e) {
             if (prog.size() > before) prog.drop_last_block();

@@ -78,11 +78,6 @@ bool has_control_flow(std::string_view text);
 // assignment (single letters, and CR, AR, TURN, DISC, OFFN, RPL, I1, J1, K1 ...).
 bool is_address(std::string_view upper_name);
 
-// Statements that steer when they begin a block (after its number and label): IF, ELSE,
-// ENDIF, WHILE, ENDWHILE, FOR, ENDFOR, REPEAT, REPEATB, UNTIL, LOOP, ENDLOOP, CASE, PROC and
-// every name that starts with GOTO. A program with none runs without an index of its structure.
-bool is_control_statement(std::string_view upper_name);
-
 // Calls whose result may be assigned ("R1=GETTCOR(...)"): GETTCOR, SETTCOR, LENTOAX. Such a
 // token's param is 1 + the target expression's index (0 when the result is not assigned).
 bool is_value_call(std::string_view upper_name);
