@@ -23,7 +23,9 @@
 #include "toolcomp/tools/sinumerik_edge.hpp"
 #include "toolcomp/tools/tool_table.hpp"
 
-#include "dialects/iso/line_lexer.hpp"  // the lexer's two readings, compared (cpp/src)
+#include "dialects/heidenhain/line_lexer.hpp"  // the lexers' two readings, compared (cpp/src)
+#include "dialects/iso/line_lexer.hpp"
+#include "dialects/sinumerik/line_lexer.hpp"
 
 namespace toolcomp::fuzz {
 
@@ -240,6 +242,30 @@ inline void same_heidenhain_in_pieces(std::string_view text, std::size_t piece) 
         throw std::logic_error("heidenhain pieces: the unit, the blank or the last line differs");
 }
 
+// The Klartext lexer's fast path must read every line it takes as the general lexer reads
+// it (tokens, values bit for bit, columns), and leave nothing behind on a line it refuses.
+inline void same_klartext_plain_reading(std::string_view text) {
+    for_each_piece(text, 1, [](std::string_view line) {
+        if (!line.empty() && line.back() == '\n') line.remove_suffix(1);
+        Program fast, slow;
+        if (!heidenhain::lex_line_fast(line, 1, fast)) {
+            if (fast.size() != 0) throw std::logic_error("klartext plain line: a refused line left a block");
+            return true;
+        }
+        try {
+            heidenhain::lex_line(line, 1, slow);
+        } catch (const Error&) {
+            throw std::logic_error("klartext plain line: taken, but the general lexer refuses it");
+        }
+        if (slow.size() == 1 && slow.blocks()[0].comment_count != 0)
+            throw std::logic_error("klartext plain line: taken, but the line has a comment");
+        SameBlocks same(slow, "klartext plain line");
+        same.piece(fast, same_heidenhain_token);
+        same.last(fast);
+        return true;
+    });
+}
+
 // Heidenhain conversational front end; the last byte's low bit parses leniently, the first
 // byte sets the size of the pieces the text is also read in.
 inline Outcome heidenhain_parse(const std::uint8_t* data, std::size_t size) {
@@ -247,7 +273,34 @@ inline Outcome heidenhain_parse(const std::uint8_t* data, std::size_t size) {
     const bool strict = size == 0 || (data[size - 1] & 1) == 0;
     const Outcome o = ok_or_error([&] { (void)heidenhain::parse(text, "<fuzz>", strict); });
     same_heidenhain_in_pieces(text, 1 + (size ? data[0] % 64 : 0));
+    same_klartext_plain_reading(text);
     return o;
+}
+
+// The Sinumerik lexer's fast path must read every line it takes (a line as the parser cuts
+// it: no CR, no NUL) as the general lexer reads it (tokens, values bit for bit, texts,
+// columns), and leave nothing behind on a line it refuses.
+inline void same_sinumerik_plain_reading(std::string_view text) {
+    for_each_piece(text, 1, [](std::string_view line) {
+        if (!line.empty() && line.back() == '\n') line.remove_suffix(1);
+        if (line.find_first_of(std::string_view("\r\0", 2)) != std::string_view::npos) return true;
+        Program fast, slow;
+        if (!sinumerik::lex_line_fast(line, 1, fast)) {
+            if (fast.size() != 0) throw std::logic_error("sinumerik plain line: a refused line left a block");
+            return true;
+        }
+        try {
+            sinumerik::lex_line(line, 1, slow);
+        } catch (const Error&) {
+            throw std::logic_error("sinumerik plain line: taken, but the general lexer refuses it");
+        }
+        if (slow.size() == 1 && slow.blocks()[0].comment_count != 0)
+            throw std::logic_error("sinumerik plain line: taken, but the line has a comment");
+        SameBlocks same(slow, "sinumerik plain line");
+        same.piece(fast, same_token);
+        same.last(fast);
+        return true;
+    });
 }
 
 // Sinumerik 840D front end; the last byte's low bit parses leniently, the first byte sets the
@@ -257,6 +310,7 @@ inline Outcome sinumerik_parse(const std::uint8_t* data, std::size_t size) {
     const bool strict = size == 0 || (data[size - 1] & 1) == 0;
     const Outcome o = ok_or_error([&] { (void)sinumerik::parse(text, "<fuzz>", strict); });
     same_sinumerik_in_pieces(text, 1 + (size ? data[0] % 64 : 0));
+    same_sinumerik_plain_reading(text);
     return o;
 }
 

@@ -71,7 +71,7 @@ void RadiusCompensation::release(std::size_t keep) {
     while (n < window_.size() && in_plane > keep) in_plane -= window_[n++].in_plane;
     if (keep == 0) n = window_.size();
     for (std::size_t i = 0; i < n; ++i) send(window_[i].m, window_[i].approach, window_[i].settled);
-    window_.erase(window_.begin(), window_.begin() + static_cast<std::ptrdiff_t>(n));
+    window_.pop_front(n);
     overcut_.report(diags_, unit_, /*all=*/false);
 }
 
@@ -233,7 +233,7 @@ bool RadiusCompensation::skip_unreachable(const Element2& next, int line) {
         }
         // Join at x: everything after w goes, the held moves without plane motion stay there.
         window_[k].m.end = with_plane(window_[k].m.end, x);
-        window_.erase(window_.begin() + static_cast<std::ptrdiff_t>(k) + 1, window_.end());
+        window_.truncate(k + 1);
         last_ = window_[k].m.end;
         last_off_ = window_[k].m.tool_offset;
         std::vector<Held> keep;

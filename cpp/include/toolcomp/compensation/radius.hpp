@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "toolcomp/compensation/background_watch.hpp"
+#include "toolcomp/compensation/front_queue.hpp"
 #include "toolcomp/control/profile.hpp"
 #include "toolcomp/geometry/element.hpp"
 #include "toolcomp/motion/motion.hpp"
@@ -146,7 +147,7 @@ private:
     int exit_line_ = 0;
     int in_line_ = 0, in_file_ = 0;  // the move or event being handed in
     BackgroundWatch overcut_;       // tool centre against the neighbouring programmed contour
-    std::vector<Emitted> window_;   // emitted, not yet released (look-ahead for bottlenecks)
+    FrontQueue<Emitted> window_;    // emitted, not yet released (look-ahead for bottlenecks)
     bool have_last_ = false;
     Vec3 last_ = Vec3::Zero();      // end of the last emitted move (nose centre)
     Vec3 last_off_ = Vec3::Zero();  // and its tool length offset (a new offset moves the start)

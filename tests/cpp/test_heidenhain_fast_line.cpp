@@ -1,0 +1,114 @@
+// The Klartext lexer's fast path (lex_line_fast) against the general lexer (lex_line): on
+// every line the fast path takes, the same block, tokens, values (bit for bit) and columns;
+// on every other line, nothing added. Random lines near the plain grammar, and hand-picked
+// ones.
+#include <catch2/catch.hpp>
+
+#include <random>
+#include <string>
+
+#include "dialects/heidenhain/line_lexer.hpp"
+#include "fuzz_targets.hpp"
+
+using namespace toolcomp;
+using toolcomp::heidenhain::lex_line_fast;
+
+namespace {
+
+std::string random_line(std::mt19937& rng) {
+    static const char* const keys[] = {"L", "CR", "C", "CC", "CT", "RND", "CHF", "LP", "X", "IX", "Y", "Z", "R",
+                                       "DR", "RL", "RR", "R0", "F", "FMAX", "M", "MB", "PA", "IPA", "CCA", "LEN",
+                                       "FN", "Q", "FQ", "BEGIN", "END", "CALL", "PGM", "TOOL", "REP", "x", "Cur",
+                                       "HSC", "MAX", "LBL", "APPR", "DEP"};
+    static const std::string odd = "#()\";~/*=:._,Qq\t\r-+";
+    std::uniform_int_distribution<int> pct(0, 99);
+    auto pick = [&](const std::string& s) { return s[std::uniform_int_distribution<std::size_t>(0, s.size() - 1)(rng)]; };
+    std::string line;
+    if (pct(rng) < 20) line += std::string(static_cast<std::size_t>(pct(rng) % 3), ' ');
+    if (pct(rng) < 60) line += std::to_string(pct(rng) * 37) + (pct(rng) < 90 ? " " : "");
+    const int words = pct(rng) % 7;
+    for (int w = 0; w < words; ++w) {
+        line += keys[std::uniform_int_distribution<std::size_t>(0, std::size(keys) - 1)(rng)];
+        if (pct(rng) < 5) line += ' ';
+        if (pct(rng) < 60) line += pct(rng) < 50 ? '-' : '+';
+        if (pct(rng) < 4) line += ' ';
+        const int digits = pct(rng) < 3 ? 16 + pct(rng) % 4 : pct(rng) % 8;
+        const int point = pct(rng) < 70 ? pct(rng) % (digits + 1) : -1;
+        for (int k = 0; k < digits; ++k) {
+            if (k == point) line += pct(rng) < 95 ? '.' : ',';
+            line += static_cast<char>('0' + pct(rng) % 10);
+            if (pct(rng) < 2) line += pick(" .+-");
+        }
+        if (point == digits) line += '.';
+        if (pct(rng) < 6) line += pick(odd);
+        const int blanks = pct(rng) < 10 ? 0 : 1 + pct(rng) % 2;
+        for (int k = 0; k < blanks; ++k) line += pct(rng) < 85 ? ' ' : '\t';
+    }
+    if (pct(rng) < 10) line += '\r';
+    return line;
+}
+
+// Whether the fast path took `line` (the fuzz target's check throws on any difference).
+bool plain(const std::string& line) {
+    Program p;
+    const bool taken = lex_line_fast(line, 1, p);
+    fuzz::same_klartext_plain_reading(line);
+    return taken;
+}
+
+}  // namespace
+
+TEST_CASE("klartext plain lines: the fast path reads what the general lexer reads, on random lines") {
+    std::mt19937 rng(20261208);
+    int taken = 0;
+    const int lines = 100000;
+    for (int i = 0; i < lines; ++i) {
+        const std::string line = random_line(rng);
+        INFO("line '" << line << "'");
+        taken += plain(line);
+    }
+    // Both ways are taken often (the generator is near the plain grammar, not on it).
+    CHECK(taken > lines / 10);
+    CHECK(taken < lines * 9 / 10);
+}
+
+TEST_CASE("klartext plain lines: hand-picked readings") {
+    Program p;
+    REQUIRE(lex_line_fast("12 L X+100 Y-2.5 R0 FMAX M3\r", 13, p));
+    REQUIRE(p.size() == 1);
+    CHECK(p.blocks()[0].line == 13);
+    const auto t = p.tokens(p.blocks()[0]);
+    REQUIRE(t.size() == 6);
+    CHECK(t[0].key == "L");
+    CHECK_FALSE(t[0].has_value);
+    CHECK(t[0].column == 4);
+    CHECK(t[1].key == "X");
+    CHECK(t[1].value == 100.0);
+    CHECK(t[1].column == 6);
+    CHECK(t[2].value == -2.5);
+    CHECK(t[3].key == "R");
+    CHECK(t[3].value == 0.0);
+    CHECK(t[4].key == "FMAX");
+    CHECK(t[5].key == "M");
+    CHECK(t[5].value == 3.0);
+    Program q;
+    REQUIRE(lex_line_fast("CR X+5 Y+0 R+3.5 DR- F600", 1, q));
+    const auto u = q.tokens(q.blocks()[0]);
+    REQUIRE(u.size() == 6);
+    CHECK(u[4].key == "DR");
+    CHECK(u[4].sign_only);
+    CHECK_FALSE(u[4].has_value);
+    CHECK(u[4].value == -1.0);
+    CHECK(u[5].value == 600.0);
+    // Left to the general lexer: a comment, a Q parameter, spaced values, F MAX, a decimal
+    // comma, a leading point, a sign after digits, a name, a statement, a structure block.
+    for (const char* line : {"L X+0 ; approach", "L X+Q5", "L Z 25", "L Z + 2", "L F MAX", "L X+1,5", "L X+.5",
+                             "CR R2+3 DR+", "CALL PGM SUB1", "BEGIN PGM A MM", "FN 0: Q1 = 5", "Q1 = 5", "* - part",
+                             "/ L X+1", "L IX-Q2", "CYCL DEF 7.0", "M140 MB MAX", "L X+1 FQ5", "l x+1",
+                             "PLANE SPATIAL SPA+0 SPB+45 SPC+0 TURN MB MAX FMAX", "L X+1234567890123456"}) {
+        Program r;
+        INFO(line);
+        CHECK_FALSE(lex_line_fast(line, 1, r));
+        CHECK(r.size() == 0);
+    }
+}

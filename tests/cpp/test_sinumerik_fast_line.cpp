@@ -1,0 +1,109 @@
+// The Sinumerik lexer's fast path (lex_line_fast) against the general lexer (lex_line): on
+// every line the fast path takes, the same block and tokens (keys, values bit for bit, texts,
+// columns); on every other line, nothing added. Random lines near the plain grammar, and
+// hand-picked ones.
+#include <catch2/catch.hpp>
+
+#include <random>
+#include <string>
+
+#include "dialects/sinumerik/line_lexer.hpp"
+#include "fuzz_targets.hpp"
+
+using namespace toolcomp;
+using toolcomp::sinumerik::lex_line_fast;
+
+namespace {
+
+std::string random_line(std::mt19937& rng) {
+    static const char* const keys[] = {"G", "X", "Y", "Z", "I", "J", "K", "F", "S", "M", "T", "D", "N", "R", "CR",
+                                       "x", "g", "n", "CDOF", "CUT", "GOTOF", "AC", "IF", "L", "P", "A", "B", "C"};
+    static const std::string odd = "=([;:_$\"'/%.\t+-";
+    std::uniform_int_distribution<int> pct(0, 99);
+    auto pick = [&](const std::string& s) { return s[std::uniform_int_distribution<std::size_t>(0, s.size() - 1)(rng)]; };
+    std::string line;
+    if (pct(rng) < 20) line += std::string(static_cast<std::size_t>(pct(rng) % 3), pct(rng) < 80 ? ' ' : '\t');
+    if (pct(rng) < 40) line += (pct(rng) < 90 ? "N" : "n") + std::to_string(pct(rng) * (pct(rng) < 5 ? 123456789 : 37)) +
+                               (pct(rng) < 90 ? " " : "");
+    const int words = pct(rng) % 7;
+    for (int w = 0; w < words; ++w) {
+        line += keys[std::uniform_int_distribution<std::size_t>(0, std::size(keys) - 1)(rng)];
+        if (pct(rng) < 5) line += pick("= ");
+        if (pct(rng) < 20) line += pick("-+");
+        const int digits = pct(rng) < 3 ? 16 + pct(rng) % 4 : pct(rng) % 8;
+        const int point = pct(rng) < 60 ? pct(rng) % (digits + 1) : -1;
+        for (int k = 0; k < digits; ++k) {
+            if (k == point) line += '.';
+            line += static_cast<char>('0' + pct(rng) % 10);
+            if (pct(rng) < 2) line += pick(" .E");
+        }
+        if (point == digits) line += '.';
+        if (pct(rng) < 6) line += pick(odd);
+        const int blanks = pct(rng) < 10 ? 0 : 1 + pct(rng) % 2;
+        for (int k = 0; k < blanks; ++k) line += pct(rng) < 85 ? ' ' : '\t';
+    }
+    return line;
+}
+
+// Whether the fast path took `line` (the fuzz target's check throws on any difference).
+bool plain(const std::string& line) {
+    Program p;
+    const bool taken = lex_line_fast(line, 1, p);
+    fuzz::same_sinumerik_plain_reading(line);
+    return taken;
+}
+
+}  // namespace
+
+TEST_CASE("sinumerik plain lines: the fast path reads what the general lexer reads, on random lines") {
+    std::mt19937 rng(20261208);
+    int taken = 0;
+    const int lines = 100000;
+    for (int i = 0; i < lines; ++i) {
+        const std::string line = random_line(rng);
+        INFO("line '" << line << "'");
+        taken += plain(line);
+    }
+    // Both ways are taken often (the generator is near the plain grammar, not on it).
+    CHECK(taken > lines / 10);
+    CHECK(taken < lines * 9 / 10);
+}
+
+TEST_CASE("sinumerik plain lines: hand-picked readings") {
+    Program p;
+    REQUIRE(lex_line_fast("N0040 g3 X95 Y7.250 I0 J2.5", 8, p));
+    REQUIRE(p.size() == 1);
+    CHECK(p.blocks()[0].line == 8);
+    const auto t = p.tokens(p.blocks()[0]);
+    REQUIRE(t.size() == 6);
+    CHECK(t[0].key == "N");
+    CHECK(t[0].value == 40.0);
+    CHECK(t[0].text.empty());
+    CHECK(t[1].key == "G");
+    CHECK(t[1].text == "G3");
+    CHECK(t[1].value == 3.0);
+    CHECK(t[1].column == 7);
+    CHECK(t[3].key == "Y");
+    CHECK(t[3].value == 7.25);
+    CHECK(t[3].text == "Y7");  // the word's letter and digits before the point
+    CHECK(t[5].value == 2.5);
+    Program q;
+    REQUIRE(lex_line_fast("G2 X5 Y-0.001 I0 J-3.5 F+.5", 1, q));  // signs, a leading point
+    const auto u = q.tokens(q.blocks()[0]);
+    REQUIRE(u.size() == 6);
+    CHECK(u[2].value == -0.001);
+    CHECK(u[2].text == "Y");  // a signed value: the letter alone
+    CHECK(u[4].value == -3.5);
+    CHECK(u[5].value == 0.5);
+    CHECK(u[5].text == "F");
+    // Left to the general lexer: comments, assignments, signs, names, labels, calls, block
+    // delete, main blocks, '%' headers, compact words.
+    for (const char* line : {"G1 X10 ; cut", "X=10", "X - 5", "X-", "X--5", "G1 X=R1", "CDOF2", "LOOP1: G1", "N10G1", "/G1 X1", ":10 G1",
+                             "%_N_PART_MPF", "G1X10Y20", "X1.2.3", "MSG(\"x\")", "G1 CR=5", "T1 D1 M6 ; tool",
+                             "X12345678901234567", "N1234567890 G1", "G1 X."}) {
+        Program r;
+        INFO(line);
+        CHECK_FALSE(lex_line_fast(line, 1, r));
+        CHECK(r.size() == 0);
+    }
+}
