@@ -33,9 +33,10 @@ bool lex_line_fast(std::string_view line, int line_no, Program& prog) {
         // '-' before a letter (HSC-MODE), a Q parameter (Q5 = ..., FQ58, X Q5).
         const std::size_t column = k;
         if (k == n || !upper(s[k])) break;
-        while (k < n && upper(s[k])) ++k;
+        bool q = false;
+        while (k < n && upper(s[k])) q |= s[k++] == 'Q';
+        if (q) break;
         const std::string_view key(s + column, k - column);
-        if (key.find('Q') != std::string_view::npos) break;
         // Statements and names (FN 0: ..., BEGIN PGM NAME, CALL PGM FILE) are the general lexer's.
         if (first && (key == "FN" || key == "BEGIN" || key == "END" || key == "CALL")) break;
         if (k < n && !blank(s[k]) && s[k] != '+' && s[k] != '-' && !digit(s[k])) break;
