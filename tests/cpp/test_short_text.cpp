@@ -1,4 +1,4 @@
-// ShortText: a token's text in 16 bytes, in place up to 15 characters, on the heap beyond.
+// ShortText: a token's text in 8 bytes, in place up to 6 characters, on the heap beyond.
 #include <catch2/catch.hpp>
 
 #include <string>
@@ -42,9 +42,13 @@ TEST_CASE("ShortText: assign and append from its own text, edits, comparisons, c
     ShortText long_text("ABCDEFGHIJKLMNOPQRSTUVWXYZ");
     long_text.assign(std::string_view(long_text).substr(20));
     CHECK(long_text == "UVWXYZ");
-    ShortText a("ABCDEFGHIJKLMN");  // 14, then 16 characters: from in place to the heap
+    ShortText a("ABCDE");  // 5, then 7 characters: from in place to the heap
     a.append(std::string_view(a).substr(0, 2));
-    CHECK(a == "ABCDEFGHIJKLMNAB");
+    CHECK(a == "ABCDEAB");
+    ShortText six("ABCDEF");  // 6: in place, full
+    six.append(std::string_view(six).substr(5));
+    CHECK(six == "ABCDEFF");
+    CHECK(std::string(six.c_str()) == "ABCDEFF");
     a.clear();
     CHECK(a.empty());
     ShortText k;
@@ -65,5 +69,5 @@ TEST_CASE("ShortText: assign and append from its own text, edits, comparisons, c
     v.resize(1000);  // moved on growth
     CHECK(v[99] == "A LONGER TEXT THAN FIFTEEN");
     CHECK(v[999].empty());
-    static_assert(sizeof(ShortText) == 16);
+    static_assert(sizeof(ShortText) == 8);
 }

@@ -81,7 +81,7 @@ struct Token {
         return true;
     }
 };
-static_assert(sizeof(Token) <= 56, "a million-block program holds millions of tokens");
+static_assert(sizeof(Token) <= 40, "a million-block program holds millions of tokens");
 
 struct Comment {
     std::string text;  // without the delimiters

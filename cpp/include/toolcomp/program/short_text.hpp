@@ -1,11 +1,12 @@
 #pragma once
-// ShortText: the text of a token (its key "X", "GETTCOR", its word as written "X100.25", a
-// label), in 16 bytes where std::string takes 32: up to 15 characters in place, longer ones on
-// the heap. A million-block program holds millions of tokens, and each byte of a token is
-// memory the kernel zeroes and the interpreter reads again.
+// ShortText: the text of a token (its key "X", "CR", "FMAX", its word as written "X100", a
+// label), in 8 bytes where std::string takes 32: up to 6 characters in place, longer ones
+// ("GETTCOR", a quoted name) on the heap. A million-block program holds millions of tokens,
+// and each byte of a token is memory the kernel zeroes and the interpreter reads again.
 //
 // It reads as a std::string_view (comparisons, find, starts_with ...) and converts to a
 // std::string where one is needed; substr returns a std::string, as std::string's does.
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -47,7 +48,7 @@ public:
 
     ShortText& assign(std::string_view s) {
         if (!on_heap() && s.size() <= kInline) {  // in place (s may lie in this text)
-            if (!s.empty()) std::memmove(buf_, s.data(), s.size());
+            if (!s.empty()) std::memmove(buf_ + 1, s.data(), s.size());
             set_inline_size(s.size());
             return *this;
         }
@@ -57,7 +58,7 @@ public:
     }
     ShortText& assign(std::size_t n, char c) {
         if (!on_heap() && n <= kInline) {
-            std::memset(buf_, c, n);
+            std::memset(buf_ + 1, c, n);
             set_inline_size(n);
             return *this;
         }
@@ -66,7 +67,7 @@ public:
     ShortText& append(std::string_view s) {
         if (!on_heap() && size() + s.size() <= kInline) {  // in place (s may lie in this text)
             const std::size_t n = size();
-            if (!s.empty()) std::memmove(buf_ + n, s.data(), s.size());
+            if (!s.empty()) std::memmove(buf_ + 1 + n, s.data(), s.size());
             set_inline_size(n + s.size());
             return *this;
         }
@@ -83,11 +84,11 @@ public:
     }
     void reserve(std::size_t) noexcept {}  // a ShortText is written once
 
-    std::size_t size() const noexcept { return on_heap() ? heap_size() : kInline - tag(); }
+    std::size_t size() const noexcept { return on_heap() ? heap_size() : static_cast<unsigned char>(buf_[0]) >> 1; }
     std::size_t length() const noexcept { return size(); }
     bool empty() const noexcept { return size() == 0; }
-    const char* data() const noexcept { return on_heap() ? heap_ptr() : buf_; }
-    char* data() noexcept { return on_heap() ? heap_ptr() : buf_; }
+    const char* data() const noexcept { return on_heap() ? heap_ptr() : buf_ + 1; }
+    char* data() noexcept { return on_heap() ? heap_ptr() : buf_ + 1; }
     const char* c_str() const noexcept { return data(); }
     std::string_view view() const noexcept { return {data(), size()}; }
     operator std::string_view() const noexcept { return view(); }  // NOLINT
@@ -134,50 +135,47 @@ public:
     friend std::string operator+(char a, const ShortText& b) { return std::string(1, a).append(b.view()); }
 
 private:
-    // In place: the characters, a NUL after them, and in the last byte 15 - size (0, the NUL
-    // itself, when 15 characters fill it). On the heap: the pointer and the size (32 bits) at
-    // the front, kHeap in the last byte.
-    static constexpr std::size_t kInline = 15;
-    static constexpr unsigned char kHeap = 0xFF;
+    // In place: the first byte is 2 * size + 1 (odd), the characters follow with a NUL after
+    // them. On the heap: the bytes hold a pointer to a block of 32-bit words (so its lowest
+    // byte, the first on a little-endian machine, is even): the size, then the characters
+    // and a NUL.
+    static constexpr std::size_t kInline = 6;
 
-    unsigned char tag() const noexcept { return static_cast<unsigned char>(buf_[kInline]); }
-    bool on_heap() const noexcept { return tag() == kHeap; }
-    char* heap_ptr() const noexcept {
-        char* p;
+    bool on_heap() const noexcept { return (static_cast<unsigned char>(buf_[0]) & 1) == 0; }
+    std::uint32_t* block() const noexcept {
+        std::uint32_t* p;
         std::memcpy(&p, buf_, sizeof p);
         return p;
     }
-    std::size_t heap_size() const noexcept {
-        std::uint32_t n;
-        std::memcpy(&n, buf_ + sizeof(char*), sizeof n);
-        return n;
-    }
+    char* heap_ptr() const noexcept { return reinterpret_cast<char*>(block() + 1); }
+    std::size_t heap_size() const noexcept { return block()[0]; }
     void set_inline_size(std::size_t n) noexcept {
-        buf_[n] = '\0';
-        buf_[kInline] = static_cast<char>(kInline - n);
+        buf_[1 + n] = '\0';
+        buf_[0] = static_cast<char>(2 * n + 1);
     }
     void init(std::string_view s) {
         if (s.size() <= kInline) {
-            if (!s.empty()) std::memcpy(buf_, s.data(), s.size());
+            if (!s.empty()) std::memcpy(buf_ + 1, s.data(), s.size());
             set_inline_size(s.size());
             return;
         }
-        if (s.size() > UINT32_MAX) throw std::length_error("ShortText longer than 4 GB");
-        char* p = new char[s.size() + 1];
-        std::memcpy(p, s.data(), s.size());
-        p[s.size()] = '\0';
-        const auto n = static_cast<std::uint32_t>(s.size());
+        if (s.size() > UINT32_MAX - 8) throw std::length_error("ShortText longer than 4 GB");
+        std::uint32_t* p = new std::uint32_t[1 + (s.size() + 4) / 4];  // the size, the characters and a NUL
+        p[0] = static_cast<std::uint32_t>(s.size());
+        char* d = reinterpret_cast<char*>(p + 1);
+        std::memcpy(d, s.data(), s.size());
+        d[s.size()] = '\0';
         std::memcpy(buf_, &p, sizeof p);
-        std::memcpy(buf_ + sizeof p, &n, sizeof n);
-        buf_[kInline] = static_cast<char>(kHeap);
     }
     void release() noexcept {
-        if (on_heap()) delete[] heap_ptr();
+        if (on_heap()) delete[] block();
     }
 
-    char buf_[16];
+    char buf_[8];
 };
 
-static_assert(sizeof(ShortText) == 16);
+static_assert(std::endian::native == std::endian::little, "the in-place mark is the pointer's lowest byte");
+static_assert(sizeof(void*) <= 8 && alignof(std::uint32_t) >= 2);
+static_assert(sizeof(ShortText) == 8);
 
 }  // namespace toolcomp
