@@ -106,8 +106,12 @@ std::string spelled(const Token& t) {
 void check_path_words(std::span<const Token> t, int line) {
     if (t.empty()) return;
     const Function* f = nullptr;
+    const std::string_view head = t[0].key;
     for (const Function& g : kFunctions)
-        if (t[0].key == g.name) f = &g;
+        if (head == g.name) {
+            f = &g;
+            break;
+        }
     if (!f) return;
     auto fn = [&] { return f->first == 2 && t.size() > 1 ? t[0].key + " " + t[1].key : t[0].key.str(); };  // for messages
     std::array<int, 21> seen{};

@@ -151,6 +151,10 @@ std::string Interp::eval_string(const expr::Expr& e, int column) {
 
 double Interp::value_of(const Token& t) { return t.expr >= 0 ? eval(t.expr, t.column) : t.value; }
 
+Value Interp::address_value(const Token& t) {
+    return Value{.v = value_of(t), .column = t.column, .mod = static_cast<std::int16_t>(t.param), .set = true};
+}
+
 void Interp::run() {
     stack_.push_back(Context{&main_, &info_of(main_), 0, {}, false, 0, 0, file_index(main_.name)});
     // A PROC run as the main program: its parameters as omitted ones (0, "", VAR ones too)

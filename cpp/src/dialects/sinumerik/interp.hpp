@@ -9,6 +9,7 @@
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 #include <array>
+#include <cstdint>
 #include <deque>
 #include <map>
 #include <memory>
@@ -65,11 +66,12 @@ struct Variable {
 
 // A value word of a block, evaluated.
 struct Value {
-    bool set = false;
     double v = 0;
-    int mod = 0;  // 1 AC, 2 IC
     int column = 0;
+    std::int16_t mod = 0;  // 1 AC, 2 IC, 3 DC, 4 ACP, 5 ACN
+    bool set = false;
 };
+static_assert(sizeof(Value) == 16, "a block holds 40 of them, made anew each block");
 
 // A block's G or M functions (code, column) in their order: a few are kept in place, without
 // an allocation for each block; a block with more moves them to the heap.
@@ -233,6 +235,7 @@ private:
     void info(const char* code, const std::string& msg, int column = 0);
     double eval(std::int32_t e, int column);
     double value_of(const Token& t);
+    Value address_value(const Token& t);  // X10, X=AC(R1): its value, AC/IC... (the lexer's param 1-5), column
     std::pair<Variable*, std::size_t> element(Variable& v, std::span<const double> idx, const std::string& name, int column);
     std::optional<std::string> axis_named(const std::string& name);  // X, $P_AXN3, an AXIS variable
     std::string axis_value(const expr::Expr& e, int column);  // AXIS: X, an AXIS variable, $P_AXN1

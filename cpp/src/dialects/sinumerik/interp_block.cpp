@@ -241,7 +241,7 @@ void Interp::block(std::span<const Token> t) {
                 if (l == 'T' && !x.text.empty() && x.text.front() == '"') {
                     b.tool_name = x.text.substr(1, x.text.size() - 2);
                     b.tool_name_column = x.column;
-                    b['T'] = Value{true, 0, 0, x.column};
+                    b['T'] = Value{.column = x.column, .set = true};
                     continue;
                 }
                 if (l == 'R')  // R5 without "=": a parameter named alone does nothing
@@ -250,7 +250,7 @@ void Interp::block(std::span<const Token> t) {
                          x.column);
                 Value& v = b[l];
                 if (v.set) fail(code::alarm_12010, "12010 Address " + k + " programmed too often", x.column);
-                v = Value{true, value_of(x), x.param, x.column};
+                v = address_value(x);
                 continue;
             }
             Value* v = x.is("CR") ? &b.cr : x.is("AR") ? &b.ar : x.is("TURN") ? &b.turn : x.is("DISC") ? &b.disc
@@ -259,7 +259,7 @@ void Interp::block(std::span<const Token> t) {
                      : x.is("CHF") ? &b.chf : x.is("CHR") ? &b.chr : nullptr;
             if (!v) fail(code::unsupported_word, (x.text.empty() || x.text[0] == '"' ? k + "=" : x.text.str()) + " is not supported by toolcomp", x.column);
             if (v->set) fail(code::alarm_12010, "12010 Address " + k + " programmed too often", x.column);
-            *v = Value{true, value_of(x), x.param, x.column};
+            *v = address_value(x);
             continue;
         }
         if (is_keyword(k)) {
