@@ -446,15 +446,20 @@ bool Interp::run_blocks(const Program& prog, int depth) {
         if (!k.has_value && k.key.empty() && !k.text.empty()) return '"' + k.text + '"';
         return {};
     };
-    std::map<std::string, std::size_t> labels;
-    for (std::size_t i = 0; i < blocks.size(); ++i) {
-        auto t = prog.tokens(blocks[i]);
-        if (t.size() >= 2 && t[0].is("LBL") && !(t[1].has_value && t[1].value == 0) && !label_name(t[1]).empty())
-            labels[label_name(t[1])] = i;
-    }
+    // Found at the first jump: a program without one (a CAM program, read in pieces or not)
+    // is not read an extra time.
+    std::optional<std::map<std::string, std::size_t>> labels;
     auto label = [&](const std::string& name, const Token& at) {
-        auto it = labels.find(name);
-        if (it == labels.end()) fail(code::label_not_found, "LBL " + name + " not found", at.column);
+        if (!labels) {
+            labels.emplace();
+            for (std::size_t i = 0; i < blocks.size(); ++i) {
+                auto t = prog.tokens(blocks[i]);
+                if (t.size() >= 2 && t[0].is("LBL") && !(t[1].has_value && t[1].value == 0) && !label_name(t[1]).empty())
+                    (*labels)[label_name(t[1])] = i;
+            }
+        }
+        auto it = labels->find(name);
+        if (it == labels->end()) fail(code::label_not_found, "LBL " + name + " not found", at.column);
         return it->second;
     };
     int q_column = 0;  // the statement being run
