@@ -28,6 +28,24 @@ void column_deallocate(void* p, std::size_t bytes) noexcept;
 void column_release_tail(void* p, std::size_t used, std::size_t capacity) noexcept;
 }  // namespace detail
 
+// The same memory for a std::vector of values that are not plain (a Program's tokens, whose
+// texts may own heap memory): large ones on huge pages, and a mapping given back is kept for
+// the next column or vector to take, its pages already faulted in.
+template <class T>
+struct ColumnAllocator {
+    using value_type = T;
+    ColumnAllocator() noexcept = default;
+    template <class U>
+    ColumnAllocator(const ColumnAllocator<U>&) noexcept {}  // NOLINT: rebinding, as std::allocator
+    T* allocate(std::size_t n) {
+        if (n > static_cast<std::size_t>(-1) / sizeof(T)) throw std::bad_array_new_length();
+        return static_cast<T*>(detail::column_allocate(n * sizeof(T)));
+    }
+    void deallocate(T* p, std::size_t n) noexcept { detail::column_deallocate(p, n * sizeof(T)); }
+    template <class U>
+    bool operator==(const ColumnAllocator<U>&) const noexcept { return true; }
+};
+
 // A growable array of trivially copyable values (the std::vector operations the columns
 // use), in memory from column_allocate. Beyond std::vector: `push_unchecked` and
 // `append_unchecked` write into capacity reserved before, without a test per value (the Path

@@ -26,7 +26,7 @@ void Program::drop_last_block() {
 void Program::clear() {
     Column<Block> blocks = std::move(blocks_);
     Column<Word> words = std::move(words_);
-    std::vector<Token> tokens = std::move(tokens_);
+    auto tokens = std::move(tokens_);
     std::vector<Comment> comments = std::move(comments_);
     *this = Program();
     blocks.clear();

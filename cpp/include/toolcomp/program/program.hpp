@@ -196,7 +196,7 @@ private:
     Column<Block> blocks_;
     Column<Word> words_;
     std::vector<Comment> comments_;
-    std::vector<Token> tokens_;
+    std::vector<Token, ColumnAllocator<Token>> tokens_;  // huge pages, kept for the next program
     std::vector<expr::Expr> exprs_;
     std::vector<Statement> statements_;
 };
