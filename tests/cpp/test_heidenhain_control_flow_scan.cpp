@@ -57,6 +57,21 @@ TEST_CASE("heidenhain has_control_flow: CAM text streams") {
     CHECK_FALSE(has_control_flow("26 LBLX+1\n27 LABELS\n28 L X+1 M91 ; label\n"));  // no such word
 }
 
+TEST_CASE("heidenhain has_control_flow: a steering word at every offset, lines passed over 32 bytes at a time") {
+    const std::string cam = "7 L X+100 Y+2.000 R0 FMAX M3\n8 CR X+95 Y+7.000 R+2.5 DR+ F600\n";
+    for (std::size_t off = 0; off < 80; ++off) {
+        for (const char* word : {"LBL 1", "GOTO", "fn 9", "Label"}) {
+            const std::string line = "5 L X+1" + std::string(off, ' ') + word + "\n";
+            INFO("offset " << off << ", " << word);
+            CHECK(has_control_flow(cam + line));         // at the text's end
+            CHECK(has_control_flow(cam + line + cam));   // with CAM lines after it
+            CHECK(has_control_flow(line + cam + cam));   // first
+        }
+        const std::string plain = "5 L X+1" + std::string(off, ' ') + "Y+2 DR- FMAX\n";
+        CHECK_FALSE(has_control_flow(cam + plain + cam + plain));
+    }
+}
+
 namespace {
 // `text` read in pieces cut after the lines listed (line numbers, 1-based), then end().
 std::vector<toolcomp::Program> in_pieces(const std::string& text, std::vector<int> cuts, bool strict = false) {
