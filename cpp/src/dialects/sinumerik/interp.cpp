@@ -151,8 +151,11 @@ std::string Interp::eval_string(const expr::Expr& e, int column) {
 
 double Interp::value_of(const Token& t) { return t.expr >= 0 ? eval(t.expr, t.column) : t.value; }
 
-Value Interp::address_value(const Token& t) {
-    return Value{.v = value_of(t), .column = t.column, .mod = static_cast<std::int16_t>(t.param), .set = true};
+void Interp::set_address(Value& v, const Token& t) {
+    v.v = value_of(t);  // first: a value that fails leaves v as it was
+    v.column = t.column;
+    v.mod = static_cast<std::int16_t>(t.param);
+    v.set = true;
 }
 
 void Interp::run() {

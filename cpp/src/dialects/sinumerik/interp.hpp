@@ -235,7 +235,9 @@ private:
     void info(const char* code, const std::string& msg, int column = 0);
     double eval(std::int32_t e, int column);
     double value_of(const Token& t);
-    Value address_value(const Token& t);  // X10, X=AC(R1): its value, AC/IC... (the lexer's param 1-5), column
+    // X10, X=AC(R1) into `v`: its value, AC/IC... (the lexer's param 1-5), column. Written in
+    // place: a Value returned and copied costs a stalled load a word.
+    void set_address(Value& v, const Token& t);
     std::pair<Variable*, std::size_t> element(Variable& v, std::span<const double> idx, const std::string& name, int column);
     std::optional<std::string> axis_named(const std::string& name);  // X, $P_AXN3, an AXIS variable
     std::string axis_value(const expr::Expr& e, int column);  // AXIS: X, an AXIS variable, $P_AXN1

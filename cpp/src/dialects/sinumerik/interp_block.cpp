@@ -250,7 +250,7 @@ void Interp::block(std::span<const Token> t) {
                          x.column);
                 Value& v = b[l];
                 if (v.set) fail(code::alarm_12010, "12010 Address " + k + " programmed too often", x.column);
-                v = address_value(x);
+                set_address(v, x);
                 continue;
             }
             Value* v = x.is("CR") ? &b.cr : x.is("AR") ? &b.ar : x.is("TURN") ? &b.turn : x.is("DISC") ? &b.disc
@@ -259,7 +259,7 @@ void Interp::block(std::span<const Token> t) {
                      : x.is("CHF") ? &b.chf : x.is("CHR") ? &b.chr : nullptr;
             if (!v) fail(code::unsupported_word, (x.text.empty() || x.text[0] == '"' ? k + "=" : x.text.str()) + " is not supported by toolcomp", x.column);
             if (v->set) fail(code::alarm_12010, "12010 Address " + k + " programmed too often", x.column);
-            *v = address_value(x);
+            set_address(*v, x);
             continue;
         }
         if (is_keyword(k)) {
