@@ -242,28 +242,39 @@ inline void same_heidenhain_in_pieces(std::string_view text, std::size_t piece) 
         throw std::logic_error("heidenhain pieces: the unit, the blank or the last line differs");
 }
 
-// The Klartext lexer's fast path must read every line it takes as the general lexer reads
-// it (tokens, values bit for bit, columns), and leave nothing behind on a line it refuses.
-inline void same_klartext_plain_reading(std::string_view text) {
-    for_each_piece(text, 1, [](std::string_view line) {
+// A token-lexer's fast path (Sinumerik, Klartext) must read every line of `text` it takes as
+// the general lexer reads it (tokens by `same_token`, values bit for bit, columns), and leave
+// nothing behind on a line it refuses; lines with a byte of `cut_at` are not lines the
+// parser gives it. A difference is a bug (std::logic_error).
+template <typename Fast, typename General, typename SameToken>
+void same_plain_token_reading(std::string_view text, const char* what, std::string_view cut_at, Fast fast_lexer,
+                              General general_lexer, SameToken same_token) {
+    for_each_piece(text, 1, [&](std::string_view line) {
         if (!line.empty() && line.back() == '\n') line.remove_suffix(1);
+        if (line.find_first_of(cut_at) != std::string_view::npos) return true;
         Program fast, slow;
-        if (!heidenhain::lex_line_fast(line, 1, fast)) {
-            if (fast.size() != 0) throw std::logic_error("klartext plain line: a refused line left a block");
+        if (!fast_lexer(line, 1, fast)) {
+            if (fast.size() != 0) throw std::logic_error(std::string(what) + ": a refused line left a block");
             return true;
         }
         try {
-            heidenhain::lex_line(line, 1, slow);
+            general_lexer(line, 1, slow);
         } catch (const Error&) {
-            throw std::logic_error("klartext plain line: taken, but the general lexer refuses it");
+            throw std::logic_error(std::string(what) + ": taken, but the general lexer refuses it");
         }
         if (slow.size() == 1 && slow.blocks()[0].comment_count != 0)
-            throw std::logic_error("klartext plain line: taken, but the line has a comment");
-        SameBlocks same(slow, "klartext plain line");
-        same.piece(fast, same_heidenhain_token);
+            throw std::logic_error(std::string(what) + ": taken, but the line has a comment");
+        SameBlocks same(slow, what);
+        same.piece(fast, same_token);
         same.last(fast);
         return true;
     });
+}
+
+inline void same_klartext_plain_reading(std::string_view text) {
+    same_plain_token_reading(text, "klartext plain line", {}, heidenhain::lex_line_fast,
+                             [](std::string_view l, int n, Program& p) { heidenhain::lex_line(l, n, p); },
+                             same_heidenhain_token);
 }
 
 // Heidenhain conversational front end; the last byte's low bit parses leniently, the first
@@ -277,30 +288,10 @@ inline Outcome heidenhain_parse(const std::uint8_t* data, std::size_t size) {
     return o;
 }
 
-// The Sinumerik lexer's fast path must read every line it takes (a line as the parser cuts
-// it: no CR, no NUL) as the general lexer reads it (tokens, values bit for bit, texts,
-// columns), and leave nothing behind on a line it refuses.
+// The Sinumerik parser cuts lines at CR too, and refuses a NUL before lexing.
 inline void same_sinumerik_plain_reading(std::string_view text) {
-    for_each_piece(text, 1, [](std::string_view line) {
-        if (!line.empty() && line.back() == '\n') line.remove_suffix(1);
-        if (line.find_first_of(std::string_view("\r\0", 2)) != std::string_view::npos) return true;
-        Program fast, slow;
-        if (!sinumerik::lex_line_fast(line, 1, fast)) {
-            if (fast.size() != 0) throw std::logic_error("sinumerik plain line: a refused line left a block");
-            return true;
-        }
-        try {
-            sinumerik::lex_line(line, 1, slow);
-        } catch (const Error&) {
-            throw std::logic_error("sinumerik plain line: taken, but the general lexer refuses it");
-        }
-        if (slow.size() == 1 && slow.blocks()[0].comment_count != 0)
-            throw std::logic_error("sinumerik plain line: taken, but the line has a comment");
-        SameBlocks same(slow, "sinumerik plain line");
-        same.piece(fast, same_token);
-        same.last(fast);
-        return true;
-    });
+    same_plain_token_reading(text, "sinumerik plain line", std::string_view("\r\0", 2), sinumerik::lex_line_fast,
+                             sinumerik::lex_line, same_token);
 }
 
 // Sinumerik 840D front end; the last byte's low bit parses leniently, the first byte sets the

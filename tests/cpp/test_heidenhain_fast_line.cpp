@@ -9,6 +9,7 @@
 
 #include "dialects/heidenhain/line_lexer.hpp"
 #include "fuzz_targets.hpp"
+#include "random_word_lines.hpp"
 
 using namespace toolcomp;
 using toolcomp::heidenhain::lex_line_fast;
@@ -16,34 +17,22 @@ using toolcomp::heidenhain::lex_line_fast;
 namespace {
 
 std::string random_line(std::mt19937& rng) {
-    static const char* const keys[] = {"L", "CR", "C", "CC", "CT", "RND", "CHF", "LP", "X", "IX", "Y", "Z", "R",
-                                       "DR", "RL", "RR", "R0", "F", "FMAX", "M", "MB", "PA", "IPA", "CCA", "LEN",
-                                       "FN", "Q", "FQ", "BEGIN", "END", "CALL", "PGM", "TOOL", "REP", "x", "Cur",
-                                       "HSC", "MAX", "LBL", "APPR", "DEP"};
-    static const std::string odd = "#()\";~/*=:._,Qq\t\r-+";
+    static const test::WordLineShape shape{
+        .keys = {"L", "CR", "C", "CC", "CT", "RND", "CHF", "LP", "X", "IX", "Y", "Z", "R", "DR", "RL", "RR", "R0",
+                 "F", "FMAX", "M", "MB", "PA", "IPA", "CCA", "LEN", "FN", "Q", "FQ", "BEGIN", "END", "CALL", "PGM",
+                 "TOOL", "REP", "x", "Cur", "HSC", "MAX", "LBL", "APPR", "DEP"},
+        .after_key = " ",
+        .sign_percent = 60,
+        .blank_after_sign = true,
+        .point_percent = 70,
+        .decimal_comma = true,
+        .in_number = " .+-",
+        .odd = "#()\";~/*=:._,Qq\t\r-+"};
     std::uniform_int_distribution<int> pct(0, 99);
-    auto pick = [&](const std::string& s) { return s[std::uniform_int_distribution<std::size_t>(0, s.size() - 1)(rng)]; };
-    std::string line;
-    if (pct(rng) < 20) line += std::string(static_cast<std::size_t>(pct(rng) % 3), ' ');
-    if (pct(rng) < 60) line += std::to_string(pct(rng) * 37) + (pct(rng) < 90 ? " " : "");
-    const int words = pct(rng) % 7;
-    for (int w = 0; w < words; ++w) {
-        line += keys[std::uniform_int_distribution<std::size_t>(0, std::size(keys) - 1)(rng)];
-        if (pct(rng) < 5) line += ' ';
-        if (pct(rng) < 60) line += pct(rng) < 50 ? '-' : '+';
-        if (pct(rng) < 4) line += ' ';
-        const int digits = pct(rng) < 3 ? 16 + pct(rng) % 4 : pct(rng) % 8;
-        const int point = pct(rng) < 70 ? pct(rng) % (digits + 1) : -1;
-        for (int k = 0; k < digits; ++k) {
-            if (k == point) line += pct(rng) < 95 ? '.' : ',';
-            line += static_cast<char>('0' + pct(rng) % 10);
-            if (pct(rng) < 2) line += pick(" .+-");
-        }
-        if (point == digits) line += '.';
-        if (pct(rng) < 6) line += pick(odd);
-        const int blanks = pct(rng) < 10 ? 0 : 1 + pct(rng) % 2;
-        for (int k = 0; k < blanks; ++k) line += pct(rng) < 85 ? ' ' : '\t';
-    }
+    std::string head;
+    if (pct(rng) < 20) head += std::string(static_cast<std::size_t>(pct(rng) % 3), ' ');
+    if (pct(rng) < 60) head += std::to_string(pct(rng) * 37) + (pct(rng) < 90 ? " " : "");
+    std::string line = test::random_word_line(rng, shape, head);
     if (pct(rng) < 10) line += '\r';
     return line;
 }

@@ -9,6 +9,7 @@
 
 #include "dialects/sinumerik/line_lexer.hpp"
 #include "fuzz_targets.hpp"
+#include "random_word_lines.hpp"
 
 using namespace toolcomp;
 using toolcomp::sinumerik::lex_line_fast;
@@ -16,33 +17,21 @@ using toolcomp::sinumerik::lex_line_fast;
 namespace {
 
 std::string random_line(std::mt19937& rng) {
-    static const char* const keys[] = {"G", "X", "Y", "Z", "I", "J", "K", "F", "S", "M", "T", "D", "N", "R", "CR",
-                                       "x", "g", "n", "CDOF", "CUT", "GOTOF", "AC", "IF", "L", "P", "A", "B", "C"};
-    static const std::string odd = "=([;:_$\"'/%.\t+-";
+    static const test::WordLineShape shape{
+        .keys = {"G", "X", "Y", "Z", "I", "J", "K", "F", "S", "M", "T", "D", "N", "R", "CR", "x", "g", "n", "CDOF",
+                 "CUT", "GOTOF", "AC", "IF", "L", "P", "A", "B", "C"},
+        .after_key = "= ",
+        .sign_percent = 20,
+        .point_percent = 60,
+        .in_number = " .E",
+        .odd = "=([;:_$\"'/%.\t+-"};
     std::uniform_int_distribution<int> pct(0, 99);
-    auto pick = [&](const std::string& s) { return s[std::uniform_int_distribution<std::size_t>(0, s.size() - 1)(rng)]; };
-    std::string line;
-    if (pct(rng) < 20) line += std::string(static_cast<std::size_t>(pct(rng) % 3), pct(rng) < 80 ? ' ' : '\t');
-    if (pct(rng) < 40) line += (pct(rng) < 90 ? "N" : "n") + std::to_string(pct(rng) * (pct(rng) < 5 ? 123456789 : 37)) +
-                               (pct(rng) < 90 ? " " : "");
-    const int words = pct(rng) % 7;
-    for (int w = 0; w < words; ++w) {
-        line += keys[std::uniform_int_distribution<std::size_t>(0, std::size(keys) - 1)(rng)];
-        if (pct(rng) < 5) line += pick("= ");
-        if (pct(rng) < 20) line += pick("-+");
-        const int digits = pct(rng) < 3 ? 16 + pct(rng) % 4 : pct(rng) % 8;
-        const int point = pct(rng) < 60 ? pct(rng) % (digits + 1) : -1;
-        for (int k = 0; k < digits; ++k) {
-            if (k == point) line += '.';
-            line += static_cast<char>('0' + pct(rng) % 10);
-            if (pct(rng) < 2) line += pick(" .E");
-        }
-        if (point == digits) line += '.';
-        if (pct(rng) < 6) line += pick(odd);
-        const int blanks = pct(rng) < 10 ? 0 : 1 + pct(rng) % 2;
-        for (int k = 0; k < blanks; ++k) line += pct(rng) < 85 ? ' ' : '\t';
-    }
-    return line;
+    std::string head;
+    if (pct(rng) < 20) head += std::string(static_cast<std::size_t>(pct(rng) % 3), pct(rng) < 80 ? ' ' : '\t');
+    if (pct(rng) < 40)
+        head += (pct(rng) < 90 ? "N" : "n") + std::to_string(pct(rng) * (pct(rng) < 5 ? 123456789 : 37)) +
+                (pct(rng) < 90 ? " " : "");
+    return test::random_word_line(rng, shape, head);
 }
 
 // Whether the fast path took `line` (the fuzz target's check throws on any difference).
