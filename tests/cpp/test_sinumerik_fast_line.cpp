@@ -29,7 +29,7 @@ std::string random_line(std::mt19937& rng) {
     std::string head;
     if (pct(rng) < 20) head += std::string(static_cast<std::size_t>(pct(rng) % 3), pct(rng) < 80 ? ' ' : '\t');
     if (pct(rng) < 40)
-        head += (pct(rng) < 90 ? "N" : "n") + std::to_string(pct(rng) * (pct(rng) < 5 ? 123456789 : 37)) +
+        head += (pct(rng) < 90 ? "N" : "n") + std::to_string(1LL * pct(rng) * (pct(rng) < 5 ? 123456789 : 37)) +
                 (pct(rng) < 90 ? " " : "");
     return test::random_word_line(rng, shape, head);
 }
