@@ -7,6 +7,10 @@
 #include <string>
 #include <vector>
 
+#include <catch2/catch.hpp>
+
+#include "toolcomp/program/program.hpp"
+
 namespace toolcomp::test {
 
 struct WordLineShape {
@@ -44,6 +48,21 @@ inline std::string random_word_line(std::mt19937& rng, const WordLineShape& shap
         for (int k = 0; k < blanks; ++k) line += pct(rng) < 85 ? ' ' : '\t';
     }
     return line;
+}
+
+// Runs `check` (which throws on any difference between a lexer's fast path and its general
+// lexer) on `lines` lines of `random_line`; returns how many of them `fast` took.
+template <class RandomLine, class Fast, class Check>
+int plain_lines_taken(int lines, std::mt19937& rng, RandomLine random_line, Fast fast, Check check) {
+    int taken = 0;
+    for (int i = 0; i < lines; ++i) {
+        const std::string line = random_line(rng);
+        INFO("line '" << line << "'");
+        Program p;
+        taken += fast(line, 1, p);
+        check(line);
+    }
+    return taken;
 }
 
 }  // namespace toolcomp::test

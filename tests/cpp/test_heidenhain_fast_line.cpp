@@ -37,25 +37,12 @@ std::string random_line(std::mt19937& rng) {
     return line;
 }
 
-// Whether the fast path took `line` (the fuzz target's check throws on any difference).
-bool plain(const std::string& line) {
-    Program p;
-    const bool taken = lex_line_fast(line, 1, p);
-    fuzz::same_klartext_plain_reading(line);
-    return taken;
-}
-
 }  // namespace
 
 TEST_CASE("klartext plain lines: the fast path reads what the general lexer reads, on random lines") {
     std::mt19937 rng(20261208);
-    int taken = 0;
     const int lines = 100000;
-    for (int i = 0; i < lines; ++i) {
-        const std::string line = random_line(rng);
-        INFO("line '" << line << "'");
-        taken += plain(line);
-    }
+    const int taken = test::plain_lines_taken(lines, rng, random_line, lex_line_fast, fuzz::same_klartext_plain_reading);
     // Both ways are taken often (the generator is near the plain grammar, not on it).
     CHECK(taken > lines / 10);
     CHECK(taken < lines * 9 / 10);
